@@ -1,0 +1,105 @@
+# matcap-kiosk: one build, every dependency through pkg-config.
+#   make            build ./matcap-kiosk
+#   make test       every test (unit, golden images, malformed input under ASan)
+#   make bench      speed figures (printed, never asserted)
+#   make install    PREFIX=/usr/local DESTDIR= (staging)
+#   make deps       install the Debian 12 packages (as root)
+
+VERSION    := 0.1.0
+PREFIX     ?= /usr/local
+BINDIR     ?= $(PREFIX)/bin
+DATADIR    ?= $(PREFIX)/share/matcap-kiosk
+SYSCONFDIR ?= /etc
+DESTDIR    ?=
+
+CC      ?= cc
+CXX     ?= c++
+PKG_CONFIG ?= pkg-config
+BUILD   ?= build
+
+# libOSMesa is opened with dlopen and libGLESv2 is never linked: every gl*
+# call goes through the table in src/gl.c (see DESIGN.md). Their headers
+# are still found through pkg-config.
+PKGS_LINK    := egl libpng libturbojpeg tinygltf
+PKGS_HEADERS := osmesa glesv2
+
+PKG_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(PKGS_LINK) $(PKGS_HEADERS))
+PKG_LIBS   := $(shell $(PKG_CONFIG) --libs $(PKGS_LINK))
+
+WARN      := -Wall -Wextra -Werror
+OPT       ?= -O2 -g
+CFLAGS    ?=
+CXXFLAGS  ?=
+ALL_CFLAGS   = -std=c11 -D_GNU_SOURCE $(OPT) $(WARN) -Isrc -I$(BUILD) $(PKG_CFLAGS) \
+	       -DMK_VERSION='"$(VERSION)"' -DMK_MATCAP_DIR='"$(DATADIR)/matcaps"' $(CFLAGS)
+ALL_CXXFLAGS = -std=c++17 $(OPT) $(WARN) -Isrc $(PKG_CFLAGS) $(CXXFLAGS)
+LDLIBS    = $(PKG_LIBS) -ldl -lm
+
+# The program's sources, minus main.c: tests link the same objects.
+LIB_C  := bake display display_egl display_osmesa egl_util gl image log math3d matcap_set \
+	  mesh mesh_gen options render shader shading
+LIB_CC := gltf
+SHADERS := shaders/mapping.glsl shaders/matcap.vert shaders/matcap.frag
+
+LIB_OBJS := $(LIB_C:%=$(BUILD)/%.o) $(LIB_CC:%=$(BUILD)/%.o) $(BUILD)/shaders_embedded.o
+
+all: matcap-kiosk
+
+matcap-kiosk: $(BUILD)/main.o $(LIB_OBJS)
+	$(CXX) -o $@ $^ $(LDFLAGS) $(LDLIBS)
+
+$(BUILD)/%.o: src/%.c | $(BUILD)
+	$(CC) $(ALL_CFLAGS) -MMD -MP -c -o $@ $<
+
+$(BUILD)/%.o: src/%.cc | $(BUILD)
+	$(CXX) $(ALL_CXXFLAGS) -MMD -MP -c -o $@ $<
+
+$(BUILD)/shaders_embedded.c: shaders/embed.sh $(SHADERS) | $(BUILD)
+	sh shaders/embed.sh $(SHADERS) > $@
+
+$(BUILD)/shaders_embedded.o: $(BUILD)/shaders_embedded.c
+	$(CC) $(ALL_CFLAGS) -c -o $@ $<
+
+$(BUILD):
+	mkdir -p $@
+
+-include $(wildcard $(BUILD)/*.d)
+
+# The matcap baker: regenerates matcaps/*.png byte for byte.
+$(BUILD)/bake: matcaps/bake.c $(BUILD)/bake.o $(BUILD)/image.o $(BUILD)/log.o
+	$(CC) $(ALL_CFLAGS) -o $@ $^ $(PKG_LIBS) -lm
+
+matcaps: $(BUILD)/bake
+	$(BUILD)/bake matcaps 256
+
+run: matcap-kiosk
+	./matcap-kiosk
+
+include tests/tests.mk
+-include tests/vm/vm.mk
+
+DEBIAN_PACKAGES := make gcc g++ pkg-config libegl-dev libgles-dev libosmesa6-dev libosmesa6 \
+	libegl-mesa0 libgl1-mesa-dri libgbm-dev libdrm-dev libtinygltf-dev nlohmann-json3-dev \
+	libpng-dev libturbojpeg0-dev libcmocka-dev
+
+deps:
+	apt-get update -qq
+	DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
+		$(DEBIAN_PACKAGES)
+
+install: matcap-kiosk
+	install -D -m 0755 matcap-kiosk $(DESTDIR)$(BINDIR)/matcap-kiosk
+	install -d $(DESTDIR)$(DATADIR)/matcaps
+	install -m 0644 matcaps/*.png $(DESTDIR)$(DATADIR)/matcaps/
+
+uninstall:
+	rm -f $(DESTDIR)$(BINDIR)/matcap-kiosk
+	rm -rf $(DESTDIR)$(DATADIR)
+
+format:
+	clang-format -i src/*.c src/*.h src/*.cc matcaps/*.c tests/*.c tests/unit/*.c
+
+clean:
+	rm -rf $(BUILD) matcap-kiosk tests/out
+
+.PHONY: all run matcaps deps install uninstall format clean

@@ -1,0 +1,89 @@
+/* One table of GL entry points, filled from the active backend.
+ *
+ * libOSMesa and libGLESv2 both export the gl* symbols, so the program links
+ * neither: every call goes through this table, filled by the backend from
+ * OSMesaGetProcAddress or eglGetProcAddress, and the renderer never knows
+ * which one filled it. */
+#ifndef MK_GL_H
+#define MK_GL_H
+
+#include <GLES2/gl2.h>
+
+#define GL_FUNCS(X)                                                                                \
+	X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                                                   \
+	X(PFNGLATTACHSHADERPROC, AttachShader)                                                     \
+	X(PFNGLBINDATTRIBLOCATIONPROC, BindAttribLocation)                                         \
+	X(PFNGLBINDBUFFERPROC, BindBuffer)                                                         \
+	X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer)                                               \
+	X(PFNGLBINDRENDERBUFFERPROC, BindRenderbuffer)                                             \
+	X(PFNGLBINDTEXTUREPROC, BindTexture)                                                       \
+	X(PFNGLBUFFERDATAPROC, BufferData)                                                         \
+	X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus)                                 \
+	X(PFNGLCLEARPROC, Clear)                                                                   \
+	X(PFNGLCLEARCOLORPROC, ClearColor)                                                         \
+	X(PFNGLCOMPILESHADERPROC, CompileShader)                                                   \
+	X(PFNGLCREATEPROGRAMPROC, CreateProgram)                                                   \
+	X(PFNGLCREATESHADERPROC, CreateShader)                                                     \
+	X(PFNGLCULLFACEPROC, CullFace)                                                             \
+	X(PFNGLDELETEBUFFERSPROC, DeleteBuffers)                                                   \
+	X(PFNGLDELETEFRAMEBUFFERSPROC, DeleteFramebuffers)                                         \
+	X(PFNGLDELETEPROGRAMPROC, DeleteProgram)                                                   \
+	X(PFNGLDELETERENDERBUFFERSPROC, DeleteRenderbuffers)                                       \
+	X(PFNGLDELETESHADERPROC, DeleteShader)                                                     \
+	X(PFNGLDELETETEXTURESPROC, DeleteTextures)                                                 \
+	X(PFNGLDISABLEPROC, Disable)                                                               \
+	X(PFNGLDISABLEVERTEXATTRIBARRAYPROC, DisableVertexAttribArray)                             \
+	X(PFNGLDRAWARRAYSPROC, DrawArrays)                                                         \
+	X(PFNGLDRAWELEMENTSPROC, DrawElements)                                                     \
+	X(PFNGLENABLEPROC, Enable)                                                                 \
+	X(PFNGLENABLEVERTEXATTRIBARRAYPROC, EnableVertexAttribArray)                               \
+	X(PFNGLFINISHPROC, Finish)                                                                 \
+	X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, FramebufferRenderbuffer)                               \
+	X(PFNGLFRONTFACEPROC, FrontFace)                                                           \
+	X(PFNGLGENBUFFERSPROC, GenBuffers)                                                         \
+	X(PFNGLGENFRAMEBUFFERSPROC, GenFramebuffers)                                               \
+	X(PFNGLGENRENDERBUFFERSPROC, GenRenderbuffers)                                             \
+	X(PFNGLGENTEXTURESPROC, GenTextures)                                                       \
+	X(PFNGLGENERATEMIPMAPPROC, GenerateMipmap)                                                 \
+	X(PFNGLGETATTRIBLOCATIONPROC, GetAttribLocation)                                           \
+	X(PFNGLGETERRORPROC, GetError)                                                             \
+	X(PFNGLGETINTEGERVPROC, GetIntegerv)                                                       \
+	X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog)                                           \
+	X(PFNGLGETPROGRAMIVPROC, GetProgramiv)                                                     \
+	X(PFNGLGETSHADERINFOLOGPROC, GetShaderInfoLog)                                             \
+	X(PFNGLGETSHADERIVPROC, GetShaderiv)                                                       \
+	X(PFNGLGETSTRINGPROC, GetString)                                                           \
+	X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation)                                         \
+	X(PFNGLLINKPROGRAMPROC, LinkProgram)                                                       \
+	X(PFNGLPIXELSTOREIPROC, PixelStorei)                                                       \
+	X(PFNGLREADPIXELSPROC, ReadPixels)                                                         \
+	X(PFNGLRENDERBUFFERSTORAGEPROC, RenderbufferStorage)                                       \
+	X(PFNGLSHADERSOURCEPROC, ShaderSource)                                                     \
+	X(PFNGLTEXIMAGE2DPROC, TexImage2D)                                                         \
+	X(PFNGLTEXPARAMETERIPROC, TexParameteri)                                                   \
+	X(PFNGLTEXSUBIMAGE2DPROC, TexSubImage2D)                                                   \
+	X(PFNGLFRAMEBUFFERTEXTURE2DPROC, FramebufferTexture2D)                                     \
+	X(PFNGLUNIFORM1FPROC, Uniform1f)                                                           \
+	X(PFNGLUNIFORM1IPROC, Uniform1i)                                                           \
+	X(PFNGLUNIFORM2FPROC, Uniform2f)                                                           \
+	X(PFNGLUNIFORM3FPROC, Uniform3f)                                                           \
+	X(PFNGLUNIFORM4FPROC, Uniform4f)                                                           \
+	X(PFNGLUNIFORMMATRIX3FVPROC, UniformMatrix3fv)                                             \
+	X(PFNGLUNIFORMMATRIX4FVPROC, UniformMatrix4fv)                                             \
+	X(PFNGLUSEPROGRAMPROC, UseProgram)                                                         \
+	X(PFNGLVERTEXATTRIBPOINTERPROC, VertexAttribPointer)                                       \
+	X(PFNGLVIEWPORTPROC, Viewport)
+
+struct gl {
+#define GL_MEMBER(type, name) type name;
+	GL_FUNCS(GL_MEMBER)
+#undef GL_MEMBER
+};
+
+typedef void *(*gl_get_proc_fn)(void *ctx, const char *name);
+
+/* Fill every entry through get_proc("gl" + name). Returns 0, or -ENOSYS
+ * after logging the first entry point the driver does not provide. */
+int gl_load(struct gl *gl, gl_get_proc_fn get_proc, void *ctx);
+
+#endif

@@ -1,0 +1,32 @@
+/* glTF 2.0 (.gltf with external or data: buffers, and .glb) into the plain
+ * mesh model, through tinygltf. The only C++ behind this header. */
+#ifndef MK_GLTF_H
+#define MK_GLTF_H
+
+#include "mesh.h"
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Models larger than this are refused before parsing. */
+#define GLTF_MAX_FILE (512u << 20)
+
+/* Load every triangle primitive of the default scene, each with its node
+ * transform, into one mesh fitted to the unit sphere. Every accessor is
+ * bounds-checked here, whatever tinygltf checked. Returns 0, or a negative
+ * errno code after logging one line naming the file and the fault. */
+int gltf_load(const char *path, struct mesh *out);
+
+/* The same from memory (for the fuzzer); external buffers resolve in dir. */
+int gltf_load_memory(const char *name, const uint8_t *data, size_t size, const char *dir,
+		     struct mesh *out);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,25 @@
+/* Logging: one line per message, with the systemd priority prefix when the
+ * journal reads our stderr, so `journalctl -p err` filters correctly. */
+#ifndef MK_LOG_H
+#define MK_LOG_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+enum log_level { LOG_ERR = 3, LOG_WARN = 4, LOG_INFO = 6, LOG_DEBUG = 7 };
+
+/* Set once at start-up, before anything else runs. */
+void log_set_level(enum log_level max);
+void log_msg(enum log_level level, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+#define log_err(...)   log_msg(LOG_ERR, __VA_ARGS__)
+#define log_warn(...)  log_msg(LOG_WARN, __VA_ARGS__)
+#define log_info(...)  log_msg(LOG_INFO, __VA_ARGS__)
+#define log_debug(...) log_msg(LOG_DEBUG, __VA_ARGS__)
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,218 @@
+/* matcap-kiosk: a glTF model shaded with a matcap, fullscreen on DRM/KMS
+ * or offscreen. main() wires the pieces; each lives in its own file. */
+#include "bake.h"
+#include "display.h"
+#include "gltf.h"
+#include "image.h"
+#include "log.h"
+#include "matcap_set.h"
+#include "mesh.h"
+#include "options.h"
+#include "render.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <time.h>
+#include <unistd.h>
+
+#ifndef MK_VERSION
+#define MK_VERSION "0.0.0"
+#endif
+#ifndef MK_MATCAP_DIR
+#define MK_MATCAP_DIR "/usr/local/share/matcap-kiosk/matcaps"
+#endif
+
+#define KNOT_TUBULAR 256
+#define KNOT_RADIAL  32
+
+struct scene {
+	struct mesh mesh;
+	struct image matcap;
+};
+
+static double now_ms(void)
+{
+	struct timespec ts;
+
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return ts.tv_sec * 1e3 + ts.tv_nsec / 1e6;
+}
+
+/* strict: a file the user named must load (a one-shot render is useless
+ * with a substitute); otherwise the kiosk shows the built-in and says so. */
+static int load_model(const struct options *o, bool strict, struct mesh *mesh)
+{
+	if (o->model) {
+		int ret = gltf_load(o->model, mesh);
+
+		if (!ret || strict)
+			return ret;
+		log_warn("showing the built-in torus knot instead of %s", o->model);
+	}
+	return mesh_torus_knot(mesh, KNOT_TUBULAR, KNOT_RADIAL);
+}
+
+static const char *default_matcaps(void)
+{
+	/* Installed data first; the source tree's folder when run from it. */
+	if (access(MK_MATCAP_DIR, R_OK) == 0)
+		return MK_MATCAP_DIR;
+	return access("matcaps", R_OK) == 0 ? "matcaps" : NULL;
+}
+
+static int load_matcap(const struct options *o, bool strict, struct image *img)
+{
+	const char *path = o->matcap ? o->matcap : default_matcaps();
+	struct matcap_set *set = path ? matcap_set_open(path) : NULL;
+	int ret = -ENOENT;
+
+	if (set) {
+		ret = image_load(matcap_set_path(set, 0), img);
+		matcap_set_free(set);
+	}
+	if (ret && strict && o->matcap)
+		return ret;
+	if (ret) {
+		log_warn("using the built-in clay matcap");
+		ret = bake_matcap(BAKE_CLAY_RED, 256, img);
+	}
+	return ret;
+}
+
+static struct display *open_display(const struct options *o)
+{
+	struct display_config cfg = {.width = o->width, .height = o->height};
+
+	switch (o->backend) {
+	case BACKEND_EGL_HEADLESS:
+		return display_egl_new(&cfg);
+	case BACKEND_KMS:
+		log_err("kms: this build has no KMS backend yet");
+		return NULL;
+	default:
+		return display_osmesa_new(&cfg);
+	}
+}
+
+static int compare_double(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+
+	return (x > y) - (x < y);
+}
+
+static void print_stats(double *times, int n, double first_frame_ms)
+{
+	struct rusage ru;
+
+	qsort(times, (size_t)n, sizeof(*times), compare_double);
+	getrusage(RUSAGE_SELF, &ru);
+	printf("frames %d median_ms %.3f p90_ms %.3f first_frame_ms %.1f peak_rss_kib %ld\n", n,
+	       times[n / 2], times[(n * 9) / 10], first_frame_ms, ru.ru_maxrss);
+}
+
+static int render_frames(const struct options *o, struct display *d, struct renderer *r,
+			 double start_ms)
+{
+	struct view v = {
+	    .ortho = o->ortho, .rotation = o->rotation, .background = {0.06f, 0.06f, 0.07f}};
+	double *times = calloc((size_t)o->frames, sizeof(double));
+	double first = 0;
+	int ret = 0;
+
+	if (!times)
+		return -ENOMEM;
+	v.orientation = quat_multiply(quat_from_axis_angle(1, 0, 0, o->pitch * M_PI / 180),
+				      quat_from_axis_angle(0, 1, 0, o->yaw * M_PI / 180));
+	for (int i = 0; i < o->frames && !ret; i++) {
+		double t = now_ms();
+
+		ret = d->begin_frame(d);
+		if (!ret) {
+			renderer_draw(r, &v, d->width, d->height);
+			ret = d->present(d);
+		}
+		times[i] = now_ms() - t;
+		if (i == 0)
+			first = now_ms() - start_ms;
+	}
+	if (!ret && o->stats)
+		print_stats(times, o->frames, first);
+	free(times);
+	return ret;
+}
+
+static int write_output(const struct options *o, struct display *d)
+{
+	struct image frame;
+	int ret = d->read_frame(d, &frame);
+
+	if (!ret)
+		ret = image_write_png(o->output, &frame);
+	if (!ret)
+		log_info("wrote %s (%dx%d)", o->output, frame.width, frame.height);
+	image_release(&frame);
+	return ret;
+}
+
+static int run(const struct options *o, struct scene *s, double start_ms)
+{
+	struct display *d = open_display(o);
+	struct renderer *r = NULL;
+	int ret = -ENODEV;
+
+	if (!d)
+		goto out;
+	r = renderer_new(&d->gl, o->shader_dir);
+	ret = r ? 0 : -ENOMEM;
+	if (!ret)
+		ret = renderer_set_mode(r, o->mode, o->ortho);
+	if (!ret)
+		ret = renderer_set_mesh(r, &s->mesh);
+	if (!ret)
+		ret = renderer_set_matcap(r, &s->matcap);
+	if (!ret)
+		ret = render_frames(o, d, r, start_ms);
+	if (!ret && o->output)
+		ret = write_output(o, d);
+out:
+	renderer_free(r);
+	display_free(d);
+	return ret;
+}
+
+int main(int argc, char **argv)
+{
+	double start_ms = now_ms();
+	struct options opts;
+	struct scene scene = {0};
+	int ret;
+
+	if (options_parse(&opts, argc, argv))
+		return 2;
+	if (opts.help) {
+		options_usage(stdout);
+		return 0;
+	}
+	if (opts.version) {
+		printf("matcap-kiosk %s\n", MK_VERSION);
+		return 0;
+	}
+	log_set_level(opts.verbosity < 0 ? LOG_WARN : opts.verbosity > 0 ? LOG_DEBUG : LOG_INFO);
+	if (opts.backend == BACKEND_AUTO && !opts.output) {
+		/* No display backend yet in this build: render a PNG instead. */
+		opts.output = "matcap-kiosk.png";
+	}
+	ret = load_model(&opts, opts.output != NULL, &scene.mesh);
+	if (!ret)
+		ret = load_matcap(&opts, opts.output != NULL, &scene.matcap);
+	if (!ret)
+		ret = run(&opts, &scene, start_ms);
+	mesh_release(&scene.mesh);
+	image_release(&scene.matcap);
+	return ret ? 1 : 0;
+}

@@ -1,0 +1,18 @@
+/* Compiling the shader variants: each program holds only the features its
+ * scene uses, chosen by #define lines put before the sources. */
+#ifndef MK_SHADER_H
+#define MK_SHADER_H
+
+#include "gl.h"
+
+/* Read a shader source: from dir when it is set (for development, so a
+ * shader can be edited without a rebuild), else the built-in copy.
+ * Returns a malloc'd string, or NULL after logging why. */
+char *shader_read(const char *dir, const char *name);
+
+/* Build a program from the vertex and fragment files, each preceded by
+ * the #version line, the defines and mapping.glsl. Returns 0 and the
+ * program, or -EINVAL after printing the driver's log with file names. */
+int shader_build(const struct gl *gl, const char *dir, const char *defines, GLuint *program);
+
+#endif
