@@ -43,9 +43,11 @@ SHADERS := shaders/mapping.glsl shaders/matcap.vert shaders/matcap.frag
 
 LIB_OBJS := $(LIB_C:%=$(BUILD)/%.o) $(LIB_CC:%=$(BUILD)/%.o) $(BUILD)/shaders_embedded.o
 
-all: matcap-kiosk
+KIOSK ?= matcap-kiosk
 
-matcap-kiosk: $(BUILD)/main.o $(LIB_OBJS)
+all: $(KIOSK)
+
+$(KIOSK): $(BUILD)/main.o $(LIB_OBJS)
 	$(CXX) -o $@ $^ $(LDFLAGS) $(LDLIBS)
 
 $(BUILD)/%.o: src/%.c | $(BUILD)

@@ -29,14 +29,16 @@ vec2 matcap_view(vec3 n, vec3 eye_to_point)
 	return vec2(dot(x, n), -dot(y, n)) * 0.495 + 0.5;
 }
 
-// Seed 003: spherical environment mapping of the reflected eye vector.
-// m = 2 |r + (0,0,1)| reaches 0 at r = (0,0,-1), where |r.xy| / m tends to
-// the rim (0.5) from every side: bounding m keeps the result on the disk
-// and finite there.
+// Seed 003: spherical environment mapping of the reflected eye vector,
+// uv = r.xy / m + 0.5 with m = 2 |r + (0,0,1)|. Since r.xy = (r + z).xy,
+// r.xy / m is half the xy of h = normalize(r + z): the same value, written
+// so that the singularity at r = (0,0,-1), where m = 0, has a safe limit.
+// There r + z = -2 (n.e) n + (e + z) shrinks along n, so h tends to n: on
+// the rim, as the seed formula does from every side.
 vec2 matcap_sem(vec3 n, vec3 eye_to_point)
 {
-	vec3 r = reflect(eye_to_point, n);
-	float rz1 = r.z + 1.0;
-	float m = 2.0 * sqrt(r.x * r.x + r.y * r.y + rz1 * rz1);
-	return vec2(r.x, -r.y) / max(m, 1.0e-3) + 0.5;
+	vec3 h = reflect(eye_to_point, n) + vec3(0.0, 0.0, 1.0);
+	float l2 = dot(h, h);
+	h = l2 > 1.0e-6 ? h * inversesqrt(l2) : n;
+	return vec2(h.x, -h.y) * 0.5 + 0.5;
 }

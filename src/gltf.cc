@@ -49,7 +49,8 @@ bool fs_exists(const std::string &path, void *user)
 {
 	Context *c = static_cast<Context *>(user);
 	if (!path_allowed(*c, path)) {
-		c->refused = path.substr(c->dir.empty() ? 0 : c->dir.size() + 1);
+		size_t skip = c->dir.empty() ? 0 : c->dir.size() + 1;
+		c->refused = path.size() > skip ? path.substr(skip) : path;
 		return false;
 	}
 	std::ifstream f(path, std::ios::binary);
@@ -386,6 +387,9 @@ bool read_vertices(Builder &b, const tinygltf::Model &m, const tinygltf::Primiti
 	for (size_t i = 0; i < pos.count; i++) {
 		double x = read_component(pos, i, 0), y = read_component(pos, i, 1),
 		       z = read_component(pos, i, 2);
+		if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
+			return fail(b, what + " POSITION",
+				    "vertex " + std::to_string(i) + " is not a finite number");
 		for (int k = 0; k < 3; k++)
 			b.positions.push_back(world[k] * x + world[4 + k] * y + world[8 + k] * z +
 					      world[12 + k]);
@@ -514,10 +518,8 @@ int build_mesh(const char *name, const tinygltf::Model &m, struct mesh *out)
 	return ret;
 }
 
-} // namespace
-
-extern "C" int gltf_load_memory(const char *name, const uint8_t *data, size_t size, const char *dir,
-				struct mesh *out)
+int load_memory(const char *name, const uint8_t *data, size_t size, const char *dir,
+		struct mesh *out)
 {
 	tinygltf::TinyGLTF loader;
 	tinygltf::Model model;
@@ -554,6 +556,24 @@ extern "C" int gltf_load_memory(const char *name, const uint8_t *data, size_t si
 		return -EINVAL;
 	}
 	return build_mesh(name, model, out);
+}
+
+} // namespace
+
+extern "C" int gltf_load_memory(const char *name, const uint8_t *data, size_t size, const char *dir,
+				struct mesh *out)
+{
+	// No exception may cross into C: a model too large for memory, or a
+	// fault inside the parser, is one more error line.
+	try {
+		return load_memory(name, data, size, dir, out);
+	} catch (const std::exception &e) {
+		log_err("%s: cannot load: %s", name, e.what());
+	} catch (...) {
+		log_err("%s: cannot load: unexpected fault in the glTF parser", name);
+	}
+	mesh_release(out);
+	return -EINVAL;
 }
 
 extern "C" int gltf_load(const char *path, struct mesh *out)

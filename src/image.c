@@ -141,9 +141,11 @@ static int jpeg_decode(const char *name, const uint8_t *data, size_t size, struc
 	ret = image_alloc(out, w, h);
 	if (ret)
 		goto out;
+	/* A warning means corrupt or truncated data (libjpeg pads it with
+	 * grey): a file cut short by an interrupted copy is refused, not
+	 * shown half grey. */
 	if (tjDecompress2(tj, data, (unsigned long)size, out->rgba, w, 0, h, TJPF_RGBA,
-			  TJFLAG_ACCURATEDCT) &&
-	    tjGetErrorCode(tj) == TJERR_FATAL) {
+			  TJFLAG_ACCURATEDCT | TJFLAG_STOPONWARNING)) {
 		log_err("%s: not a valid JPEG: %s", name, tjGetErrorStr2(tj));
 		image_release(out);
 		ret = -EINVAL;

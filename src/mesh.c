@@ -62,13 +62,22 @@ struct weld_key {
 	uint32_t v;
 };
 
+/* By value, so -0.0 and 0.0 (a pole, a seam) are one position. */
+static int position_compare(const float *a, const float *b)
+{
+	for (int k = 0; k < 3; k++)
+		if (a[k] != b[k])
+			return a[k] < b[k] ? -1 : 1;
+	return 0;
+}
+
 static int weld_compare(const void *a, const void *b)
 {
 	const struct weld_key *x = a, *y = b;
+	int c = position_compare(x->p, y->p);
 
-	for (int k = 0; k < 3; k++)
-		if (x->p[k] != y->p[k])
-			return x->p[k] < y->p[k] ? -1 : 1;
+	if (c)
+		return c;
 	return x->v < y->v ? -1 : x->v > y->v;
 }
 
@@ -110,7 +119,7 @@ int mesh_generate_normals(const float *positions, const uint32_t *idx, uint32_t 
 	qsort(keys, count, sizeof(*keys), weld_compare);
 	/* Each vertex accumulates into the first vertex at its position. */
 	for (uint32_t i = 0; i < count; i++) {
-		bool same = i > 0 && memcmp(keys[i].p, keys[i - 1].p, 3 * sizeof(float)) == 0;
+		bool same = i > 0 && position_compare(keys[i].p, keys[i - 1].p) == 0;
 
 		rep[keys[i].v] = same ? rep[keys[i - 1].v] : keys[i].v;
 	}

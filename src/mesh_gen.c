@@ -70,7 +70,7 @@ static void knot_ring(double u, int radial, double *pos, double *nrm)
 	normalize3(b);
 	normalize3(n);
 	for (int i = 0; i <= radial; i++) {
-		double v = (double)i / radial * 2.0 * M_PI;
+		double v = (double)(i % radial) / radial * 2.0 * M_PI;
 		double cx = -KNOT_TUBE * 0.5 * cos(v), cy = KNOT_TUBE * 0.5 * sin(v);
 
 		for (int k = 0; k < 3; k++) {
@@ -92,7 +92,7 @@ int mesh_torus_knot(struct mesh *m, int tubular, int radial)
 	if (!world || !nrm || mesh_alloc(m, nv, (uint32_t)(tubular * radial * 6), true))
 		goto out;
 	for (int j = 0; j <= tubular; j++) {
-		double u = (double)j / tubular * KNOT_P * 2.0 * M_PI;
+		double u = (double)(j % tubular) / tubular * KNOT_P * 2.0 * M_PI;
 		size_t base = (size_t)j * (size_t)(radial + 1);
 
 		knot_ring(u, radial, world + base * 3, nrm + base * 3);
@@ -120,12 +120,19 @@ int mesh_uv_sphere(struct mesh *m, int slices, int stacks)
 	if (ret)
 		return ret;
 	for (int j = 0; j <= slices; j++) {
-		double phi = (double)j / slices * 2.0 * M_PI;
+		/* The seam column repeats column 0 exactly, so welding by
+		 * position (normal generation) finds it. */
+		double phi = (double)(j % slices) / slices * 2.0 * M_PI;
 
 		for (int i = 0; i <= stacks; i++) {
 			double theta = (double)i / stacks * M_PI;
 			size_t v = (size_t)j * (size_t)(stacks + 1) + (size_t)i;
-			double p[3] = {sin(theta) * sin(phi), cos(theta), sin(theta) * cos(phi)};
+			/* Longitude runs clockwise seen from +y so the shared grid
+			 * winds counter-clockwise seen from outside. */
+			/* Exact poles: sin(pi) is not 0 in floating point. */
+			double st = i == 0 || i == stacks ? 0.0 : sin(theta);
+			double p[3] = {-st * sin(phi), i == 0 ? 1.0 : i == stacks ? -1.0 : cos(theta),
+				       st * cos(phi)};
 
 			for (int k = 0; k < 3; k++) {
 				m->positions[v * 3 + k] = (float)p[k];

@@ -59,11 +59,18 @@ void shading_uv_view(const double n[3], const double e[3], double uv[2])
 void shading_uv_sem(const double n[3], const double e[3], double uv[2])
 {
 	double d = n[0] * e[0] + n[1] * e[1] + n[2] * e[2];
-	double r[3] = {e[0] - 2.0 * d * n[0], e[1] - 2.0 * d * n[1], e[2] - 2.0 * d * n[2]};
-	double rz1 = r[2] + 1.0;
-	double m = 2.0 * sqrt(r[0] * r[0] + r[1] * r[1] + rz1 * rz1);
+	double h[3] = {e[0] - 2.0 * d * n[0], e[1] - 2.0 * d * n[1], e[2] - 2.0 * d * n[2] + 1.0};
+	double l2 = h[0] * h[0] + h[1] * h[1] + h[2] * h[2];
 
-	m = fmax(m, 1.0e-3);
-	uv[0] = r[0] / m + 0.5;
-	uv[1] = -r[1] / m + 0.5;
+	if (l2 > 1.0e-6) {
+		double s = 1.0 / sqrt(l2);
+
+		for (int k = 0; k < 3; k++)
+			h[k] *= s;
+	} else {
+		for (int k = 0; k < 3; k++)
+			h[k] = n[k];
+	}
+	uv[0] = h[0] * 0.5 + 0.5;
+	uv[1] = -h[1] * 0.5 + 0.5;
 }

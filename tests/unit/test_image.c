@@ -1,0 +1,157 @@
+#include "image.h"
+
+#include <errno.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+#include <turbojpeg.h>
+#include <unistd.h>
+#include <zlib.h>
+
+static const uint8_t png_sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+
+static void put_be32(uint8_t *p, uint32_t v)
+{
+	p[0] = (uint8_t)(v >> 24);
+	p[1] = (uint8_t)(v >> 16);
+	p[2] = (uint8_t)(v >> 8);
+	p[3] = (uint8_t)v;
+}
+
+/* A PNG whose header is valid, CRC included, and declares w x h. */
+static size_t png_header_only(uint8_t *buf, uint32_t w, uint32_t h)
+{
+	memcpy(buf, png_sig, 8);
+	put_be32(buf + 8, 13);
+	memcpy(buf + 12, "IHDR", 4);
+	put_be32(buf + 16, w);
+	put_be32(buf + 20, h);
+	buf[24] = 8; /* bit depth */
+	buf[25] = 6; /* RGBA */
+	buf[26] = buf[27] = buf[28] = 0;
+	put_be32(buf + 29, (uint32_t)crc32(0, buf + 12, 17));
+	return 33;
+}
+
+static uint8_t *read_all(const char *path, size_t *size)
+{
+	FILE *f = fopen(path, "rb");
+	uint8_t *data = malloc(1 << 20);
+
+	*size = fread(data, 1, 1 << 20, f);
+	fclose(f);
+	return data;
+}
+
+static void png_round_trip(void **state)
+{
+	struct image a, b;
+	char path[] = "/tmp/mk-image-XXXXXX";
+	int fd = mkstemp(path);
+
+	(void)state;
+	close(fd);
+	assert_int_equal(image_alloc(&a, 7, 5), 0);
+	for (int i = 0; i < 7 * 5 * 4; i++)
+		a.rgba[i] = (uint8_t)(i * 37);
+	assert_int_equal(image_write_png(path, &a), 0);
+	assert_int_equal(image_load(path, &b), 0);
+	assert_int_equal(b.width, 7);
+	assert_int_equal(b.height, 5);
+	assert_memory_equal(a.rgba, b.rgba, 7 * 5 * 4);
+	image_release(&a);
+	image_release(&b);
+	unlink(path);
+}
+
+static void rejects_empty_and_unknown(void **state)
+{
+	struct image img;
+	uint8_t text[] = "hello, not an image";
+
+	(void)state;
+	assert_int_equal(image_decode("empty.png", text, 0, &img), -EINVAL);
+	assert_null(img.rgba);
+	assert_int_equal(image_decode("text.png", text, sizeof(text), &img), -EINVAL);
+	assert_int_equal(image_load("/nonexistent/matcap.png", &img), -ENOENT);
+}
+
+static void rejects_huge_declared_png(void **state)
+{
+	uint8_t buf[64];
+	struct image img;
+	size_t n = png_header_only(buf, 100000, 100000);
+
+	(void)state;
+	/* Refused from the header alone, before any allocation. */
+	assert_int_equal(image_decode("huge.png", buf, n, &img), -EINVAL);
+	assert_null(img.rgba);
+	n = png_header_only(buf, 0x7fffffff, 1);
+	assert_int_equal(image_decode("wide.png", buf, n, &img), -EINVAL);
+}
+
+static void rejects_truncated_png(void **state)
+{
+	struct image a, img;
+	size_t size;
+	uint8_t *data;
+	char path[] = "/tmp/mk-image-XXXXXX";
+	int fd = mkstemp(path);
+
+	(void)state;
+	close(fd);
+	assert_int_equal(image_alloc(&a, 64, 64), 0);
+	for (int i = 0; i < 64 * 64 * 4; i++)
+		a.rgba[i] = (uint8_t)rand();
+	assert_int_equal(image_write_png(path, &a), 0);
+	data = read_all(path, &size);
+	for (size_t cut = 1; cut < size; cut += size / 17 + 1) {
+		assert_int_equal(image_decode("cut.png", data, cut, &img), -EINVAL);
+		assert_null(img.rgba);
+	}
+	/* A flipped byte in the pixel data breaks a CRC or the zlib stream. */
+	data[size / 2] ^= 0x55;
+	assert_int_equal(image_decode("flipped.png", data, size, &img), -EINVAL);
+	free(data);
+	image_release(&a);
+	unlink(path);
+}
+
+static void jpeg_round_trip_and_truncation(void **state)
+{
+	tjhandle tj = tjInitCompress();
+	unsigned char *jpg = NULL;
+	unsigned long jsize = 0;
+	uint8_t rgba[16 * 8 * 4];
+	struct image img;
+
+	(void)state;
+	for (int i = 0; i < 16 * 8 * 4; i++)
+		rgba[i] = (i % 4 == 0) ? 200 : 40;
+	assert_int_equal(
+	    tjCompress2(tj, rgba, 16, 0, 8, TJPF_RGBA, &jpg, &jsize, TJSAMP_444, 95, 0), 0);
+	assert_int_equal(image_decode("ok.jpg", jpg, jsize, &img), 0);
+	assert_int_equal(img.width, 16);
+	assert_true(abs(img.rgba[0] - 200) < 8 && abs(img.rgba[1] - 40) < 8);
+	image_release(&img);
+	assert_int_equal(image_decode("cut.jpg", jpg, 20, &img), -EINVAL);
+	assert_null(img.rgba);
+	tjFree(jpg);
+	tjDestroy(tj);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+	    cmocka_unit_test(png_round_trip),
+	    cmocka_unit_test(rejects_empty_and_unknown),
+	    cmocka_unit_test(rejects_huge_declared_png),
+	    cmocka_unit_test(rejects_truncated_png),
+	    cmocka_unit_test(jpeg_round_trip_and_truncation),
+	};
+	return cmocka_run_group_tests_name("image", tests, NULL, NULL);
+}
