@@ -40,3 +40,8 @@ golden: $(KIOSK) test-tools
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/golden.sh tests/golden
 
 .PHONY: unit-tests test-tools asan test golden
+
+bench: $(KIOSK) test-tools
+	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench.sh
+
+.PHONY: bench
