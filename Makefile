@@ -36,7 +36,7 @@ ALL_CXXFLAGS = -std=c++17 $(OPT) $(WARN) -Isrc $(PKG_CFLAGS) $(CXXFLAGS)
 LDLIBS    = $(PKG_LIBS) -ldl -lm
 
 # The program's sources, minus main.c: tests link the same objects.
-LIB_C  := bake display display_egl display_osmesa egl_util gl image log math3d matcap_set \
+LIB_C  := app bake display display_egl display_osmesa egl_util gl image kiosk log math3d matcap_set \
 	  mesh mesh_gen options render shader shading
 LIB_CC := gltf
 SHADERS := shaders/mapping.glsl shaders/matcap.vert shaders/matcap.frag

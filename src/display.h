@@ -23,6 +23,9 @@ struct display {
 	int width; /* of the image the renderer draws, before any rotation */
 	int height;
 	struct gl gl;
+	/* A presented frame has not reached the screen yet (a page flip is
+	 * pending): draw nothing new until dispatch() clears it. */
+	bool waiting;
 
 	/* Make the context current and bind the target to draw into. */
 	int (*begin_frame)(struct display *d);

@@ -21,6 +21,7 @@ namespace
 struct Context {
 	std::string dir; // the model's folder; external files must stay in it
 	std::string refused;
+	std::string missing;
 };
 
 // A buffer URI may name a file beside the model or below it, never an
@@ -45,15 +46,21 @@ bool path_allowed(const Context &c, const std::string &path)
 	return true;
 }
 
+// tinygltf looks for a buffer in more than one folder; remember the first
+// refused path and any allowed one that was missing, to say which it was.
 bool fs_exists(const std::string &path, void *user)
 {
 	Context *c = static_cast<Context *>(user);
+	size_t skip = c->dir.empty() ? 0 : c->dir.size() + 1;
+	std::string shown = path.size() > skip ? path.substr(skip) : path;
 	if (!path_allowed(*c, path)) {
-		size_t skip = c->dir.empty() ? 0 : c->dir.size() + 1;
-		c->refused = path.size() > skip ? path.substr(skip) : path;
+		if (c->refused.empty())
+			c->refused = shown;
 		return false;
 	}
 	std::ifstream f(path, std::ios::binary);
+	if (!f.good() && c->missing.empty())
+		c->missing = shown;
 	return f.good();
 }
 
@@ -541,7 +548,9 @@ int load_memory(const char *name, const uint8_t *data, size_t size, const char *
 					     reinterpret_cast<const char *>(data), (unsigned)size,
 					     ctx.dir);
 	if (!ok) {
-		if (!ctx.refused.empty())
+		if (!ctx.missing.empty())
+			err = "buffer file \"" + ctx.missing + "\" does not exist beside the model";
+		else if (!ctx.refused.empty())
 			err = "buffer URI \"" + ctx.refused +
 			      "\" is not a file beside the model (absolute paths and \"..\" "
 			      "are refused)";

@@ -4,6 +4,7 @@
 #include "display.h"
 #include "gltf.h"
 #include "image.h"
+#include "kiosk.h"
 #include "log.h"
 #include "matcap_set.h"
 #include "mesh.h"
@@ -31,7 +32,8 @@
 
 struct scene {
 	struct mesh mesh;
-	struct image matcap;
+	struct image matcap;	/* the first one shown */
+	struct matcap_set *set; /* NULL: the built-in clay only */
 };
 
 static double now_ms(void)
@@ -64,21 +66,21 @@ static const char *default_matcaps(void)
 	return access("matcaps", R_OK) == 0 ? "matcaps" : NULL;
 }
 
-static int load_matcap(const struct options *o, bool strict, struct image *img)
+static int load_matcap(const struct options *o, bool strict, struct scene *s)
 {
 	const char *path = o->matcap ? o->matcap : default_matcaps();
-	struct matcap_set *set = path ? matcap_set_open(path) : NULL;
 	int ret = -ENOENT;
 
-	if (set) {
-		ret = image_load(matcap_set_path(set, 0), img);
-		matcap_set_free(set);
-	}
+	s->set = path ? matcap_set_open(path) : NULL;
+	if (s->set)
+		ret = image_load(matcap_set_path(s->set, 0), &s->matcap);
 	if (ret && strict && o->matcap)
 		return ret;
 	if (ret) {
 		log_warn("using the built-in clay matcap");
-		ret = bake_matcap(BAKE_CLAY_RED, 256, img);
+		matcap_set_free(s->set);
+		s->set = NULL;
+		ret = bake_matcap(BAKE_CLAY_RED, 256, &s->matcap);
 	}
 	return ret;
 }
@@ -115,19 +117,26 @@ static void print_stats(double *times, int n, double first_frame_ms)
 	       times[n / 2], times[(n * 9) / 10], first_frame_ms, ru.ru_maxrss);
 }
 
-static int render_frames(const struct options *o, struct display *d, struct renderer *r,
-			 double start_ms)
+static struct view initial_view(const struct options *o)
 {
 	struct view v = {
 	    .ortho = o->ortho, .rotation = o->rotation, .background = {0.06f, 0.06f, 0.07f}};
+
+	v.orientation = quat_multiply(quat_from_axis_angle(1, 0, 0, o->pitch * M_PI / 180),
+				      quat_from_axis_angle(0, 1, 0, o->yaw * M_PI / 180));
+	return v;
+}
+
+static int render_frames(const struct options *o, struct display *d, struct renderer *r,
+			 double start_ms)
+{
+	struct view v = initial_view(o);
 	double *times = calloc((size_t)o->frames, sizeof(double));
 	double first = 0;
 	int ret = 0;
 
 	if (!times)
 		return -ENOMEM;
-	v.orientation = quat_multiply(quat_from_axis_angle(1, 0, 0, o->pitch * M_PI / 180),
-				      quat_from_axis_angle(0, 1, 0, o->yaw * M_PI / 180));
 	for (int i = 0; i < o->frames && !ret; i++) {
 		double t = now_ms();
 
@@ -159,6 +168,37 @@ static int write_output(const struct options *o, struct display *d)
 	return ret;
 }
 
+static int run_live(const struct options *o, struct scene *s, struct display *d, struct renderer *r)
+{
+	/* The renderer already holds the first matcap and the mode. */
+	struct kiosk k = {.display = d,
+			  .renderer = r,
+			  .matcaps = s->set,
+			  .shown_matcap = 0,
+			  .shown_mode = o->mode,
+			  .shown_ortho = o->ortho};
+	struct app_config cfg = {
+	    .turn_speed = M_PI / 2,
+	    .turn_step = M_PI / 36,
+	    .attract_after_s = 60,
+	    .attract_speed = M_PI / 12,
+	    .mode = o->mode,
+	    .matcap_count = s->set ? matcap_set_count(s->set) : 1,
+	};
+	struct timespec now;
+	int ret;
+
+	k.view = initial_view(o);
+	cfg.rest = k.view.orientation;
+	clock_gettime(CLOCK_MONOTONIC, &now);
+	app_init(&k.app, &cfg, (uint64_t)now.tv_sec * 1000000000ull + (uint64_t)now.tv_nsec);
+	ret = kiosk_run(&k);
+	for (int i = 0; i < k.input_count; i++)
+		k.inputs[i]->destroy(k.inputs[i]);
+	log_info("%ld frames drawn", k.frames_drawn);
+	return ret;
+}
+
 static int run(const struct options *o, struct scene *s, double start_ms)
 {
 	struct display *d = open_display(o);
@@ -175,10 +215,15 @@ static int run(const struct options *o, struct scene *s, double start_ms)
 		ret = renderer_set_mesh(r, &s->mesh);
 	if (!ret)
 		ret = renderer_set_matcap(r, &s->matcap);
-	if (!ret)
+	if (ret)
+		goto out;
+	if (o->output || o->frames > 1) {
 		ret = render_frames(o, d, r, start_ms);
-	if (!ret && o->output)
-		ret = write_output(o, d);
+		if (!ret && o->output)
+			ret = write_output(o, d);
+	} else {
+		ret = run_live(o, s, d, r);
+	}
 out:
 	renderer_free(r);
 	display_free(d);
@@ -207,12 +252,15 @@ int main(int argc, char **argv)
 		/* No display backend yet in this build: render a PNG instead. */
 		opts.output = "matcap-kiosk.png";
 	}
+	if (!opts.output && opts.frames == 1)
+		kiosk_block_signals();
 	ret = load_model(&opts, opts.output != NULL, &scene.mesh);
 	if (!ret)
-		ret = load_matcap(&opts, opts.output != NULL, &scene.matcap);
+		ret = load_matcap(&opts, opts.output != NULL, &scene);
 	if (!ret)
 		ret = run(&opts, &scene, start_ms);
 	mesh_release(&scene.mesh);
 	image_release(&scene.matcap);
+	matcap_set_free(scene.set);
 	return ret ? 1 : 0;
 }

@@ -131,7 +131,10 @@ int mesh_uv_sphere(struct mesh *m, int slices, int stacks)
 			 * winds counter-clockwise seen from outside. */
 			/* Exact poles: sin(pi) is not 0 in floating point. */
 			double st = i == 0 || i == stacks ? 0.0 : sin(theta);
-			double p[3] = {-st * sin(phi), i == 0 ? 1.0 : i == stacks ? -1.0 : cos(theta),
+			double p[3] = {-st * sin(phi),
+				       i == 0	     ? 1.0
+				       : i == stacks ? -1.0
+						     : cos(theta),
 				       st * cos(phi)};
 
 			for (int k = 0; k < 3; k++) {
