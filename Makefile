@@ -20,7 +20,7 @@ BUILD   ?= build
 # libOSMesa is opened with dlopen and libGLESv2 is never linked: every gl*
 # call goes through the table in src/gl.c (see DESIGN.md). Their headers
 # are still found through pkg-config.
-PKGS_LINK    := egl libpng libturbojpeg tinygltf
+PKGS_LINK    := egl libpng libturbojpeg tinygltf inih
 PKGS_HEADERS := osmesa glesv2
 
 PKG_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(PKGS_LINK) $(PKGS_HEADERS))
@@ -82,7 +82,7 @@ include tests/tests.mk
 
 DEBIAN_PACKAGES := make gcc g++ pkg-config libegl-dev libgles-dev libosmesa6-dev libosmesa6 \
 	libegl-mesa0 libgl1-mesa-dri libgbm-dev libdrm-dev libtinygltf-dev nlohmann-json3-dev \
-	libpng-dev libturbojpeg0-dev libcmocka-dev
+	libpng-dev libturbojpeg0-dev libcmocka-dev libinih-dev
 
 deps:
 	apt-get update -qq
@@ -93,6 +93,10 @@ install: matcap-kiosk
 	install -D -m 0755 matcap-kiosk $(DESTDIR)$(BINDIR)/matcap-kiosk
 	install -d $(DESTDIR)$(DATADIR)/matcaps
 	install -m 0644 matcaps/*.png $(DESTDIR)$(DATADIR)/matcaps/
+	install -D -m 0644 config/kiosk.ini $(DESTDIR)$(DATADIR)/kiosk.ini.example
+	# An edited config survives a reinstall.
+	test -e $(DESTDIR)$(SYSCONFDIR)/matcap-kiosk/kiosk.ini || \
+		install -D -m 0644 config/kiosk.ini $(DESTDIR)$(SYSCONFDIR)/matcap-kiosk/kiosk.ini
 
 uninstall:
 	rm -f $(DESTDIR)$(BINDIR)/matcap-kiosk

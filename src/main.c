@@ -87,7 +87,7 @@ static int load_matcap(const struct options *o, bool strict, struct scene *s)
 
 static struct display *open_display(const struct options *o)
 {
-	struct display_config cfg = {.width = o->width, .height = o->height};
+	struct display_config cfg = {.width = o->size[0], .height = o->size[1]};
 
 	switch (o->backend) {
 	case BACKEND_EGL_HEADLESS:
@@ -175,14 +175,14 @@ static int run_live(const struct options *o, struct scene *s, struct display *d,
 			  .renderer = r,
 			  .matcaps = s->set,
 			  .shown_matcap = 0,
-			  .shown_mode = o->mode,
+			  .shown_mode = (enum shading_mode)o->mode,
 			  .shown_ortho = o->ortho};
 	struct app_config cfg = {
 	    .turn_speed = M_PI / 2,
 	    .turn_step = M_PI / 36,
 	    .attract_after_s = 60,
 	    .attract_speed = M_PI / 12,
-	    .mode = o->mode,
+	    .mode = (enum shading_mode)o->mode,
 	    .matcap_count = s->set ? matcap_set_count(s->set) : 1,
 	};
 	struct timespec now;
@@ -210,7 +210,7 @@ static int run(const struct options *o, struct scene *s, double start_ms)
 	r = renderer_new(&d->gl, o->shader_dir);
 	ret = r ? 0 : -ENOMEM;
 	if (!ret)
-		ret = renderer_set_mode(r, o->mode, o->ortho);
+		ret = renderer_set_mode(r, (enum shading_mode)o->mode, o->ortho);
 	if (!ret)
 		ret = renderer_set_mesh(r, &s->mesh);
 	if (!ret)
@@ -237,20 +237,24 @@ int main(int argc, char **argv)
 	struct scene scene = {0};
 	int ret;
 
-	if (options_parse(&opts, argc, argv))
-		return 2;
-	if (opts.help) {
-		options_usage(stdout);
+	ret = options_parse(&opts, argc, argv);
+	if (ret) {
+		options_release(&opts);
+		return ret == OPTIONS_CONFIG ? 78 /* EX_CONFIG */ : 2;
+	}
+	if (opts.help || opts.version) {
+		if (opts.help)
+			options_usage(stdout);
+		else
+			printf("matcap-kiosk %s\n", MK_VERSION);
+		options_release(&opts);
 		return 0;
 	}
-	if (opts.version) {
-		printf("matcap-kiosk %s\n", MK_VERSION);
-		return 0;
-	}
-	log_set_level(opts.verbosity < 0 ? LOG_WARN : opts.verbosity > 0 ? LOG_DEBUG : LOG_INFO);
+	static const enum log_level levels[] = {LOG_ERR, LOG_WARN, LOG_INFO, LOG_DEBUG};
+	log_set_level(levels[opts.log_level]);
 	if (opts.backend == BACKEND_AUTO && !opts.output) {
 		/* No display backend yet in this build: render a PNG instead. */
-		opts.output = "matcap-kiosk.png";
+		opts.output = strdup("matcap-kiosk.png");
 	}
 	if (!opts.output && opts.frames == 1)
 		kiosk_block_signals();
@@ -262,5 +266,6 @@ int main(int argc, char **argv)
 	mesh_release(&scene.mesh);
 	image_release(&scene.matcap);
 	matcap_set_free(scene.set);
+	options_release(&opts);
 	return ret ? 1 : 0;
 }

@@ -99,6 +99,9 @@ check "--version" sh -c "$KIOSK --version | grep -q '^matcap-kiosk [0-9]'"
 check "bad option value exits 2 naming it" sh -c \
 	"$KIOSK --size 12 2>&1 | grep -q -- '--size'; [ \$($KIOSK --size 12 2>/dev/null; echo \$?) -eq 2 ]"
 
+# Every setting that the config file takes is documented in the example.
+check "every config key documented in config/kiosk.ini" sh tests/config_doc.sh "$KIOSK"
+
 # 8. The shipped matcaps regenerate byte for byte from the baker.
 mkdir -p "$out/baked"
 check "baker runs" "$BAKE" "$out/baked" 256
@@ -107,9 +110,10 @@ for f in matcaps/*.png; do
 done
 
 # 9. make install honours PREFIX and DESTDIR.
-check "make install" sh -c "make -s install DESTDIR=$PWD/$out/stage PREFIX=/usr >/dev/null &&
+check "make install" sh -c "make -s install DESTDIR=$PWD/$out/stage PREFIX=/usr SYSCONFDIR=/etc >/dev/null &&
 	test -x $out/stage/usr/bin/matcap-kiosk &&
-	test -f $out/stage/usr/share/matcap-kiosk/matcaps/gold.png"
+	test -f $out/stage/usr/share/matcap-kiosk/matcaps/gold.png &&
+	test -f $out/stage/etc/matcap-kiosk/kiosk.ini"
 
 [ -n "$failures" ] && echo "failed:$failures"
 echo "$passed passed, $failed failed"
