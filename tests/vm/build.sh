@@ -2,7 +2,7 @@
 # Build the virtual board: Debian 12's own kernel, the five test drivers it
 # lacks (vkms, vimc, gpio-sim, gpio-mockup, irq_sim) built as external modules
 # from linux-source-6.1, and an lz4 initramfs with busybox, udev, Mesa,
-# libcamera, gpiod tools, kmscube and the board's own helper (vm-grab).
+# libcamera, gpiod tools, kmscube and the board's own helpers (tools/).
 #
 #   tests/vm/build.sh [--bin PATH]...
 #
@@ -30,7 +30,7 @@ while [ $# -gt 0 ]; do
 	--bin) [ $# -ge 2 ] || die "--bin needs a path"
 		[ -f "$2" ] && [ -x "$2" ] || die "--bin $2: not an executable file"
 		BINS+=("$(readlink -f "$2")"); shift 2 ;;
-	-h|--help) sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 0 ;;
+	-h|--help) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 0 ;;
 	*) die "unknown argument '$1' (usage: build.sh [--bin PATH]...)" ;;
 	esac
 done
@@ -38,6 +38,14 @@ done
 mkdir -p "$CACHE"
 exec 9>"$CACHE/.lock"
 flock -w 900 9 || die "another build holds $CACHE/.lock for 15 minutes"
+
+APT_UPDATED=0
+apt_update() {
+	[ "$APT_UPDATED" = 0 ] && [ "$(id -u)" = 0 ] || return 1
+	say "apt-get update"
+	apt-get update >>"$CACHE/apt.log" 2>&1 || die "apt-get update failed, see $CACHE/apt.log"
+	APT_UPDATED=1
+}
 
 # ---------------------------------------------------------------- packages
 # Host packages the board is made of (userspace is copied from this host,
@@ -56,7 +64,7 @@ if [ -n "$missing" ]; then
 	[ "$(id -u)" = 0 ] || die "missing packages:$missing (run as root, or: apt-get install$missing)"
 	say "installing:$missing"
 	if ! DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends $missing >"$CACHE/apt.log" 2>&1; then
-		apt-get update >>"$CACHE/apt.log" 2>&1 || die "apt-get update failed, see $CACHE/apt.log"
+		apt_update || die "apt-get install failed, see $CACHE/apt.log"
 		DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends $missing >>"$CACHE/apt.log" 2>&1 ||
 			die "apt-get install failed, see $CACHE/apt.log"
 	fi
@@ -65,18 +73,15 @@ fi
 # ---------------------------------------------------------------- kernel
 # The kernel is the one linux-image-amd64 points at; image, headers and
 # source are downloaded (never installed) so the host kernel is untouched.
-KPKG=${VM_KERNEL_PKG:-}
-if [ -z "$KPKG" ]; then
-	KPKG=$(apt-cache depends linux-image-amd64 2>/dev/null | awk '/Depends: linux-image-[0-9]/{print $2; exit}')
-	if [ -z "$KPKG" ] && [ "$(id -u)" = 0 ]; then
-		apt-get update >"$CACHE/apt.log" 2>&1 || true
-		KPKG=$(apt-cache depends linux-image-amd64 2>/dev/null | awk '/Depends: linux-image-[0-9]/{print $2; exit}')
-	fi
-fi
-[ -n "$KPKG" ] || die "cannot tell which kernel linux-image-amd64 depends on (apt-get update?)"
+resolve_kernel() {
+	KPKG=${VM_KERNEL_PKG:-$(apt-cache depends linux-image-amd64 2>/dev/null | awk '/Depends: linux-image-[0-9]/{print $2; exit}')}
+	KDEB=""
+	[ -n "$KPKG" ] && KDEB=$(apt-cache show --no-all-versions "$KPKG" 2>/dev/null | awk '/^Version:/{print $2; exit}')
+	[ -n "$KDEB" ]
+}
+resolve_kernel || { apt_update && resolve_kernel; } ||
+	die "cannot tell which kernel linux-image-amd64 depends on (run apt-get update as root)"
 KVER=${KPKG#linux-image-}
-KDEB=$(apt-cache show --no-all-versions "$KPKG" 2>/dev/null | awk '/^Version:/{print $2; exit}')
-[ -n "$KDEB" ] || die "apt-cache knows no version of $KPKG"
 KDIR=$CACHE/kernel-$KVER-$KDEB
 KROOT=$KDIR/root
 KSRC=$KDIR/src
@@ -84,11 +89,15 @@ KSRC=$KDIR/src
 if [ ! -e "$KDIR/.extracted" ]; then
 	say "downloading $KPKG $KDEB, its headers and linux-source-6.1"
 	rm -rf "$KDIR"; mkdir -p "$KDIR/debs" "$KROOT" "$KSRC"
-	(cd "$KDIR/debs" && apt-get download -o APT::Sandbox::User=root \
-		"$KPKG=$KDEB" "linux-headers-$KVER=$KDEB" \
-		"linux-headers-${KVER%-*}-common=$KDEB" "linux-kbuild-6.1=$KDEB" \
-		"linux-source-6.1=$KDEB" >"$KDIR/download.log" 2>&1) ||
-		die "apt-get download failed (a kernel and source of version $KDEB must both be on the mirror), see $KDIR/download.log"
+	kdownload() {
+		(cd "$KDIR/debs" && apt-get download -o APT::Sandbox::User=root \
+			"$KPKG=$KDEB" "linux-headers-$KVER=$KDEB" \
+			"linux-headers-${KVER%-*}-common=$KDEB" "linux-kbuild-6.1=$KDEB" \
+			"linux-source-6.1=$KDEB" >"$KDIR/download.log" 2>&1)
+	}
+	# Stale package lists name files the mirror no longer has: update once.
+	kdownload || { apt_update && kdownload; } ||
+		die "apt-get download failed (kernel, headers and linux-source-6.1 of version $KDEB must all be on the mirror), see $KDIR/download.log"
 	for d in "$KDIR"/debs/*.deb; do
 		case $d in *linux-source*) dpkg-deb -x "$d" "$KDIR/srcdeb" ;; *) dpkg-deb -x "$d" "$KROOT" ;; esac
 	done
@@ -102,6 +111,7 @@ if [ ! -e "$KDIR/.extracted" ]; then
 	# The headers' Makefile includes the common tree by absolute path.
 	sed -i "s#^include /usr/src/#include $KROOT/usr/src/#" "$KROOT/usr/src/linux-headers-$KVER/Makefile"
 	touch "$KDIR/.extracted"
+	for old in "$CACHE"/kernel-*; do [ "$old" = "$KDIR" ] || rm -rf "$old"; done
 fi
 VMLINUZ=$KROOT/boot/vmlinuz-$KVER
 [ -f "$VMLINUZ" ] || die "$VMLINUZ missing; remove $KDIR and retry"
@@ -220,6 +230,7 @@ if [ ! -e "$BASE" ]; then
 	gcc-12 -std=c11 -O2 -Wall -Wextra -Werror -o "$R/usr/bin/vm-grab" "$HERE/tools/vm-grab.c" \
 		$(pkg-config --cflags --libs libdrm zlib) || die "vm-grab did not build"
 	copy_deps "$R" "$R/usr/bin/vm-grab"
+	gcc-12 -std=c11 -O2 -Wall -Wextra -Werror -o "$R/usr/bin/vm-key" "$HERE/tools/vm-key.c" || die "vm-key did not build"
 	mkdir -p "$R/usr/lib/vm"
 	gcc-12 -std=c11 -O2 -Wall -Wextra -Werror -shared -fPIC -o "$R/usr/lib/vm/libgbm-linear.so" \
 		"$HERE/tools/gbm-linear.c" $(pkg-config --cflags libdrm gbm) -ldl || die "gbm-linear did not build"

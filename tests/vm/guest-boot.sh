@@ -6,7 +6,7 @@
 # VM_ARGS (the script's arguments, shell-quoted).
 set -u
 export PATH=/usr/local/bin:/usr/sbin:/usr/bin
-export HOME=/root XDG_RUNTIME_DIR=/run/user/0 TERM=dumb LANG=C.UTF-8
+export HOME=/root XDG_RUNTIME_DIR=/run/user/0 TERM=dumb LANG=C.UTF-8 LIBCAMERA_LOG_NO_COLOR=1
 mkdir -p /run/user/0 && chmod 700 /run/user/0
 VM_TIMEOUT=300 VM_HAVE_SHARE=0 VM_ARGS=
 . /vm/env

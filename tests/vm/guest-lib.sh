@@ -103,7 +103,8 @@ gpiomockup_load() { modprobe gpio-mockup gpio_mockup_ranges="$1" gpio_mockup_nam
 drm_card() {
 	for _c in /sys/class/drm/card[0-9]*; do
 		case $_c in *-*) continue ;; esac
-		[ "$(basename "$(readlink -f "$_c/device/driver")")" = vkms ] && { echo "/dev/dri/${_c##*/}"; return 0; }
+		# vkms is a bare platform device called "vkms" (no driver link).
+		[ "$(basename "$(readlink -f "$_c/device")")" = vkms ] && { echo "/dev/dri/${_c##*/}"; return 0; }
 	done
 	return 1
 }
@@ -118,6 +119,32 @@ drm_connector_status() {
 # vm_grab OUT.ppm [vm-grab options]: read back what the CRTC scans out now
 # (the front buffer, while the program that set it still runs).
 vm_grab() { _o=$1; shift; vm-grab "$@" -o "$_o"; }
+
+# ---- keyboard (uinput)
+VKBD_FIFO=/run/vm-key.fifo
+# vkbd_start: create the virtual keyboard "vm-key keyboard"; sets VKBD_DEV
+# (/dev/input/eventN) and VKBD_PID.  Start it before the program that scans
+# for keyboards.  Not in $(...): the daemon would hold the substitution open.
+vkbd_start() {
+	rm -f "$VKBD_FIFO"
+	vm-key -f "$VKBD_FIFO" >&2 &
+	VKBD_PID=$!
+	wait_until 10 vkbd_dev || vm_die "vkbd_start: the uinput keyboard did not appear"
+	VKBD_DEV=$(vkbd_dev)
+	wait_for "$VKBD_DEV" 5 && wait_for "$VKBD_FIFO" 5
+}
+# vkbd_dev: /dev/input/eventN of the virtual keyboard.
+vkbd_dev() {
+	for _n in /sys/class/input/event*/device/name; do
+		[ "$(cat "$_n" 2>/dev/null)" = "vm-key keyboard" ] || continue
+		_e=${_n%/device/name}; echo "/dev/input/${_e##*/}"; return 0
+	done
+	return 1
+}
+# vkbd_press KEY... : press and release keys (ESC, ENTER, LEFT, Q, ...);
+# "sleep MS" between them is allowed.
+vkbd_press() { [ -p "$VKBD_FIFO" ] || vm_die "vkbd_press: no vkbd_start"; echo "$*" >"$VKBD_FIFO"; }
+vkbd_stop() { [ -p "$VKBD_FIFO" ] && echo quit >"$VKBD_FIFO"; wait "${VKBD_PID:-}" 2>/dev/null; rm -f "$VKBD_FIFO"; }
 
 # ---- camera (vimc)
 # vimc_ready: vimc's media device exists and udev has seen its video nodes.

@@ -16,8 +16,9 @@
 # In the guest: /repo is this repository (read-only), /share the --share dir,
 # /vm/guest-lib.sh the helper functions ($VM_LIB).  Drivers are loaded (vkms
 # with writeback, gpio-sim with configfs, vimc, uinput) and udev has settled
-# before the script starts.  The exit status is the script's; 124 = host
-# timeout, 125 = the board failed before or around the script.
+# before the script starts.  The exit status is the script's; 143 = the
+# guest killed it at --timeout, 124 = the host-side timeout stopped qemu,
+# 125 = the board failed before or around the script.
 set -eu
 set -o pipefail
 
@@ -40,7 +41,7 @@ while [ $# -gt 0 ]; do
 	--smp) [ $# -ge 2 ] || die "--smp needs a count"; SMP=$2; shift 2 ;;
 	--quiet) QUIET=1; shift ;;
 	--) shift; break ;;
-	-h|--help) sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+	-h|--help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
 	*) die "unknown option '$1' (see --help)" ;;
 	esac
 done
