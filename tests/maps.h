@@ -1,0 +1,12 @@
+/* The material maps the tests and goldens use, generated (no binary files
+ * in the tree): a scaly relief as a packed detail map and as glTF normal,
+ * occlusion and thickness textures, an egg-crate height map, a colour ramp
+ * and a file that is not an image. */
+#ifndef MK_MAPS_H
+#define MK_MAPS_H
+
+/* Writes detail.png, normal.png, occlusion.png, thickness.png, height.png,
+ * ramp.png and corrupt.png into dir. Returns 0, or 1 after a message. */
+int maps_write(const char *dir);
+
+#endif
