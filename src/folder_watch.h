@@ -1,0 +1,20 @@
+/* Tells the live loop that the matcaps on disk changed, through inotify:
+ * a file written and closed, moved in or out, or deleted. A copy in
+ * progress is not reported until its file is closed, and the loop waits
+ * for a quiet moment before it acts on a burst of them. */
+#ifndef MK_FOLDER_WATCH_H
+#define MK_FOLDER_WATCH_H
+
+#include <stdbool.h>
+
+struct folder_watch;
+
+/* path is a folder (any name in it counts) or a file (its folder is
+ * watched, and only that name counts). Returns NULL after logging. */
+struct folder_watch *folder_watch_new(const char *path);
+void folder_watch_free(struct folder_watch *w);
+int folder_watch_fd(const struct folder_watch *w);
+/* Read what is ready; true when something of interest changed. */
+bool folder_watch_read(struct folder_watch *w);
+
+#endif

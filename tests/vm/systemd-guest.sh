@@ -1,0 +1,100 @@
+#!/bin/sh
+# The guest half of tests/vm/systemd-test.sh, run by vm-systemd-test.service
+# once systemd has started matcap-kiosk.service from its installed unit
+# (the unit is ordered after it, so it runs once READY=1 came, or the start
+# failed). Prints "vm-systemd: ok NAME" or "vm-systemd: not ok NAME" per
+# check on the console, then "vm-systemd: N passed, N failed", and powers
+# the machine off.
+set -u
+unit=matcap-kiosk.service
+passed=0
+failed=0
+
+check() { # NAME COMMAND...
+	name=$1
+	shift
+	if "$@" >/tmp/check.log 2>&1; then
+		passed=$((passed + 1))
+		echo "vm-systemd: ok $name"
+	else
+		failed=$((failed + 1))
+		echo "vm-systemd: not ok $name"
+		sed 's/^/vm-systemd:   /' /tmp/check.log | head -20
+	fi
+}
+prop() { systemctl show -p "$1" --value "$unit"; }
+# until SECONDS COMMAND...: true once COMMAND is.
+until_ok() {
+	end=$(($(date +%s) + $1))
+	shift
+	while ! "$@" >/dev/null 2>&1; do
+		[ "$(date +%s)" -lt "$end" ] || return 1
+		sleep 1
+	done
+}
+shows_scene() { # the CRTC scans out a picture, not a flat console
+	vm-grab -o /run/now.ppm >/run/now.txt 2>&1 &&
+		[ "$(sed -n 's/.*differ=\([0-9]*\).*/\1/p' /run/now.txt)" -gt 10000 ]
+}
+journal_has() { journalctl -b -u "$unit" --no-pager -o cat | grep -q -- "$1"; }
+
+echo "vm-systemd: guest test starts ($(uptime))"
+check "the unit is active after boot (READY=1 came)" [ "$(prop ActiveState)" = active ]
+check "READY=1 was sent after the first frame: $(prop StatusText)" \
+	[ "$(prop StatusText)" = "showing the scene" ]
+check "it runs as the user matcap-kiosk" sh -c \
+	"ps -o user= -p $(prop MainPID) | grep -qx matcap-kiosk"
+check "the scene is on vkms ($(vm-grab 2>&1 | sed -n 's/.*\(differ=[0-9]*\).*/\1/p'))" shows_scene
+check "the journal says the first frame is on the screen" journal_has "first frame is on the screen"
+
+# The watchdog: a stopped process pings no more; systemd kills it after
+# WatchdogSec= and Restart=on-failure starts it again.
+pid=$(prop MainPID)
+restarts=$(prop NRestarts)
+kill -STOP "$pid"
+echo "vm-systemd: SIGSTOP to $pid at $(date +%T); waiting for the watchdog"
+check "the watchdog restarts a stopped kiosk" until_ok 120 sh -c \
+	"[ \$(systemctl show -p NRestarts --value $unit) -gt $restarts ] &&
+	 [ \$(systemctl show -p ActiveState --value $unit) = active ]"
+check "... for a watchdog timeout ($(date +%T))" sh -c \
+	"journalctl -b --no-pager -o cat | grep -q 'matcap-kiosk.service: Watchdog timeout'"
+check "... and it shows the scene again" until_ok 60 shows_scene
+
+# A reload keeps the process and the picture.
+pid=$(prop MainPID)
+sed -i 's/^mode = .*/mode = normal/' /etc/matcap-kiosk/kiosk.ini
+systemctl reload "$unit"
+check "systemctl reload: the new config is read" until_ok 30 journal_has "reload: done"
+check "... by the same process" [ "$(prop MainPID)" = "$pid" ]
+check "... still showing the scene" shows_scene
+
+# A config error stops the kiosk with 78 and is not restarted.
+cp /etc/matcap-kiosk/kiosk.ini /run/kiosk.ini.good
+printf '[kiosk]\nno_such_key = 1\n' >>/etc/matcap-kiosk/kiosk.ini
+systemctl restart "$unit"
+check "a config error: exit status 78, not restarted" until_ok 30 sh -c \
+	"[ \$(systemctl show -p ExecMainStatus --value $unit) = 78 ] &&
+	 [ \$(systemctl show -p ActiveState --value $unit) = failed ]"
+cp /run/kiosk.ini.good /etc/matcap-kiosk/kiosk.ini
+systemctl reset-failed "$unit"
+systemctl start "$unit"
+check "fixed, it starts again" [ "$(prop ActiveState)" = active ]
+
+# Stop: the console's mode and framebuffer come back.
+systemctl stop "$unit"
+vm-grab -o /run/after.ppm >/run/after.txt 2>&1
+# "crtc N fb N WxH FORMAT pitch N modifier M mode NAME differ=N": all but
+# the picture itself, which the console's cursor may have changed.
+before=$(sed 's/ differ=.*//' /run/before.txt)
+after=$(sed 's/ differ=.*//' /run/after.txt)
+echo "vm-systemd: before the kiosk: $before"
+echo "vm-systemd: after the stop:   $after"
+check "systemctl stop: it exits cleanly ($(prop Result), status $(prop ExecMainStatus))" \
+	[ "$(prop Result)" = success ]
+check "... and the display is back to its framebuffer and mode from before the kiosk" \
+	sh -c '[ -n "$1" ] && [ "$1" = "$2" ]' - "$before" "$after"
+
+echo "vm-systemd: --- the kiosk's journal ---"
+journalctl -b -u "$unit" --no-pager -o short-monotonic | tail -40 | sed 's/^/vm-systemd:   /'
+echo "vm-systemd: $passed passed, $failed failed"
+systemctl poweroff --no-block
