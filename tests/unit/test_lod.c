@@ -1,0 +1,384 @@
+/* The level of detail that the display can show (src/lod.c): the error
+ * budget follows the display, the simplified surface stays within it, UV
+ * seams and attributes survive, and the normals' error is measured. */
+#include "lod.h"
+#include "mesh.h"
+#include "render.h"
+#include "tangent.h"
+
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+
+static const float *vec_at(const float *a, uint32_t i, int n)
+{
+	return a + (size_t)i * (size_t)n;
+}
+
+static void sub3(const float *a, const float *b, double out[3])
+{
+	for (int k = 0; k < 3; k++)
+		out[k] = (double)a[k] - (double)b[k];
+}
+
+static double dot3(const double a[3], const double b[3])
+{
+	return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* The point of triangle abc nearest p, as barycentric weights (Ericson,
+ * Real-Time Collision Detection, 5.1.5). */
+static void closest_on_triangle(const float *p, const float *a, const float *b, const float *c,
+				double w[3])
+{
+	double ab[3], ac[3], ap[3], bp[3], cp[3];
+	double d1, d2, d3, d4, d5, d6, va, vb, vc, denom, v, t;
+
+	sub3(b, a, ab), sub3(c, a, ac), sub3(p, a, ap);
+	d1 = dot3(ab, ap), d2 = dot3(ac, ap);
+	w[0] = 1, w[1] = 0, w[2] = 0;
+	if (d1 <= 0 && d2 <= 0)
+		return;
+	sub3(p, b, bp);
+	d3 = dot3(ab, bp), d4 = dot3(ac, bp);
+	if (d3 >= 0 && d4 <= d3) {
+		w[0] = 0, w[1] = 1;
+		return;
+	}
+	vc = d1 * d4 - d3 * d2;
+	if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+		v = d1 / (d1 - d3);
+		w[0] = 1 - v, w[1] = v;
+		return;
+	}
+	sub3(p, c, cp);
+	d5 = dot3(ab, cp), d6 = dot3(ac, cp);
+	if (d6 >= 0 && d5 <= d6) {
+		w[0] = 0, w[2] = 1;
+		return;
+	}
+	vb = d5 * d2 - d1 * d6;
+	if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+		t = d2 / (d2 - d6);
+		w[0] = 1 - t, w[2] = t;
+		return;
+	}
+	va = d3 * d6 - d5 * d4;
+	if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
+		t = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+		w[0] = 0, w[1] = 1 - t, w[2] = t;
+		return;
+	}
+	denom = 1.0 / (va + vb + vc);
+	w[1] = vb * denom, w[2] = vc * denom, w[0] = 1 - w[1] - w[2];
+}
+
+struct surface_error {
+	double distance;   /* the farthest original vertex from the new surface */
+	double normal_max; /* degrees between a vertex's normal and the new surface's there */
+	double normal_mean;
+};
+
+/* Every vertex of the original against the simplified surface (brute
+ * force: the meshes here are small): the distance to it, and the angle
+ * between the vertex's normal and the simplified mesh's interpolated
+ * normal at the nearest point, which is what the shader would use. */
+static struct surface_error measure(const struct mesh *orig, const struct mesh *s)
+{
+	struct surface_error e = {0, 0, 0};
+
+	for (uint32_t v = 0; v < orig->vertex_count; v++) {
+		const float *p = vec_at(orig->positions, v, 3);
+		double best = INFINITY, bw[3] = {1, 0, 0}, n[3] = {0, 0, 0}, len, cosang;
+		uint32_t bt = 0;
+
+		for (uint32_t t = 0; t < s->index_count; t += 3) {
+			const float *a = vec_at(s->positions, s->indices[t], 3);
+			const float *b = vec_at(s->positions, s->indices[t + 1], 3);
+			const float *c = vec_at(s->positions, s->indices[t + 2], 3);
+			double w[3], d2 = 0;
+
+			closest_on_triangle(p, a, b, c, w);
+			for (int k = 0; k < 3; k++) {
+				double q = w[0] * a[k] + w[1] * b[k] + w[2] * c[k] - p[k];
+
+				d2 += q * q;
+			}
+			if (d2 < best)
+				best = d2, bt = t, memcpy(bw, w, sizeof(w));
+		}
+		for (int j = 0; j < 3; j++)
+			for (int k = 0; k < 3; k++)
+				n[k] += bw[j] * vec_at(s->normals, s->indices[bt + j], 3)[k];
+		len = sqrt(dot3(n, n));
+		cosang = (n[0] * orig->normals[v * 3] + n[1] * orig->normals[v * 3 + 1] +
+			  n[2] * orig->normals[v * 3 + 2]) /
+			 len;
+		e.distance = fmax(e.distance, sqrt(best));
+		e.normal_max = fmax(e.normal_max, acos(fmin(cosang, 1.0)) * 180.0 / M_PI);
+		e.normal_mean += acos(fmin(cosang, 1.0)) * 180.0 / M_PI / orig->vertex_count;
+	}
+	return e;
+}
+
+static void copy_mesh(const struct mesh *src, struct mesh *dst)
+{
+	assert_int_equal(mesh_alloc(dst, src->vertex_count, src->index_count, src->uvs != NULL), 0);
+	memcpy(dst->positions, src->positions, src->vertex_count * 12);
+	memcpy(dst->normals, src->normals, src->vertex_count * 12);
+	if (src->uvs)
+		memcpy(dst->uvs, src->uvs, src->vertex_count * 8);
+	if (src->tangents) {
+		assert_int_equal(mesh_alloc_tangents(dst), 0);
+		memcpy(dst->tangents, src->tangents, src->vertex_count * 16);
+	}
+	memcpy(dst->indices, src->indices, src->index_count * 4);
+}
+
+/* The budget is pixels on this display: a larger display keeps more
+ * triangles of the same model (all of them, once its triangles are
+ * larger than the budget), and none is ever added. */
+static void follows_the_display(void **state)
+{
+	static const int sizes[][2] = {
+	    {160, 90}, {320, 240}, {640, 360}, {1280, 720}, {3840, 2160}};
+	uint32_t last = 0;
+	struct mesh knot;
+
+	(void)state;
+	assert_int_equal(mesh_torus_knot(&knot, 256, 32), 0);
+	for (int i = 0; i < 5; i++) {
+		struct mesh m;
+		struct lod_result r;
+		double wanted = lod_triangles_wanted(&knot, 2.0, sizes[i][0], sizes[i][1]);
+
+		copy_mesh(&knot, &m);
+		assert_int_equal(lod_prepare_mesh(&m, 2.0, sizes[i][0], sizes[i][1], &r), 0);
+		print_message("%dx%d: %u of %u triangles (%.0f wanted), %.2f px\n", sizes[i][0],
+			      sizes[i][1], r.triangles_after, r.triangles_before, wanted,
+			      r.error_pixels);
+		assert_true(r.triangles_after >= last && r.triangles_after <= r.triangles_before);
+		assert_true(r.error_pixels <= 2.0);
+		/* Down to what is wanted, unless the error stops it first. */
+		if (wanted >= r.triangles_before)
+			assert_int_equal(r.triangles_after, r.triangles_before);
+		else
+			assert_true(r.triangles_after >= 0.9 * wanted);
+		last = r.triangles_after;
+		mesh_release(&m);
+	}
+	assert_true(last == knot.index_count / 3);
+	/* 1 px at 1280x720 is this many model units (render.c's camera). */
+	assert_true(fabs(lod_model_error(1.0, 1280, 720) * render_pixels_per_unit(1280, 720) -
+			 1.0) < 1e-12);
+	/* Triangles of 1 px: a unit sphere (area 4 pi) at 1280x720 wants
+	 * 4 pi ppu^2 / 2 of them. */
+	{
+		struct mesh s;
+		double ppu = render_pixels_per_unit(1280, 720);
+
+		assert_int_equal(mesh_uv_sphere(&s, 256, 128), 0);
+		assert_true(fabs(lod_triangles_wanted(&s, 1.0, 1280, 720) / (2 * M_PI * ppu * ppu) -
+				 1.0) < 1e-3);
+		mesh_release(&s);
+	}
+	mesh_release(&knot);
+}
+
+/* The simplified knot stays near the original: every original vertex
+ * within 1.8 times the budget of the new surface (meshoptimizer's error
+ * is an estimate), and the new surface's interpolated normal there, what
+ * shading sees, within 2 degrees per pixel of budget on average and 15 at
+ * most (measured at 160x90: 1.9 mean and 21 max at 2 px, 7.0 and 49 at 4
+ * px; none simplified at 0.5 and 1, whose triangles are already larger).
+ * The bench measures what that does to the image. */
+static void surface_and_normals_within_bounds(void **state)
+{
+	static const double budgets[] = {0.5, 1.0, 2.0, 4.0};
+	struct mesh knot;
+
+	(void)state;
+	assert_int_equal(mesh_torus_knot(&knot, 128, 16), 0);
+	for (int i = 0; i < 4; i++) {
+		struct mesh m;
+		struct lod_result r;
+		struct surface_error e;
+		double unit = lod_model_error(1.0, 160, 90);
+
+		copy_mesh(&knot, &m);
+		assert_int_equal(lod_prepare_mesh(&m, budgets[i], 160, 90, &r), 0);
+		e = measure(&knot, &m);
+		print_message("%.1f px at 160x90: %u of %u triangles, farthest vertex %.2f px, "
+			      "normals %.1f deg mean, %.1f max\n",
+			      budgets[i], r.triangles_after, r.triangles_before, e.distance / unit,
+			      e.normal_mean, e.normal_max);
+		assert_true(e.distance <= 1.8 * budgets[i] * unit);
+		assert_true(e.normal_mean <= 2.0 * budgets[i]);
+		assert_true(e.normal_max <= 15.0 * budgets[i]);
+		mesh_release(&m);
+	}
+	mesh_release(&knot);
+}
+
+/* By value: the poles' -0.0 and 0.0 are one point. */
+static bool same_point(const float *a, const float *b)
+{
+	return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+}
+
+/* A UV sphere with tangents: its seam column repeats column 0 with u = 1
+ * instead of 0. After simplification no triangle spans the seam (|du| <
+ * 0.5), the surface is still closed (every edge, by position, has two
+ * triangles), triangles face out, and every vertex is an original one,
+ * attributes and all. */
+static void keeps_seams_and_attributes(void **state)
+{
+	struct mesh sphere, m;
+	struct lod_result r;
+
+	(void)state;
+	assert_int_equal(mesh_uv_sphere(&sphere, 64, 32), 0);
+	assert_int_equal(tangent_generate(&sphere), 0);
+	copy_mesh(&sphere, &m);
+	assert_int_equal(lod_prepare_mesh(&m, 4.0, 160, 90, &r), 0);
+	assert_true(r.triangles_after < r.triangles_before / 2);
+	for (uint32_t t = 0; t < m.index_count; t += 3) {
+		const float *p[3], *uv[3];
+		double e1[3], e2[3], fn[3], centre[3];
+
+		for (int j = 0; j < 3; j++) {
+			p[j] = vec_at(m.positions, m.indices[t + j], 3);
+			uv[j] = vec_at(m.uvs, m.indices[t + j], 2);
+		}
+		for (int j = 0; j < 3; j++)
+			assert_true(fabs(uv[j][0] - uv[(j + 1) % 3][0]) < 0.5);
+		sub3(p[1], p[0], e1), sub3(p[2], p[0], e2);
+		fn[0] = e1[1] * e2[2] - e1[2] * e2[1];
+		fn[1] = e1[2] * e2[0] - e1[0] * e2[2];
+		fn[2] = e1[0] * e2[1] - e1[1] * e2[0];
+		for (int k = 0; k < 3; k++)
+			centre[k] = p[0][k] + p[1][k] + p[2][k];
+		/* Out, or edge-on: meshoptimizer may fold a triangle into the
+		 * seam's plane (its normal at 90 degrees); the surface stays
+		 * closed, and shading reads the vertex normals. */
+		assert_true(dot3(fn, centre) >= 0.0);
+	}
+	/* Closed: each directed edge (by position) has its reverse. */
+	for (uint32_t t = 0; t < m.index_count; t++) {
+		const float *a = vec_at(m.positions, m.indices[t], 3);
+		const float *b = vec_at(m.positions, m.indices[t - t % 3 + (t + 1) % 3], 3);
+		int found = 0;
+
+		if (same_point(a, b))
+			continue; /* collapsed to a point at a pole */
+		for (uint32_t u = 0; u < m.index_count && !found; u++) {
+			const float *c = vec_at(m.positions, m.indices[u], 3);
+			const float *d = vec_at(m.positions, m.indices[u - u % 3 + (u + 1) % 3], 3);
+
+			found = same_point(c, b) && same_point(d, a);
+		}
+		assert_true(found);
+	}
+	for (uint32_t v = 0; v < m.vertex_count; v++) {
+		int found = 0;
+
+		for (uint32_t o = 0; o < sphere.vertex_count && !found; o++)
+			found = memcmp(vec_at(m.positions, v, 3), vec_at(sphere.positions, o, 3),
+				       12) == 0 &&
+				memcmp(vec_at(m.normals, v, 3), vec_at(sphere.normals, o, 3), 12) ==
+				    0 &&
+				memcmp(vec_at(m.uvs, v, 2), vec_at(sphere.uvs, o, 2), 8) == 0 &&
+				memcmp(vec_at(m.tangents, v, 4), vec_at(sphere.tangents, o, 4),
+				       16) == 0;
+		assert_true(found);
+	}
+	mesh_release(&m);
+	mesh_release(&sphere);
+}
+
+static int compare_triangle(const void *a, const void *b)
+{
+	return memcmp(a, b, 36);
+}
+
+/* Each triangle as its three positions, starting from the smallest, so
+ * that a reordered mesh compares equal. */
+static float *canonical_triangles(const struct mesh *m)
+{
+	uint32_t n = m->index_count / 3;
+	float *tri = malloc((size_t)n * 36 + 1);
+
+	for (uint32_t t = 0; t < n; t++) {
+		int first = 0;
+
+		for (int j = 1; j < 3; j++)
+			if (memcmp(vec_at(m->positions, m->indices[t * 3 + j], 3),
+				   vec_at(m->positions, m->indices[t * 3 + first], 3), 12) < 0)
+				first = j;
+		for (int j = 0; j < 3; j++)
+			memcpy(tri + t * 9 + j * 3,
+			       vec_at(m->positions, m->indices[t * 3 + (first + j) % 3], 3), 12);
+	}
+	qsort(tri, n, 36, compare_triangle);
+	return tri;
+}
+
+/* 0 px: nothing is simplified, only reordered for the GPU. */
+static void zero_budget_only_reorders(void **state)
+{
+	struct mesh knot, m;
+	float *a, *b;
+
+	(void)state;
+	assert_int_equal(mesh_torus_knot(&knot, 64, 8), 0);
+	copy_mesh(&knot, &m);
+	assert_int_equal(lod_prepare_mesh(&m, 0.0, 1280, 720, NULL), 0);
+	assert_int_equal(m.index_count, knot.index_count);
+	a = canonical_triangles(&knot);
+	b = canonical_triangles(&m);
+	assert_memory_equal(a, b, (size_t)knot.index_count * 12);
+	free(a);
+	free(b);
+	mesh_release(&m);
+	mesh_release(&knot);
+}
+
+/* No triangles, one triangle, every vertex at one point: no failure. */
+static void degenerate_meshes(void **state)
+{
+	struct mesh m;
+
+	(void)state;
+	assert_int_equal(mesh_alloc(&m, 0, 0, false), 0);
+	assert_int_equal(lod_prepare_mesh(&m, 1.0, 640, 480, NULL), 0);
+	assert_int_equal(m.index_count, 0);
+	mesh_release(&m);
+	for (int same = 0; same < 2; same++) {
+		assert_int_equal(mesh_alloc(&m, 3, 3, false), 0);
+		for (int k = 0; k < 9; k++)
+			m.positions[k] = same ? 0.5f : (float)(k % 4 == 0),
+			m.normals[k] = k % 3 == 2;
+		for (uint32_t i = 0; i < 3; i++)
+			m.indices[i] = i;
+		assert_int_equal(lod_prepare_mesh(&m, 4.0, 640, 480, NULL), 0);
+		for (uint32_t i = 0; i < m.index_count; i++)
+			assert_true(m.indices[i] < m.vertex_count);
+		mesh_release(&m);
+	}
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+	    cmocka_unit_test(follows_the_display),
+	    cmocka_unit_test(surface_and_normals_within_bounds),
+	    cmocka_unit_test(keeps_seams_and_attributes),
+	    cmocka_unit_test(zero_budget_only_reorders),
+	    cmocka_unit_test(degenerate_meshes),
+	};
+	return cmocka_run_group_tests_name("lod", tests, NULL, NULL);
+}
