@@ -231,6 +231,9 @@ if [ ! -e "$BASE" ]; then
 		$(pkg-config --cflags --libs libdrm zlib) || die "vm-grab did not build"
 	copy_deps "$R" "$R/usr/bin/vm-grab"
 	gcc-12 -std=c11 -O2 -Wall -Wextra -Werror -o "$R/usr/bin/vm-key" "$HERE/tools/vm-key.c" || die "vm-key did not build"
+	# vm-hold: a known picture on the display, with or without DRM master.
+	gcc-12 -std=c11 -O2 -Wall -Wextra -Werror -o "$R/usr/bin/vm-hold" "$HERE/tools/vm-hold.c" \
+		$(pkg-config --cflags --libs libdrm) || die "vm-hold did not build"
 	mkdir -p "$R/usr/lib/vm"
 	gcc-12 -std=c11 -O2 -Wall -Wextra -Werror -shared -fPIC -o "$R/usr/lib/vm/libgbm-linear.so" \
 		"$HERE/tools/gbm-linear.c" $(pkg-config --cflags libdrm gbm) -ldl || die "gbm-linear did not build"

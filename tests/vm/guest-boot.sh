@@ -37,7 +37,10 @@ if [ "$VM_HAVE_SHARE" = 1 ]; then
 fi
 
 # libcamera 0.0.3 only lists devices that udev has initialised.
-/usr/lib/systemd/systemd-udevd --daemon --resolve-names=never 2>/dev/null ||
+# Names resolved early, so the rules' GROUP="video" etc. apply (the
+# initramfs has Debian's system groups): /dev/dri/card0 is root:video 0660
+# as on a real Debian system, and permission tests mean something.
+/usr/lib/systemd/systemd-udevd --daemon --resolve-names=early 2>/dev/null ||
 	say "warning: systemd-udevd did not start"
 udevadm trigger --type=subsystems --action=add
 udevadm trigger --type=devices --action=add

@@ -12,6 +12,11 @@
 #                   --share, else tests/vm/cache/last-console.log)
 #   --quiet         do not copy the console to stdout while it runs
 #   --mem MB, --smp N   guest memory (2048) and CPUs (2)
+#   VM_CPU=MODEL    qemu's -cpu (default: max without AVX, which QEMU 7.2's
+#                   TCG emulates wrongly and slowly: an AVX2 gather whose
+#                   index is xmm4/ymm4 loads every lane from the base address,
+#                   which turned llvmpipe's texturing into noise, and 8-wide
+#                   llvmpipe runs ~15x slower than its SSE4.1 path)
 #
 # In the guest: /repo is this repository (read-only), /share the --share dir,
 # /vm/guest-lib.sh the helper functions ($VM_LIB).  Drivers are loaded (vkms
@@ -30,7 +35,7 @@ say() { printf '[vm-run] %s\n' "$*" >&2; }
 die() { printf '[vm-run] error: %s\n' "$*" >&2; exit 125; }
 
 BUILD_ARGS=() SHARE="" LOG="" QUIET=0
-TIMEOUT=${VM_TIMEOUT:-300} MEM=${VM_MEM:-2048} SMP=${VM_SMP:-2}
+TIMEOUT=${VM_TIMEOUT:-300} MEM=${VM_MEM:-2048} SMP=${VM_SMP:-2} CPU=${VM_CPU:-max,-avx,-avx2,-fma,-f16c,-vaes,-vpclmulqdq}
 while [ $# -gt 0 ]; do
 	case $1 in
 	--bin) [ $# -ge 2 ] || die "--bin needs a path"; BUILD_ARGS+=(--bin "$2"); shift 2 ;;
@@ -41,7 +46,7 @@ while [ $# -gt 0 ]; do
 	--smp) [ $# -ge 2 ] || die "--smp needs a count"; SMP=$2; shift 2 ;;
 	--quiet) QUIET=1; shift ;;
 	--) shift; break ;;
-	-h|--help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+	-h|--help) sed -n '2,25p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
 	*) die "unknown option '$1' (see --help)" ;;
 	esac
 done
@@ -90,7 +95,7 @@ HOST_LIMIT=$((TIMEOUT + ${VM_BOOT_LIMIT:-120}))
 say "booting ($(basename "$KERNEL"), TCG, ${SMP} cpu, ${MEM} MB); console: $LOG"
 t0=$(date +%s%N)
 timeout -k 5 "$HOST_LIMIT" qemu-system-x86_64 \
-	-accel tcg,thread=multi -cpu max -smp "$SMP" -m "$MEM" \
+	-accel tcg,thread=multi -cpu "$CPU" -smp "$SMP" -m "$MEM" \
 	-nodefaults -no-user-config -display none -no-reboot \
 	-kernel "$KERNEL" -initrd "$INITRD" \
 	-append "console=ttyS0 loglevel=3 panic=-1 mitigations=off" \

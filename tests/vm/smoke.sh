@@ -83,6 +83,10 @@ mkfifo /tmp/kmscube.in
 LD_PRELOAD=/usr/lib/vm/libgbm-linear.so timeout 90 kmscube -D /dev/dri/card0 -c 60 \
 	<>/tmp/kmscube.in >kmscube.log 2>&1 &
 kc=$!
+# vm-grab lets go of DRM master at once, but kmscube must be the one that
+# opens the display first: no readback until the kernel lists it as master.
+wait_until 60 awk '$1 == "kmscube" && $4 == "y" { found = 1 } END { exit !found }' \
+	/sys/kernel/debug/dri/0/clients
 # Wait until kmscube's framebuffer is on the CRTC with a cube drawn in it (its
 # first frame is a blank buffer, and the first draw compiles the shaders),
 # then save what the CRTC shows.

@@ -7,6 +7,8 @@
 #   make vm-test     run every guest script in VM_TESTS, each in a fresh boot,
 #                    with VM_BINS on the guest's PATH; outputs per script in
 #                    $(VM_OUT)/<script name>/
+#   make vm-e2e      the display tests (tests/e2e/kms*.sh) as `make test` runs
+#                    them, with their references (tests/e2e/host.sh)
 #   make vm-clean    drop the cache (next build downloads and rebuilds)
 #
 # Knobs: VM_TESTS (guest scripts), VM_BINS (host binaries to carry in),
@@ -45,3 +47,11 @@ vm-test:
 
 vm-clean:
 	rm -rf $(VM_CACHE)
+
+# The display end to end (tests/e2e/kms*.sh, as `make test` runs them): the
+# real kiosk on vkms against OSMesa references rendered here; each
+# script's frames and logs in tests/out/e2e/<script>/.
+vm-e2e: $(KIOSK) $(TOOLS_DIR)/imgdiff
+	KIOSK=./$(KIOSK) IMGDIFF=$(TOOLS_DIR)/imgdiff sh tests/e2e/host.sh tests/out/e2e
+
+.PHONY: vm-e2e

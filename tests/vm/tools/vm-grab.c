@@ -6,7 +6,8 @@
  *       and write it as PNG or binary PPM (by the name's ending).  Prints one
  *       line: crtc, fb id, size, format, modifier, mode, and "differ=N", the
  *       number of pixels unlike the top-left one (0: a flat screen).  Needs
- *       root (CAP_SYS_ADMIN), not DRM master.
+ *       root (CAP_SYS_ADMIN), not DRM master; the master the kernel hands
+ *       to the first opener of an unheld display is dropped at once.
  *
  *   vm-grab -w [-D /dev/dri/card0] [-o OUT.png|OUT.ppm]
  *       Writeback self-test: become master, put a test pattern on the
@@ -450,6 +451,11 @@ int main(int argc, char **argv)
 		fprintf(stderr, "vm-grab: %s: %s\n", dev, strerror(errno));
 		return 1;
 	}
+	/* The first to open a primary node with no master becomes master: a
+	 * readback must not be, or a program starting now could not set its
+	 * mode ("failed to set mode: Permission denied").  Let go at once. */
+	if (!wb && drmIsMaster(fd))
+		drmDropMaster(fd);
 	int ret = wb ? writeback_test(fd, out) : grab(fd, crtc_id, out);
 	close(fd);
 	return ret;

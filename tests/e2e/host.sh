@@ -1,0 +1,58 @@
+#!/bin/sh
+# End-to-end tests on the virtual board (tests/vm): renders the OSMesa
+# references on this machine, boots the board once per guest script with
+# the kiosk and imgdiff on its PATH, and prints one "ok NAME" or
+# "not ok NAME" line per check the guest made (tests/run.sh counts them),
+# then "ok every script ran" when every script reported its totals; what
+# explains a script that stopped goes to stderr.
+#
+#   KIOSK=./matcap-kiosk IMGDIFF=build/tools/imgdiff tests/e2e/host.sh OUTDIR [SCRIPT]...
+#
+# Default scripts: tests/e2e/kms.sh, kms-hotplug.sh and kms-busy.sh.  Each
+# script's files (frames read back from the display, the kiosk's logs,
+# console.log) are in OUTDIR/<script name>/, its references in ref/ there
+# (/share/ref in the guest).  E2E_BINS (more host binaries for the guest's
+# PATH), VM_TIMEOUT (seconds per script, default 240) and VM_RUN_FLAGS
+# (extra tests/vm/run.sh options) are passed on.
+set -u
+out=$1
+shift
+[ $# -gt 0 ] || set -- tests/e2e/kms.sh tests/e2e/kms-hotplug.sh tests/e2e/kms-busy.sh
+kiosk=${KIOSK:-./matcap-kiosk}
+imgdiff=${IMGDIFF:-build/tools/imgdiff}
+mkdir -p "$out/ref"
+
+# The references: the scene of tests/e2e/lib.sh at the sizes vkms runs.
+ref() { # NAME SIZE [ARGS]...
+	name=$1 size=$2
+	shift 2
+	$kiosk -q --backend osmesa --size "$size" --matcap matcaps/gold.png --lod-pixels 0 "$@" \
+		--output "$out/ref/$name.png" || echo "not ok reference $name rendered"
+}
+ref knot-1024x768 1024x768
+ref knot-1024x768-rot90 1024x768 --rotate 90
+ref knot-800x600 800x600
+
+complete=1
+for script in "$@"; do
+	name=$(basename "$script" .sh)
+	share=$out/$name
+	rm -rf "$share"
+	mkdir -p "$share"
+	cp -r "$out/ref" "$share/ref"
+	bins="--bin $kiosk --bin $imgdiff"
+	for b in ${E2E_BINS:-}; do bins="$bins --bin $b"; done
+	# shellcheck disable=SC2086
+	tests/vm/run.sh --quiet --timeout "${VM_TIMEOUT:-240}" $bins --share "$share" \
+		${VM_RUN_FLAGS:-} -- "$script" >"$share/run.log" 2>&1
+	rc=$?
+	# The guest's check lines: "ok   - NAME" and "FAIL - NAME".
+	sed -n -e "s/^ok   - \(.*\)/ok $name: \1/p" -e "s/^FAIL - \(.*\)/not ok $name: \1/p" \
+		"$share/console.log" 2>/dev/null
+	if ! grep -q '^vm: [0-9]* passed, [0-9]* failed' "$share/console.log" 2>/dev/null; then
+		echo "not ok $name: the script ran to its end (exit $rc; see $share/console.log)"
+		{ tail -15 "$share/run.log"; tail -25 "$share/console.log"; } >&2
+		complete=0
+	fi
+done
+[ "$complete" = 1 ] && echo "ok every script ran"

@@ -1,0 +1,105 @@
+#!/bin/sh
+# Guest script (tests/vm/run.sh, driven by tests/e2e/host.sh): the real
+# matcap-kiosk --backend kms on vkms.  Discovery and the preferred mode,
+# atomic and legacy, what the display scans out against the OSMesa
+# reference (a readback of the CRTC's framebuffer: vkms 6.1 cannot drive
+# Virtual-1 and Writeback-1 from one CRTC, see tests/vm/README.md), at
+# least 30 page flips, rotation, a chosen mode, the screen given back as
+# it was after SIGTERM and SIGINT, and the errors for a connector or mode
+# that does not exist.  Ends with "vm: N passed, N failed".
+set -u
+. /repo/tests/e2e/lib.sh
+
+vm_check "vkms is /dev/dri/card0" test "$(drm_card)" = /dev/dri/card0
+# A known picture first: what the kiosk must give back when it exits.
+hold_start -m 800x600
+vm_check "vm-hold shows colour bars at 800x600 (fb ${HOLD_FB:-none})" restored
+vm-grab -o before.png >/dev/null
+
+# ---- auto: discovery, the preferred mode, atomic; SIGTERM
+kiosk_start atomic.log --log-level debug
+grab_when_shown atomic.log atomic.png "$HOLD_FB"
+vm_check "finds vkms, sets Virtual-1 1024x768@60 with atomic modesetting" \
+	has atomic.log "kms: Virtual-1 1024x768@60, atomic modesetting"
+vm_check "the EGL surface has a depth buffer" has atomic.log "bit depth buffer"
+vm_check "what the display scans out matches the OSMesa reference" \
+	matches "$REF/knot-1024x768.png" atomic.png
+kiosk_stop TERM
+vm_check "SIGTERM: exit status 0 (got $KRC)" test "$KRC" = 0
+vm_check "SIGTERM: the CRTC shows vm-hold's framebuffer at 800x600 again" restored
+vm-grab -o after-term.png >/dev/null
+vm_check "SIGTERM: and the same picture" cmp before.png after-term.png
+
+# ---- attract mode: a frame per vblank at most, counted at exit; SIGINT
+# A background job of a script ignores SIGINT, so the kiosk runs in the
+# foreground and a background job interrupts it after 25 s: llvmpipe under
+# TCG draws 640x480 at 3 to 5 frames a second here, so twice the time 30
+# flips take on a loaded machine.
+(
+	wait_log 90 attract.log "ready: the first frame is on the screen"
+	sleep "${ATTRACT_SECONDS:-25}"
+	kill -INT "$(cat /tmp/kiosk.pid)"
+) &
+helper=$!
+sh -c 'echo $$ >/tmp/kiosk.pid; exec matcap-kiosk --backend kms "$@"' sh $KIOSK_SCENE \
+	--display-mode 640x480 --attract-after 0.1 --attract-speed 45 >attract.log 2>&1
+KRC=$?
+wait "$helper"
+flips=$(number attract.log 's/.*kms: \([0-9]*\) page flips.*/\1/p')
+drawn=$(number attract.log 's/.* \([0-9]*\) frames drawn.*/\1/p')
+rate=$(sed -n 's/.*page flips in .* (\([0-9.]*\) per second).*/\1/p' attract.log)
+echo "attract mode: $flips page flips, $drawn frames drawn, ${rate:-?} per second"
+vm_check "SIGINT: exit status 0 (got $KRC)" test "$KRC" = 0
+vm_check "SIGINT: logged as an interrupt" has attract.log "Interrupt: shutting down"
+vm_check "at least 30 page flips completed ($flips)" test "$flips" -ge 30
+vm_check "every frame drawn reached the screen by a flip ($drawn drawn)" test "$drawn" = "$flips"
+vm_check "no faster than the 60 Hz vblank (${rate:-?}/s)" \
+	awk -v r="${rate:-0}" 'BEGIN { exit !(r > 0 && r <= 61) }'
+vm_check "SIGINT: the CRTC shows vm-hold's framebuffer at 800x600 again" restored
+
+# ---- rotation 90, atomic asked for by name
+kiosk_start rot90.log --rotate 90 --kms-api atomic
+grab_when_shown rot90.log rot90.png "$HOLD_FB"
+vm_check "kms_api = atomic: atomic modesetting" has rot90.log "atomic modesetting"
+vm_check "rotation 90: matches the OSMesa reference turned for the panel" \
+	matches "$REF/knot-1024x768-rot90.png" rot90.png
+kiosk_stop TERM
+
+# ---- legacy, on a named device; a chosen mode on a named connector
+kiosk_start legacy.log --kms-api legacy --device /dev/dri/card0
+grab_when_shown legacy.log legacy.png "$HOLD_FB"
+vm_check "kms_api = legacy: legacy modesetting (SetCrtc + PageFlip)" \
+	has legacy.log "kms: Virtual-1 1024x768@60, legacy modesetting"
+vm_check "legacy: the frame matches the OSMesa reference" \
+	matches "$REF/knot-1024x768.png" legacy.png
+kiosk_stop TERM
+vm_check "legacy: exit 0 and the previous mode and framebuffer are back" \
+	sh -c "[ $KRC = 0 ] && [ \"\$(vm-grab | sed -n 's/.* fb \([0-9]*\) .*mode \([^ ]*\) .*/\1 \2/p')\" = '$HOLD_FB $HOLD_MODE' ]"
+
+kiosk_start mode.log --connector Virtual-1 --display-mode 800x600@60
+grab_when_shown mode.log mode.png "$HOLD_FB"
+vm_check "--display-mode 800x600@60 on Virtual-1" has mode.log "kms: Virtual-1 800x600@60"
+vm_check "the CRTC runs 800x600 with the kiosk's frame" \
+	sh -c "[ \"\$(vm-grab | sed -n 's/.* mode \([^ ]*\) differ.*/\1/p')\" = 800x600 ]"
+vm_check "800x600: matches the OSMesa reference" matches "$REF/knot-800x600.png" mode.png
+kiosk_stop TERM
+
+# ---- settings that name what does not exist: one clear error, exit 1
+matcap-kiosk --backend kms $KIOSK_SCENE --connector HDMI-A-1 >connector.log 2>&1
+KRC=$?
+show connector.log
+vm_check "a wrong connector: exit 1 (got $KRC)" test "$KRC" = 1
+vm_check "a wrong connector: the error lists the real ones" has connector.log \
+	"connector HDMI-A-1 does not exist on /dev/dri/card0; the connectors are: Virtual-1 (connected)"
+matcap-kiosk --backend kms $KIOSK_SCENE --display-mode 1234x567 >mode-bad.log 2>&1
+KRC=$?
+show mode-bad.log
+vm_check "a wrong mode: exit 1 (got $KRC)" test "$KRC" = 1
+vm_check "a wrong mode: the error lists the real ones" has mode-bad.log \
+	"Virtual-1: there is no mode 1234x567; the modes are: .*1024x768@60"
+vm_check "after the failed starts the screen is untouched" restored
+hold_stop
+
+dmesg >kernel.log
+vm_check "no kernel warning, BUG or oops" sh -c '! grep -Eq "WARNING:|BUG:|Oops|Call Trace" kernel.log'
+vm_summary
