@@ -11,6 +11,12 @@ BINDIR     ?= $(PREFIX)/bin
 DATADIR    ?= $(PREFIX)/share/matcap-kiosk
 SYSCONFDIR ?= /etc
 DESTDIR    ?=
+# systemd and udev search these under /usr/local as under /usr. A package
+# for /usr may take the unit folder from systemd itself:
+#   make install PREFIX=/usr SYSTEMD_UNITDIR=$(pkg-config --variable=systemdsystemunitdir systemd)
+SYSTEMD_UNITDIR ?= $(PREFIX)/lib/systemd/system
+SYSUSERSDIR     ?= $(PREFIX)/lib/sysusers.d
+UDEVRULESDIR    ?= $(PREFIX)/lib/udev/rules.d
 
 CC      ?= cc
 CXX     ?= c++
@@ -20,7 +26,8 @@ BUILD   ?= build
 # libOSMesa is opened with dlopen and libGLESv2 is never linked: every gl*
 # call goes through the table in src/gl.c (see DESIGN.md). Their headers
 # are still found through pkg-config.
-PKGS_LINK    := egl libpng libturbojpeg tinygltf inih
+PKGS_LINK    := egl gbm libdrm libudev libpng libturbojpeg tinygltf inih libsystemd libgpiod libevdev \
+		libcamera
 PKGS_HEADERS := osmesa glesv2
 
 PKG_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(PKGS_LINK) $(PKGS_HEADERS))
@@ -33,13 +40,25 @@ CXXFLAGS  ?=
 ALL_CFLAGS   = -std=c11 -D_GNU_SOURCE $(OPT) $(WARN) -Isrc -I$(BUILD) $(PKG_CFLAGS) \
 	       -DMK_VERSION='"$(VERSION)"' -DMK_MATCAP_DIR='"$(DATADIR)/matcaps"' $(CFLAGS)
 ALL_CXXFLAGS = -std=c++17 $(OPT) $(WARN) -Isrc $(PKG_CFLAGS) $(CXXFLAGS)
-LDLIBS    = $(PKG_LIBS) -ldl -lm
+# meshoptimizer (Debian's 0.18) ships no .pc file; it is C++, and the link
+# already brings libstdc++.
+LDLIBS    = $(PKG_LIBS) -lmeshoptimizer -ldl -lm
 
 # The program's sources, minus main.c: tests link the same objects.
-LIB_C  := app bake display display_egl display_osmesa egl_util gl image kiosk log math3d matcap_set \
-	  mesh mesh_gen options render shader shading
+LIB_C  := app bake button display display_egl display_kms display_osmesa drm drm_atomic drm_legacy \
+	  egl_util folder_watch gl gpio hotplug image keyboard kiosk kms_fb log math3d matcap_set \
+	  mesh mesh_gen options reload render scene service shader shading
 LIB_CC := gltf
-SHADERS := shaders/mapping.glsl shaders/matcap.vert shaders/matcap.frag
+# The optional shading features (issue 6).
+LIB_C  += material subdivide tangent texture
+LIB_CC += gltf_material
+# The shader math mirrored in C, and only what a scene needs (issue 7).
+LIB_C  += fp16 lod shading_double shading_float
+# The live camera as a matcap (issue 5).
+LIB_C  += camera_feed camera_link camera_math camera_proto camera_texture
+LIB_CC += camera
+SHADERS := shaders/mapping.glsl shaders/matcap.vert shaders/matcap.frag shaders/material.glsl
+SHADERS += shaders/camera.vert shaders/camera.frag
 
 LIB_OBJS := $(LIB_C:%=$(BUILD)/%.o) $(LIB_CC:%=$(BUILD)/%.o) $(BUILD)/shaders_embedded.o
 
@@ -82,7 +101,11 @@ include tests/tests.mk
 
 DEBIAN_PACKAGES := make gcc g++ pkg-config libegl-dev libgles-dev libosmesa6-dev libosmesa6 \
 	libegl-mesa0 libgl1-mesa-dri libgbm-dev libdrm-dev libtinygltf-dev nlohmann-json3-dev \
-	libpng-dev libturbojpeg0-dev libcmocka-dev libinih-dev
+	libpng-dev libturbojpeg0-dev libcmocka-dev libinih-dev libudev-dev libsystemd-dev \
+	libgpiod-dev libevdev-dev libcamera-dev libcamera-ipa \
+	systemd clang-14 libclang-rt-14-dev valgrind libmeshoptimizer-dev gnuplot-nox \
+	qemu-system-x86 busybox-static lz4 cpio kmod udev xz-utils kmscube libdrm-tests \
+	libcamera-tools gpiod v4l-utils
 
 deps:
 	apt-get update -qq
@@ -97,10 +120,22 @@ install: matcap-kiosk
 	# An edited config survives a reinstall.
 	test -e $(DESTDIR)$(SYSCONFDIR)/matcap-kiosk/kiosk.ini || \
 		install -D -m 0644 config/kiosk.ini $(DESTDIR)$(SYSCONFDIR)/matcap-kiosk/kiosk.ini
+	# The service, its user and groups, and the GPIO chips for that group.
+	install -d $(DESTDIR)$(SYSTEMD_UNITDIR)
+	sed -e 's|/usr/local/bin/matcap-kiosk|$(BINDIR)/matcap-kiosk|' \
+		-e 's|/etc/matcap-kiosk/|$(SYSCONFDIR)/matcap-kiosk/|' systemd/matcap-kiosk.service \
+		>$(DESTDIR)$(SYSTEMD_UNITDIR)/matcap-kiosk.service
+	chmod 0644 $(DESTDIR)$(SYSTEMD_UNITDIR)/matcap-kiosk.service
+	install -D -m 0644 systemd/matcap-kiosk.sysusers $(DESTDIR)$(SYSUSERSDIR)/matcap-kiosk.conf
+	install -D -m 0644 systemd/60-matcap-kiosk-gpio.rules \
+		$(DESTDIR)$(UDEVRULESDIR)/60-matcap-kiosk-gpio.rules
 
 uninstall:
 	rm -f $(DESTDIR)$(BINDIR)/matcap-kiosk
 	rm -rf $(DESTDIR)$(DATADIR)
+	rm -f $(DESTDIR)$(SYSTEMD_UNITDIR)/matcap-kiosk.service \
+		$(DESTDIR)$(SYSUSERSDIR)/matcap-kiosk.conf \
+		$(DESTDIR)$(UDEVRULESDIR)/60-matcap-kiosk-gpio.rules
 
 format:
 	clang-format -i src/*.c src/*.h src/*.cc matcaps/*.c tests/*.c tests/unit/*.c

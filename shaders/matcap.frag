@@ -1,28 +1,87 @@
-// The matcap lookup. The default float precision (mediump unless the build
-// asks otherwise) is set in the header that src/shader.c puts before this.
+// The matcap lookup, and the optional layers over it. The default float
+// precision (mediump unless the build asks otherwise) is set in the header
+// that src/shader.c puts before this.
 
 #ifdef MODE_SEM_VERTEX
-varying vec2 v_uv;
+varying vec2 v_matcap_uv;
 #else
-varying vec3 v_normal;
-varying vec3 v_eye;
+varying SHADE_P vec3 v_normal;
+varying SHADE_P vec3 v_eye;
 #endif
 
 uniform sampler2D u_matcap;
 
+#ifdef DETAIL_MAP
+// highp where the GPU has it: at mediump (10-bit mantissa) a UV in
+// [0.5, 1) moves in steps of 1/2048, half a texel of a 1024 map, and a
+// repeated map's UVs beyond 1 fare worse.
+#ifdef GL_FRAGMENT_PRECISION_HIGH
+varying highp vec2 v_uv;
+#else
+varying vec2 v_uv;
+#endif
+uniform sampler2D u_detail;
+#endif
+#ifdef DETAIL_NORMAL
+varying SHADE_P vec4 v_tangent;
+#endif
+#ifdef IRIDESCENCE
+uniform SHADE_P vec4 u_iridescence; // hue range, hue average, hue shift, opacity
+#ifdef IRIDESCENCE_RAMP
+uniform sampler2D u_ramp;
+#else
+uniform vec2 u_hsv; // saturation, value
+#endif
+#endif
+#ifdef LIT
+uniform SHADE_P vec3 u_light; // unit, in view space: fixed to the camera
+uniform SHADE_P vec3 u_base_color;
+uniform SHADE_P float u_shininess;
+#endif
+
 void main()
 {
+#ifdef DETAIL_MAP
+	vec4 detail = texture2D(u_detail, v_uv);
+#endif
 #if defined(MODE_SEM_VERTEX)
-	vec2 uv = v_uv;
+	vec3 color = texture2D(u_matcap, v_matcap_uv).rgb;
 #else
-	vec3 n = safe_normalize(v_normal);
+	SHADE_P vec3 n = safe_normalize(v_normal);
+	SHADE_P vec3 e = safe_normalize(v_eye);
+#ifdef DETAIL_NORMAL
+	n = detail_normal(n, v_tangent, detail.rg);
+#endif
+#if defined(LIT)
+	vec3 color = lit_blinn_phong(n, e, u_light, u_base_color, u_shininess);
+#else
 #if defined(MODE_NORMAL)
 	vec2 uv = matcap_normal(n);
 #elif defined(MODE_VIEW)
-	vec2 uv = matcap_view(n, safe_normalize(v_eye));
+	vec2 uv = matcap_view(n, e);
 #else
-	vec2 uv = matcap_sem(n, safe_normalize(v_eye));
+	vec2 uv = matcap_sem(n, e);
+#endif
+	vec3 color = texture2D(u_matcap, uv).rgb;
+#endif
+#ifdef IRIDESCENCE
+#ifdef DETAIL_MAP
+	float map_a = detail.a;
+#else
+	float map_a = 1.0;
+#endif
+	SHADE_P float hue = iridescence_hue(dot(n, e), u_iridescence.x, u_iridescence.y, u_iridescence.z,
+				    map_a);
+#ifdef IRIDESCENCE_RAMP
+	vec3 film = texture2D(u_ramp, vec2(fract(hue), 0.5)).rgb;
+#else
+	vec3 film = hsv_to_rgb(hue, u_hsv.x, u_hsv.y);
+#endif
+	color = mix(color, film, u_iridescence.w);
 #endif
 #endif
-	gl_FragColor = vec4(texture2D(u_matcap, uv).rgb, 1.0);
+#ifdef DETAIL_MAP
+	color *= detail.b; // ambient occlusion
+#endif
+	gl_FragColor = vec4(color, 1.0);
 }

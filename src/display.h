@@ -16,6 +16,9 @@ struct display_config {
 	const char *connector; /* KMS: HDMI-A-1, NULL for the first connected */
 	const char *mode;      /* KMS: WxH or WxH@Hz, NULL for the preferred */
 	int samples;	       /* MSAA samples where the backend supports it, 0 off */
+	bool exit_when_busy; /* KMS: exit when another program holds the display */
+	int kms_api;	     /* KMS: 0 auto, 1 atomic, 2 legacy (enum drm_api) */
+	bool quiet;          /* KMS: probing for auto, say nothing when absent */
 };
 
 struct display {
@@ -35,16 +38,22 @@ struct display {
 	int (*read_frame)(struct display *d, struct image *out);
 	/* A descriptor for the main poll loop, or -1 when there is none. */
 	int (*get_fd)(struct display *d);
-	/* Called when get_fd is readable (page flip done, hotplug). */
+	/* Called when get_fd is readable (page flip done, hotplug). Returns
+	 * 1 when everything must be drawn again (a display came back), 0, or
+	 * a negative errno when the display is gone for good. */
 	int (*dispatch)(struct display *d);
 	void (*destroy)(struct display *d);
 };
 
 struct display *display_osmesa_new(const struct display_config *cfg);
 struct display *display_egl_new(const struct display_config *cfg);
+struct display *display_kms_new(const struct display_config *cfg);
 
 /* Shared by the backends: glReadPixels into an image, flipped to rows top first. */
 int display_read_rgba(struct display *d, struct image *out);
+/* For backends with nothing to wait for (the offscreen ones). */
+int display_no_fd(struct display *d);
+int display_no_dispatch(struct display *d);
 
 static inline void display_free(struct display *d)
 {

@@ -134,18 +134,6 @@ static int egl_present(struct display *d)
 	return 0;
 }
 
-static int egl_get_fd(struct display *d)
-{
-	(void)d;
-	return -1;
-}
-
-static int egl_dispatch(struct display *d)
-{
-	(void)d;
-	return 0;
-}
-
 static void egl_destroy(struct display *d)
 {
 	struct display_egl *e = (struct display_egl *)d;
@@ -176,8 +164,8 @@ struct display *display_egl_new(const struct display_config *cfg)
 	e->base.begin_frame = egl_begin_frame;
 	e->base.present = egl_present;
 	e->base.read_frame = display_read_rgba;
-	e->base.get_fd = egl_get_fd;
-	e->base.dispatch = egl_dispatch;
+	e->base.get_fd = display_no_fd;
+	e->base.dispatch = display_no_dispatch;
 	e->base.destroy = egl_destroy;
 	e->ctx = EGL_NO_CONTEXT;
 	e->dpy = egl_open_headless();

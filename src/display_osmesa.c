@@ -56,18 +56,6 @@ static int osmesa_present(struct display *d)
 	return 0;
 }
 
-static int osmesa_get_fd(struct display *d)
-{
-	(void)d;
-	return -1;
-}
-
-static int osmesa_dispatch(struct display *d)
-{
-	(void)d;
-	return 0;
-}
-
 static void osmesa_destroy(struct display *d)
 {
 	struct display_osmesa *o = (struct display_osmesa *)d;
@@ -131,8 +119,8 @@ struct display *display_osmesa_new(const struct display_config *cfg)
 	o->base.begin_frame = osmesa_begin_frame;
 	o->base.present = osmesa_present;
 	o->base.read_frame = display_read_rgba;
-	o->base.get_fd = osmesa_get_fd;
-	o->base.dispatch = osmesa_dispatch;
+	o->base.get_fd = display_no_fd;
+	o->base.dispatch = display_no_dispatch;
 	o->base.destroy = osmesa_destroy;
 	if (cfg->samples > 0)
 		log_warn("osmesa: no multisampling offscreen, drawing without MSAA");

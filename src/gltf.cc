@@ -3,6 +3,7 @@
 // trusted: indices into arrays, offsets, strides and index values are all
 // checked here before a byte is read.
 #include "gltf.h"
+#include "gltf_material.h"
 #include "log.h"
 
 #include <tiny_gltf.h>
@@ -106,18 +107,10 @@ bool fs_write(std::string *err, const std::string &, const std::vector<unsigned 
 	return false;
 }
 
-// Images are decoded by our own libpng/libjpeg path when a feature needs
-// them, never by the stb copy inside the library.
-bool skip_image(tinygltf::Image *, const int, std::string *, std::string *, int, int,
-		const unsigned char *, int, void *)
-{
-	return true;
-}
-
 // One primitive's vertices and indices, as appended to the builder.
 struct Range {
 	uint32_t first_vertex, vertex_count, first_index, index_count;
-	bool has_normals;
+	bool has_normals, has_tangents;
 };
 
 struct Builder {
@@ -126,9 +119,12 @@ struct Builder {
 	std::vector<double> positions; // world space, before fitting
 	std::vector<float> normals;
 	std::vector<float> uvs;
+	std::vector<float> tangents; // xyzw, kept only when every primitive has them
 	std::vector<uint32_t> indices;
 	std::vector<Range> ranges;
 	bool any_uvs = false;
+	int material = -1; // the first primitive's with one: the model's
+	bool other_materials = false;
 };
 
 typedef double Mat4[16]; // column-major, as glTF stores it
@@ -365,15 +361,32 @@ bool read_indices(Builder &b, const tinygltf::Model &m, const tinygltf::Primitiv
 	return true;
 }
 
+// A tangent is a direction along the surface: it turns with the model
+// matrix itself (not the normal matrix). A mirroring transform flips the
+// bitangent cross(n, t) against the surface, so w flips with it. Length
+// and orthogonality are restored later against the final normals.
+void push_tangent(Builder &b, const View &tan, size_t i, const Mat4 world, double det)
+{
+	double t[3], w = read_component(tan, i, 3);
+	for (int k = 0; k < 3; k++)
+		t[k] = world[k] * read_component(tan, i, 0) +
+		       world[4 + k] * read_component(tan, i, 1) +
+		       world[8 + k] * read_component(tan, i, 2);
+	for (int k = 0; k < 3; k++)
+		b.tangents.push_back(std::isfinite(t[k]) ? (float)t[k] : 0.0f);
+	b.tangents.push_back((w < 0) != (det < 0) ? -1.0f : 1.0f);
+}
+
 bool read_vertices(Builder &b, const tinygltf::Model &m, const tinygltf::Primitive &p,
 		   const Mat4 world, const std::string &what, Range *r)
 {
-	View pos, nrm, uv;
+	View pos, nrm, uv, tan;
 	auto find = [&](const char *key) {
 		auto it = p.attributes.find(key);
 		return it == p.attributes.end() ? -1 : it->second;
 	};
-	int ipos = find("POSITION"), inrm = find("NORMAL"), iuv = find("TEXCOORD_0");
+	int ipos = find("POSITION"), inrm = find("NORMAL"), iuv = find("TEXCOORD_0"),
+	    itan = find("TANGENT");
 	if (ipos < 0)
 		return fail(b, what, "has no POSITION attribute");
 	if (!check_accessor(b, m, ipos, TINYGLTF_TYPE_VEC3, float_only, what + " POSITION", &pos))
@@ -384,13 +397,19 @@ bool read_vertices(Builder &b, const tinygltf::Model &m, const tinygltf::Primiti
 	if (iuv >= 0 &&
 	    !check_accessor(b, m, iuv, TINYGLTF_TYPE_VEC2, uv_types, what + " TEXCOORD_0", &uv))
 		return false;
-	if ((inrm >= 0 && nrm.count != pos.count) || (iuv >= 0 && uv.count != pos.count))
+	if (itan >= 0 &&
+	    !check_accessor(b, m, itan, TINYGLTF_TYPE_VEC4, float_only, what + " TANGENT", &tan))
+		return false;
+	if ((inrm >= 0 && nrm.count != pos.count) || (iuv >= 0 && uv.count != pos.count) ||
+	    (itan >= 0 && tan.count != pos.count))
 		return fail(b, what, "attributes differ in count from POSITION");
 	if (b.positions.size() / 3 + pos.count > 0x7fffffff)
 		return fail(b, what, "too many vertices in the model");
 	double nm[9];
-	bool singular = normal_matrix(world, nm) == 0.0;
+	double det = normal_matrix(world, nm);
+	bool singular = det == 0.0;
 	r->has_normals = inrm >= 0 && !singular;
+	r->has_tangents = itan >= 0 && r->has_normals;
 	for (size_t i = 0; i < pos.count; i++) {
 		double x = read_component(pos, i, 0), y = read_component(pos, i, 1),
 		       z = read_component(pos, i, 2);
@@ -413,6 +432,8 @@ bool read_vertices(Builder &b, const tinygltf::Model &m, const tinygltf::Primiti
 									  : (float)(k == 2));
 		for (int k = 0; k < 2; k++)
 			b.uvs.push_back(iuv >= 0 ? (float)read_component(uv, i, k) : 0.0f);
+		if (r->has_tangents)
+			push_tangent(b, tan, i, world, det);
 	}
 	b.any_uvs |= iuv >= 0;
 	r->vertex_count = (uint32_t)pos.count;
@@ -428,6 +449,10 @@ bool add_primitive(Builder &b, const tinygltf::Model &m, const tinygltf::Primiti
 		return true;
 	}
 	Range r = {};
+	if (p.material >= 0 && b.material < 0)
+		b.material = p.material;
+	else if (p.material != b.material)
+		b.other_materials = true;
 	r.first_vertex = (uint32_t)(b.positions.size() / 3);
 	r.first_index = (uint32_t)b.indices.size();
 	std::vector<uint32_t> idx;
@@ -487,6 +512,16 @@ int finish_mesh(Builder &b, struct mesh *out)
 	std::memcpy(out->indices, b.indices.data(), b.indices.size() * sizeof(uint32_t));
 	if (b.any_uvs)
 		std::memcpy(out->uvs, b.uvs.data(), b.uvs.size() * sizeof(float));
+	bool all_tangents = true;
+	for (const Range &r : b.ranges)
+		all_tangents &= r.has_tangents;
+	if (all_tangents && b.tangents.size() == (size_t)nv * 4) {
+		if (mesh_alloc_tangents(out)) {
+			mesh_release(out);
+			return -ENOMEM;
+		}
+		std::memcpy(out->tangents, b.tangents.data(), b.tangents.size() * sizeof(float));
+	}
 	for (const Range &r : b.ranges)
 		if (!r.has_normals &&
 		    mesh_generate_normals(out->positions, out->indices + r.first_index,
@@ -498,7 +533,8 @@ int finish_mesh(Builder &b, struct mesh *out)
 	return 0;
 }
 
-int build_mesh(const char *name, const tinygltf::Model &m, struct mesh *out)
+int build_mesh(const char *name, const tinygltf::Model &m, unsigned textures,
+	       const GltfImages &images, struct mesh *out)
 {
 	Builder b;
 	b.name = name;
@@ -522,17 +558,23 @@ int build_mesh(const char *name, const tinygltf::Model &m, struct mesh *out)
 	else if (ret == 0)
 		log_info("%s: %u vertices, %u triangles", name, out->vertex_count,
 			 out->index_count / 3);
+	if (ret == 0 && b.other_materials)
+		log_info("%s: primitives differ in material; the first one's is shown", name);
+	if (ret == 0)
+		gltf_read_material(m, b.material, textures, images, name, &out->material);
 	return ret;
 }
 
 int load_memory(const char *name, const uint8_t *data, size_t size, const char *dir,
-		struct mesh *out)
+		unsigned textures, struct mesh *out)
 {
 	tinygltf::TinyGLTF loader;
 	tinygltf::Model model;
 	std::string err, warn;
 	Context ctx;
+	GltfImages images;
 	ctx.dir = dir ? dir : "";
+	images.keep = textures != 0;
 	std::memset(out, 0, sizeof(*out));
 
 	if (size > GLTF_MAX_FILE || size > 0xffffffffu) {
@@ -540,7 +582,9 @@ int load_memory(const char *name, const uint8_t *data, size_t size, const char *
 		return -EFBIG;
 	}
 	loader.SetFsCallbacks({fs_exists, fs_expand, fs_read, fs_write, &ctx});
-	loader.SetImageLoader(skip_image, nullptr);
+	// Images are decoded by our own libpng/libjpeg path, and only those a
+	// feature asked for; never by the stb copy inside the library.
+	loader.SetImageLoader(gltf_keep_image, &images);
 	bool glb = size >= 4 && std::memcmp(data, "glTF", 4) == 0;
 	bool ok =
 	    glb ? loader.LoadBinaryFromMemory(&model, &err, &warn, data, (unsigned)size, ctx.dir)
@@ -564,18 +608,18 @@ int load_memory(const char *name, const uint8_t *data, size_t size, const char *
 		log_err("%s: %s", name, err.c_str());
 		return -EINVAL;
 	}
-	return build_mesh(name, model, out);
+	return build_mesh(name, model, textures, images, out);
 }
 
 } // namespace
 
-extern "C" int gltf_load_memory(const char *name, const uint8_t *data, size_t size, const char *dir,
-				struct mesh *out)
+extern "C" int gltf_load_memory_textures(const char *name, const uint8_t *data, size_t size,
+					 const char *dir, unsigned textures, struct mesh *out)
 {
 	// No exception may cross into C: a model too large for memory, or a
 	// fault inside the parser, is one more error line.
 	try {
-		return load_memory(name, data, size, dir, out);
+		return load_memory(name, data, size, dir, textures, out);
 	} catch (const std::exception &e) {
 		log_err("%s: cannot load: %s", name, e.what());
 	} catch (...) {
@@ -585,7 +629,13 @@ extern "C" int gltf_load_memory(const char *name, const uint8_t *data, size_t si
 	return -EINVAL;
 }
 
-extern "C" int gltf_load(const char *path, struct mesh *out)
+extern "C" int gltf_load_memory(const char *name, const uint8_t *data, size_t size, const char *dir,
+				struct mesh *out)
+{
+	return gltf_load_memory_textures(name, data, size, dir, 0, out);
+}
+
+extern "C" int gltf_load_textures(const char *path, unsigned textures, struct mesh *out)
 {
 	std::vector<unsigned char> bytes;
 	std::string err;
@@ -598,5 +648,11 @@ extern "C" int gltf_load(const char *path, struct mesh *out)
 		log_err("%s: %s", path, err.c_str());
 		return -ENOENT;
 	}
-	return gltf_load_memory(path, bytes.data(), bytes.size(), dir.c_str(), out);
+	return gltf_load_memory_textures(path, bytes.data(), bytes.size(), dir.c_str(), textures,
+					 out);
+}
+
+extern "C" int gltf_load(const char *path, struct mesh *out)
+{
+	return gltf_load_textures(path, 0, out);
 }

@@ -4,10 +4,14 @@
 #define MK_KIOSK_H
 
 #include "app.h"
+#include "camera_feed.h"
 #include "display.h"
+#include "folder_watch.h"
 #include "input.h"
-#include "matcap_set.h"
+#include "options.h"
 #include "render.h"
+#include "scene.h"
+#include "service.h"
 
 #include <stdbool.h>
 
@@ -16,7 +20,12 @@
 struct kiosk {
 	struct display *display;
 	struct renderer *renderer;
-	struct matcap_set *matcaps;
+	struct scene *scene; /* on screen; a reload swaps what it holds */
+	/* The start's settings and command line: a reload parses the same
+	 * command line again over the config file, so options still win. */
+	const struct options *opts;
+	int argc;
+	char **argv;
 	struct app app;
 	struct view view;
 	struct input_source *inputs[KIOSK_MAX_INPUTS];
@@ -26,15 +35,34 @@ struct kiosk {
 	bool shown_ortho;
 	enum shading_mode shown_mode;
 	long frames_drawn;
+	uint64_t input_drawn_ns; /* the last input a drawn frame shows */
+	/* Kept by the loop and the reload. */
+	struct folder_watch *watch; /* the matcap folder, NULL when not watched */
+	uint64_t rescan_at;	    /* act on matcap changes then; APP_NEVER: none */
+	uint64_t waiting_since;	    /* when the pending page flip was queued */
+	bool display_absent;	    /* the last draw found no display to show it on */
+	struct service service;
+	struct camera_feed *camera; /* the live camera; NULL: none */
 };
 
 /* Block the signals the loop reads through a signalfd. Call it before any
  * thread starts (the GL driver's), so that no thread takes them with the
  * default action. */
 int kiosk_block_signals(void);
+int kiosk_unblock_signals(void);
 int kiosk_add_input(struct kiosk *k, struct input_source *s);
+/* Set the app state, the view and the matcap watch from the settings and
+ * k->scene (at the start, and after a reload). */
+void kiosk_configure(struct kiosk *k, const struct options *o, uint64_t now_ns);
+/* SIGHUP: the settings, model and matcaps again, swapped in only when all
+ * of it loaded; on failure the scene on screen stays and the log says why. */
+int kiosk_reload(struct kiosk *k, uint64_t now_ns);
+/* The matcap folder changed: its images again, staying on the one shown. */
+void kiosk_rescan_matcaps(struct kiosk *k);
+/* Frees the inputs and the watch (not the display, renderer or scene). */
+void kiosk_release(struct kiosk *k);
 /* Runs until SIGTERM or SIGINT; returns 0, or a negative errno when the
- * display fails for good. */
+ * display fails for good. Call kiosk_configure first. */
 int kiosk_run(struct kiosk *k);
 
 #endif

@@ -1,15 +1,15 @@
 /* matcap-kiosk: a glTF model shaded with a matcap, fullscreen on DRM/KMS
  * or offscreen. main() wires the pieces; each lives in its own file. */
-#include "bake.h"
+#include "camera.h"
 #include "display.h"
-#include "gltf.h"
+#include "gpio.h"
 #include "image.h"
+#include "keyboard.h"
 #include "kiosk.h"
 #include "log.h"
-#include "matcap_set.h"
-#include "mesh.h"
 #include "options.h"
 #include "render.h"
+#include "scene.h"
 
 #include <errno.h>
 #include <math.h>
@@ -23,18 +23,6 @@
 #ifndef MK_VERSION
 #define MK_VERSION "0.0.0"
 #endif
-#ifndef MK_MATCAP_DIR
-#define MK_MATCAP_DIR "/usr/local/share/matcap-kiosk/matcaps"
-#endif
-
-#define KNOT_TUBULAR 256
-#define KNOT_RADIAL  32
-
-struct scene {
-	struct mesh mesh;
-	struct image matcap;	/* the first one shown */
-	struct matcap_set *set; /* NULL: the built-in clay only */
-};
 
 static double now_ms(void)
 {
@@ -44,58 +32,35 @@ static double now_ms(void)
 	return ts.tv_sec * 1e3 + ts.tv_nsec / 1e6;
 }
 
-/* strict: a file the user named must load (a one-shot render is useless
- * with a substitute); otherwise the kiosk shows the built-in and says so. */
-static int load_model(const struct options *o, bool strict, struct mesh *mesh)
+/* auto: the display when there is one, else a PNG of the scene (the
+ * README's first command on a machine with no screen). */
+static struct display *open_display(struct options *o)
 {
-	if (o->model) {
-		int ret = gltf_load(o->model, mesh);
-
-		if (!ret || strict)
-			return ret;
-		log_warn("showing the built-in torus knot instead of %s", o->model);
-	}
-	return mesh_torus_knot(mesh, KNOT_TUBULAR, KNOT_RADIAL);
-}
-
-static const char *default_matcaps(void)
-{
-	/* Installed data first; the source tree's folder when run from it. */
-	if (access(MK_MATCAP_DIR, R_OK) == 0)
-		return MK_MATCAP_DIR;
-	return access("matcaps", R_OK) == 0 ? "matcaps" : NULL;
-}
-
-static int load_matcap(const struct options *o, bool strict, struct scene *s)
-{
-	const char *path = o->matcap ? o->matcap : default_matcaps();
-	int ret = -ENOENT;
-
-	s->set = path ? matcap_set_open(path) : NULL;
-	if (s->set)
-		ret = image_load(matcap_set_path(s->set, 0), &s->matcap);
-	if (ret && strict && o->matcap)
-		return ret;
-	if (ret) {
-		log_warn("using the built-in clay matcap");
-		matcap_set_free(s->set);
-		s->set = NULL;
-		ret = bake_matcap(BAKE_CLAY_RED, 256, &s->matcap);
-	}
-	return ret;
-}
-
-static struct display *open_display(const struct options *o)
-{
-	struct display_config cfg = {.width = o->size[0], .height = o->size[1]};
+	struct display_config cfg = {.width = o->size[0],
+				     .height = o->size[1],
+				     .device = o->device,
+				     .connector = o->connector,
+				     .mode = o->display_mode,
+				     .exit_when_busy = o->on_busy == 1,
+				     .kms_api = o->kms_api,
+				     .quiet = o->backend == BACKEND_AUTO};
+	struct display *d;
 
 	switch (o->backend) {
 	case BACKEND_EGL_HEADLESS:
 		return display_egl_new(&cfg);
+	case BACKEND_OSMESA:
+		return display_osmesa_new(&cfg);
 	case BACKEND_KMS:
-		log_err("kms: this build has no KMS backend yet");
-		return NULL;
+		return display_kms_new(&cfg);
 	default:
+		d = o->output ? NULL : display_kms_new(&cfg);
+		if (d)
+			return d;
+		if (!o->output) {
+			o->output = strdup("matcap-kiosk.png");
+			log_info("no display found: drawing the scene into %s", o->output);
+		}
 		return display_osmesa_new(&cfg);
 	}
 }
@@ -117,20 +82,10 @@ static void print_stats(double *times, int n, double first_frame_ms)
 	       times[n / 2], times[(n * 9) / 10], first_frame_ms, ru.ru_maxrss);
 }
 
-static struct view initial_view(const struct options *o)
-{
-	struct view v = {
-	    .ortho = o->ortho, .rotation = o->rotation, .background = {0.06f, 0.06f, 0.07f}};
-
-	v.orientation = quat_multiply(quat_from_axis_angle(1, 0, 0, o->pitch * M_PI / 180),
-				      quat_from_axis_angle(0, 1, 0, o->yaw * M_PI / 180));
-	return v;
-}
-
 static int render_frames(const struct options *o, struct display *d, struct renderer *r,
 			 double start_ms)
 {
-	struct view v = initial_view(o);
+	struct view v = scene_view(o);
 	double *times = calloc((size_t)o->frames, sizeof(double));
 	double first = 0;
 	int ret = 0;
@@ -168,53 +123,66 @@ static int write_output(const struct options *o, struct display *d)
 	return ret;
 }
 
-static int run_live(const struct options *o, struct scene *s, struct display *d, struct renderer *r)
+/* argv: a reload (SIGHUP) parses the same command line again. */
+/* Buttons and keyboards. One that cannot be had is logged and left out;
+ * two buttons on one line is a config error. */
+static int open_inputs(const struct options *o, struct kiosk *k)
+{
+	struct input_source *in[KIOSK_MAX_INPUTS];
+	int n = gpio_open_buttons(o, in, KIOSK_MAX_INPUTS);
+
+	if (n < 0)
+		return n;
+	n += keyboard_open(o->keyboard, in + n, KIOSK_MAX_INPUTS - n);
+	for (int i = 0; i < n; i++)
+		kiosk_add_input(k, in[i]);
+	return 0;
+}
+
+static int run_live(const struct options *o, char **argv, struct scene *s, struct display *d,
+		    struct renderer *r)
 {
 	/* The renderer already holds the first matcap and the mode. */
 	struct kiosk k = {.display = d,
 			  .renderer = r,
-			  .matcaps = s->set,
-			  .shown_matcap = 0,
+			  .scene = s,
+			  .opts = o,
+			  .argv = argv,
 			  .shown_mode = (enum shading_mode)o->mode,
 			  .shown_ortho = o->ortho};
-	struct app_config cfg = {
-	    .turn_speed = M_PI / 2,
-	    .turn_step = M_PI / 36,
-	    .attract_after_s = 60,
-	    .attract_speed = M_PI / 12,
-	    .mode = (enum shading_mode)o->mode,
-	    .matcap_count = s->set ? matcap_set_count(s->set) : 1,
-	};
-	struct timespec now;
 	int ret;
 
-	k.view = initial_view(o);
-	cfg.rest = k.view.orientation;
-	clock_gettime(CLOCK_MONOTONIC, &now);
-	app_init(&k.app, &cfg, (uint64_t)now.tv_sec * 1000000000ull + (uint64_t)now.tv_nsec);
-	ret = kiosk_run(&k);
-	for (int i = 0; i < k.input_count; i++)
-		k.inputs[i]->destroy(k.inputs[i]);
+	while (argv[k.argc])
+		k.argc++;
+	kiosk_configure(&k, o, (uint64_t)(now_ms() * 1e6));
+	ret = open_inputs(o, &k);
+	/* OSMesa has no EGL, and so no camera. */
+	k.camera = ret ? NULL : camera_feed_new(o, &d->gl, strcmp(d->name, "osmesa") != 0);
+	if (!ret)
+		ret = kiosk_run(&k);
+	if (o->stats)
+		camera_feed_print_stats(k.camera, stdout);
+	camera_feed_free(k.camera);
+	kiosk_release(&k);
 	log_info("%ld frames drawn", k.frames_drawn);
 	return ret;
 }
 
-static int run(const struct options *o, struct scene *s, double start_ms)
+static int run(const struct options *o, char **argv, struct scene *s, struct display *d,
+	       double start_ms)
 {
-	struct display *d = open_display(o);
-	struct renderer *r = NULL;
-	int ret = -ENODEV;
+	struct renderer *r = renderer_new(&d->gl, o->shader_dir);
+	int ret = r ? 0 : -ENOMEM;
 
-	if (!d)
-		goto out;
-	r = renderer_new(&d->gl, o->shader_dir);
-	ret = r ? 0 : -ENOMEM;
+	/* The mesh fitted to this display (subdivided for displacement, then
+	 * simplified), as a reload does. The scene's material goes up before
+	 * the mode, so its program is the first and only one compiled. */
+	if (!ret)
+		ret = scene_prepare(s, o, d->width, d->height);
+	if (!ret)
+		ret = scene_upload(s, r);
 	if (!ret)
 		ret = renderer_set_mode(r, (enum shading_mode)o->mode, o->ortho);
-	if (!ret)
-		ret = renderer_set_mesh(r, &s->mesh);
-	if (!ret)
-		ret = renderer_set_matcap(r, &s->matcap);
 	if (ret)
 		goto out;
 	if (o->output || o->frames > 1) {
@@ -222,11 +190,10 @@ static int run(const struct options *o, struct scene *s, double start_ms)
 		if (!ret && o->output)
 			ret = write_output(o, d);
 	} else {
-		ret = run_live(o, s, d, r);
+		ret = run_live(o, argv, s, d, r);
 	}
 out:
 	renderer_free(r);
-	display_free(d);
 	return ret;
 }
 
@@ -235,7 +202,13 @@ int main(int argc, char **argv)
 	double start_ms = now_ms();
 	struct options opts;
 	struct scene scene = {0};
+	struct display *display;
+	bool live;
 	int ret;
+
+	/* The kiosk starts itself again as its camera helper (src/camera.h). */
+	if (argc > 0 && strcmp(argv[0], CAMERA_HELPER_NAME) == 0)
+		return camera_helper_main(CAMERA_HELPER_FD);
 
 	ret = options_parse(&opts, argc, argv);
 	if (ret) {
@@ -252,20 +225,27 @@ int main(int argc, char **argv)
 	}
 	static const enum log_level levels[] = {LOG_ERR, LOG_WARN, LOG_INFO, LOG_DEBUG};
 	log_set_level(levels[opts.log_level]);
-	if (opts.backend == BACKEND_AUTO && !opts.output) {
-		/* No display backend yet in this build: render a PNG instead. */
-		opts.output = strdup("matcap-kiosk.png");
-	}
-	if (!opts.output && opts.frames == 1)
+	/* Before any thread starts: the live loop reads them from a signalfd. */
+	live = !opts.output && opts.frames == 1;
+	if (live)
 		kiosk_block_signals();
-	ret = load_model(&opts, opts.output != NULL, &scene.mesh);
+	/* A one-shot render fails fast, before the GPU is touched, when a file
+	 * the user named does not load; the kiosk itself falls back to the
+	 * built-in model and matcap, and says so. */
+	ret = live ? 0 : scene_load(&scene, &opts, true);
+	display = ret ? NULL : open_display(&opts);
+	if (!ret && !display)
+		ret = -ENODEV;
+	if (!ret && live && opts.output) {
+		live = false; /* auto found no display: one PNG instead */
+		kiosk_unblock_signals();
+	}
+	if (!ret && !scene.mesh.index_count)
+		ret = scene_load(&scene, &opts, false);
 	if (!ret)
-		ret = load_matcap(&opts, opts.output != NULL, &scene);
-	if (!ret)
-		ret = run(&opts, &scene, start_ms);
-	mesh_release(&scene.mesh);
-	image_release(&scene.matcap);
-	matcap_set_free(scene.set);
+		ret = run(&opts, argv, &scene, display, start_ms);
+	display_free(display);
+	scene_release(&scene);
 	options_release(&opts);
-	return ret ? 1 : 0;
+	return ret == OPTIONS_CONFIG ? 78 : ret ? 1 : 0;
 }

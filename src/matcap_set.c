@@ -65,7 +65,8 @@ static int scan_folder(struct matcap_set *s, const char *path)
 		log_err("%s: no .png, .jpg or .jpeg files in the folder", path);
 		ret = -ENOENT;
 	}
-	qsort(s->paths, (size_t)s->count, sizeof(*s->paths), compare_paths);
+	if (s->count) /* qsort(NULL, 0) is undefined */
+		qsort(s->paths, (size_t)s->count, sizeof(*s->paths), compare_paths);
 	return ret;
 }
 

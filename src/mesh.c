@@ -5,9 +5,22 @@
 #include <stdlib.h>
 #include <string.h>
 
+void mesh_material_default(struct mesh_material *mat)
+{
+	memset(mat, 0, sizeof(*mat));
+	for (int k = 0; k < 3; k++)
+		mat->base_color[k] = 1.0f;
+	mat->iridescence_ior = 1.3f;
+	mat->thickness_min = 100.0f;
+	mat->thickness_max = 400.0f;
+	mat->normal_scale = 1.0f;
+	mat->occlusion_strength = 1.0f;
+}
+
 int mesh_alloc(struct mesh *m, uint32_t vertex_count, uint32_t index_count, bool with_uvs)
 {
 	memset(m, 0, sizeof(*m));
+	mesh_material_default(&m->material);
 	m->positions = malloc((size_t)vertex_count * 3 * sizeof(float) + 1);
 	m->normals = malloc((size_t)vertex_count * 3 * sizeof(float) + 1);
 	m->uvs = with_uvs ? malloc((size_t)vertex_count * 2 * sizeof(float) + 1) : NULL;
@@ -21,12 +34,23 @@ int mesh_alloc(struct mesh *m, uint32_t vertex_count, uint32_t index_count, bool
 	return 0;
 }
 
+int mesh_alloc_tangents(struct mesh *m)
+{
+	free(m->tangents);
+	m->tangents = malloc((size_t)m->vertex_count * 4 * sizeof(float) + 1);
+	return m->tangents ? 0 : -ENOMEM;
+}
+
 void mesh_release(struct mesh *m)
 {
 	free(m->positions);
 	free(m->normals);
 	free(m->uvs);
+	free(m->tangents);
 	free(m->indices);
+	image_release(&m->material.normal_map);
+	image_release(&m->material.occlusion_map);
+	image_release(&m->material.thickness_map);
 	memset(m, 0, sizeof(*m));
 }
 
@@ -104,25 +128,34 @@ static void accumulate_faces(const float *pos, const uint32_t *idx, uint32_t ind
 	}
 }
 
-int mesh_generate_normals(const float *positions, const uint32_t *idx, uint32_t index_count,
-			  uint32_t first, uint32_t count, float *normals)
+int mesh_weld(const float *positions, uint32_t count, uint32_t *rep)
 {
 	struct weld_key *keys = malloc((size_t)count * sizeof(*keys) + 1);
-	uint32_t *rep = malloc((size_t)count * sizeof(*rep) + 1);
-	double *acc = calloc((size_t)count * 3 + 1, sizeof(double));
-	int ret = -ENOMEM;
 
-	if (!keys || !rep || !acc)
-		goto out;
+	if (!keys)
+		return -ENOMEM;
 	for (uint32_t i = 0; i < count; i++)
-		keys[i] = (struct weld_key){positions + (size_t)(first + i) * 3, i};
+		keys[i] = (struct weld_key){positions + (size_t)i * 3, i};
 	qsort(keys, count, sizeof(*keys), weld_compare);
-	/* Each vertex accumulates into the first vertex at its position. */
 	for (uint32_t i = 0; i < count; i++) {
 		bool same = i > 0 && position_compare(keys[i].p, keys[i - 1].p) == 0;
 
 		rep[keys[i].v] = same ? rep[keys[i - 1].v] : keys[i].v;
 	}
+	free(keys);
+	return 0;
+}
+
+int mesh_generate_normals(const float *positions, const uint32_t *idx, uint32_t index_count,
+			  uint32_t first, uint32_t count, float *normals)
+{
+	uint32_t *rep = malloc((size_t)count * sizeof(*rep) + 1);
+	double *acc = calloc((size_t)count * 3 + 1, sizeof(double));
+	int ret = -ENOMEM;
+
+	/* Each vertex accumulates into the first vertex at its position. */
+	if (!rep || !acc || mesh_weld(positions + (size_t)first * 3, count, rep))
+		goto out;
 	accumulate_faces(positions, idx, index_count, rep, first, acc);
 	for (uint32_t i = 0; i < count; i++) {
 		const double *n = acc + (size_t)rep[i] * 3;
@@ -134,7 +167,6 @@ int mesh_generate_normals(const float *positions, const uint32_t *idx, uint32_t 
 	}
 	ret = 0;
 out:
-	free(keys);
 	free(rep);
 	free(acc);
 	return ret;

@@ -11,17 +11,53 @@
 extern "C" {
 #endif
 
+/* image.h has no C++ guard of its own; the glTF shim decodes textures. */
+#include "image.h"
+
+/* What the model's glTF material says about the optional shading features
+ * (src/material.c decides which a scene uses). Its textures are decoded
+ * only for a feature the scene asked for; an image left out has width 0. */
+struct mesh_material {
+	bool present;	     /* the model names a material */
+	float base_color[3]; /* pbrMetallicRoughness.baseColorFactor */
+	/* KHR_materials_iridescence */
+	bool iridescence;
+	float iridescence_factor, iridescence_ior;
+	float thickness_min, thickness_max; /* nanometres */
+	/* Which textures the material names, decoded or not. */
+	bool has_normal_map, has_occlusion_map, has_thickness_map;
+	float normal_scale, occlusion_strength;
+	struct image normal_map;    /* normalTexture: tangent-space xyz in rgb */
+	struct image occlusion_map; /* occlusionTexture: ambient occlusion in r */
+	struct image thickness_map; /* iridescenceThicknessTexture: thickness in g */
+};
+
 struct mesh {
 	uint32_t vertex_count;
 	uint32_t index_count; /* three per triangle */
 	float *positions;     /* xyz per vertex */
 	float *normals;	      /* xyz per vertex, unit length */
 	float *uvs;	      /* uv per vertex, NULL when the model has none */
+	/* xyz w per vertex: a unit tangent along +u, w = +1 or -1 the
+	 * handedness, so that the bitangent is cross(normal, tangent) * w (the
+	 * glTF convention). NULL unless the model or a feature provides it. */
+	float *tangents;
 	uint32_t *indices;
+	struct mesh_material material;
 };
 
 int mesh_alloc(struct mesh *m, uint32_t vertex_count, uint32_t index_count, bool with_uvs);
+/* Adds (uninitialised) tangent storage to an allocated mesh. */
+int mesh_alloc_tangents(struct mesh *m);
+/* Frees the arrays and the material's images. */
 void mesh_release(struct mesh *m);
+/* The material with every field at the glTF default and no image. */
+void mesh_material_default(struct mesh_material *mat);
+
+/* rep[i] = the lowest-numbered vertex with exactly the position of vertex
+ * i (by value, so -0.0 and 0.0 are one): seams and poles split vertices
+ * that must still move, and shade, as one. */
+int mesh_weld(const float *positions, uint32_t count, uint32_t *rep);
 
 /* Centre world-space positions (computed in double, so a model placed far
  * from the origin or at an extreme scale keeps its precision) and scale

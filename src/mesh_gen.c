@@ -141,7 +141,9 @@ int mesh_uv_sphere(struct mesh *m, int slices, int stacks)
 				m->positions[v * 3 + k] = (float)p[k];
 				m->normals[v * 3 + k] = (float)p[k];
 			}
-			m->uvs[v * 2] = (float)j / (float)slices;
+			/* u grows eastward seen from outside and v downward, so
+			 * a texture reads unmirrored (tangent w = +1). */
+			m->uvs[v * 2] = 1.0f - (float)j / (float)slices;
 			m->uvs[v * 2 + 1] = (float)i / (float)stacks;
 		}
 	}

@@ -1,4 +1,5 @@
 #include "options.h"
+#include "app.h"
 #include "log.h"
 
 #include <errno.h>
@@ -26,16 +27,36 @@ struct option_def {
 static const char *const backend_names[] = {"auto", "kms", "osmesa", "egl-headless", NULL};
 static const char *const mode_names[] = {"normal", "view", "sem-vertex", "sem-fragment", NULL};
 static const char *const level_names[] = {"error", "warning", "info", "debug", NULL};
+static const char *const busy_names[] = {"wait", "exit", NULL};
+static const char *const kms_api_names[] = {"auto", "atomic", "legacy", NULL};
+static const char *const active_names[] = {"low", "high", NULL};
+static const char *const bias_names[] = {"pull-up", "pull-down", "disable", "as-is", NULL};
+static const char *const switch_names[] = {"auto", "off", "on", NULL}; /* enum material_switch */
+static const char *const lit_names[] = {"off", "on", "beside", NULL};  /* enum material_lit */
+static const char *const camera_names[] = {"off", "on", NULL};
+static const char *const import_names[] = {"auto", "off", NULL};
+
+const char *const options_button_names[OPTIONS_BUTTONS] = {"left", "right", "select"};
 
 #define OFF(f) offsetof(struct options, f)
 
 static const struct option_def defs[] = {
     {"backend", 'b', "display", "backend", K_CHOICE, OFF(backend), 0, 0, 0, backend_names, "NAME",
-     "auto, kms, osmesa or egl-headless; auto takes kms when a display is connected"},
+     "auto, kms, osmesa or egl-headless; auto takes kms where there is a display output"},
     {"size", 's', "display", "size", K_SIZE, OFF(size), 16, 8192, 1, NULL, "WxH",
      "offscreen frame size"},
     {"rotate", 0, "display", "rotation", K_INT, OFF(rotation), 0, 270, 90, NULL, "DEG",
      "panel rotation: 0, 90, 180 or 270"},
+    {"device", 0, "display", "device", K_STRING, OFF(device), 0, 0, 0, NULL, "PATH",
+     "KMS: the DRM device (default: the first with a display)"},
+    {"connector", 0, "display", "connector", K_STRING, OFF(connector), 0, 0, 0, NULL, "NAME",
+     "KMS: the output, e.g. HDMI-A-1 or DSI-1 (default: the first connected)"},
+    {"display-mode", 0, "display", "mode", K_STRING, OFF(display_mode), 0, 0, 0, NULL, "WxH[@HZ]",
+     "KMS: the mode (default: the preferred, else the largest)"},
+    {"on-busy", 0, "display", "on_busy", K_CHOICE, OFF(on_busy), 0, 0, 0, busy_names, "WHAT",
+     "KMS: when another program holds the display: wait or exit"},
+    {"kms-api", 0, "display", "kms_api", K_CHOICE, OFF(kms_api), 0, 0, 0, kms_api_names, "API",
+     "KMS: auto (atomic where the driver has it), atomic or legacy; for testing"},
     {"model", 'm', "scene", "model", K_STRING, OFF(model), 0, 0, 0, NULL, "FILE",
      "a .gltf or .glb model (default: a built-in torus knot)"},
     {"matcap", 'c', "scene", "matcap", K_STRING, OFF(matcap), 0, 0, 0, NULL, "PATH",
@@ -47,8 +68,101 @@ static const struct option_def defs[] = {
      "turn the model about the vertical axis"},
     {"pitch", 0, "scene", "pitch", K_DOUBLE, OFF(pitch), -360, 360, 0, NULL, "DEG",
      "tilt the model about the horizontal axis"},
+    {"lod-pixels", 0, "scene", "lod_pixels", K_DOUBLE, OFF(lod_pixels), 0, 64, 0, NULL, "PX",
+     "draw no detail under PX pixels: simplify smaller triangles to that; 0: never"},
     {"log-level", 0, "kiosk", "log_level", K_CHOICE, OFF(log_level), 0, 0, 0, level_names, "LEVEL",
      "error, warning, info or debug"},
+    {"attract-after", 0, "kiosk", "attract_after", K_DOUBLE, OFF(attract_after), 0, 86400, 0, NULL,
+     "S", "seconds without input before the model turns by itself; 0: never"},
+    {"attract-speed", 0, "kiosk", "attract_speed", K_DOUBLE, OFF(attract_speed), 0, 360, 0, NULL,
+     "DEG/S", "how fast it turns by itself"},
+    {"turn-speed", 0, "kiosk", "turn_speed", K_DOUBLE, OFF(turn_speed), 1, 1440, 0, NULL, "DEG/S",
+     "how fast a held button or arrow key turns the model"},
+    {"turn-step", 0, "kiosk", "turn_step", K_DOUBLE, OFF(turn_step), 0, 90, 0, NULL, "DEG",
+     "how far a short tap turns it"},
+    {"gpio-chip", 0, "buttons", "chip", K_STRING, OFF(gpio_chip), 0, 0, 0, NULL, "CHIP",
+     "GPIO chip by name, path or label (default: line names on every chip)"},
+    {"button-active", 0, "buttons", "active", K_CHOICE, OFF(button_active), 0, 0, 0, active_names,
+     "LEVEL", "low (a button that pulls the line to ground) or high"},
+    {"button-bias", 0, "buttons", "bias", K_CHOICE, OFF(button_bias), 0, 0, 0, bias_names, "BIAS",
+     "pull-up, pull-down, disable or as-is"},
+    {"debounce-ms", 0, "buttons", "debounce_ms", K_INT, OFF(debounce_ms), 0, 100, 1, NULL, "MS",
+     "edges this close to the one before are contact bounce"},
+    {"long-press-ms", 0, "buttons", "long_press_ms", K_INT, OFF(long_press_ms), 100, 10000, 1, NULL,
+     "MS", "a press held this long is a long press"},
+    {"repeat-ms", 0, "buttons", "repeat_ms", K_INT, OFF(repeat_ms), 0, 5000, 1, NULL, "MS",
+     "a held button with no long action repeats every MS (0: never)"},
+    {"button-left", 0, "buttons", "left", K_STRING, OFF(button_line[0]), 0, 0, 0, NULL, "LINE",
+     "the left button's line: a name (GPIO17) or an offset; none: not wired"},
+    {"left-press", 0, "buttons", "left_press", K_CHOICE, OFF(button_press[0]), 0, 0, 0,
+     app_action_names, "ACT", "what a press of left does"},
+    {"left-long-press", 0, "buttons", "left_long_press", K_CHOICE, OFF(button_long[0]), 0, 0, 0,
+     app_action_names, "ACT", "what a long press of left does (none: no long press)"},
+    {"button-right", 0, "buttons", "right", K_STRING, OFF(button_line[1]), 0, 0, 0, NULL, "LINE",
+     "the right button's line: a name (GPIO17) or an offset; none: not wired"},
+    {"right-press", 0, "buttons", "right_press", K_CHOICE, OFF(button_press[1]), 0, 0, 0,
+     app_action_names, "ACT", "what a press of right does"},
+    {"right-long-press", 0, "buttons", "right_long_press", K_CHOICE, OFF(button_long[1]), 0, 0, 0,
+     app_action_names, "ACT", "what a long press of right does (none: no long press)"},
+    {"button-select", 0, "buttons", "select", K_STRING, OFF(button_line[2]), 0, 0, 0, NULL, "LINE",
+     "the select button's line: a name (GPIO17) or an offset; none: not wired"},
+    {"select-press", 0, "buttons", "select_press", K_CHOICE, OFF(button_press[2]), 0, 0, 0,
+     app_action_names, "ACT", "what a press of select does"},
+    {"select-long-press", 0, "buttons", "select_long_press", K_CHOICE, OFF(button_long[2]), 0, 0, 0,
+     app_action_names, "ACT", "what a long press of select does (none: no long press)"},
+    {"keyboard", 0, "keyboard", "device", K_STRING, OFF(keyboard), 0, 0, 0, NULL, "DEV",
+     "auto (every keyboard under /dev/input), none, or one /dev/input/eventN"},
+    {"iridescence", 0, "material", "iridescence", K_CHOICE, OFF(material.iridescence), 0, 0, 0,
+     switch_names, "WHEN", "hue layer from the view angle: auto (when the glTF has it), off, on"},
+    {"iridescence-range", 0, "material", "iridescence_range", K_DOUBLE, OFF(material.hue_range), -8,
+     8, 0, NULL, "TURNS", "hue change from face-on to grazing"},
+    {"iridescence-average", 0, "material", "iridescence_average", K_DOUBLE,
+     OFF(material.hue_average), -8, 8, 0, NULL, "TURNS", "hue face-on (0 red, 1/3 green)"},
+    {"iridescence-shift", 0, "material", "iridescence_shift", K_DOUBLE, OFF(material.hue_shift), -8,
+     8, 0, NULL, "TURNS", "hue shift where the detail map's alpha is 0"},
+    {"iridescence-opacity", 0, "material", "iridescence_opacity", K_DOUBLE, OFF(material.opacity),
+     0, 1, 0, NULL, "A", "how much the hue layer covers the matcap"},
+    {"iridescence-saturation", 0, "material", "iridescence_saturation", K_DOUBLE,
+     OFF(material.saturation), 0, 1, 0, NULL, "S", "the hue layer's HSV saturation"},
+    {"iridescence-value", 0, "material", "iridescence_value", K_DOUBLE, OFF(material.value), 0, 1,
+     0, NULL, "V", "the hue layer's HSV value"},
+    {"iridescence-ramp", 0, "material", "iridescence_ramp", K_STRING, OFF(material.ramp), 0, 0, 0,
+     NULL, "FILE", "a PNG/JPEG colour ramp to use instead of HSV"},
+    {"detail", 0, "material", "detail", K_CHOICE, OFF(material.detail), 0, 0, 0, switch_names,
+     "WHEN", "detail map: auto (when one is given), off, on"},
+    {"detail-map", 0, "material", "detail_map", K_STRING, OFF(material.detail_map), 0, 0, 0, NULL,
+     "FILE", "packed map: normal xy (rg), occlusion (b), hue shift (a)"},
+    {"displacement-map", 0, "material", "displacement_map", K_STRING, OFF(material.height_map), 0,
+     0, 0, NULL, "FILE", "a height map: subdivide and displace the model"},
+    {"displacement-scale", 0, "material", "displacement_scale", K_DOUBLE,
+     OFF(material.displacement_scale), 0, 1, 0, NULL, "R", "height of white, in model radii"},
+    {"displacement-pixels", 0, "material", "displacement_pixels", K_DOUBLE,
+     OFF(material.displacement_pixels), 0.5, 64, 0, NULL, "PX", "edge length to subdivide to"},
+    {"displacement-triangles", 0, "material", "displacement_triangles", K_INT,
+     OFF(material.displacement_triangles), 1000, 16000000, 1, NULL, "N",
+     "most triangles subdivision may make"},
+    {"lit", 0, "material", "lit", K_CHOICE, OFF(material.lit), 0, 0, 0, lit_names, "HOW",
+     "diffuse + Blinn-Phong instead of the matcap: off, on, beside (both)"},
+    {"lit-shininess", 0, "material", "lit_shininess", K_DOUBLE, OFF(material.shininess), 1, 256, 0,
+     NULL, "N", "the lit mode's specular exponent"},
+    {"camera", 0, "camera", "enabled", K_CHOICE, OFF(camera), 0, 0, 0, camera_names, "WHEN",
+     "on: a live camera is the matcap whenever one is there; off: never"},
+    {"camera-id", 0, "camera", "id", K_STRING, OFF(camera_id), 0, 0, 0, NULL, "ID",
+     "the camera, by libcamera id or by index (0: the first)"},
+    {"camera-size", 0, "camera", "size", K_SIZE, OFF(camera_size), 16, 4096, 1, NULL, "WxH",
+     "the frame size asked of the camera"},
+    {"camera-crop-x", 0, "camera", "crop_x", K_DOUBLE, OFF(camera_crop[0]), 0, 1, 0, NULL, "X",
+     "the ball's centre, 0 (left) to 1 (right) of the frame"},
+    {"camera-crop-y", 0, "camera", "crop_y", K_DOUBLE, OFF(camera_crop[1]), 0, 1, 0, NULL, "Y",
+     "the ball's centre, 0 (top) to 1 (bottom) of the frame"},
+    {"camera-crop-radius", 0, "camera", "crop_radius", K_DOUBLE, OFF(camera_crop[2]), 0.01, 1, 0,
+     NULL, "R", "the ball's radius, in shares of the frame's shorter side"},
+    {"camera-mirror", 0, "camera", "mirror", K_FLAG, OFF(camera_mirror), 0, 0, 0, NULL, NULL,
+     "mirror the camera picture left to right"},
+    {"camera-stall", 0, "camera", "stall_timeout", K_DOUBLE, OFF(camera_stall), 0.2, 600, 0, NULL,
+     "S", "seconds without a frame before the camera counts as lost"},
+    {"camera-import", 0, "camera", "import", K_CHOICE, OFF(camera_import), 0, 0, 0, import_names,
+     "HOW", "auto: frames as EGLImages where the driver takes them; off: always upload"},
     {"config", 'C', NULL, NULL, K_STRING, OFF(config), 0, 0, 0, NULL, "FILE",
      "read settings from an INI file first (see config/kiosk.ini)"},
     {"output", 'o', NULL, NULL, K_STRING, OFF(output), 0, 0, 0, NULL, "FILE",
@@ -79,7 +193,23 @@ static void defaults(struct options *o)
 	o->frames = 1;
 	o->pitch = 20.0;
 	o->yaw = -30.0;
+	o->lod_pixels = 4.0;
 	o->log_level = VERBOSITY_INFO;
+	o->attract_after = 60;
+	o->attract_speed = 15;
+	o->turn_speed = 90;
+	o->turn_step = 5;
+	o->debounce_ms = 10;
+	o->long_press_ms = 800;
+	o->button_press[0] = ACTION_TURN_LEFT;
+	o->button_press[1] = ACTION_TURN_RIGHT;
+	o->button_press[2] = ACTION_NEXT_MATCAP;
+	o->button_long[2] = ACTION_TOGGLE_CAMERA;
+	material_config_defaults(&o->material);
+	o->camera = 1;
+	o->camera_size[0] = o->camera_size[1] = 512;
+	o->camera_crop[0] = o->camera_crop[1] = o->camera_crop[2] = 0.5;
+	o->camera_stall = 3;
 }
 
 void options_release(struct options *o)
@@ -215,13 +345,20 @@ struct file_state {
 	int errors;
 };
 
+/* Leading blanks are dropped: inih would take an indented key for the
+ * continuation of the line above, and people indent INI files. */
 static char *read_line(char *str, int num, void *stream)
 {
 	struct file_state *st = stream;
 	char *r = fgets(str, num, st->f);
+	size_t skip;
 
-	if (r)
-		st->line++;
+	if (!r)
+		return NULL;
+	st->line++;
+	skip = strspn(r, " \t");
+	if (skip)
+		memmove(r, r + skip, strlen(r + skip) + 1);
 	return r;
 }
 
@@ -258,8 +395,8 @@ static int on_key(void *user, const char *section, const char *key, const char *
 			log_err("%s:%d: unknown key '%s' in [%s]; expected one of: %s", st->path,
 				st->line, key, section, what);
 		else
-			log_err("%s:%d: unknown section [%s]; expected [display], [scene] or "
-				"[kiosk]",
+			log_err("%s:%d: unknown section [%s]; expected [display], [scene], "
+				"[kiosk], [buttons], [keyboard], [material] or [camera]",
 				st->path, st->line, section);
 	} else if (st->seen_line[d - defs]) {
 		log_err("%s:%d: [%s] %s is set again (first on line %d)", st->path, st->line,
@@ -279,22 +416,111 @@ static int on_key(void *user, const char *section, const char *key, const char *
 	return 1; /* go on, so every error in the file is reported at once */
 }
 
-int options_read_file(struct options *o, const char *path)
+static bool wired(const char *line)
 {
-	struct file_state st = {.opts = o, .path = path};
-	int ret;
+	return line && *line && strcmp(line, "none") != 0;
+}
 
-	st.f = fopen(path, "r");
-	if (!st.f) {
-		log_err("%s: cannot open config file: %s", path, strerror(errno));
-		return OPTIONS_CONFIG;
+/* The same name, or the same offset however written. (GPIO17 and 17 may
+ * be one line too; only the chip can tell, and src/gpio.c asks it.) */
+static bool same_line(const char *a, const char *b)
+{
+	char *end_a, *end_b;
+	unsigned long x = strtoul(a, &end_a, 10), y = strtoul(b, &end_b, 10);
+
+	if (end_a != a && !*end_a && end_b != b && !*end_b)
+		return x == y;
+	return strcmp(a, b) == 0;
+}
+
+/* Two buttons on one line would fight over it: the first such pair. */
+static bool line_clash(const struct options *o, int *first, int *second)
+{
+	for (int i = 0; i < OPTIONS_BUTTONS; i++)
+		for (int j = i + 1; j < OPTIONS_BUTTONS; j++)
+			if (wired(o->button_line[i]) && wired(o->button_line[j]) &&
+			    same_line(o->button_line[i], o->button_line[j])) {
+				*first = i;
+				*second = j;
+				return true;
+			}
+	return false;
+}
+
+static int line_key_seen(const struct file_state *st, int button)
+{
+	return st->seen_line[find_key("buttons", options_button_names[button]) - defs];
+}
+
+/* Counts an error when this file put two buttons on one line. */
+static void check_lines(struct file_state *st)
+{
+	int i, j, at_i, at_j;
+	char first[32] = "";
+
+	if (!line_clash(st->opts, &i, &j))
+		return;
+	at_i = line_key_seen(st, i);
+	at_j = line_key_seen(st, j);
+	if (!at_i && !at_j)
+		return;
+	if (!at_j) { /* name the key this file set */
+		int t = i;
+
+		i = j;
+		j = t;
+		at_j = at_i;
+		at_i = 0;
 	}
-	ret = ini_parse_stream(read_line, &st, on_key, &st);
-	fclose(st.f);
+	if (at_i)
+		snprintf(first, sizeof(first), " (line %d)", at_i);
+	st->errors++;
+	log_err("%s:%d: [buttons] %s = %s is the line of %s too%s; each button needs its own line",
+		st->path, at_j, options_button_names[j], st->opts->button_line[j],
+		options_button_names[i], first);
+}
+
+static int read_stream(struct options *o, const char *path, FILE *f)
+{
+	struct file_state st = {.opts = o, .path = path, .f = f};
+	int ret = ini_parse_stream(read_line, &st, on_key, &st);
+
+	check_lines(&st);
 	if (ret > 0)
 		log_err("%s:%d: not an INI line; expected [section], key = value or a comment",
 			path, ret);
 	return ret || st.errors ? OPTIONS_CONFIG : 0;
+}
+
+int options_read_file(struct options *o, const char *path)
+{
+	FILE *f = fopen(path, "r");
+	int ret;
+
+	if (!f) {
+		log_err("%s: cannot open config file: %s", path, strerror(errno));
+		return OPTIONS_CONFIG;
+	}
+	ret = read_stream(o, path, f);
+	fclose(f);
+	return ret;
+}
+
+int options_read_memory(struct options *o, const char *name, const char *text, size_t size)
+{
+	FILE *f;
+	int ret;
+
+	if (size == 0)
+		return 0; /* an empty file sets nothing (fmemopen refuses size 0) */
+	f = fmemopen((void *)text, size, "r");
+	if (!f) {
+		log_err("%s: cannot read the config: %s", name, strerror(errno));
+		return OPTIONS_CONFIG;
+	}
+	ret = read_stream(o, name, f);
+	fclose(f);
+	return ret;
 }
 
 /* The command line: getopt_long, with its table built from defs. */
@@ -368,7 +594,7 @@ int options_parse(struct options *o, int argc, char **argv)
 {
 	struct option longs[N_DEFS + 3];
 	char shorts[2 * N_DEFS + 3];
-	int c, ret;
+	int c, ret, first, second;
 
 	defaults(o);
 	build_getopt(longs, shorts);
@@ -382,6 +608,13 @@ int options_parse(struct options *o, int argc, char **argv)
 			return ret;
 	if (optind < argc) {
 		log_err("unexpected argument '%s' (see --help)", argv[optind]);
+		return OPTIONS_USAGE;
+	}
+	if (line_clash(o, &first, &second)) {
+		log_err("--button-%s and --button-%s are both line %s; each button needs its own "
+			"line",
+			options_button_names[first], options_button_names[second],
+			o->button_line[second]);
 		return OPTIONS_USAGE;
 	}
 	return 0;

@@ -44,8 +44,9 @@ char *shader_read(const char *dir, const char *name)
 	return NULL;
 }
 
-/* #line gives mapping.glsl the source number 1 and the stage's file 2, so
- * the driver's "1:12" or "2:40" can be read back to a file and a line. */
+/* #line gives mapping.glsl the source number 1, the stage's file 2 and
+ * material.glsl (fragment stage only) 3, so the driver's "1:12" or "2:40"
+ * can be read back to a file and a line. */
 static void log_failure(const struct gl *gl, GLuint obj, bool is_program, const char *dir,
 			const char *file)
 {
@@ -58,30 +59,37 @@ static void log_failure(const struct gl *gl, GLuint obj, bool is_program, const 
 	for (char *p = log; *p; p++)
 		if (*p == '\n' && p[1])
 			*p = ' ';
-	log_err("%s/%s: %s failed (source 1 is mapping.glsl, 2 is %s): %s", dir ? dir : "shaders",
-		file, is_program ? "link" : "compile", file, log);
+	log_err("%s/%s: %s failed (source 1 is mapping.glsl, 2 is %s, 3 is material.glsl): %s",
+		dir ? dir : "shaders", file, is_program ? "link" : "compile", file, log);
 }
 
 static int compile(const struct gl *gl, GLenum type, const char *dir, const char *defines,
 		   const char *file, GLuint *out)
 {
-	const char *precision = type == GL_FRAGMENT_SHADER ? "precision mediump float;\n" : "";
+	bool fragment = type == GL_FRAGMENT_SHADER;
+	const char *precision = fragment ? "precision mediump float;\n" : "";
 	char header[1024];
 	char *mapping = shader_read(dir, "mapping.glsl");
+	char *material = fragment ? shader_read(dir, "material.glsl") : NULL;
 	char *body = shader_read(dir, file);
-	const char *parts[4];
+	const char *parts[6];
+	int n = 0;
 	GLint ok = 0;
 	int ret = -EINVAL;
 
-	if (!mapping || !body)
+	if (!mapping || !body || (fragment && !material))
 		goto out;
 	snprintf(header, sizeof(header), "#version 100\n%s%s#line 1 1\n", precision, defines);
-	parts[0] = header;
-	parts[1] = mapping;
-	parts[2] = "#line 1 2\n";
-	parts[3] = body;
+	parts[n++] = header;
+	parts[n++] = mapping;
+	if (fragment) {
+		parts[n++] = "#line 1 3\n";
+		parts[n++] = material;
+	}
+	parts[n++] = "#line 1 2\n";
+	parts[n++] = body;
 	*out = gl->CreateShader(type);
-	gl->ShaderSource(*out, 4, parts, NULL);
+	gl->ShaderSource(*out, n, parts, NULL);
 	gl->CompileShader(*out);
 	gl->GetShaderiv(*out, GL_COMPILE_STATUS, &ok);
 	if (!ok) {
@@ -92,6 +100,7 @@ static int compile(const struct gl *gl, GLenum type, const char *dir, const char
 	ret = 0;
 out:
 	free(mapping);
+	free(material);
 	free(body);
 	return ret;
 }
@@ -109,8 +118,10 @@ int shader_build(const struct gl *gl, const char *dir, const char *defines, GLui
 	gl->AttachShader(*program, vs);
 	gl->AttachShader(*program, fs);
 	/* Fixed locations: the renderer enables only what a program reads. */
-	gl->BindAttribLocation(*program, 0, "a_position");
-	gl->BindAttribLocation(*program, 1, "a_normal");
+	gl->BindAttribLocation(*program, SHADER_ATTR_POSITION, "a_position");
+	gl->BindAttribLocation(*program, SHADER_ATTR_NORMAL, "a_normal");
+	gl->BindAttribLocation(*program, SHADER_ATTR_UV, "a_uv");
+	gl->BindAttribLocation(*program, SHADER_ATTR_TANGENT, "a_tangent");
 	gl->LinkProgram(*program);
 	gl->GetProgramiv(*program, GL_LINK_STATUS, &ok);
 	if (!ok) {

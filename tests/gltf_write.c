@@ -29,36 +29,126 @@ static size_t pad4(size_t n)
 	return (n + 3) & ~(size_t)3;
 }
 
-/* positions | normals | indices, each padded to 4 bytes. */
-static unsigned char *pack(const struct mesh *m, const struct gltf_write_opts *o, size_t *size,
-			   size_t *off_nrm, size_t *off_idx)
+/* Where each part lies in the buffer. */
+struct layout {
+	size_t nrm, idx, uv, tan, img[3], img_len[3], size;
+	const char *img_path[3]; /* normal, occlusion, thickness: NULL when absent */
+};
+
+static unsigned char *read_file(const char *path, size_t *len)
+{
+	FILE *f = fopen(path, "rb");
+	unsigned char *data = NULL;
+	long n;
+
+	if (!f)
+		return NULL;
+	if (fseek(f, 0, SEEK_END) == 0 && (n = ftell(f)) > 0 && fseek(f, 0, SEEK_SET) == 0) {
+		data = malloc((size_t)n);
+		*len = data ? fread(data, 1, (size_t)n, f) : 0;
+	}
+	fclose(f);
+	return data;
+}
+
+static int has_material(const struct gltf_write_opts *o)
+{
+	return o->normal_png || o->occlusion_png || o->thickness_png || o->iridescence_factor > 0;
+}
+
+/* positions | normals | indices | uvs | tangents | embedded images, each
+ * padded to 4 bytes. */
+static unsigned char *pack(const struct mesh *m, const struct gltf_write_opts *o, struct layout *l)
 {
 	size_t stride = o->byte_stride ? (size_t)o->byte_stride : 12;
 	size_t npos = stride * m->vertex_count, nnrm = 12 * (size_t)m->vertex_count;
 	size_t nidx = (size_t)o->index_bytes * m->index_count;
-	unsigned char *buf;
+	unsigned char *buf, *img[3] = {NULL, NULL, NULL};
 
-	*off_nrm = pad4(npos);
-	*off_idx = *off_nrm + (o->with_normals ? nnrm : 0);
-	*size = pad4(*off_idx + nidx);
-	buf = calloc(1, *size + 1);
+	l->img_path[0] = o->normal_png;
+	l->img_path[1] = o->occlusion_png;
+	l->img_path[2] = o->thickness_png;
+	l->nrm = pad4(npos);
+	l->idx = l->nrm + (o->with_normals ? nnrm : 0);
+	l->uv = pad4(l->idx + nidx);
+	l->tan = l->uv + (o->with_uvs ? 8 * (size_t)m->vertex_count : 0);
+	l->size = l->tan + (o->with_tangents ? 16 * (size_t)m->vertex_count : 0);
+	for (int i = 0; i < 3; i++) {
+		l->img_len[i] = 0;
+		if (l->img_path[i] && o->embed_images)
+			img[i] = read_file(l->img_path[i], &l->img_len[i]);
+		l->img[i] = l->size;
+		l->size = pad4(l->size + l->img_len[i]);
+	}
+	buf = calloc(1, l->size + 1);
 	for (uint32_t v = 0; v < m->vertex_count; v++) {
 		memcpy(buf + v * stride, m->positions + v * 3, 12);
 		if (o->with_normals)
-			memcpy(buf + *off_nrm + v * 12, m->normals + v * 3, 12);
+			memcpy(buf + l->nrm + v * 12, m->normals + v * 3, 12);
+		if (o->with_uvs)
+			memcpy(buf + l->uv + v * 8, m->uvs + v * 2, 8);
+		if (o->with_tangents)
+			memcpy(buf + l->tan + v * 16, m->tangents + v * 4, 16);
 	}
 	for (uint32_t i = 0; i < m->index_count && o->index_bytes; i++) {
 		uint32_t x = m->indices[i];
 
 		if (i == 0 && o->bad_index >= 0)
 			x = (uint32_t)o->bad_index;
-		memcpy(buf + *off_idx + (size_t)i * o->index_bytes, &x, (size_t)o->index_bytes);
+		memcpy(buf + l->idx + (size_t)i * o->index_bytes, &x, (size_t)o->index_bytes);
+	}
+	for (int i = 0; i < 3; i++) {
+		if (img[i])
+			memcpy(buf + l->img[i], img[i], l->img_len[i]);
+		free(img[i]);
 	}
 	return buf;
 }
 
-static void write_json(FILE *f, const struct mesh *m, const struct gltf_write_opts *o, size_t size,
-		       size_t off_nrm, size_t off_idx, const char *uri)
+static void write_material(FILE *f, const struct gltf_write_opts *o, const struct layout *l)
+{
+	static const char *const keys[2] = {"normalTexture", "occlusionTexture"};
+	int texture = 0, sep = 0;
+
+	fprintf(f,
+		"\"materials\":[{\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.8,0.7,0.6,1]}");
+	for (int i = 0; i < 2; i++)
+		if (l->img_path[i])
+			fprintf(f, ",\"%s\":{\"index\":%d}", keys[i], texture++);
+	if (o->iridescence_factor > 0) {
+		fprintf(f,
+			",\"extensions\":{\"KHR_materials_iridescence\":{\"iridescenceFactor\":%g,"
+			"\"iridescenceThicknessMinimum\":%g,\"iridescenceThicknessMaximum\":%g",
+			o->iridescence_factor, o->thickness_range[0], o->thickness_range[1]);
+		if (l->img_path[2])
+			fprintf(f, ",\"iridescenceThicknessTexture\":{\"index\":%d}", texture);
+		fprintf(f, "}}");
+	}
+	fprintf(f, "}],\"extensionsUsed\":[\"KHR_materials_iridescence\"],\"textures\":[");
+	for (int i = 0, n = 0; i < 3; i++)
+		if (l->img_path[i]) {
+			fprintf(f, "%s{\"source\":%d}", n ? "," : "", n);
+			n++;
+		}
+	fprintf(f, "],\"images\":[");
+	for (int i = 0, view = 5; i < 3; i++) {
+		const char *name = l->img_path[i] ? strrchr(l->img_path[i], '/') : NULL;
+
+		if (!l->img_path[i])
+			continue;
+		name = name ? name + 1 : l->img_path[i];
+		if (o->embed_images)
+			fprintf(f, "%s{\"bufferView\":%d,\"mimeType\":\"image/png\"}",
+				sep++ ? "," : "", view++);
+		else
+			fprintf(f, "%s{\"uri\":\"%s\"}", sep++ ? "," : "",
+				o->image_uri ? o->image_uri : name);
+	}
+	fprintf(f, "],");
+}
+
+static void write_json(FILE *f, const struct mesh *m, const struct gltf_write_opts *o,
+		       const struct layout *l, const char *uri)
 {
 	static const int ctype[5] = {0, 5121, 5123, 0, 5125};
 	long count = o->position_count ? o->position_count : (long)m->vertex_count;
@@ -71,25 +161,45 @@ static void write_json(FILE *f, const struct mesh *m, const struct gltf_write_op
 	fprintf(f, "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0");
 	if (o->with_normals)
 		fprintf(f, ",\"NORMAL\":1");
-	fprintf(f, "}%s}]}],", o->index_bytes ? ",\"indices\":2" : "");
-	fprintf(f, "\"buffers\":[{\"byteLength\":%zu%s%s%s}],", size, uri ? ",\"uri\":\"" : "",
+	if (o->with_uvs)
+		fprintf(f, ",\"TEXCOORD_0\":3");
+	if (o->with_tangents)
+		fprintf(f, ",\"TANGENT\":4");
+	fprintf(f, "}%s%s}]}],", o->index_bytes ? ",\"indices\":2" : "",
+		has_material(o) ? ",\"material\":0" : "");
+	if (has_material(o))
+		write_material(f, o, l);
+	fprintf(f, "\"buffers\":[{\"byteLength\":%zu%s%s%s}],", l->size, uri ? ",\"uri\":\"" : "",
 		uri ? uri : "", uri ? "\"" : "");
-	fprintf(f, "\"bufferViews\":[{\"buffer\":0,\"byteOffset\":0,\"byteLength\":%zu", off_nrm);
+	fprintf(f, "\"bufferViews\":[{\"buffer\":0,\"byteOffset\":0,\"byteLength\":%zu", l->nrm);
 	if (o->byte_stride)
 		fprintf(f, ",\"byteStride\":%d", o->byte_stride);
 	fprintf(f, "},");
-	fprintf(f, "{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu},", off_nrm,
+	fprintf(f, "{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu},", l->nrm,
 		o->with_normals ? (size_t)m->vertex_count * 12 : 4);
-	fprintf(f, "{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu}],", off_idx,
+	fprintf(f, "{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu},", l->idx,
 		(size_t)m->index_count * (size_t)(o->index_bytes ? o->index_bytes : 1));
+	fprintf(f, "{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu},", l->uv,
+		o->with_uvs ? (size_t)m->vertex_count * 8 : 4);
+	fprintf(f, "{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu}", l->tan,
+		o->with_tangents ? (size_t)m->vertex_count * 16 : 4);
+	for (int i = 0; i < 3; i++)
+		if (l->img_path[i] && o->embed_images)
+			fprintf(f, ",{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu}",
+				l->img[i], l->img_len[i]);
+	fprintf(f, "],");
 	fprintf(f,
 		"\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":%ld,"
 		"\"type\":\"VEC3\",\"min\":[-1,-1,-1],\"max\":[1,1,1]},",
 		count);
 	fprintf(f, "{\"bufferView\":1,\"componentType\":5126,\"count\":%u,\"type\":\"VEC3\"},",
 		m->vertex_count);
-	fprintf(f, "{\"bufferView\":2,\"componentType\":%d,\"count\":%u,\"type\":\"SCALAR\"}]}",
+	fprintf(f, "{\"bufferView\":2,\"componentType\":%d,\"count\":%u,\"type\":\"SCALAR\"},",
 		ctype[o->index_bytes > 0 ? o->index_bytes : 1], m->index_count);
+	fprintf(f, "{\"bufferView\":3,\"componentType\":5126,\"count\":%u,\"type\":\"VEC2\"},",
+		m->vertex_count);
+	fprintf(f, "{\"bufferView\":4,\"componentType\":5126,\"count\":%u,\"type\":\"VEC4\"}]}",
+		m->vertex_count);
 }
 
 static int write_glb(FILE *f, const char *json, size_t jlen, const unsigned char *bin, size_t blen)
@@ -108,26 +218,27 @@ static int write_glb(FILE *f, const char *json, size_t jlen, const unsigned char
 	return 0;
 }
 
-static char *json_text(const struct mesh *m, const struct gltf_write_opts *o, size_t size,
-		       size_t off_nrm, size_t off_idx, const char *uri, size_t *len)
+static char *json_text(const struct mesh *m, const struct gltf_write_opts *o,
+		       const struct layout *l, const char *uri, size_t *len)
 {
 	char *text = NULL;
 	FILE *mem = open_memstream(&text, len);
 
-	write_json(mem, m, o, size, off_nrm, off_idx, uri);
+	write_json(mem, m, o, l, uri);
 	fclose(mem);
 	return text;
 }
 
 int gltf_write(const char *path, const struct mesh *m, const struct gltf_write_opts *o)
 {
-	size_t size, off_nrm, off_idx, jlen;
-	unsigned char *bin = pack(m, o, &size, &off_nrm, &off_idx);
+	struct layout l;
+	size_t jlen;
+	unsigned char *bin = pack(m, o, &l);
 	char bin_path[4096], *uri = NULL, *json;
 	FILE *f;
 
 	if (o->container == GLTF_DATA_URI) {
-		char *b = base64(bin, size);
+		char *b = base64(bin, l.size);
 
 		uri = malloc(strlen(b) + 64);
 		sprintf(uri, "data:application/octet-stream;base64,%s", b);
@@ -138,13 +249,13 @@ int gltf_write(const char *path, const struct mesh *m, const struct gltf_write_o
 
 		uri = strdup(o->bin_uri ? o->bin_uri : name);
 		f = fopen(bin_path, "wb");
-		fwrite(bin, 1, size, f);
+		fwrite(bin, 1, l.size, f);
 		fclose(f);
 	}
-	json = json_text(m, o, size, off_nrm, off_idx, uri, &jlen);
+	json = json_text(m, o, &l, uri, &jlen);
 	f = fopen(path, "wb");
 	if (o->container == GLTF_GLB)
-		write_glb(f, json, jlen, bin, size);
+		write_glb(f, json, jlen, bin, l.size);
 	else
 		fwrite(json, 1, jlen, f);
 	fclose(f);

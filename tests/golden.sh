@@ -13,3 +13,21 @@ for mode in normal view sem-vertex sem-fragment; do
 	$KIOSK -q --backend osmesa --size 320x240 --matcap matcaps/gold.png --mode $mode \
 		--model "$models/sphere.glb" --output "$out/sphere-$mode.png"
 done
+# The material features (issue 6), each on a model that exercises it:
+# glTF textures (embedded; beside the model with TANGENT and
+# KHR_materials_iridescence), the settings' maps, displacement, lit.
+k="$KIOSK -q --backend osmesa --size 320x240"
+m=$models
+$k -c matcaps/black-shiny.png --iridescence on --output "$out/knot-iridescence.png"
+$k -c matcaps/black-shiny.png --iridescence on --iridescence-ramp "$m/ramp.png" \
+	--output "$out/knot-iridescence-ramp.png"
+$k -c matcaps/pearl.png --detail-map "$m/detail.png" --iridescence on \
+	--output "$out/knot-detail-map.png"
+$k -c matcaps/gold.png --model "$m/sphere-detail.glb" --output "$out/sphere-detail-gltf.png"
+$k -c matcaps/black-shiny.png --model "$m/sphere-beetle.gltf" --output "$out/sphere-beetle-gltf.png"
+$k -c matcaps/gold.png --model "$m/sphere-coarse.glb" --displacement-map "$m/height.png" \
+	--displacement-scale 0.15 --output "$out/sphere-displaced.png"
+$k --model "$m/sphere-detail.glb" --lit on --output "$out/sphere-lit.png"
+$k -c matcaps/chrome-studio.png --model "$m/sphere-coarse.glb" --displacement-map "$m/height.png" \
+	--displacement-scale 0.15 --detail-map "$m/detail.png" --lit beside \
+	--output "$out/sphere-lit-beside.png"

@@ -2,7 +2,11 @@
 #   make test     everything below, ending in one "N passed, N failed" line
 #   make golden   regenerate tests/golden/*.png on purpose (then look at them)
 
-UNIT_TESTS  := options mesh image gltf shading
+UNIT_TESTS  := options mesh image gltf shading app button scene service
+UNIT_TESTS  += tangent subdivide material
+UNIT_TESTS  += camera_math camera_proto camera_texture
+UNIT_TESTS  += stability fp16 lod
+UNIT_TESTS  += drm
 TOOLS_DIR   := $(BUILD)/tools
 ASAN_BUILD  := $(BUILD)/asan
 SANITIZE    := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all \
@@ -15,15 +19,50 @@ $(BUILD)/tests/test_%: tests/unit/test_%.c tests/gltf_write.c tests/gltf_write.h
 
 unit-tests: $(UNIT_TESTS:%=$(BUILD)/tests/test_%)
 
-$(TOOLS_DIR)/mkmodels: tests/mkmodels.c tests/gltf_write.c $(LIB_OBJS)
+$(TOOLS_DIR)/mkmodels: tests/mkmodels.c tests/gltf_write.c tests/maps.c $(LIB_OBJS)
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -Itests -o $@ $< tests/gltf_write.c $(LIB_OBJS) $(TEST_LIBS)
+	$(CC) $(ALL_CFLAGS) -Itests -o $@ $< tests/gltf_write.c tests/maps.c $(LIB_OBJS) \
+		$(TEST_LIBS)
 
 $(TOOLS_DIR)/imgdiff: tests/imgdiff.c $(BUILD)/image.o $(BUILD)/log.o
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -o $@ $^ $(PKG_LIBS) -lm
 
-test-tools: $(TOOLS_DIR)/mkmodels $(TOOLS_DIR)/imgdiff $(BUILD)/bake
+# Which colour-bar hues a picture shows (the camera's, in tests/e2e/camera.sh).
+$(TOOLS_DIR)/hues: tests/hues.c $(BUILD)/image.o $(BUILD)/log.o
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -o $@ $^ $(PKG_LIBS) -lm
+test-tools: $(TOOLS_DIR)/hues
+
+# Stands in for systemd's notify socket in tests/live.sh.
+$(TOOLS_DIR)/notify_listen: tests/notify_listen.c
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -o $@ $<
+
+# What each material feature compiles, uploads and binds (issue 6).
+$(TOOLS_DIR)/program_check: tests/program_check.c $(LIB_OBJS)
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -Itests -o $@ $< $(LIB_OBJS) $(TEST_LIBS)
+
+test-tools: $(TOOLS_DIR)/mkmodels $(TOOLS_DIR)/imgdiff $(BUILD)/bake $(TOOLS_DIR)/notify_listen \
+	$(TOOLS_DIR)/soak
+test-tools: $(TOOLS_DIR)/program_check
+
+# The renderer against the C mirror of the shaders, pixel by pixel (issue 7).
+$(TOOLS_DIR)/mirror_check: tests/mirror_check.c $(LIB_OBJS)
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -Itests -o $@ $< $(LIB_OBJS) $(TEST_LIBS)
+
+test-tools: $(TOOLS_DIR)/mirror_check
+
+# Speed against error, for `make bench` and `make report` (issue 7).
+$(TOOLS_DIR)/bench_quality: tests/bench_quality.c tests/bench_quality_report.c \
+		tests/bench_quality.h tests/maps.c $(LIB_OBJS)
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -Itests -o $@ $< tests/bench_quality_report.c tests/maps.c \
+		$(LIB_OBJS) $(TEST_LIBS)
+
+test-tools: $(TOOLS_DIR)/bench_quality
 
 # The unit tests and a second kiosk binary, built with AddressSanitizer and
 # UndefinedBehaviorSanitizer: malformed input must not crash either.
@@ -32,16 +71,37 @@ asan:
 		LDFLAGS="$(SANITIZE)" KIOSK=$(ASAN_BUILD)/matcap-kiosk \
 		$(ASAN_BUILD)/matcap-kiosk unit-tests
 
-test: $(KIOSK) test-tools asan
+test: $(KIOSK) test-tools asan fuzzers
 	KIOSK=./$(KIOSK) ASAN_KIOSK=$(ASAN_BUILD)/matcap-kiosk UNIT_DIR=$(ASAN_BUILD)/tests \
-		TOOLS=$(TOOLS_DIR) BAKE=$(BUILD)/bake sh tests/run.sh
+		TOOLS=$(TOOLS_DIR) BAKE=$(BUILD)/bake FUZZ_DIR=$(FUZZ_BUILD) \
+		FUZZ_SECONDS=$(FUZZ_SECONDS) sh tests/run.sh
 
 golden: $(KIOSK) test-tools
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/golden.sh tests/golden
 
 .PHONY: unit-tests test-tools asan test golden
 
+include tests/fuzz/fuzz.mk
+include tests/soak.mk
+
+# The kiosk as a systemd service on the virtual board: a Debian root booted
+# with systemd (tests/vm/systemd-test.sh; a few minutes the first time).
+vm-systemd: $(KIOSK)
+	sh tests/vm/systemd-test.sh $(BUILD)/vm-systemd/out
+
+.PHONY: vm-systemd
+
 bench: $(KIOSK) test-tools
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench.sh
+	KIOSK=./$(KIOSK) sh tests/bench_camera.sh
+	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench_materials.sh
+	KIOSK=./$(KIOSK) sh tests/bench_input.sh
+	KIOSK=./$(KIOSK) sh tests/bench_kms.sh
+	TOOLS=$(TOOLS_DIR) sh tests/bench_quality.sh tests/out/report --frames 7
 
-.PHONY: bench
+# Speed against error, regenerated into tests/report (checked in, with
+# the machine it was measured on): the table and the plot in the README.
+report: test-tools
+	TOOLS=$(TOOLS_DIR) sh tests/bench_quality.sh tests/report
+
+.PHONY: bench report

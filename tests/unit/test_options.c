@@ -141,6 +141,23 @@ static void config_errors(void **state)
 	options_release(&o);
 }
 
+/* Indented keys are keys, not continuations of the line above. */
+static void indented_lines(void **state)
+{
+	const char *path = write_ini("[scene]\n  mode = normal\n\tyaw = 10\n  [kiosk]\n"
+				     "    log_level = debug\n");
+	const char *argv[] = {"mk", "--config", path};
+	struct options o;
+
+	(void)state;
+	assert_int_equal(parse(&o, 3, argv), 0);
+	assert_int_equal(o.mode, SHADING_NORMAL);
+	assert_true(o.yaw == 10.0);
+	assert_int_equal(o.log_level, VERBOSITY_DEBUG);
+	options_release(&o);
+	unlink(path);
+}
+
 static void shipped_example_parses(void **state)
 {
 	const char *argv[] = {"mk", "--config", "config/kiosk.ini"};
@@ -154,9 +171,13 @@ static void shipped_example_parses(void **state)
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
-	    cmocka_unit_test(defaults),		  cmocka_unit_test(full_line),
-	    cmocka_unit_test(rejects_bad_values), cmocka_unit_test(config_file_then_command_line),
-	    cmocka_unit_test(config_errors),	  cmocka_unit_test(shipped_example_parses),
+	    cmocka_unit_test(defaults),
+	    cmocka_unit_test(full_line),
+	    cmocka_unit_test(rejects_bad_values),
+	    cmocka_unit_test(config_file_then_command_line),
+	    cmocka_unit_test(config_errors),
+	    cmocka_unit_test(indented_lines),
+	    cmocka_unit_test(shipped_example_parses),
 	};
 	return cmocka_run_group_tests_name("options", tests, NULL, NULL);
 }
