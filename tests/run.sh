@@ -233,7 +233,9 @@ check "no camera: said once, the kiosk runs on and ends cleanly" sh -c "
 # 15. Fullscreen on DRM/KMS, on the virtual board (tests/vm: qemu, Debian's
 #     kernel, vkms): the real kiosk sets the mode, flips, matches OSMesa
 #     references, gives the screen back, follows hotplug, waits for a busy
-#     display, says what is wrong (tests/e2e/kms*.sh; about 4 minutes, and
+#     display, says what is wrong (tests/e2e/kms*.sh), and the GPIO buttons
+#     and the camera on it (tests/vm/gpio-test.sh, tests/e2e/camera.sh);
+#     about 6 minutes, and
 #     about a minute more the first time, to build the board). VM_E2E=0
 #     leaves it out of a local run; CI runs it.
 if [ "${VM_E2E:-1}" != 0 ]; then
@@ -241,7 +243,7 @@ if [ "${VM_E2E:-1}" != 0 ]; then
 		2>"$out/e2e.err"
 	grep -q "^ok every script ran" "$out/e2e.log" ||
 		echo "not ok the board scripts did not all run (see $out/e2e.err)" >>"$out/e2e.log"
-	results kms-e2e "$out/e2e.log" "$out/e2e.err"
+	results board "$out/e2e.log" "$out/e2e.err"
 else
 	echo "NOTE the virtual-board display tests were left out (VM_E2E=0)"
 fi
