@@ -16,9 +16,9 @@ struct display_config {
 	const char *connector; /* KMS: HDMI-A-1, NULL for the first connected */
 	const char *mode;      /* KMS: WxH or WxH@Hz, NULL for the preferred */
 	int samples;	       /* MSAA samples where the backend supports it, 0 off */
-	bool exit_when_busy; /* KMS: exit when another program holds the display */
-	int kms_api;	     /* KMS: 0 auto, 1 atomic, 2 legacy (enum drm_api) */
-	bool quiet;          /* KMS: probing for auto, say nothing when absent */
+	bool exit_when_busy;   /* KMS: exit when another program holds the display */
+	int kms_api;	       /* KMS: 0 auto, 1 atomic, 2 legacy (enum drm_api) */
+	bool quiet;	       /* KMS: probing for auto, say nothing when absent */
 };
 
 struct display {

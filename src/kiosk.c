@@ -197,8 +197,8 @@ static int fill_fds(struct kiosk *k, struct pollfd *fds, int sig_fd)
 	fds[FD_DISPLAY] = (struct pollfd){.fd = k->display->get_fd(k->display), .events = POLLIN};
 	fds[FD_WATCH] =
 	    (struct pollfd){.fd = k->watch ? folder_watch_fd(k->watch) : -1, .events = POLLIN};
-	fds[FD_CAMERA] = (struct pollfd){.fd = k->camera ? camera_feed_fd(k->camera) : -1,
-					 .events = POLLIN};
+	fds[FD_CAMERA] =
+	    (struct pollfd){.fd = k->camera ? camera_feed_fd(k->camera) : -1, .events = POLLIN};
 	for (int i = 0; i < k->input_count; i++)
 		fds[FD_INPUTS + i] = (struct pollfd){.fd = k->inputs[i]->fd, .events = POLLIN};
 	return FD_INPUTS + k->input_count;

@@ -14,8 +14,8 @@ enum backend_kind { BACKEND_AUTO, BACKEND_KMS, BACKEND_OSMESA, BACKEND_EGL_HEADL
 enum verbosity { VERBOSITY_ERROR, VERBOSITY_WARNING, VERBOSITY_INFO, VERBOSITY_DEBUG };
 
 /* Status of options_parse() besides 0. */
-#define OPTIONS_USAGE   (-1000) /* a bad command line: exit 2 */
-#define OPTIONS_CONFIG  (-1001) /* a bad config file: exit 78, EX_CONFIG */
+#define OPTIONS_USAGE  (-1000) /* a bad command line: exit 2 */
+#define OPTIONS_CONFIG (-1001) /* a bad config file: exit 78, EX_CONFIG */
 
 /* [buttons]: the slots, in the order of options_button_names. */
 #define OPTIONS_BUTTONS 3
@@ -33,11 +33,11 @@ struct options {
 	int backend; /* enum backend_kind */
 	int size[2]; /* offscreen width, height */
 	int rotation;
-	char *device;    /* KMS: /dev/dri/cardN; NULL: the first with a display */
-	char *connector; /* KMS: HDMI-A-1; NULL: the first connected */
+	char *device;	    /* KMS: /dev/dri/cardN; NULL: the first with a display */
+	char *connector;    /* KMS: HDMI-A-1; NULL: the first connected */
 	char *display_mode; /* KMS: WxH or WxH@Hz; NULL: the preferred */
-	int on_busy;     /* KMS: 0 wait, 1 exit when another program holds it */
-	int kms_api;     /* KMS: 0 auto, 1 atomic, 2 legacy (for tests) */
+	int on_busy;	    /* KMS: 0 wait, 1 exit when another program holds it */
+	int kms_api;	    /* KMS: 0 auto, 1 atomic, 2 legacy (for tests) */
 	/* [scene] */
 	char *model;  /* NULL: the built-in torus knot */
 	char *matcap; /* a file or a folder; NULL: the shipped folder */
@@ -46,7 +46,7 @@ struct options {
 	double yaw, pitch;
 	double lod_pixels; /* simplify to this error on the display; 0: off */
 	/* [kiosk] */
-	int log_level; /* enum verbosity */
+	int log_level;	      /* enum verbosity */
 	double attract_after; /* seconds idle before turning by itself; 0: never */
 	double attract_speed; /* degrees per second */
 	double turn_speed;    /* degrees per second while a turn is held */
@@ -64,13 +64,13 @@ struct options {
 	/* [material] */
 	struct material_config material;
 	/* [camera] */
-	int camera;	      /* 0 off, 1 on: the live camera as a matcap */
-	char *camera_id;      /* a libcamera id or an index; NULL: the first */
-	int camera_size[2];   /* asked of the camera */
+	int camera;	       /* 0 off, 1 on: the live camera as a matcap */
+	char *camera_id;       /* a libcamera id or an index; NULL: the first */
+	int camera_size[2];    /* asked of the camera */
 	double camera_crop[3]; /* the ball's centre x, y and radius, 0..1 */
 	bool camera_mirror;
-	double camera_stall;  /* seconds without a frame: the camera is lost */
-	int camera_import;    /* 0 auto: import dmabufs where the driver can; 1 off */
+	double camera_stall; /* seconds without a frame: the camera is lost */
+	int camera_import;   /* 0 auto: import dmabufs where the driver can; 1 off */
 	/* the command line only */
 	char *config;
 	char *output;

@@ -23,7 +23,7 @@
 
 #define TEXEL_256   (1.0 / 256.0)
 #define UV_BOUND    (0.75 * TEXEL_256) /* the mappings at mediump */
-#define COLOR_BOUND (1.0 / 255.0)     /* the highp values */
+#define COLOR_BOUND (1.0 / 255.0)      /* the highp values */
 
 /* The binary16 value of a bit pattern (sign, 5-bit exponent, 10 bits). */
 static double half_value(uint16_t bits)
