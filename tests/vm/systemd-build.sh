@@ -31,7 +31,7 @@ die() {
 # and what the guest test uses.
 PACKAGES="systemd systemd-sysv udev kmod procps libegl-mesa0 libgl1-mesa-dri libgbm1 libegl1
 libgles2 libdrm2 libpng16-16 libturbojpeg0 libtinygltf2d libinih1 libsystemd0 libgpiod2 libevdev2
-libcamera0.0.3 libosmesa6 libstdc++6 zlib1g"
+libcamera0.0.3 libosmesa6 libstdc++6 zlib1g libmeshoptimizer2d"
 
 command -v debootstrap >/dev/null || {
 	say "installing debootstrap"
