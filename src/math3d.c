@@ -91,6 +91,29 @@ void mat3_from_mat4(float out[9], const float m[16])
 			out[c * 3 + r] = m[c * 4 + r];
 }
 
+double vec3_dot(const double a[3], const double b[3])
+{
+	return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+void vec3_cross(const double a[3], const double b[3], double out[3])
+{
+	out[0] = a[1] * b[2] - a[2] * b[1];
+	out[1] = a[2] * b[0] - a[0] * b[2];
+	out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+bool vec3_normalize(double v[3])
+{
+	double l = sqrt(vec3_dot(v, v));
+
+	if (!(l > 1e-12) || !isfinite(l))
+		return false;
+	for (int k = 0; k < 3; k++)
+		v[k] /= l;
+	return true;
+}
+
 struct quat quat_identity(void)
 {
 	return (struct quat){1, 0, 0, 0};

@@ -1,5 +1,6 @@
 /* Procedural models: a torus knot shows off a matcap (curvature in every
  * direction), a sphere makes the mapping checkable analytically. */
+#include "math3d.h"
 #include "mesh.h"
 
 #include <errno.h>
@@ -38,21 +39,6 @@ static void grid_indices(uint32_t *idx, int cols, int rows)
 		}
 }
 
-static void cross3(const double a[3], const double b[3], double out[3])
-{
-	out[0] = a[1] * b[2] - a[2] * b[1];
-	out[1] = a[2] * b[0] - a[0] * b[2];
-	out[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static void normalize3(double v[3])
-{
-	double l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-
-	for (int k = 0; k < 3; k++)
-		v[k] /= l;
-}
-
 /* Frenet-like frame as three.js builds it: tangent by finite difference,
  * normal from the sum of the neighbouring points. */
 static void knot_ring(double u, int radial, double *pos, double *nrm)
@@ -65,10 +51,10 @@ static void knot_ring(double u, int radial, double *pos, double *nrm)
 		t[k] = p2[k] - p1[k];
 		n[k] = p2[k] + p1[k];
 	}
-	cross3(t, n, b);
-	cross3(b, t, n);
-	normalize3(b);
-	normalize3(n);
+	vec3_cross(t, n, b);
+	vec3_cross(b, t, n);
+	vec3_normalize(b);
+	vec3_normalize(n);
 	for (int i = 0; i <= radial; i++) {
 		double v = (double)(i % radial) / radial * 2.0 * M_PI;
 		double cx = -KNOT_TUBE * 0.5 * cos(v), cy = KNOT_TUBE * 0.5 * sin(v);

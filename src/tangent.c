@@ -1,4 +1,5 @@
 #include "tangent.h"
+#include "math3d.h"
 
 #include <errno.h>
 #include <math.h>
@@ -14,30 +15,6 @@ struct face {
 	double t[3], b[3];
 	int sign;
 };
-
-static double dot3(const double a[3], const double b[3])
-{
-	return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static void cross3(const double a[3], const double b[3], double out[3])
-{
-	out[0] = a[1] * b[2] - a[2] * b[1];
-	out[1] = a[2] * b[0] - a[0] * b[2];
-	out[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-/* false (and v unchanged) when v is too short or not finite. */
-static bool normalize3(double v[3])
-{
-	double l = sqrt(dot3(v, v));
-
-	if (!(l > 1e-12) || !isfinite(l))
-		return false;
-	for (int k = 0; k < 3; k++)
-		v[k] /= l;
-	return true;
-}
 
 static void corner_edges(const struct mesh *m, uint32_t t, int k, double e1[3], double e2[3])
 {
@@ -58,8 +35,8 @@ static double corner_angle(const struct mesh *m, uint32_t t, int k)
 	double e1[3], e2[3], c[3];
 
 	corner_edges(m, t, k, e1, e2);
-	cross3(e1, e2, c);
-	double a = atan2(sqrt(dot3(c, c)), dot3(e1, e2));
+	vec3_cross(e1, e2, c);
+	double a = atan2(sqrt(vec3_dot(c, c)), vec3_dot(e1, e2));
 
 	return isfinite(a) ? a : 0.0;
 }
@@ -82,15 +59,15 @@ static void face_frame(const struct mesh *m, uint32_t t, struct face *f)
 	if (!(s > 0.0) || !(fabs(r) > 1e-9 * s) || !isfinite(r))
 		return;
 	corner_edges(m, t, 0, e1, e2);
-	cross3(e1, e2, area);
+	vec3_cross(e1, e2, area);
 	/* A zero-area triangle (collinear corners) has no surface to follow. */
-	if (!(sqrt(dot3(area, area)) > 1e-12 * sqrt(dot3(e1, e1) * dot3(e2, e2))))
+	if (!(sqrt(vec3_dot(area, area)) > 1e-12 * sqrt(vec3_dot(e1, e1) * vec3_dot(e2, e2))))
 		return;
 	for (int c = 0; c < 3; c++) {
 		f->t[c] = (e1[c] * dv2 - e2[c] * dv1) / r;
 		f->b[c] = -(e2[c] * du1 - e1[c] * du2) / r;
 	}
-	if (normalize3(f->t) && normalize3(f->b))
+	if (vec3_normalize(f->t) && vec3_normalize(f->b))
 		f->sign = r < 0 ? 1 : -1;
 }
 
@@ -101,11 +78,11 @@ static void any_perpendicular(const double n[3], double out[3])
 		: fabs(n[1]) <= fabs(n[2])			     ? 1
 								     : 2;
 	double axis[3] = {k == 0, k == 1, k == 2};
-	double d = dot3(n, axis);
+	double d = vec3_dot(n, axis);
 
 	for (int c = 0; c < 3; c++)
 		out[c] = axis[c] - n[c] * d;
-	normalize3(out);
+	vec3_normalize(out);
 }
 
 /* Gram-Schmidt of the accumulated tangent against the normal. When it
@@ -119,21 +96,21 @@ static void frame_finish(const float *normal, const double tan[3], const double 
 	double n[3] = {normal[0], normal[1], normal[2]}, t[3], nb[3];
 	double d = 0.0;
 
-	if (!normalize3(n))
+	if (!vec3_normalize(n))
 		n[0] = n[1] = 0.0, n[2] = 1.0;
-	d = dot3(n, tan);
+	d = vec3_dot(n, tan);
 	for (int c = 0; c < 3; c++)
 		t[c] = tan[c] - n[c] * d;
-	if (!normalize3(t)) {
-		cross3(bit, n, t);
-		d = dot3(n, t);
+	if (!vec3_normalize(t)) {
+		vec3_cross(bit, n, t);
+		d = vec3_dot(n, t);
 		for (int c = 0; c < 3; c++)
 			t[c] -= n[c] * d;
-		if (!normalize3(t))
+		if (!vec3_normalize(t))
 			any_perpendicular(n, t);
 	}
-	cross3(n, t, nb);
-	d = dot3(nb, bit);
+	vec3_cross(n, t, nb);
+	d = vec3_dot(nb, bit);
 	for (int c = 0; c < 3; c++)
 		out[c] = (float)t[c];
 	out[3] = d < 0.0 ? -1.0f : d > 0.0 ? 1.0f : fallback < 0 ? -1.0f : 1.0f;
@@ -201,7 +178,7 @@ static void move_to_twins(struct mesh *m, const struct face *faces, const double
 
 static bool has_frame(const double *a)
 {
-	return dot3(a, a) > 0.0;
+	return vec3_dot(a, a) > 0.0;
 }
 
 /* Whether copies of one point (a UV seam splits them) may share a frame:
@@ -217,8 +194,8 @@ static bool same_frame(const struct mesh *m, const double *a, const double *b, u
 
 	if (na[0] != nb[0] || na[1] != nb[1] || na[2] != nb[2])
 		return false;
-	return !has_frame(b) ||
-	       ((a[6] < 0) == (b[6] < 0) && dot3(a, b) > 0.5 * sqrt(dot3(a, a) * dot3(b, b)));
+	return !has_frame(b) || ((a[6] < 0) == (b[6] < 0) &&
+				 vec3_dot(a, b) > 0.5 * sqrt(vec3_dot(a, a) * vec3_dot(b, b)));
 }
 
 /* The first copy of a point that has a frame leads its group; every copy
@@ -332,7 +309,7 @@ void tangent_orthonormalize(struct mesh *m)
 
 		if (!isfinite(tan[0] + tan[1] + tan[2]))
 			tan[0] = tan[1] = tan[2] = 0.0;
-		cross3(n, tan, bit);
+		vec3_cross(n, tan, bit);
 		for (int c = 0; c < 3; c++)
 			bit[c] *= w;
 		frame_finish(nf, tan, bit, w, t);
