@@ -13,6 +13,7 @@
  * a manager is never reused across a device coming back). A camera that
  * libcamera reports removed ends this process; the kiosk starts another. */
 #include "camera.h"
+#include "clock.h"
 #include "camera_proto.h"
 #include "log.h"
 
@@ -46,14 +47,6 @@ constexpr uint64_t REPROBE_NS = 30000000000ull;
 /* A media device appeared: look once udev has settled its video nodes
  * (libcamera 0.0.3 lists only devices udev has initialised). */
 constexpr uint64_t SETTLE_NS = 1000000000ull;
-
-uint64_t monotonic_ns()
-{
-	struct timespec ts;
-
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (uint64_t)ts.tv_sec * 1000000000ull + (uint64_t)ts.tv_nsec;
-}
 
 /* libcamera writes "[time] [pid] LEVEL Category file:line text" lines to
  * stderr by default, which would interleave with ours in the journal.

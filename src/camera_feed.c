@@ -1,4 +1,5 @@
 #include "camera_feed.h"
+#include "clock.h"
 #include "camera.h"
 #include "camera_texture.h"
 #include "log.h"
@@ -110,10 +111,7 @@ void camera_feed_service(struct camera_feed *f, struct app *app, short revents,
 
 static double thread_cpu_us(void)
 {
-	struct timespec ts;
-
-	clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-	return ts.tv_sec * 1e6 + ts.tv_nsec * 1e-3;
+	return (double)clock_ns(CLOCK_THREAD_CPUTIME_ID) / 1e3;
 }
 
 static void count_frame(struct camera_feed *f, const struct camera_frame *fr)

@@ -5,6 +5,7 @@
  * timer (the stall deadline, the next helper start), so the main loop
  * polls one descriptor and nothing here blocks. */
 #include "camera.h"
+#include "clock.h"
 #include "camera_proto.h"
 #include "log.h"
 
@@ -68,14 +69,6 @@ struct camera {
 	unsigned stalls; /* in a row, with no frame in between */
 	bool stopped_it; /* we killed the helper: its end is no news */
 };
-
-static uint64_t monotonic_ns(void)
-{
-	struct timespec ts;
-
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (uint64_t)ts.tv_sec * 1000000000ull + (uint64_t)ts.tv_nsec;
-}
 
 static int send_msg(struct camera *c, const struct camera_msg *m)
 {

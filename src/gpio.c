@@ -1,4 +1,5 @@
 #include "gpio.h"
+#include "clock.h"
 #include "button.h"
 #include "log.h"
 
@@ -32,14 +33,6 @@ struct gpio_wire {
 static struct gpio_source *source_of(struct input_source *s)
 {
 	return (struct gpio_source *)((char *)s - offsetof(struct gpio_source, base));
-}
-
-static uint64_t clock_ns(clockid_t id)
-{
-	struct timespec ts;
-
-	clock_gettime(id, &ts);
-	return (uint64_t)ts.tv_sec * 1000000000ull + (uint64_t)ts.tv_nsec;
 }
 
 static uint64_t distance(uint64_t a, uint64_t b)

@@ -1,4 +1,5 @@
 #include "kiosk.h"
+#include "clock.h"
 #include "log.h"
 
 #include <errno.h>
@@ -16,14 +17,6 @@
 #define MATCAP_SETTLE_NS 500000000ull
 
 enum { FD_SIGNAL, FD_DISPLAY, FD_WATCH, FD_CAMERA, FD_INPUTS };
-
-static uint64_t monotonic_ns(void)
-{
-	struct timespec ts;
-
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (uint64_t)ts.tv_sec * 1000000000ull + (uint64_t)ts.tv_nsec;
-}
 
 int kiosk_add_input(struct kiosk *k, struct input_source *s)
 {

@@ -1,6 +1,7 @@
 /* matcap-kiosk: a glTF model shaded with a matcap, fullscreen on DRM/KMS
  * or offscreen. main() wires the pieces; each lives in its own file. */
 #include "camera.h"
+#include "clock.h"
 #include "display.h"
 #include "gpio.h"
 #include "image.h"
@@ -26,10 +27,7 @@
 
 static double now_ms(void)
 {
-	struct timespec ts;
-
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return ts.tv_sec * 1e3 + ts.tv_nsec / 1e6;
+	return (double)monotonic_ns() / 1e6;
 }
 
 /* auto: the display when there is one, else a PNG of the scene (the
