@@ -24,7 +24,7 @@ PKG_CONFIG ?= pkg-config
 BUILD   ?= build
 
 # libOSMesa is opened with dlopen and libGLESv2 is never linked: every gl*
-# call goes through the table in src/gl.c (see DESIGN.md). Their headers
+# call goes through the table in src/render/gl.c (see DESIGN.md). Their headers
 # are still found through pkg-config.
 PKGS_LINK    := egl gbm libdrm libudev libpng libturbojpeg tinygltf inih libsystemd libgpiod libevdev \
 		libcamera
@@ -44,19 +44,23 @@ ALL_CXXFLAGS = -std=c++17 $(OPT) $(WARN) -Isrc $(PKG_CFLAGS) $(CXXFLAGS)
 # already brings libstdc++.
 LDLIBS    = $(PKG_LIBS) -lmeshoptimizer -ldl -lm
 
-# The program's sources, minus main.c: tests link the same objects.
-LIB_C  := app bake button display display_egl display_kms display_osmesa drm drm_atomic drm_legacy \
-	  egl_util folder_watch gl gpio hotplug image keyboard kiosk kms_fb log math3d matcap_set \
-	  mesh mesh_gen options reload render scene service shader shading
-LIB_CC := gltf
-# The optional shading features (issue 6).
-LIB_C  += material subdivide tangent texture
-LIB_CC += gltf_material
-# The shader math mirrored in C, and only what a scene needs (issue 7).
-LIB_C  += fp16 lod shading_double shading_float
-# The live camera as a matcap (issue 5).
-LIB_C  += camera_feed camera_link camera_math camera_proto camera_texture
-LIB_CC += camera
+# The program's sources, minus app/main.c (tests link the same objects),
+# one folder per layer: each includes only the layers listed after it
+# (tests/tools/layers.sh checks that).
+SRC_APP     := app/app app/content app/kiosk app/options app/reload app/service
+SRC_DISPLAY := display/display display/display_egl display/display_kms display/display_osmesa \
+	       display/drm display/drm_atomic display/drm_legacy display/egl_util display/hotplug \
+	       display/kms_fb
+SRC_INPUT   := input/action input/button input/gpio input/keyboard
+SRC_CAMERA  := camera/camera_feed camera/camera_link camera/camera_math camera/camera_proto \
+	       camera/camera_texture
+SRC_RENDER  := render/bake render/gl render/matcap_set render/render render/shader render/shading
+SRC_SCENE   := scene/lod scene/material scene/mesh scene/mesh_gen scene/subdivide scene/tangent \
+	       scene/texture
+SRC_UTIL    := util/folder_watch util/image util/log util/math3d
+LIB_C  := $(SRC_APP) $(SRC_DISPLAY) $(SRC_INPUT) $(SRC_CAMERA) $(SRC_RENDER) $(SRC_SCENE) $(SRC_UTIL)
+# The two C++ shims, each behind a C header.
+LIB_CC := scene/gltf scene/gltf_material camera/camera
 SHADERS := shaders/mapping.glsl shaders/matcap.vert shaders/matcap.frag shaders/material.glsl
 SHADERS += shaders/camera.vert shaders/camera.frag
 
@@ -66,13 +70,15 @@ KIOSK ?= matcap-kiosk
 
 all: $(KIOSK)
 
-$(KIOSK): $(BUILD)/main.o $(LIB_OBJS)
+$(KIOSK): $(BUILD)/app/main.o $(LIB_OBJS)
 	$(CXX) -o $@ $^ $(LDFLAGS) $(LDLIBS)
 
-$(BUILD)/%.o: src/%.c | $(BUILD)
+$(BUILD)/%.o: src/%.c
+	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -MMD -MP -c -o $@ $<
 
-$(BUILD)/%.o: src/%.cc | $(BUILD)
+$(BUILD)/%.o: src/%.cc
+	@mkdir -p $(@D)
 	$(CXX) $(ALL_CXXFLAGS) -MMD -MP -c -o $@ $<
 
 $(BUILD)/shaders_embedded.c: shaders/embed.sh $(SHADERS) | $(BUILD)
@@ -84,10 +90,10 @@ $(BUILD)/shaders_embedded.o: $(BUILD)/shaders_embedded.c
 $(BUILD):
 	mkdir -p $@
 
--include $(wildcard $(BUILD)/*.d)
+-include $(wildcard $(BUILD)/*.d $(BUILD)/*/*.d)
 
 # The matcap baker: regenerates matcaps/*.png byte for byte.
-$(BUILD)/bake: matcaps/bake.c $(BUILD)/bake.o $(BUILD)/image.o $(BUILD)/log.o
+$(BUILD)/bake: matcaps/bake.c $(BUILD)/render/bake.o $(BUILD)/util/image.o $(BUILD)/util/log.o
 	$(CC) $(ALL_CFLAGS) -o $@ $^ $(PKG_LIBS) -lm
 
 matcaps: $(BUILD)/bake
@@ -138,7 +144,7 @@ uninstall:
 		$(DESTDIR)$(UDEVRULESDIR)/60-matcap-kiosk-gpio.rules
 
 format:
-	clang-format -i src/*.c src/*.h src/*.cc matcaps/*.c tests/*.c tests/unit/*.c
+	clang-format -i $(wildcard src/*/*.c src/*/*.h src/*/*.cc matcaps/*.c tests/*/*.c tests/*/*.h)
 
 clean:
 	rm -rf $(BUILD) matcap-kiosk tests/out

@@ -1,9 +1,9 @@
 /* bake OUTDIR [SIZE]: write OUTDIR/<name>.png for every baked material.
  * `make matcaps` runs `build/bake matcaps 256` to rebuild the shipped PNGs
  * byte for byte (see matcaps/README.md). */
-#include "bake.h"
-#include "image.h"
-#include "log.h"
+#include "render/bake.h"
+#include "util/image.h"
+#include "util/log.h"
 
 #include <errno.h>
 #include <stdio.h>

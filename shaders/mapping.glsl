@@ -1,7 +1,7 @@
 // Matcap mappings: a unit view-space normal (and, for the view-dependent
 // modes, the direction from the eye) to a texture coordinate. t = 0 is the
 // image's top row, so "up" in view space is flipped.
-// Mirrored line for line in src/shading_mirror.h, the reference of the tests.
+// Mirrored line for line in tests/oracle/shading_mirror.h, the reference of the tests.
 
 // Precision. Mali and Adreno GPUs run mediump in 16 bits (binary16: 11
 // significant bits). tests/unit/test_fp16.c rounds the C mirror so and
@@ -10,7 +10,7 @@
 // error of n.h: 6/255 at shininess 32) nor for the iridescent hue (1.4 to
 // 8/255): there the normal and eye vectors, the hue and the lit terms are
 // SHADE_P, highp where the GPU has it (within 1/255 then); elsewhere the
-// stage's default. PRECISION_HIGHP makes every float highp (src/render.c
+// stage's default. PRECISION_HIGHP makes every float highp (src/render/render.c
 // sets it on a CPU rasteriser, where 16-bit floats are emulated, slower).
 #if defined(PRECISION_HIGHP) && defined(GL_FRAGMENT_PRECISION_HIGH)
 precision highp float;

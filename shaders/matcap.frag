@@ -1,6 +1,6 @@
 // The matcap lookup, and the optional layers over it. The default float
 // precision (mediump unless the build asks otherwise) is set in the header
-// that src/shader.c puts before this.
+// that src/render/shader.c puts before this.
 
 #ifdef MODE_SEM_VERTEX
 varying vec2 v_matcap_uv;

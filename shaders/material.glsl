@@ -1,6 +1,6 @@
 // The optional features' math (issue 6), for the fragment shader only:
 // each function is compiled in only when its feature's #define is set.
-// Mirrored line for line in src/shading_mirror.h, the reference of the
+// Mirrored line for line in tests/oracle/shading_mirror.h, the reference of the
 // tests. SHADE_P (mapping.glsl) marks the values that mediump cannot carry.
 
 #ifdef IRIDESCENCE

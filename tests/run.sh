@@ -46,7 +46,7 @@ done
 # 2. Golden images through OSMesa, with a stated tolerance: a pixel differs
 #    when a channel is off by more than 8/255, and at most 0.5% may differ.
 check "models written" "$TOOLS/mkmodels" "$out/models"
-MODELS=$out/models check "golden scenes rendered" sh tests/golden.sh "$out/render"
+MODELS=$out/models check "golden scenes rendered" sh tests/golden/golden.sh "$out/render"
 for g in tests/golden/*.png; do
 	check "golden $(basename "$g")" "$TOOLS/imgdiff" --tol 8 --share 0.005 "$g" \
 		"$out/render/$(basename "$g")"
@@ -139,7 +139,7 @@ check "two buttons on one line exit 78 naming file and line" sh -c \
 	"$KIOSK -C $out/bad/dup-line.ini 2>&1 | grep -q 'dup-line.ini:4: .buttons. select = GPIO17 is the line of left too (line 2)' &&
 	[ \$($KIOSK -C $out/bad/dup-line.ini 2>/dev/null; echo \$?) -eq 78 ]"
 # A button whose chip is missing: one error naming chip and line, and the
-# live kiosk (the ASan build; OSMesa's own leak aside, see tests/live.sh)
+# live kiosk (the ASan build; OSMesa's own leak aside, see tests/e2e/live.sh)
 # runs on without it, and exits cleanly.
 check "a missing GPIO chip is one error; the kiosk runs on" sh -c "
 	ASAN_OPTIONS=detect_leaks=0 $ASAN_KIOSK --backend osmesa --size 64x64 --keyboard none \
@@ -150,7 +150,7 @@ check "a missing GPIO chip is one error; the kiosk runs on" sh -c "
 	grep -q 'button left: GPIO chip nosuchchip not found.*line GPIO17' $out/bad/gpio.log"
 
 # Every setting that the config file takes is documented in the example.
-check "every config key documented in config/kiosk.ini" sh tests/config_doc.sh "$KIOSK"
+check "every config key documented in config/kiosk.ini" sh tests/e2e/config_doc.sh "$KIOSK"
 
 # 8. The shipped matcaps regenerate byte for byte from the baker.
 mkdir -p "$out/baked"
@@ -163,7 +163,7 @@ done
 #    after the first frame, watchdog pings, SIGHUP reloads (and keeps the
 #    scene on a bad config or model), new matcaps picked up, SIGTERM exits
 #    0 with no leak.
-sh tests/live.sh "$ASAN_KIOSK" "$TOOLS/notify_listen" "$out/models/sphere.glb" "$out/live" \
+sh tests/e2e/live.sh "$ASAN_KIOSK" "$TOOLS/notify_listen" "$out/models/sphere.glb" "$out/live" \
 	>"$out/live.log" 2>&1
 grep -q "^ok every step ran" "$out/live.log" || echo "not ok the scenario stopped early" >>"$out/live.log"
 results live "$out/live.log" "$out/live/stderr"
@@ -213,7 +213,7 @@ results fuzz "$out/fuzz.log" "$out/fuzz.err"
 # 13. No leak, no drift: the live loop through OSMesa with a matcap change
 #     every 100 frames and a reload every 10,000, 100,000 frames (`make
 #     soak` runs 500,000), memory flat; valgrind on a short run of it.
-SOAK=$TOOLS/soak SOAK_OUT=$out/soak sh tests/soak.sh >"$out/soak.log" 2>"$out/soak.err"
+SOAK=$TOOLS/soak SOAK_OUT=$out/soak sh tests/soak/soak.sh >"$out/soak.log" 2>"$out/soak.err"
 [ -s "$out/soak.log" ] || echo "not ok the soak script printed nothing" >"$out/soak.log"
 results soak "$out/soak.log" "$out/soak.err"
 

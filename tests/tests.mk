@@ -2,7 +2,7 @@
 #   make test     everything below, ending in one "N passed, N failed" line
 #   make golden   regenerate tests/golden/*.png on purpose (then look at them)
 
-UNIT_TESTS  := options mesh image gltf shading app button scene service
+UNIT_TESTS  := options mesh image gltf shading app button content service
 UNIT_TESTS  += tangent subdivide material
 UNIT_TESTS  += camera_math camera_proto camera_texture
 UNIT_TESTS  += stability fp16 lod
@@ -12,55 +12,65 @@ ASAN_BUILD  := $(BUILD)/asan
 SANITIZE    := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all \
 	       -fno-omit-frame-pointer
 TEST_LIBS   = $(shell $(PKG_CONFIG) --libs cmocka zlib) $(LDLIBS) -lstdc++
+TEST_CFLAGS = $(ALL_CFLAGS) -Itests -Itests/tools
+# The C mirror of the shaders: the tests' reference, never in the program.
+ORACLE_OBJS := $(BUILD)/oracle/fp16.o $(BUILD)/oracle/shading_double.o \
+	       $(BUILD)/oracle/shading_float.o
 
-$(BUILD)/tests/test_%: tests/unit/test_%.c tests/gltf_write.c tests/gltf_write.h $(LIB_OBJS)
+$(BUILD)/oracle/%.o: tests/oracle/%.c
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -Itests $(LDFLAGS) -o $@ $< tests/gltf_write.c $(LIB_OBJS) $(TEST_LIBS)
+	$(CC) $(TEST_CFLAGS) -MMD -MP -c -o $@ $<
+
+-include $(wildcard $(BUILD)/oracle/*.d)
+
+$(BUILD)/tests/test_%: tests/unit/test_%.c tests/tools/gltf_write.c tests/tools/gltf_write.h $(LIB_OBJS) $(ORACLE_OBJS)
+	@mkdir -p $(@D)
+	$(CC) $(TEST_CFLAGS) $(LDFLAGS) -o $@ $< tests/tools/gltf_write.c $(LIB_OBJS) $(ORACLE_OBJS) $(TEST_LIBS)
 
 unit-tests: $(UNIT_TESTS:%=$(BUILD)/tests/test_%)
 
-$(TOOLS_DIR)/mkmodels: tests/mkmodels.c tests/gltf_write.c tests/maps.c $(LIB_OBJS)
+$(TOOLS_DIR)/mkmodels: tests/tools/mkmodels.c tests/tools/gltf_write.c tests/tools/maps.c $(LIB_OBJS)
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -Itests -o $@ $< tests/gltf_write.c tests/maps.c $(LIB_OBJS) \
+	$(CC) $(TEST_CFLAGS) -o $@ $< tests/tools/gltf_write.c tests/tools/maps.c $(LIB_OBJS) \
 		$(TEST_LIBS)
 
-$(TOOLS_DIR)/imgdiff: tests/imgdiff.c $(BUILD)/image.o $(BUILD)/log.o
+$(TOOLS_DIR)/imgdiff: tests/tools/imgdiff.c $(BUILD)/util/image.o $(BUILD)/util/log.o
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -o $@ $^ $(PKG_LIBS) -lm
 
 # Which colour-bar hues a picture shows (the camera's, in tests/e2e/camera.sh).
-$(TOOLS_DIR)/hues: tests/hues.c $(BUILD)/image.o $(BUILD)/log.o
+$(TOOLS_DIR)/hues: tests/tools/hues.c $(BUILD)/util/image.o $(BUILD)/util/log.o
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -o $@ $^ $(PKG_LIBS) -lm
 test-tools: $(TOOLS_DIR)/hues
 
-# Stands in for systemd's notify socket in tests/live.sh.
-$(TOOLS_DIR)/notify_listen: tests/notify_listen.c
+# Stands in for systemd's notify socket in tests/e2e/live.sh.
+$(TOOLS_DIR)/notify_listen: tests/tools/notify_listen.c
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -o $@ $<
 
 # What each material feature compiles, uploads and binds (issue 6).
-$(TOOLS_DIR)/program_check: tests/program_check.c $(LIB_OBJS)
+$(TOOLS_DIR)/program_check: tests/golden/program_check.c $(LIB_OBJS)
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -Itests -o $@ $< $(LIB_OBJS) $(TEST_LIBS)
+	$(CC) $(TEST_CFLAGS) -o $@ $< $(LIB_OBJS) $(TEST_LIBS)
 
 test-tools: $(TOOLS_DIR)/mkmodels $(TOOLS_DIR)/imgdiff $(BUILD)/bake $(TOOLS_DIR)/notify_listen \
 	$(TOOLS_DIR)/soak
 test-tools: $(TOOLS_DIR)/program_check
 
 # The renderer against the C mirror of the shaders, pixel by pixel (issue 7).
-$(TOOLS_DIR)/mirror_check: tests/mirror_check.c $(LIB_OBJS)
+$(TOOLS_DIR)/mirror_check: tests/oracle/mirror_check.c $(LIB_OBJS) $(ORACLE_OBJS)
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -Itests -o $@ $< $(LIB_OBJS) $(TEST_LIBS)
+	$(CC) $(TEST_CFLAGS) -o $@ $< $(LIB_OBJS) $(ORACLE_OBJS) $(TEST_LIBS)
 
 test-tools: $(TOOLS_DIR)/mirror_check
 
 # Speed against error, for `make bench` and `make report` (issue 7).
-$(TOOLS_DIR)/bench_quality: tests/bench_quality.c tests/bench_quality_report.c \
-		tests/bench_quality.h tests/maps.c $(LIB_OBJS)
+$(TOOLS_DIR)/bench_quality: tests/bench/bench_quality.c tests/bench/bench_quality_report.c \
+		tests/bench/bench_quality.h tests/tools/maps.c $(LIB_OBJS) $(ORACLE_OBJS)
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -Itests -o $@ $< tests/bench_quality_report.c tests/maps.c \
-		$(LIB_OBJS) $(TEST_LIBS)
+	$(CC) $(TEST_CFLAGS) -o $@ $< tests/bench/bench_quality_report.c tests/tools/maps.c \
+		$(LIB_OBJS) $(ORACLE_OBJS) $(TEST_LIBS)
 
 test-tools: $(TOOLS_DIR)/bench_quality
 
@@ -77,12 +87,12 @@ test: $(KIOSK) test-tools asan fuzzers
 		FUZZ_SECONDS=$(FUZZ_SECONDS) sh tests/run.sh
 
 golden: $(KIOSK) test-tools
-	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/golden.sh tests/golden
+	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/golden/golden.sh tests/golden
 
 .PHONY: unit-tests test-tools asan test golden
 
 include tests/fuzz/fuzz.mk
-include tests/soak.mk
+include tests/soak/soak.mk
 
 # The kiosk as a systemd service on the virtual board: a Debian root booted
 # with systemd (tests/vm/systemd-test.sh; a few minutes the first time).
@@ -92,16 +102,16 @@ vm-systemd: $(KIOSK)
 .PHONY: vm-systemd
 
 bench: $(KIOSK) test-tools
-	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench.sh
-	KIOSK=./$(KIOSK) sh tests/bench_camera.sh
-	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench_materials.sh
-	KIOSK=./$(KIOSK) sh tests/bench_input.sh
-	KIOSK=./$(KIOSK) sh tests/bench_kms.sh
-	TOOLS=$(TOOLS_DIR) sh tests/bench_quality.sh tests/out/report --frames 7
+	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench.sh
+	KIOSK=./$(KIOSK) sh tests/bench/bench_camera.sh
+	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_materials.sh
+	KIOSK=./$(KIOSK) sh tests/bench/bench_input.sh
+	KIOSK=./$(KIOSK) sh tests/bench/bench_kms.sh
+	TOOLS=$(TOOLS_DIR) sh tests/bench/bench_quality.sh tests/out/report --frames 7
 
-# Speed against error, regenerated into tests/report (checked in, with
+# Speed against error, regenerated into tests/bench/report (checked in, with
 # the machine it was measured on): the table and the plot in the README.
 report: test-tools
-	TOOLS=$(TOOLS_DIR) sh tests/bench_quality.sh tests/report
+	TOOLS=$(TOOLS_DIR) sh tests/bench/bench_quality.sh tests/bench/report
 
 .PHONY: bench report

@@ -1,5 +1,5 @@
 #!/bin/sh
-# Guest script for tests/bench_kms.sh: kmscube, then matcap-kiosk, each
+# Guest script for tests/bench/bench_kms.sh: kmscube, then matcap-kiosk, each
 # flipping frames on vkms at 1024x768 in this one boot (llvmpipe through
 # kms_swrast + GBM).  Prints "bench kmscube FRAMES SECONDS FPS" and
 # "bench kiosk FLIPS SECONDS FPS"; their logs go into the share.

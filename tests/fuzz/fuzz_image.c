@@ -2,8 +2,8 @@
  * around them) on any bytes, as a matcap file would hand them over. An
  * image that decodes must be what the renderer uploads blindly: a size
  * within IMAGE_MAX_SIDE and every RGBA byte readable. */
-#include "image.h"
-#include "log.h"
+#include "util/image.h"
+#include "util/log.h"
 
 #include <stdint.h>
 #include <stdlib.h>

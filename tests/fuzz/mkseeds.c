@@ -6,8 +6,8 @@
  * Every file stays under 4 KiB but the material ones, which embed a
  * 4x4 PNG. */
 #include "gltf_write.h"
-#include "image.h"
-#include "mesh.h"
+#include "util/image.h"
+#include "scene/mesh.h"
 
 #include <png.h>
 #include <stdio.h>

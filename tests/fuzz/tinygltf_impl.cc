@@ -8,7 +8,7 @@
 #define TINYGLTF_NO_EXTERNAL_IMAGE
 #include <tiny_gltf.h>
 
-// Debian builds tinygltf without stb_image, and src/gltf.cc installs its own
+// Debian builds tinygltf without stb_image, and src/scene/gltf.cc installs its own
 // image loader; the defaults that a TinyGLTF object still names when it is
 // declared without TINYGLTF_NO_STB_IMAGE are never called.
 namespace tinygltf

@@ -1,6 +1,6 @@
 /* The app state with made-up timestamps: turning, taps, attract mode,
  * matcap cycling, and a rotation that stays a rotation. */
-#include "app.h"
+#include "app/app.h"
 
 #include <math.h>
 #include <setjmp.h>
@@ -51,8 +51,8 @@ static void idle_is_silent(void **state)
 	assert_true(a.dirty); /* the first frame */
 	a.dirty = false;
 	/* Nothing pressed and no attract mode: no deadline, no frames. */
-	assert_int_equal(app_advance(&a, 1 * SEC), APP_NEVER);
-	assert_int_equal(app_advance(&a, 3600 * SEC), APP_NEVER);
+	assert_int_equal(app_advance(&a, 1 * SEC), CLOCK_NEVER);
+	assert_int_equal(app_advance(&a, 3600 * SEC), CLOCK_NEVER);
 	assert_false(a.dirty);
 	assert_false(app_moving(&a));
 }
@@ -73,7 +73,7 @@ static void hold_turns_at_speed(void **state)
 	assert_float_equal(yaw_of(a.orientation), 180 * DEG, 1e-9);
 	/* Released after the tap's minimum: it stops at once. */
 	a.dirty = false;
-	assert_int_equal(app_advance(&a, 4 * SEC), APP_NEVER);
+	assert_int_equal(app_advance(&a, 4 * SEC), CLOCK_NEVER);
 	assert_false(a.dirty);
 	assert_float_equal(yaw_of(a.orientation), 180 * DEG, 1e-9);
 }
@@ -93,7 +93,7 @@ static void tap_turns_one_step_smoothly(void **state)
 	assert_float_equal(half, -2.5 * DEG, 1e-6);
 	assert_true(app_moving(&a));
 	app_advance(&a, 40 * MS);
-	assert_int_equal(app_advance(&a, 100 * MS), APP_NEVER);
+	assert_int_equal(app_advance(&a, 100 * MS), CLOCK_NEVER);
 	assert_float_equal(yaw_of(a.orientation), -5 * DEG, 1e-9);
 }
 

@@ -1,6 +1,6 @@
 /* The button state machine with made-up timestamps: bounce, long press,
  * hold-to-repeat, no hardware. */
-#include "button.h"
+#include "input/button.h"
 
 #include <setjmp.h>
 #include <stdarg.h>
@@ -82,7 +82,7 @@ static void bounce_burst_is_one_press_and_one_release(void **state)
 	wait_until(&b, &l, 3000);
 	assert_int_equal(l.n, 2);
 	expect(&l, 1, 1500, ACTION_TURN_LEFT, false);
-	assert_int_equal(button_deadline(&b), APP_NEVER);
+	assert_int_equal(button_deadline(&b), CLOCK_NEVER);
 }
 
 /* The window counts from the last edge: a burst longer than the window,
@@ -125,7 +125,7 @@ static void burst_ending_released_settles(void **state)
 	wait_until(&b, &l, 65);
 	assert_int_equal(l.n, 2);
 	expect(&l, 1, 65, ACTION_TURN_LEFT, false);
-	assert_int_equal(button_deadline(&b), APP_NEVER);
+	assert_int_equal(button_deadline(&b), CLOCK_NEVER);
 }
 
 /* Edges read late (the loop was drawing) settle what fell due before
@@ -225,7 +225,7 @@ static void held_turn_is_press_then_release(void **state)
 	c.repeat_ns = 100 * MS; /* repeats are for actions that are not turns */
 	button_init(&b, &c, false);
 	edge(&b, &l, 0, true);
-	assert_int_equal(button_deadline(&b), APP_NEVER);
+	assert_int_equal(button_deadline(&b), CLOCK_NEVER);
 	wait_until(&b, &l, 3000);
 	edge(&b, &l, 3000, false);
 	assert_int_equal(l.n, 2);
@@ -255,7 +255,7 @@ static void hold_to_repeat(void **state)
 	assert_int_equal(button_deadline(&b), 1300 * MS);
 	edge(&b, &l, 1150, false);
 	assert_int_equal(count(&l, ACTION_NEXT_MATCAP, false), 1);
-	assert_int_equal(button_deadline(&b), APP_NEVER);
+	assert_int_equal(button_deadline(&b), CLOCK_NEVER);
 	/* A loop that fell far behind repeats once, not in a burst. */
 	edge(&b, &l, 2000, true);
 	l.n = 0;
@@ -295,7 +295,7 @@ static void lost_line_releases_a_held_turn(void **state)
 	l.n += button_lost(&b, 50 * MS, l.ev + l.n);
 	assert_int_equal(l.n, 2);
 	expect(&l, 1, 50, ACTION_TURN_LEFT, false);
-	assert_int_equal(button_deadline(&b), APP_NEVER);
+	assert_int_equal(button_deadline(&b), CLOCK_NEVER);
 }
 
 /* Many bursts in a row, each of random-looking length within the window:

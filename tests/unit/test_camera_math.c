@@ -1,7 +1,7 @@
 /* The pure parts of the camera matcap: plane layouts and strides, the
  * upload plan GLES2 can follow, the crop circle, and YCbCr to RGB against
  * values worked out by hand from BT.601 and BT.709. */
-#include "camera_math.h"
+#include "camera/camera_math.h"
 
 #include <drm_fourcc.h>
 #include <errno.h>

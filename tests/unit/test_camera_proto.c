@@ -2,7 +2,7 @@
  * dmabufs attached: a message and its descriptors arrive together, a
  * packet that is not one of ours is refused (its descriptors closed), and
  * the other side closing is told apart from "nothing yet". */
-#include "camera_proto.h"
+#include "camera/camera_proto.h"
 
 #include <errno.h>
 #include <fcntl.h>

@@ -3,8 +3,8 @@
  * come back out of the matcap texture. Colours must match the reference
  * conversion of camera_math.c, and the picture's top-left must land at
  * the texture's first row, left (mirrored: right). */
-#include "camera_texture.h"
-#include "display.h"
+#include "camera/camera_texture.h"
+#include "display/display.h"
 
 #include <drm_fourcc.h>
 #include <errno.h>
@@ -40,7 +40,7 @@ static int setup(void **state)
 }
 
 /* OSMesa leaks a fixed few hundred bytes per process; unloaded at exit it
- * leaves LeakSanitizer nothing to name them by (tests/live.sh turns leak
+ * leaves LeakSanitizer nothing to name them by (tests/e2e/live.sh turns leak
  * checks off for it). Kept loaded, they can be suppressed by library,
  * and everything of ours is still checked. */
 const char *__lsan_default_suppressions(void);

@@ -1,6 +1,6 @@
 /* The pure parts of the KMS output: the mode setting's syntax and the
  * connector names the kernel and the messages use. */
-#include "drm.h"
+#include "display/drm.h"
 
 #include <setjmp.h>
 #include <stdarg.h>

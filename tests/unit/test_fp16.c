@@ -1,5 +1,5 @@
 /* Half precision. Mali and Adreno GPUs run mediump in binary16; the C
- * mirror rounds every operation so (src/fp16.c, SHADING_FP16_HIGHP and
+ * mirror rounds every operation so (tests/oracle/fp16.c, SHADING_FP16_HIGHP and
  * SHADING_FP16) and is held against the mirror in double:
  *   - the matcap mappings stay within 3/4 of a texel of a 256 matcap at
  *     mediump (off the SEM singularity's neighbourhood, where
@@ -10,8 +10,8 @@
  *     it (SHADE_P), and with that they stay within 1/255.
  * The second point is shown both ways: SHADING_FP16 (no highp) fails the
  * bound that SHADING_FP16_HIGHP passes. */
-#include "fp16.h"
-#include "shading.h"
+#include "oracle/fp16.h"
+#include "oracle/oracle.h"
 
 #include <math.h>
 #include <setjmp.h>

@@ -1,6 +1,6 @@
-#include "gltf.h"
+#include "scene/gltf.h"
 #include "gltf_write.h"
-#include "mesh.h"
+#include "scene/mesh.h"
 
 #include <errno.h>
 #include <math.h>

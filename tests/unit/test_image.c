@@ -1,4 +1,4 @@
-#include "image.h"
+#include "util/image.h"
 
 #include <errno.h>
 #include <setjmp.h>

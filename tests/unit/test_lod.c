@@ -1,10 +1,10 @@
-/* The level of detail that the display can show (src/lod.c): the error
+/* The level of detail that the display can show (src/scene/lod.c): the error
  * budget follows the display, the simplified surface stays within it, UV
  * seams and attributes survive, and the normals' error is measured. */
-#include "lod.h"
-#include "mesh.h"
-#include "render.h"
-#include "tangent.h"
+#include "scene/lod.h"
+#include "scene/mesh.h"
+#include "render/render.h"
+#include "scene/tangent.h"
 
 #include <math.h>
 #include <setjmp.h>

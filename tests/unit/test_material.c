@@ -1,10 +1,10 @@
-#include "gltf.h"
+#include "scene/gltf.h"
 #include "gltf_write.h"
-#include "image.h"
-#include "material.h"
-#include "mesh.h"
-#include "shading.h"
-#include "tangent.h"
+#include "util/image.h"
+#include "scene/material.h"
+#include "scene/mesh.h"
+#include "oracle/oracle.h"
+#include "scene/tangent.h"
 
 #include <errno.h>
 #include <math.h>

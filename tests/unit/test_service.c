@@ -1,8 +1,8 @@
 /* What the kiosk tells systemd, read from a socket set as NOTIFY_SOCKET:
  * READY=1 once, the watchdog's cadence, and no ping while the display is
  * stuck, so systemd restarts the service. */
-#include "log.h"
-#include "service.h"
+#include "util/log.h"
+#include "app/service.h"
 
 #include <poll.h>
 #include <setjmp.h>

@@ -1,4 +1,4 @@
-#include "shading.h"
+#include "oracle/oracle.h"
 
 #include <errno.h>
 #include <math.h>

@@ -1,6 +1,6 @@
-#include "image.h"
-#include "mesh.h"
-#include "subdivide.h"
+#include "util/image.h"
+#include "scene/mesh.h"
+#include "scene/subdivide.h"
 
 #include <errno.h>
 #include <math.h>

@@ -1,5 +1,5 @@
-#include "mesh.h"
-#include "tangent.h"
+#include "scene/mesh.h"
+#include "scene/tangent.h"
 
 #include <math.h>
 #include <setjmp.h>

@@ -1,0 +1,132 @@
+#include "app/content.h"
+#include "render/bake.h"
+#include "scene/gltf.h"
+#include "scene/lod.h"
+#include "util/log.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#ifndef MK_MATCAP_DIR
+#define MK_MATCAP_DIR "/usr/local/share/matcap-kiosk/matcaps"
+#endif
+
+#define KNOT_TUBULAR 256
+#define KNOT_RADIAL  32
+
+static int load_model(const struct options *o, bool strict, struct mesh *mesh)
+{
+	if (o->model) {
+		int ret = gltf_load_textures(o->model, material_gltf_textures(&o->material), mesh);
+
+		if (!ret || strict)
+			return ret;
+		log_warn("showing the built-in torus knot instead of %s", o->model);
+	}
+	return mesh_torus_knot(mesh, KNOT_TUBULAR, KNOT_RADIAL);
+}
+
+static const char *default_matcaps(void)
+{
+	/* Installed data first; the source tree's folder when run from it. */
+	if (access(MK_MATCAP_DIR, R_OK) == 0)
+		return MK_MATCAP_DIR;
+	return access("matcaps", R_OK) == 0 ? "matcaps" : NULL;
+}
+
+static int load_matcap(const struct options *o, bool strict, struct content *s)
+{
+	const char *path = o->matcap ? o->matcap : default_matcaps();
+	int ret = -ENOENT;
+
+	s->set = path ? matcap_set_open(path) : NULL;
+	if (s->set)
+		ret = image_load(matcap_set_path(s->set, 0), &s->matcap);
+	if (ret && strict && o->matcap)
+		return ret;
+	if (ret) {
+		log_warn("using the built-in clay matcap");
+		matcap_set_free(s->set);
+		s->set = NULL;
+		return bake_matcap(BAKE_CLAY_RED, 256, &s->matcap);
+	}
+	s->matcap_path = strdup(path);
+	return s->matcap_path ? 0 : -ENOMEM;
+}
+
+int content_load(struct content *s, const struct options *o, bool strict)
+{
+	int ret;
+
+	memset(s, 0, sizeof(*s));
+	ret = load_model(o, strict, &s->mesh);
+	if (!ret)
+		ret = load_matcap(o, strict, s);
+	if (!ret)
+		ret = material_load(&s->material, &o->material, &s->mesh, strict);
+	if (ret)
+		content_release(s);
+	return ret;
+}
+
+void content_release(struct content *s)
+{
+	mesh_release(&s->mesh);
+	material_release(&s->material);
+	image_release(&s->matcap);
+	matcap_set_free(s->set);
+	free(s->matcap_path);
+	memset(s, 0, sizeof(*s));
+}
+
+int content_prepare(struct content *s, const struct options *o, int width, int height)
+{
+	int ret = material_prepare_mesh(&s->material, &s->mesh, width, height);
+	bool displaced = s->material.features & MATERIAL_DISPLACEMENT;
+
+	return ret ? ret
+		   : lod_prepare_mesh(&s->mesh, displaced ? 0.0 : o->lod_pixels, width, height,
+				      NULL);
+}
+
+int content_upload(const struct content *s, struct renderer *r)
+{
+	/* The material first: it decides which attributes the mesh uploads. */
+	int ret = renderer_set_material(r, &s->material);
+
+	if (!ret)
+		ret = renderer_set_mesh(r, &s->mesh);
+
+	return ret ? ret : renderer_set_matcap(r, &s->matcap);
+}
+
+struct view content_view(const struct options *o)
+{
+	struct view v = {
+	    .ortho = o->ortho, .rotation = o->rotation, .background = {0.06f, 0.06f, 0.07f}};
+
+	v.orientation = quat_multiply(quat_from_axis_angle(1, 0, 0, o->pitch * M_PI / 180),
+				      quat_from_axis_angle(0, 1, 0, o->yaw * M_PI / 180));
+	return v;
+}
+
+int content_rescan_matcaps(struct content *s)
+{
+	struct matcap_set *set;
+
+	if (!s->matcap_path)
+		return -ENOENT;
+	set = matcap_set_open(s->matcap_path);
+	if (!set) {
+		log_warn("%s: keeping the %d matcaps known before", s->matcap_path,
+			 matcap_set_count(s->set));
+		return -ENOENT;
+	}
+	matcap_set_free(s->set);
+	s->set = set;
+	log_info("%s: %d matcaps", s->matcap_path, matcap_set_count(set));
+	return 0;
+}

@@ -1,0 +1,44 @@
+/* What the kiosk shows, loaded from the settings: the mesh, the matcaps
+ * and the first matcap decoded. The start and a reload (SIGHUP) both build
+ * a complete new scene here; a reload swaps it in only once every part of
+ * it loaded and uploaded, so a broken model or folder keeps the old one. */
+#ifndef MK_CONTENT_H
+#define MK_CONTENT_H
+
+#include "util/image.h"
+#include "render/matcap_set.h"
+#include "scene/mesh.h"
+#include "app/options.h"
+#include "render/render.h"
+
+#include <stdbool.h>
+
+struct content {
+	struct mesh mesh;
+	struct image matcap;	  /* the first one shown */
+	struct matcap_set *set;	  /* NULL: the built-in clay only */
+	char *matcap_path;	  /* the file or folder set came from; NULL with set */
+	struct material material; /* the optional features ([material]) */
+};
+
+/* strict: every file the settings name must load (a one-shot render is
+ * useless with a substitute, and a reload keeps the old scene instead).
+ * Otherwise a model or matcap that fails is replaced by the built-in one,
+ * and the journal says so. On failure s is left empty. */
+int content_load(struct content *s, const struct options *o, bool strict);
+void content_release(struct content *s);
+/* Fit the mesh to the display it will be drawn on: subdivided for a
+ * displacement map at this display's density, then simplified to no more
+ * triangles than the display shows (a displaced mesh is only reordered).
+ * The start and a reload do the same, so a reload shows what a restart
+ * would. */
+int content_prepare(struct content *s, const struct options *o, int width, int height);
+/* Hand the mesh and the first matcap to the renderer. */
+int content_upload(const struct content *s, struct renderer *r);
+/* The camera and panel the settings ask for, at the resting orientation. */
+struct view content_view(const struct options *o);
+/* The matcap folder was changed: open the set again. Returns 0 and
+ * replaces s->set, or a negative errno (after logging) and keeps it. */
+int content_rescan_matcaps(struct content *s);
+
+#endif

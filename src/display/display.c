@@ -1,0 +1,44 @@
+#include "display/display.h"
+
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+
+int display_read_rgba(struct display *d, struct image *out)
+{
+	size_t row = (size_t)d->width * 4;
+	uint8_t *tmp;
+	int ret = image_alloc(out, d->width, d->height);
+
+	if (ret)
+		return ret;
+	tmp = malloc(row);
+	if (!tmp) {
+		image_release(out);
+		return -ENOMEM;
+	}
+	d->gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
+	d->gl.ReadPixels(0, 0, d->width, d->height, GL_RGBA, GL_UNSIGNED_BYTE, out->rgba);
+	/* GL's origin is bottom left; images are stored top first. */
+	for (int y = 0; y < d->height / 2; y++) {
+		uint8_t *a = out->rgba + (size_t)y * row;
+		uint8_t *b = out->rgba + (size_t)(d->height - 1 - y) * row;
+		memcpy(tmp, a, row);
+		memcpy(a, b, row);
+		memcpy(b, tmp, row);
+	}
+	free(tmp);
+	return 0;
+}
+
+int display_no_fd(struct display *d)
+{
+	(void)d;
+	return -1;
+}
+
+int display_no_dispatch(struct display *d)
+{
+	(void)d;
+	return 0;
+}

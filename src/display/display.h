@@ -1,0 +1,64 @@
+/* Where the pixels go. One small file per backend fills this struct, the
+ * way kmscube splits drm-legacy.c and drm-atomic.c behind one interface;
+ * the renderer only ever sees the GL table and the size. */
+#ifndef MK_DISPLAY_H
+#define MK_DISPLAY_H
+
+#include "render/gl.h"
+#include "util/image.h"
+
+#include <stdbool.h>
+
+struct display_config {
+	int width; /* 0: the backend's natural size (the mode, for KMS) */
+	int height;
+	const char *device;    /* KMS: /dev/dri/cardN, NULL to discover */
+	const char *connector; /* KMS: HDMI-A-1, NULL for the first connected */
+	const char *mode;      /* KMS: WxH or WxH@Hz, NULL for the preferred */
+	int samples;	       /* MSAA samples where the backend supports it, 0 off */
+	bool exit_when_busy;   /* KMS: exit when another program holds the display */
+	int kms_api;	       /* KMS: 0 auto, 1 atomic, 2 legacy (enum drm_api) */
+	bool quiet;	       /* KMS: probing for auto, say nothing when absent */
+};
+
+struct display {
+	const char *name;
+	int width; /* of the image the renderer draws, before any rotation */
+	int height;
+	struct gl gl;
+	/* A presented frame has not reached the screen yet (a page flip is
+	 * pending): draw nothing new until dispatch() clears it. */
+	bool waiting;
+
+	/* Make the context current and bind the target to draw into. */
+	int (*begin_frame)(struct display *d);
+	/* Hand the frame over: a page flip for KMS, a finish for offscreen. */
+	int (*present)(struct display *d);
+	/* Read the last drawn frame back, rows top first. */
+	int (*read_frame)(struct display *d, struct image *out);
+	/* A descriptor for the main poll loop, or -1 when there is none. */
+	int (*get_fd)(struct display *d);
+	/* Called when get_fd is readable (page flip done, hotplug). Returns
+	 * 1 when everything must be drawn again (a display came back), 0, or
+	 * a negative errno when the display is gone for good. */
+	int (*dispatch)(struct display *d);
+	void (*destroy)(struct display *d);
+};
+
+struct display *display_osmesa_new(const struct display_config *cfg);
+struct display *display_egl_new(const struct display_config *cfg);
+struct display *display_kms_new(const struct display_config *cfg);
+
+/* Shared by the backends: glReadPixels into an image, flipped to rows top first. */
+int display_read_rgba(struct display *d, struct image *out);
+/* For backends with nothing to wait for (the offscreen ones). */
+int display_no_fd(struct display *d);
+int display_no_dispatch(struct display *d);
+
+static inline void display_free(struct display *d)
+{
+	if (d)
+		d->destroy(d);
+}
+
+#endif

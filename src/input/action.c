@@ -1,0 +1,7 @@
+#include "input/action.h"
+
+#include <stddef.h>
+
+const char *const app_action_names[ACTION_COUNT + 1] = {
+    "none",	   "turn-left",	    "turn-right", "turn-up", "turn-down", "next-matcap",
+    "prev-matcap", "toggle-camera", "next-mode",  "reset",   NULL};

@@ -1,0 +1,114 @@
+#include "render/matcap_set.h"
+#include "util/log.h"
+
+#include <dirent.h>
+#include <stdbool.h>
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <sys/stat.h>
+
+struct matcap_set {
+	int count;
+	char **paths;
+};
+
+static bool is_image_name(const char *name)
+{
+	const char *dot = strrchr(name, '.');
+
+	return name[0] != '.' && dot &&
+	       (!strcasecmp(dot, ".png") || !strcasecmp(dot, ".jpg") || !strcasecmp(dot, ".jpeg"));
+}
+
+static int compare_paths(const void *a, const void *b)
+{
+	return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+static int add_path(struct matcap_set *s, const char *dir, const char *name)
+{
+	size_t n = strlen(dir) + strlen(name) + 2;
+	char **grown = realloc(s->paths, sizeof(*grown) * (size_t)(s->count + 1));
+
+	if (!grown)
+		return -ENOMEM;
+	s->paths = grown;
+	s->paths[s->count] = malloc(n);
+	if (!s->paths[s->count])
+		return -ENOMEM;
+	if (dir[0])
+		snprintf(s->paths[s->count], n, "%s/%s", dir, name);
+	else
+		snprintf(s->paths[s->count], n, "%s", name);
+	s->count++;
+	return 0;
+}
+
+static int scan_folder(struct matcap_set *s, const char *path)
+{
+	DIR *d = opendir(path);
+	struct dirent *e;
+	int ret = 0;
+
+	if (!d) {
+		log_err("%s: cannot open folder: %s", path, strerror(errno));
+		return -errno;
+	}
+	while (!ret && (e = readdir(d)))
+		if (is_image_name(e->d_name))
+			ret = add_path(s, path, e->d_name);
+	closedir(d);
+	if (!ret && s->count == 0) {
+		log_err("%s: no .png, .jpg or .jpeg files in the folder", path);
+		ret = -ENOENT;
+	}
+	if (s->count) /* qsort(NULL, 0) is undefined */
+		qsort(s->paths, (size_t)s->count, sizeof(*s->paths), compare_paths);
+	return ret;
+}
+
+struct matcap_set *matcap_set_open(const char *path)
+{
+	struct matcap_set *s = calloc(1, sizeof(*s));
+	struct stat st;
+	int ret;
+
+	if (!s)
+		return NULL;
+	if (stat(path, &st)) {
+		log_err("%s: %s", path, strerror(errno));
+		ret = -errno;
+	} else if (S_ISDIR(st.st_mode)) {
+		ret = scan_folder(s, path);
+	} else {
+		ret = add_path(s, "", path);
+	}
+	if (ret) {
+		matcap_set_free(s);
+		return NULL;
+	}
+	return s;
+}
+
+void matcap_set_free(struct matcap_set *s)
+{
+	if (!s)
+		return;
+	for (int i = 0; i < s->count; i++)
+		free(s->paths[i]);
+	free(s->paths);
+	free(s);
+}
+
+int matcap_set_count(const struct matcap_set *s)
+{
+	return s->count;
+}
+
+const char *matcap_set_path(const struct matcap_set *s, int index)
+{
+	return s->paths[((index % s->count) + s->count) % s->count];
+}

@@ -1,0 +1,485 @@
+#include "render/render.h"
+#include "util/log.h"
+#include "render/shader.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define FOV_Y_DEGREES 30.0
+#define FIT_MARGIN    1.08
+
+/* The lit mode's light, fixed to the camera, from where the shipped
+ * matcaps' key light is (src/render/bake.c), so that the two read alike. */
+static const float light_dir[3] = {-0.5499f, 0.6198f, 0.5599f};
+
+enum { UNIT_MATCAP, UNIT_DETAIL, UNIT_RAMP };
+
+struct program {
+	GLuint id;
+	GLint modelview, projection, normal_matrix, matcap, detail, ramp;
+	GLint iridescence, hsv, light, base_color, shininess;
+};
+
+struct renderer {
+	const struct gl *gl;
+	const char *shader_dir;
+	struct program programs[SHADING_MODE_COUNT][2][2]; /* [mode][ortho][lit] */
+	struct program *current; /* the matcap program, or the lit one alone */
+	struct program *beside;	 /* lit = beside: the lit program, drawn right */
+	enum shading_mode mode;
+	bool ortho, mode_set;
+	bool highp;	     /* every float highp (PRECISION_HIGHP): see software_renderer */
+	struct material mat; /* the features and their numbers; no images */
+	GLuint vbo[SHADER_ATTR_COUNT], ibo, matcap, detail, ramp;
+	GLuint matcap_override; /* another's texture as the matcap (the camera's); 0: none */
+	long attr_bytes[SHADER_ATTR_COUNT]; /* 0: not uploaded */
+	GLenum index_type;
+	GLsizei draw_count;
+	bool indexed;
+};
+
+/* A CPU rasteriser (llvmpipe, softpipe) emulates 16-bit mediump with
+ * conversions: there highp is faster as well as exact (the mediump rows
+ * of tests/bench/report/speed-error.md: about twice as slow). A GPU runs
+ * mediump natively. */
+static bool software_renderer(const struct gl *gl)
+{
+	const char *name = (const char *)gl->GetString(GL_RENDERER);
+
+	return name && (strstr(name, "llvmpipe") || strstr(name, "softpipe"));
+}
+
+struct renderer *renderer_new(const struct gl *gl, const char *shader_dir)
+{
+	struct renderer *r = calloc(1, sizeof(*r));
+
+	if (!r)
+		return NULL;
+	r->gl = gl;
+	r->shader_dir = shader_dir;
+	r->highp = software_renderer(gl);
+	gl->GenBuffers(SHADER_ATTR_COUNT, r->vbo);
+	gl->GenBuffers(1, &r->ibo);
+	gl->GenTextures(1, &r->matcap);
+	return r;
+}
+
+static void drop_programs(struct renderer *r)
+{
+	struct program *p = &r->programs[0][0][0];
+
+	for (size_t i = 0; i < sizeof(r->programs) / sizeof(*p); i++)
+		if (p[i].id)
+			r->gl->DeleteProgram(p[i].id);
+	memset(r->programs, 0, sizeof(r->programs));
+	r->current = r->beside = NULL;
+}
+
+static void drop_texture(const struct gl *gl, GLuint *tex)
+{
+	if (*tex)
+		gl->DeleteTextures(1, tex);
+	*tex = 0;
+}
+
+void renderer_free(struct renderer *r)
+{
+	if (!r)
+		return;
+	drop_programs(r);
+	r->gl->DeleteBuffers(SHADER_ATTR_COUNT, r->vbo);
+	r->gl->DeleteBuffers(1, &r->ibo);
+	r->gl->DeleteTextures(1, &r->matcap);
+	drop_texture(r->gl, &r->detail);
+	drop_texture(r->gl, &r->ramp);
+	free(r);
+}
+
+static bool has_gl_extension(const struct gl *gl, const char *name)
+{
+	const char *ext = (const char *)gl->GetString(GL_EXTENSIONS);
+	size_t n = strlen(name);
+
+	for (const char *p = ext; p && (p = strstr(p, name)); p += n)
+		if ((p == ext || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0'))
+			return true;
+	return false;
+}
+
+/* Core GLES2 indexes with 16 bits; 32-bit indices need an extension that
+ * some SBC GPUs lack, and then the mesh is drawn unindexed. */
+static int upload_indices(struct renderer *r, const struct mesh *m)
+{
+	const struct gl *gl = r->gl;
+
+	r->indexed = true;
+	r->draw_count = (GLsizei)m->index_count;
+	gl->BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->ibo);
+	if (m->vertex_count <= 65536) {
+		uint16_t *idx16 = malloc((size_t)m->index_count * 2 + 1);
+
+		if (!idx16)
+			return -ENOMEM;
+		for (uint32_t i = 0; i < m->index_count; i++)
+			idx16[i] = (uint16_t)m->indices[i];
+		gl->BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)m->index_count * 2, idx16,
+			       GL_STATIC_DRAW);
+		free(idx16);
+		r->index_type = GL_UNSIGNED_SHORT;
+		return 0;
+	}
+	if (has_gl_extension(gl, "GL_OES_element_index_uint")) {
+		gl->BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)m->index_count * 4, m->indices,
+			       GL_STATIC_DRAW);
+		r->index_type = GL_UNSIGNED_INT;
+		return 0;
+	}
+	r->indexed = false;
+	return 0;
+}
+
+static const int attr_size[SHADER_ATTR_COUNT] = {3, 3, 2, 4};
+
+/* One attribute array: as it is when indexed, else one entry per index. */
+static int upload_attribute(struct renderer *r, const struct mesh *m, int a, const float *src)
+{
+	const struct gl *gl = r->gl;
+	size_t n = (size_t)attr_size[a], count = r->indexed ? m->vertex_count : m->index_count;
+	float *flat = NULL;
+
+	if (!r->indexed) {
+		flat = malloc(count * n * sizeof(float) + 1);
+		if (!flat)
+			return -ENOMEM;
+		for (uint32_t i = 0; i < m->index_count; i++)
+			memcpy(flat + i * n, src + (size_t)m->indices[i] * n, n * sizeof(float));
+	}
+	r->attr_bytes[a] = (long)(count * n * sizeof(float));
+	gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo[a]);
+	gl->BufferData(GL_ARRAY_BUFFER, r->attr_bytes[a], flat ? flat : src, GL_STATIC_DRAW);
+	free(flat);
+	return 0;
+}
+
+int renderer_set_mesh(struct renderer *r, const struct mesh *m)
+{
+	bool uvs = material_needs_uvs(r->mat.features);
+	bool tangents = material_needs_tangents(r->mat.features);
+	const float *src[SHADER_ATTR_COUNT] = {m->positions, m->normals, uvs ? m->uvs : NULL,
+					       tangents ? m->tangents : NULL};
+	int ret = upload_indices(r, m);
+
+	if ((uvs && !m->uvs) || (tangents && !m->tangents))
+		log_warn("render: the mesh lacks the UVs or tangents its material needs");
+	for (int a = 0; a < SHADER_ATTR_COUNT && !ret; a++) {
+		if (src[a]) {
+			ret = upload_attribute(r, m, a, src[a]);
+		} else if (r->attr_bytes[a]) {
+			/* A feature no longer used gives its memory back. */
+			r->gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo[a]);
+			r->gl->BufferData(GL_ARRAY_BUFFER, 0, NULL, GL_STATIC_DRAW);
+			r->attr_bytes[a] = 0;
+		}
+	}
+	if (!ret && r->gl->GetError() == GL_OUT_OF_MEMORY) {
+		log_err("render: out of GPU memory for %u vertices", m->vertex_count);
+		ret = -ENOMEM;
+	}
+	return ret;
+}
+
+/* repeat: the detail map tiles (glTF's default) and is mipmapped, so a
+ * far, dense map does not shimmer; it has power-of-two sides for that.
+ * The matcap and the ramp are read by direction and angle: clamped, no
+ * mipmaps (the derivatives at a silhouette would blur the sharpest part),
+ * so any size is legal in GLES2. */
+static int upload_texture(const struct gl *gl, GLuint *tex, const struct image *img, bool repeat)
+{
+	if (!*tex)
+		gl->GenTextures(1, tex);
+	gl->BindTexture(GL_TEXTURE_2D, *tex);
+	gl->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+	gl->TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, img->width, img->height, 0, GL_RGBA,
+		       GL_UNSIGNED_BYTE, img->rgba);
+	if (repeat)
+		gl->GenerateMipmap(GL_TEXTURE_2D);
+	gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER,
+			  repeat ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
+	gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+	gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE);
+	gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE);
+	return gl->GetError() == GL_NO_ERROR ? 0 : -EIO;
+}
+
+int renderer_set_matcap(struct renderer *r, const struct image *img)
+{
+	return upload_texture(r->gl, &r->matcap, img, false);
+}
+
+void renderer_use_matcap_texture(struct renderer *r, GLuint tex)
+{
+	r->matcap_override = tex;
+}
+
+int renderer_set_precision(struct renderer *r, bool highp)
+{
+	if (highp == r->highp)
+		return 0;
+	r->highp = highp;
+	drop_programs(r);
+	return r->mode_set ? renderer_set_mode(r, r->mode, r->ortho) : 0;
+}
+
+int renderer_set_material(struct renderer *r, const struct material *m)
+{
+	bool changed = m->features != r->mat.features || m->lit != r->mat.lit;
+	int ret = 0;
+
+	r->mat = *m;
+	memset(&r->mat.detail, 0, sizeof(r->mat.detail));
+	memset(&r->mat.ramp, 0, sizeof(r->mat.ramp));
+	memset(&r->mat.height, 0, sizeof(r->mat.height));
+	if (m->features & MATERIAL_DETAIL)
+		ret = upload_texture(r->gl, &r->detail, &m->detail, true);
+	else
+		drop_texture(r->gl, &r->detail);
+	if (!ret && (m->features & MATERIAL_RAMP))
+		ret = upload_texture(r->gl, &r->ramp, &m->ramp, false);
+	else if (!ret)
+		drop_texture(r->gl, &r->ramp);
+	if (ret)
+		log_err("render: cannot upload the material's textures");
+	if (!ret && changed) {
+		drop_programs(r);
+		if (r->mode_set)
+			ret = renderer_set_mode(r, r->mode, r->ortho);
+	}
+	return ret;
+}
+
+static void find_uniforms(const struct gl *gl, struct program *p)
+{
+	p->modelview = gl->GetUniformLocation(p->id, "u_modelview");
+	p->projection = gl->GetUniformLocation(p->id, "u_projection");
+	p->normal_matrix = gl->GetUniformLocation(p->id, "u_normal_matrix");
+	p->matcap = gl->GetUniformLocation(p->id, "u_matcap");
+	p->detail = gl->GetUniformLocation(p->id, "u_detail");
+	p->ramp = gl->GetUniformLocation(p->id, "u_ramp");
+	p->iridescence = gl->GetUniformLocation(p->id, "u_iridescence");
+	p->hsv = gl->GetUniformLocation(p->id, "u_hsv");
+	p->light = gl->GetUniformLocation(p->id, "u_light");
+	p->base_color = gl->GetUniformLocation(p->id, "u_base_color");
+	p->shininess = gl->GetUniformLocation(p->id, "u_shininess");
+}
+
+#define HIGHP_DEFINE "#define PRECISION_HIGHP 1\n"
+
+/* Lit programs do not depend on the mapping mode: one per camera. */
+static struct program *program_get(struct renderer *r, enum shading_mode mode, bool ortho, bool lit)
+{
+	struct program *p = &r->programs[lit ? SHADING_VIEW : mode][ortho][lit];
+	char defines[512];
+	int n;
+
+	if (p->id)
+		return p;
+	n = material_defines(r->mat.features, mode, ortho, lit, defines, sizeof(defines));
+	if (n >= 0 && r->highp && (size_t)n + sizeof(HIGHP_DEFINE) <= sizeof(defines))
+		strcat(defines, HIGHP_DEFINE);
+	else if (r->highp)
+		n = -ENOSPC;
+	if (n < 0 || shader_build(r->gl, r->shader_dir, defines, &p->id))
+		return NULL;
+	find_uniforms(r->gl, p);
+	return p;
+}
+
+int renderer_set_mode(struct renderer *r, enum shading_mode mode, bool ortho)
+{
+	struct program *first = NULL, *second = NULL;
+	int lit = r->mat.lit;
+
+	if (lit != LIT_ON && !(first = program_get(r, mode, ortho, false)))
+		return -EINVAL;
+	if (lit != LIT_OFF &&
+	    !(*(lit == LIT_ON ? &first : &second) = program_get(r, mode, ortho, true)))
+		return -EINVAL;
+	if (mode == SHADING_SEM_VERTEX && lit != LIT_ON &&
+	    (r->mat.features & (MATERIAL_IRIDESCENCE | MATERIAL_DETAIL_NORMAL)))
+		log_info(
+		    "render: sem-vertex is drawn per fragment, where the material's normal is");
+	r->current = first;
+	r->beside = second;
+	r->mode = mode;
+	r->ortho = ortho;
+	r->mode_set = true;
+	return 0;
+}
+
+void render_matrices(const struct view *v, int width, int height, float modelview[16],
+		     float projection[16])
+{
+	bool quarter = v->rotation == 90 || v->rotation == 270;
+	double aspect = quarter ? (double)height / width : (double)width / height;
+	double half = FOV_Y_DEGREES / 2.0 * M_PI / 180.0;
+	double half_min = fmin(half, atan(tan(half) * aspect));
+	double dist = FIT_MARGIN / sin(half_min);
+	float rot[16], move[16], proj[16], panel[16];
+
+	mat4_from_quat(rot, v->orientation);
+	mat4_translate(move, 0, 0, -dist);
+	mat4_multiply(modelview, move, rot);
+	if (v->ortho) {
+		double sx = aspect > 1 ? aspect : 1, sy = aspect > 1 ? 1 : 1 / aspect;
+
+		mat4_ortho(proj, -sx, sx, -sy, sy, dist - 1.5, dist + 1.5);
+	} else {
+		mat4_perspective(proj, 2.0 * half, aspect, dist - 1.5, dist + 1.5);
+	}
+	/* A portrait panel turns the picture, not the scanout, so it works
+	 * with every driver and plane. */
+	mat4_rotate_z(panel, v->rotation);
+	mat4_multiply(projection, panel, proj);
+}
+
+double render_pixels_per_unit(int width, int height)
+{
+	double aspect = (double)width / height, short_side = width < height ? width : height;
+	double half = FOV_Y_DEGREES / 2.0 * M_PI / 180.0;
+	double half_min = fmin(half, atan(tan(half) * aspect));
+	double dist = FIT_MARGIN / sin(half_min);
+
+	/* The short side spans 2 z tan(half_min) model units at depth z; the
+	 * nearest point of the unit sphere is at dist - 1. */
+	return short_side / 2.0 / ((dist - 1.0) * tan(half_min));
+}
+
+static void bind_texture(const struct gl *gl, GLint uniform, int unit, GLuint tex)
+{
+	if (uniform < 0)
+		return;
+	gl->ActiveTexture(GL_TEXTURE0 + (GLenum)unit);
+	gl->BindTexture(GL_TEXTURE_2D, tex);
+	gl->Uniform1i(uniform, unit);
+}
+
+static void set_uniforms(const struct renderer *r, const struct program *p)
+{
+	const struct gl *gl = r->gl;
+	const struct material *m = &r->mat;
+
+	bind_texture(gl, p->matcap, UNIT_MATCAP,
+		     r->matcap_override ? r->matcap_override : r->matcap);
+	bind_texture(gl, p->detail, UNIT_DETAIL, r->detail);
+	bind_texture(gl, p->ramp, UNIT_RAMP, r->ramp);
+	if (p->iridescence >= 0)
+		gl->Uniform4f(p->iridescence, m->hue_range, m->hue_average, m->hue_shift,
+			      m->opacity);
+	if (p->hsv >= 0)
+		gl->Uniform2f(p->hsv, m->saturation, m->value);
+	if (p->light >= 0)
+		gl->Uniform3f(p->light, light_dir[0], light_dir[1], light_dir[2]);
+	if (p->base_color >= 0)
+		gl->Uniform3f(p->base_color, m->base_color[0], m->base_color[1], m->base_color[2]);
+	if (p->shininess >= 0)
+		gl->Uniform1f(p->shininess, m->shininess);
+}
+
+static void draw_with(struct renderer *r, const struct program *p, const struct view *v,
+		      const int vp[4])
+{
+	const struct gl *gl = r->gl;
+	float mv[16], proj[16], nm[9];
+
+	gl->Viewport(vp[0], vp[1], vp[2], vp[3]);
+	render_matrices(v, vp[2], vp[3], mv, proj);
+	/* The model-view is a rotation and a translation: its upper 3x3 is
+	 * already the inverse transpose. Scales and mirrors were baked into
+	 * the mesh in double precision at load time. */
+	mat3_from_mat4(nm, mv);
+	gl->UseProgram(p->id);
+	gl->UniformMatrix4fv(p->modelview, 1, GL_FALSE, mv);
+	gl->UniformMatrix4fv(p->projection, 1, GL_FALSE, proj);
+	gl->UniformMatrix3fv(p->normal_matrix, 1, GL_FALSE, nm);
+	set_uniforms(r, p);
+	for (int a = 0; a < SHADER_ATTR_COUNT; a++) {
+		if (!r->attr_bytes[a]) {
+			gl->DisableVertexAttribArray((GLuint)a);
+			continue;
+		}
+		gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo[a]);
+		gl->VertexAttribPointer((GLuint)a, attr_size[a], GL_FLOAT, GL_FALSE, 0, NULL);
+		gl->EnableVertexAttribArray((GLuint)a);
+	}
+	if (r->indexed) {
+		gl->BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->ibo);
+		gl->DrawElements(GL_TRIANGLES, r->draw_count, r->index_type, NULL);
+	} else {
+		gl->DrawArrays(GL_TRIANGLES, 0, r->draw_count);
+	}
+}
+
+/* lit = beside: the matcap on the panel's left half, the lit mode on its
+ * right. The picture is turned by the panel's rotation, so the panel's
+ * left is the frame's left (0), bottom (90), right (180) or top (270). */
+static void half_viewport(int rotation, int w, int h, bool left, int vp[4])
+{
+	bool low = (rotation == 0 || rotation == 90) == left;
+
+	if (rotation == 90 || rotation == 270) {
+		vp[0] = 0, vp[2] = w;
+		vp[1] = low ? 0 : h / 2, vp[3] = low ? h / 2 : h - h / 2;
+	} else {
+		vp[1] = 0, vp[3] = h;
+		vp[0] = low ? 0 : w / 2, vp[2] = low ? w / 2 : w - w / 2;
+	}
+}
+
+void renderer_draw(struct renderer *r, const struct view *v, int width, int height)
+{
+	const struct gl *gl = r->gl;
+	int vp[4] = {0, 0, width, height};
+
+	gl->ClearColor(v->background[0], v->background[1], v->background[2], 1.0f);
+	gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+	if (!r->current || !r->draw_count)
+		return;
+	gl->Enable(GL_DEPTH_TEST);
+	gl->Enable(GL_CULL_FACE);
+	gl->CullFace(GL_BACK);
+	gl->FrontFace(GL_CCW);
+	if (r->beside) {
+		half_viewport(v->rotation, width, height, true, vp);
+		draw_with(r, r->current, v, vp);
+		half_viewport(v->rotation, width, height, false, vp);
+		draw_with(r, r->beside, v, vp);
+		gl->Viewport(0, 0, width, height);
+	} else {
+		draw_with(r, r->current, v, vp);
+	}
+}
+
+void renderer_get_stats(const struct renderer *r, struct renderer_stats *out)
+{
+	const struct program *p[2] = {r->current, r->beside};
+	bool matcap = false, detail = false, ramp = false;
+
+	memset(out, 0, sizeof(*out));
+	for (int a = 0; a < SHADER_ATTR_COUNT; a++) {
+		out->attributes += r->attr_bytes[a] > 0;
+		out->vertex_bytes += r->attr_bytes[a];
+	}
+	for (int i = 0; i < 2; i++)
+		if (p[i]) {
+			matcap |= p[i]->matcap >= 0;
+			detail |= p[i]->detail >= 0;
+			ramp |= p[i]->ramp >= 0;
+		}
+	out->textures = matcap + detail + ramp;
+	out->program = p[0] ? p[0]->id : 0;
+	out->lit_program = p[1] ? p[1]->id : 0;
+	out->highp = r->highp;
+}

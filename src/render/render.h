@@ -1,0 +1,65 @@
+/* The GLES2 renderer: knows shading, nothing of where the pixels go. */
+#ifndef MK_RENDER_H
+#define MK_RENDER_H
+
+#include "render/gl.h"
+#include "util/image.h"
+#include "scene/material.h"
+#include "util/math3d.h"
+#include "scene/mesh.h"
+#include "render/shading.h"
+
+#include <stdbool.h>
+
+struct view {
+	struct quat orientation; /* of the model */
+	bool ortho;		 /* orthographic: the unit sphere fills the short side */
+	int rotation;		 /* of the panel: 0, 90, 180 or 270 degrees */
+	float background[3];
+};
+
+struct renderer;
+
+struct renderer *renderer_new(const struct gl *gl, const char *shader_dir);
+void renderer_free(struct renderer *r);
+
+/* The scene's optional features: their textures are uploaded and their
+ * programs compiled; a feature that is off adds nothing. Call it before
+ * renderer_set_mesh, which uploads only the attributes these features
+ * read. Without it the renderer draws the plain matcap. */
+int renderer_set_material(struct renderer *r, const struct material *m);
+int renderer_set_mesh(struct renderer *r, const struct mesh *m);
+int renderer_set_matcap(struct renderer *r, const struct image *img);
+/* Draw with tex (owned by the caller, e.g. the live camera's) as the
+ * matcap; 0: back to the renderer's own image texture. */
+void renderer_use_matcap_texture(struct renderer *r, GLuint tex);
+/* highp: every float of the fragment stage highp where the GPU has it;
+ * else mediump, with highp only for the values that need it
+ * (shaders/mapping.glsl). The default is highp on a CPU rasteriser, where
+ * it is faster, else mediump. Rebuilds the programs. */
+int renderer_set_precision(struct renderer *r, bool highp);
+/* Compiles the variant on first use; on failure the previous one stays. */
+int renderer_set_mode(struct renderer *r, enum shading_mode mode, bool ortho);
+void renderer_draw(struct renderer *r, const struct view *v, int width, int height);
+
+/* What the renderer holds now, for tests and the bench. */
+struct renderer_stats {
+	int attributes;	    /* vertex arrays uploaded and enabled when drawing */
+	long vertex_bytes;  /* their size in GPU memory */
+	int textures;	    /* bound when drawing: the matcap, detail map, ramp */
+	GLuint program;	    /* the matcap program (0: none), or the lit one alone */
+	GLuint lit_program; /* when lit = beside, the second one; else 0 */
+	bool highp;	    /* every float highp (renderer_set_precision) */
+};
+void renderer_get_stats(const struct renderer *r, struct renderer_stats *out);
+
+/* The model-view and projection matrices the renderer uses (for tests). */
+void render_matrices(const struct view *v, int width, int height, float modelview[16],
+		     float projection[16]);
+/* Pixels per model unit at the front of the unit sphere in a width x
+ * height frame: the most any part of a fitted model is magnified (by the
+ * perspective camera; the orthographic one magnifies less). A mesh's
+ * density is judged by it. */
+double render_pixels_per_unit(int width, int height);
+
+#endif

@@ -1,0 +1,172 @@
+// The model's material for the optional features (src/scene/material.c): factors
+// always, textures only when asked, decoded by src/util/image.c. As for
+// buffers, nothing tinygltf hands back is trusted: every index, offset and
+// length is checked here before a byte is read.
+#include "scene/gltf_material.h"
+#include "scene/gltf.h"
+#include "util/log.h"
+
+#include <cmath>
+#include <string>
+
+namespace
+{
+
+double number(const tinygltf::Value &obj, const char *key, double fallback, double lo, double hi)
+{
+	if (!obj.IsObject() || !obj.Has(key))
+		return fallback;
+	const tinygltf::Value &v = obj.Get(key);
+	if (!v.IsNumber() && !v.IsInt())
+		return fallback;
+	double x = v.GetNumberAsDouble();
+	return std::isfinite(x) ? std::fmin(std::fmax(x, lo), hi) : fallback;
+}
+
+// The image a texture reads, or -1 after saying why it is not used.
+int texture_image(const tinygltf::Model &m, int texture, int tex_coord, const std::string &name,
+		  const char *what)
+{
+	if (tex_coord != 0) {
+		log_warn("%s: %s reads TEXCOORD_%d, and only TEXCOORD_0 is loaded: not used",
+			 name.c_str(), what, tex_coord);
+		return -1;
+	}
+	if (texture < 0 || (size_t)texture >= m.textures.size()) {
+		log_warn("%s: %s: texture %d does not exist: not used", name.c_str(), what,
+			 texture);
+		return -1;
+	}
+	int source = m.textures[(size_t)texture].source;
+	if (source < 0 || (size_t)source >= m.images.size()) {
+		log_warn("%s: %s: texture %d has no PNG or JPEG image (source %d): not used",
+			 name.c_str(), what, texture, source);
+		return -1;
+	}
+	return source;
+}
+
+bool image_bytes(const tinygltf::Model &m, int index, const GltfImages &images,
+		 const unsigned char **data, size_t *size, std::string *why)
+{
+	const tinygltf::Image &img = m.images[(size_t)index];
+	if (img.bufferView >= 0) {
+		if ((size_t)img.bufferView >= m.bufferViews.size()) {
+			*why = "bufferView " + std::to_string(img.bufferView) + " does not exist";
+			return false;
+		}
+		const tinygltf::BufferView &bv = m.bufferViews[(size_t)img.bufferView];
+		if (bv.buffer < 0 || (size_t)bv.buffer >= m.buffers.size()) {
+			*why = "buffer " + std::to_string(bv.buffer) + " does not exist";
+			return false;
+		}
+		const std::vector<unsigned char> &buf = m.buffers[(size_t)bv.buffer].data;
+		size_t end;
+		if (__builtin_add_overflow(bv.byteOffset, bv.byteLength, &end) ||
+		    end > buf.size()) {
+			*why = "bufferView " + std::to_string(img.bufferView) +
+			       " runs past the end of its buffer (" + std::to_string(buf.size()) +
+			       " bytes)";
+			return false;
+		}
+		*data = buf.data() + bv.byteOffset;
+		*size = bv.byteLength;
+		return true;
+	}
+	if ((size_t)index < images.bytes.size() && !images.bytes[(size_t)index].empty()) {
+		*data = images.bytes[(size_t)index].data();
+		*size = images.bytes[(size_t)index].size();
+		return true;
+	}
+	*why = img.uri.empty() ? "has no data"
+			       : "\"" + img.uri +
+				     "\" is not a readable file beside the model (absolute paths "
+				     "and \"..\" are refused)";
+	return false;
+}
+
+void read_texture(const tinygltf::Model &m, int texture, int tex_coord, const GltfImages &images,
+		  const std::string &name, const char *what, struct image *out)
+{
+	int source = texture_image(m, texture, tex_coord, name, what);
+	const unsigned char *data = nullptr;
+	size_t size = 0;
+	std::string why;
+	if (source < 0)
+		return;
+	if (!image_bytes(m, source, images, &data, &size, &why)) {
+		log_warn("%s: %s: image %d %s: not used", name.c_str(), what, source, why.c_str());
+		return;
+	}
+	std::string label = name + " " + what + " (image " + std::to_string(source) + ")";
+	if (image_decode(label.c_str(), data, size, out))
+		log_warn("%s: %s is not used", name.c_str(), what);
+}
+
+void read_iridescence(const tinygltf::Material &mat, struct mesh_material *out, int *thickness,
+		      int *thickness_coord)
+{
+	auto it = mat.extensions.find("KHR_materials_iridescence");
+	if (it == mat.extensions.end() || !it->second.IsObject())
+		return;
+	const tinygltf::Value &v = it->second;
+	out->iridescence = true;
+	out->iridescence_factor = (float)number(v, "iridescenceFactor", 0.0, 0.0, 1.0);
+	out->iridescence_ior = (float)number(v, "iridescenceIor", 1.3, 1.0, 5.0);
+	out->thickness_min = (float)number(v, "iridescenceThicknessMinimum", 100.0, 0.0, 1e4);
+	out->thickness_max = (float)number(v, "iridescenceThicknessMaximum", 400.0, 0.0, 1e4);
+	const tinygltf::Value &t = v.Get("iridescenceThicknessTexture");
+	if (t.IsObject() && t.Has("index")) {
+		out->has_thickness_map = true;
+		*thickness = (int)number(t, "index", -1, -1, 1e9);
+		*thickness_coord = (int)number(t, "texCoord", 0, 0, 1e9);
+	}
+}
+
+} // namespace
+
+bool gltf_keep_image(tinygltf::Image *image, const int index, std::string *, std::string *, int,
+		     int, const unsigned char *bytes, int size, void *user)
+{
+	GltfImages *g = static_cast<GltfImages *>(user);
+	if (!g || !g->keep || image->bufferView >= 0 || index < 0 || size <= 0 || !bytes)
+		return true;
+	if ((size_t)index >= g->bytes.size())
+		g->bytes.resize((size_t)index + 1);
+	g->bytes[(size_t)index].assign(bytes, bytes + size);
+	return true;
+}
+
+void gltf_read_material(const tinygltf::Model &m, int index, unsigned textures,
+			const GltfImages &images, const std::string &name,
+			struct mesh_material *out)
+{
+	if (index < 0 || (size_t)index >= m.materials.size())
+		return;
+	const tinygltf::Material &mat = m.materials[(size_t)index];
+	const std::vector<double> &base = mat.pbrMetallicRoughness.baseColorFactor;
+	int thickness = -1, thickness_coord = 0;
+
+	out->present = true;
+	for (size_t k = 0; k < 3 && base.size() == 4; k++)
+		out->base_color[k] =
+		    std::isfinite(base[k]) ? (float)std::fmin(std::fmax(base[k], 0.0), 1.0) : 1.0f;
+	out->has_normal_map = mat.normalTexture.index >= 0;
+	out->has_occlusion_map = mat.occlusionTexture.index >= 0;
+	if (std::isfinite(mat.normalTexture.scale))
+		out->normal_scale =
+		    (float)std::fmin(std::fmax(mat.normalTexture.scale, -100.0), 100.0);
+	if (std::isfinite(mat.occlusionTexture.strength))
+		out->occlusion_strength =
+		    (float)std::fmin(std::fmax(mat.occlusionTexture.strength, 0.0), 1.0);
+	read_iridescence(mat, out, &thickness, &thickness_coord);
+	if ((textures & GLTF_TEXTURE_NORMAL) && out->has_normal_map)
+		read_texture(m, mat.normalTexture.index, mat.normalTexture.texCoord, images, name,
+			     "normalTexture", &out->normal_map);
+	if ((textures & GLTF_TEXTURE_OCCLUSION) && out->has_occlusion_map)
+		read_texture(m, mat.occlusionTexture.index, mat.occlusionTexture.texCoord, images,
+			     name, "occlusionTexture", &out->occlusion_map);
+	if ((textures & GLTF_TEXTURE_THICKNESS) && out->has_thickness_map)
+		read_texture(m, thickness, thickness_coord, images, name,
+			     "iridescenceThicknessTexture", &out->thickness_map);
+}

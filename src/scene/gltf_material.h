@@ -1,0 +1,35 @@
+// Inside the glTF shim (C++ only, included by src/scene/gltf.cc): the model's
+// material, its factors and the textures a scene asked for, into the plain
+// mesh_material of src/scene/mesh.h. Split from gltf.cc to keep each file short.
+#ifndef MK_GLTF_MATERIAL_H
+#define MK_GLTF_MATERIAL_H
+
+#include "scene/mesh.h"
+
+#include <tiny_gltf.h>
+
+#include <string>
+#include <vector>
+
+// Bytes of the images that tinygltf read from a URI (a file beside the
+// model, or a data: URI), by image index, kept by gltf_keep_image when a
+// texture may be wanted. Images in a bufferView are read from the buffer,
+// with our own bounds checks.
+struct GltfImages {
+	bool keep = false;
+	std::vector<std::vector<unsigned char>> bytes;
+};
+
+// tinygltf's image callback: decodes nothing, keeps URI images' bytes.
+bool gltf_keep_image(tinygltf::Image *image, const int index, std::string *err, std::string *warn,
+		     int req_width, int req_height, const unsigned char *bytes, int size,
+		     void *user);
+
+// Fill out from material `index` (-1: none). textures: enum gltf_texture
+// bits to decode. A texture that cannot be used is logged as a warning
+// naming `name` and left empty.
+void gltf_read_material(const tinygltf::Model &m, int index, unsigned textures,
+			const GltfImages &images, const std::string &name,
+			struct mesh_material *out);
+
+#endif

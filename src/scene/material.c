@@ -1,0 +1,368 @@
+#include "scene/material.h"
+#include "scene/gltf.h"
+#include "util/log.h"
+#include "render/render.h"
+#include "scene/subdivide.h"
+#include "scene/tangent.h"
+#include "scene/texture.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Seed 002's constants, and a beetle's green turning blue-violet. */
+#define DEFAULT_HUE_AVERAGE 0.33
+#define DEFAULT_HUE_RANGE   0.4
+#define DEFAULT_HUE_SHIFT   0.2
+#define DEFAULT_OPACITY	    0.6
+#define DEFAULT_SATURATION  0.7
+#define DEFAULT_VALUE	    0.8
+/* The wavelength one turn of the hue circle stands for (green). */
+#define FILM_LAMBDA_NM 550.0
+/* Detail maps are mipmapped and repeat: GLES2 needs power-of-two sides,
+ * and every GLES2 GPU takes 2048. */
+#define DETAIL_MAX_SIDE 2048
+#define LIT_GREY	0.8f
+
+void material_config_defaults(struct material_config *cfg)
+{
+	memset(cfg, 0, sizeof(*cfg));
+	cfg->iridescence = MATERIAL_AUTO;
+	cfg->hue_range = cfg->hue_average = cfg->hue_shift = NAN;
+	cfg->opacity = cfg->saturation = cfg->value = NAN;
+	cfg->detail = MATERIAL_AUTO;
+	cfg->displacement_scale = 0.05;
+	cfg->displacement_pixels = 3.0;
+	cfg->displacement_triangles = 1000000;
+	cfg->lit = LIT_OFF;
+	cfg->shininess = 48.0;
+}
+
+void material_config_release(struct material_config *cfg)
+{
+	free(cfg->ramp);
+	free(cfg->detail_map);
+	free(cfg->height_map);
+	cfg->ramp = cfg->detail_map = cfg->height_map = NULL;
+}
+
+unsigned material_gltf_textures(const struct material_config *cfg)
+{
+	unsigned t = 0;
+
+	/* A detail map named in the settings replaces the model's maps. */
+	if (cfg->detail != MATERIAL_OFF && !cfg->detail_map) {
+		t |= GLTF_TEXTURE_NORMAL | GLTF_TEXTURE_OCCLUSION;
+		if (cfg->iridescence != MATERIAL_OFF)
+			t |= GLTF_TEXTURE_THICKNESS;
+	}
+	return t;
+}
+
+static float pick(double setting, double otherwise)
+{
+	return (float)(isnan(setting) ? otherwise : setting);
+}
+
+/* KHR_materials_iridescence to seed 002's formula. The film's colour
+ * turns once round the hue circle each time its optical path 2 eta d
+ * cos(theta_t) grows by a wavelength. With cos(theta_t) ~ 1 - sin^2(theta)
+ * / (2 eta^2) and sin^2(theta) = 1 - (n.e)^2:
+ *   hue = 2 eta d / lambda - d / (eta lambda) * (1 - (n.e)^2),
+ * the seed's form, with average and range from the thickest film, and a
+ * thinner one (thickness map -> 0 at the minimum) shifting the hue. */
+static void iridescence_from_gltf(const struct mesh_material *g, struct material *m)
+{
+	double eta = g->iridescence_ior > 1.0f ? g->iridescence_ior : 1.3;
+	double dmax = g->thickness_max, dmin = g->has_thickness_map ? g->thickness_min : dmax;
+
+	m->hue_average = (float)(2.0 * eta * dmax / FILM_LAMBDA_NM);
+	m->hue_range = (float)(-dmax / (eta * FILM_LAMBDA_NM));
+	m->hue_shift = (float)(2.0 * eta * (dmax - dmin) / FILM_LAMBDA_NM);
+	m->opacity = (float)(DEFAULT_OPACITY * fmin(fmax(g->iridescence_factor, 0.0), 1.0));
+}
+
+static void resolve_iridescence(const struct material_config *cfg, const struct mesh *mesh,
+				struct material *m)
+{
+	const struct mesh_material *g = &mesh->material;
+	bool from_gltf = g->iridescence && g->iridescence_factor > 0.0f;
+
+	if (cfg->iridescence == MATERIAL_OFF || (cfg->iridescence == MATERIAL_AUTO && !from_gltf))
+		return;
+	m->features |= MATERIAL_IRIDESCENCE;
+	m->hue_average = DEFAULT_HUE_AVERAGE;
+	m->hue_range = DEFAULT_HUE_RANGE;
+	m->hue_shift = DEFAULT_HUE_SHIFT;
+	m->opacity = DEFAULT_OPACITY;
+	if (from_gltf)
+		iridescence_from_gltf(g, m);
+	m->hue_average = pick(cfg->hue_average, m->hue_average);
+	m->hue_range = pick(cfg->hue_range, m->hue_range);
+	m->hue_shift = pick(cfg->hue_shift, m->hue_shift);
+	m->opacity = pick(cfg->opacity, m->opacity);
+	m->saturation = pick(cfg->saturation, DEFAULT_SATURATION);
+	m->value = pick(cfg->value, DEFAULT_VALUE);
+}
+
+/* A file the settings name: an error when strict, else a warning and the
+ * feature stays off (the image is left empty). */
+static int load_named(const char *path, const char *feature, bool strict, struct image *img)
+{
+	int ret = image_load(path, img);
+
+	if (ret && !strict) {
+		log_warn("%s: %s is off", path, feature);
+		ret = 0;
+	}
+	return ret;
+}
+
+/* glTF's normal, occlusion and thickness textures into one packed map,
+ * sampled at the largest one's size (rounded to a power of two). The
+ * normal is scaled as glTF says and stored as xy: the shader rebuilds z,
+ * exact for unit normals, which the seed's z = 1 would not be. */
+static void pack_texel(const struct mesh_material *g, const struct image *shift, double u, double v,
+		       uint8_t *out)
+{
+	double t[4], n[3] = {0, 0, 1}, len;
+
+	if (g->normal_map.width) {
+		texture_sample(&g->normal_map, u, v, t);
+		for (int k = 0; k < 3; k++)
+			n[k] = (t[k] * 2.0 - 1.0) * (k < 2 ? g->normal_scale : 1.0);
+	}
+	len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+	if (!(len > 1e-6) || n[2] < 0.0)
+		n[0] = n[1] = 0.0, len = 1.0;
+	out[0] = (uint8_t)lround((n[0] / len * 0.5 + 0.5) * 255.0);
+	out[1] = (uint8_t)lround((n[1] / len * 0.5 + 0.5) * 255.0);
+	out[2] = 255;
+	if (g->occlusion_map.width) {
+		texture_sample(&g->occlusion_map, u, v, t);
+		out[2] = (uint8_t)lround(
+		    fmin(fmax(1.0 + g->occlusion_strength * (t[0] - 1.0), 0.0), 1.0) * 255.0);
+	}
+	out[3] = 255;
+	if (shift) {
+		texture_sample(shift, u, v, t);
+		out[3] = (uint8_t)lround(t[1] * 255.0);
+	}
+}
+
+static int pack_gltf(const struct mesh_material *g, bool with_shift, struct image *out)
+{
+	const struct image *shift = with_shift && g->thickness_map.width ? &g->thickness_map : NULL;
+	const struct image *maps[3] = {&g->normal_map, &g->occlusion_map, shift};
+	int w = 0, h = 0, ret;
+
+	for (int i = 0; i < 3; i++)
+		if (maps[i] && maps[i]->width) {
+			w = maps[i]->width > w ? maps[i]->width : w;
+			h = maps[i]->height > h ? maps[i]->height : h;
+		}
+	if (!w)
+		return -ENOENT;
+	ret = image_alloc(out, texture_pot(w, DETAIL_MAX_SIDE), texture_pot(h, DETAIL_MAX_SIDE));
+	for (int y = 0; !ret && y < out->height; y++)
+		for (int x = 0; x < out->width; x++)
+			pack_texel(g, shift, (x + 0.5) / out->width, (y + 0.5) / out->height,
+				   out->rgba + ((size_t)y * (size_t)out->width + (size_t)x) * 4);
+	return ret;
+}
+
+/* A map read as is, brought to power-of-two sides. */
+static int to_pot(struct image *img)
+{
+	struct image pot;
+	int w = texture_pot(img->width, DETAIL_MAX_SIDE),
+	    h = texture_pot(img->height, DETAIL_MAX_SIDE);
+	int ret;
+
+	if (w == img->width && h == img->height)
+		return 0;
+	ret = texture_resample(img, w, h, &pot);
+	image_release(img);
+	*img = pot;
+	return ret;
+}
+
+static int resolve_detail(const struct material_config *cfg, const struct mesh *mesh, bool strict,
+			  struct material *m)
+{
+	const struct mesh_material *g = &mesh->material;
+	bool shift = (m->features & MATERIAL_IRIDESCENCE) != 0;
+	int ret = 0;
+
+	if (cfg->detail == MATERIAL_OFF)
+		return 0;
+	if (!mesh->uvs && (cfg->detail_map || cfg->detail == MATERIAL_ON)) {
+		log_msg(strict ? LOG_ERR : LOG_WARN,
+			"%s: the model has no TEXCOORD_0 to place it: the detail map is off",
+			cfg->detail_map ? cfg->detail_map : "detail = on");
+		return strict ? -EINVAL : 0;
+	}
+	if (cfg->detail_map) {
+		ret = load_named(cfg->detail_map, "the detail map", strict, &m->detail);
+		if (!ret && m->detail.width)
+			ret = to_pot(&m->detail);
+		if (!ret && m->detail.width)
+			m->features |= MATERIAL_DETAIL | MATERIAL_DETAIL_NORMAL;
+		return ret;
+	}
+	ret = pack_gltf(g, shift, &m->detail);
+	if (ret == -ENOENT) {
+		if (cfg->detail == MATERIAL_ON)
+			log_warn("detail = on, but no detail_map is set and the model's material "
+				 "has no normal or occlusion texture: the detail map is off");
+		return 0;
+	}
+	if (!ret)
+		m->features |= MATERIAL_DETAIL | (g->normal_map.width ? MATERIAL_DETAIL_NORMAL : 0);
+	return ret;
+}
+
+static int resolve_displacement(const struct material_config *cfg, const struct mesh *mesh,
+				bool strict, struct material *m)
+{
+	int ret;
+
+	if (!cfg->height_map)
+		return 0;
+	if (!mesh->uvs) {
+		log_msg(strict ? LOG_ERR : LOG_WARN,
+			"%s: the model has no TEXCOORD_0 to place it: displacement is off",
+			cfg->height_map);
+		return strict ? -EINVAL : 0;
+	}
+	ret = load_named(cfg->height_map, "displacement", strict, &m->height);
+	if (!ret && m->height.width)
+		m->features |= MATERIAL_DISPLACEMENT;
+	m->displacement_scale = (float)cfg->displacement_scale;
+	m->displacement_pixels = (float)cfg->displacement_pixels;
+	m->displacement_triangles = (uint32_t)cfg->displacement_triangles;
+	return ret;
+}
+
+int material_load(struct material *out, const struct material_config *cfg, const struct mesh *mesh,
+		  bool strict)
+{
+	const struct mesh_material *g = &mesh->material;
+	int ret = 0;
+
+	memset(out, 0, sizeof(*out));
+	out->lit = cfg->lit;
+	out->shininess = (float)cfg->shininess;
+	for (int k = 0; k < 3; k++)
+		out->base_color[k] = g->present ? g->base_color[k] : LIT_GREY;
+	resolve_iridescence(cfg, mesh, out);
+	if ((out->features & MATERIAL_IRIDESCENCE) && cfg->ramp) {
+		ret =
+		    load_named(cfg->ramp, "the iridescence ramp (HSV is used)", strict, &out->ramp);
+		if (!ret && out->ramp.width)
+			out->features |= MATERIAL_RAMP;
+	}
+	if (!ret)
+		ret = resolve_detail(cfg, mesh, strict, out);
+	if (!ret)
+		ret = resolve_displacement(cfg, mesh, strict, out);
+	if (ret)
+		material_release(out);
+	return ret;
+}
+
+void material_release(struct material *m)
+{
+	image_release(&m->detail);
+	image_release(&m->ramp);
+	image_release(&m->height);
+	memset(m, 0, sizeof(*m));
+}
+
+static void refit(struct mesh *mesh)
+{
+	double *world = malloc((size_t)mesh->vertex_count * 3 * sizeof(double) + 1);
+
+	if (!world)
+		return; /* it still draws, only a little larger */
+	for (size_t i = 0; i < (size_t)mesh->vertex_count * 3; i++)
+		world[i] = mesh->positions[i];
+	mesh_fit_positions(world, mesh->vertex_count, mesh->positions);
+	free(world);
+}
+
+static int displace(const struct material *m, struct mesh *mesh, int width, int height)
+{
+	int n = subdivide_segments(mesh, render_pixels_per_unit(width, height),
+				   m->displacement_pixels, &m->height, m->displacement_triangles);
+	int ret = 0;
+
+	if (n > 1) {
+		struct mesh fine;
+
+		ret = subdivide_mesh(mesh, n, &fine);
+		if (ret)
+			return ret;
+		fine.material = mesh->material;
+		mesh_material_default(&mesh->material);
+		mesh_release(mesh);
+		*mesh = fine;
+	}
+	ret = displace_mesh(mesh, &m->height, m->displacement_scale);
+	if (ret)
+		return ret;
+	refit(mesh);
+	/* The surface has moved: its tangents are made again from the UVs. */
+	free(mesh->tangents);
+	mesh->tangents = NULL;
+	log_info("displacement: %d segments per edge, %u triangles", n, mesh->index_count / 3);
+	return 0;
+}
+
+int material_prepare_mesh(const struct material *m, struct mesh *mesh, int width, int height)
+{
+	int ret = 0;
+
+	if (m->features & MATERIAL_DISPLACEMENT)
+		ret = displace(m, mesh, width, height);
+	if (!ret && (m->features & MATERIAL_DETAIL_NORMAL)) {
+		if (mesh->tangents)
+			tangent_orthonormalize(mesh);
+		else
+			ret = tangent_generate(mesh);
+	}
+	if (ret)
+		log_err("material: cannot prepare the mesh: %s", strerror(-ret));
+	return ret;
+}
+
+bool material_needs_uvs(unsigned features)
+{
+	return (features & MATERIAL_DETAIL) != 0;
+}
+
+bool material_needs_tangents(unsigned features)
+{
+	return (features & MATERIAL_DETAIL_NORMAL) != 0;
+}
+
+int material_defines(unsigned f, enum shading_mode mode, bool ortho, bool lit, char *buf,
+		     size_t size)
+{
+	int n;
+
+	/* These read the normal per fragment, which sem-vertex has not. */
+	if (mode == SHADING_SEM_VERTEX &&
+	    (lit || (f & (MATERIAL_IRIDESCENCE | MATERIAL_DETAIL_NORMAL))))
+		mode = SHADING_SEM_FRAGMENT;
+	n = snprintf(buf, size, "%s%s%s%s%s%s%s", shading_mode_define(mode),
+		     ortho ? "#define CAMERA_ORTHO 1\n" : "",
+		     f & MATERIAL_IRIDESCENCE ? "#define IRIDESCENCE 1\n" : "",
+		     f & MATERIAL_RAMP ? "#define IRIDESCENCE_RAMP 1\n" : "",
+		     f & MATERIAL_DETAIL ? "#define DETAIL_MAP 1\n" : "",
+		     f & MATERIAL_DETAIL_NORMAL ? "#define DETAIL_NORMAL 1\n" : "",
+		     lit ? "#define LIT 1\n" : "");
+	return n >= 0 && (size_t)n < size ? n : -ENOSPC;
+}

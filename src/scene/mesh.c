@@ -1,0 +1,173 @@
+#include "scene/mesh.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+void mesh_material_default(struct mesh_material *mat)
+{
+	memset(mat, 0, sizeof(*mat));
+	for (int k = 0; k < 3; k++)
+		mat->base_color[k] = 1.0f;
+	mat->iridescence_ior = 1.3f;
+	mat->thickness_min = 100.0f;
+	mat->thickness_max = 400.0f;
+	mat->normal_scale = 1.0f;
+	mat->occlusion_strength = 1.0f;
+}
+
+int mesh_alloc(struct mesh *m, uint32_t vertex_count, uint32_t index_count, bool with_uvs)
+{
+	memset(m, 0, sizeof(*m));
+	mesh_material_default(&m->material);
+	m->positions = malloc((size_t)vertex_count * 3 * sizeof(float) + 1);
+	m->normals = malloc((size_t)vertex_count * 3 * sizeof(float) + 1);
+	m->uvs = with_uvs ? malloc((size_t)vertex_count * 2 * sizeof(float) + 1) : NULL;
+	m->indices = malloc((size_t)index_count * sizeof(uint32_t) + 1);
+	if (!m->positions || !m->normals || !m->indices || (with_uvs && !m->uvs)) {
+		mesh_release(m);
+		return -ENOMEM;
+	}
+	m->vertex_count = vertex_count;
+	m->index_count = index_count;
+	return 0;
+}
+
+int mesh_alloc_tangents(struct mesh *m)
+{
+	free(m->tangents);
+	m->tangents = malloc((size_t)m->vertex_count * 4 * sizeof(float) + 1);
+	return m->tangents ? 0 : -ENOMEM;
+}
+
+void mesh_release(struct mesh *m)
+{
+	free(m->positions);
+	free(m->normals);
+	free(m->uvs);
+	free(m->tangents);
+	free(m->indices);
+	image_release(&m->material.normal_map);
+	image_release(&m->material.occlusion_map);
+	image_release(&m->material.thickness_map);
+	memset(m, 0, sizeof(*m));
+}
+
+void mesh_fit_positions(const double *world, uint32_t count, float *out)
+{
+	double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+	double c[3] = {0, 0, 0}, r2 = 0.0, scale = 1.0;
+
+	for (uint32_t i = 0; i < count; i++)
+		for (int k = 0; k < 3; k++) {
+			lo[k] = fmin(lo[k], world[i * 3 + k]);
+			hi[k] = fmax(hi[k], world[i * 3 + k]);
+		}
+	if (count)
+		for (int k = 0; k < 3; k++)
+			c[k] = lo[k] + (hi[k] - lo[k]) / 2.0;
+	for (uint32_t i = 0; i < count; i++) {
+		double d2 = 0.0;
+
+		for (int k = 0; k < 3; k++)
+			d2 += (world[i * 3 + k] - c[k]) * (world[i * 3 + k] - c[k]);
+		r2 = fmax(r2, d2);
+	}
+	if (r2 > 0.0 && isfinite(r2))
+		scale = 1.0 / sqrt(r2);
+	for (uint32_t i = 0; i < count; i++)
+		for (int k = 0; k < 3; k++)
+			out[i * 3 + k] = (float)((world[i * 3 + k] - c[k]) * scale);
+}
+
+struct weld_key {
+	const float *p;
+	uint32_t v;
+};
+
+/* By value, so -0.0 and 0.0 (a pole, a seam) are one position. */
+static int position_compare(const float *a, const float *b)
+{
+	for (int k = 0; k < 3; k++)
+		if (a[k] != b[k])
+			return a[k] < b[k] ? -1 : 1;
+	return 0;
+}
+
+static int weld_compare(const void *a, const void *b)
+{
+	const struct weld_key *x = a, *y = b;
+	int c = position_compare(x->p, y->p);
+
+	if (c)
+		return c;
+	return x->v < y->v ? -1 : x->v > y->v;
+}
+
+static void accumulate_faces(const float *pos, const uint32_t *idx, uint32_t index_count,
+			     const uint32_t *rep, uint32_t first, double *acc)
+{
+	for (uint32_t t = 0; t + 2 < index_count; t += 3) {
+		const float *a = pos + (size_t)idx[t] * 3;
+		const float *b = pos + (size_t)idx[t + 1] * 3;
+		const float *c = pos + (size_t)idx[t + 2] * 3;
+		double e1[3], e2[3], n[3];
+
+		for (int k = 0; k < 3; k++) {
+			e1[k] = (double)b[k] - a[k];
+			e2[k] = (double)c[k] - a[k];
+		}
+		/* The cross product's length is twice the area: the weight. */
+		n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+		n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+		n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+		for (int j = 0; j < 3; j++)
+			for (int k = 0; k < 3; k++)
+				acc[(size_t)rep[idx[t + j] - first] * 3 + k] += n[k];
+	}
+}
+
+int mesh_weld(const float *positions, uint32_t count, uint32_t *rep)
+{
+	struct weld_key *keys = malloc((size_t)count * sizeof(*keys) + 1);
+
+	if (!keys)
+		return -ENOMEM;
+	for (uint32_t i = 0; i < count; i++)
+		keys[i] = (struct weld_key){positions + (size_t)i * 3, i};
+	qsort(keys, count, sizeof(*keys), weld_compare);
+	for (uint32_t i = 0; i < count; i++) {
+		bool same = i > 0 && position_compare(keys[i].p, keys[i - 1].p) == 0;
+
+		rep[keys[i].v] = same ? rep[keys[i - 1].v] : keys[i].v;
+	}
+	free(keys);
+	return 0;
+}
+
+int mesh_generate_normals(const float *positions, const uint32_t *idx, uint32_t index_count,
+			  uint32_t first, uint32_t count, float *normals)
+{
+	uint32_t *rep = malloc((size_t)count * sizeof(*rep) + 1);
+	double *acc = calloc((size_t)count * 3 + 1, sizeof(double));
+	int ret = -ENOMEM;
+
+	/* Each vertex accumulates into the first vertex at its position. */
+	if (!rep || !acc || mesh_weld(positions + (size_t)first * 3, count, rep))
+		goto out;
+	accumulate_faces(positions, idx, index_count, rep, first, acc);
+	for (uint32_t i = 0; i < count; i++) {
+		const double *n = acc + (size_t)rep[i] * 3;
+		double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+		float *out = normals + (size_t)(first + i) * 3;
+
+		for (int k = 0; k < 3; k++)
+			out[k] = len > 0.0 && isfinite(len) ? (float)(n[k] / len) : (k == 2);
+	}
+	ret = 0;
+out:
+	free(rep);
+	free(acc);
+	return ret;
+}

@@ -1,0 +1,103 @@
+#include "util/folder_watch.h"
+#include "util/log.h"
+
+#include <errno.h>
+#include <libgen.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/inotify.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+/* Written files count when closed, not on every write, so a slow copy is
+ * one event at its end; renames cover editors and rsync, which write a
+ * hidden temporary file and move it over the real name. */
+#define WATCH_EVENTS                                                                               \
+	(IN_CLOSE_WRITE | IN_MOVED_TO | IN_MOVED_FROM | IN_DELETE | IN_DELETE_SELF | IN_MOVE_SELF)
+
+struct folder_watch {
+	int fd;
+	char *folder;
+	char *name; /* the one file that counts, or NULL for all */
+};
+
+void folder_watch_free(struct folder_watch *w)
+{
+	if (!w)
+		return;
+	if (w->fd >= 0)
+		close(w->fd);
+	free(w->folder);
+	free(w->name);
+	free(w);
+}
+
+/* Split path into the folder to watch and the name that counts. */
+static int split_path(struct folder_watch *w, const char *path)
+{
+	struct stat st;
+	char *a, *b;
+
+	if (stat(path, &st))
+		return -errno;
+	if (S_ISDIR(st.st_mode)) {
+		w->folder = strdup(path);
+		return w->folder ? 0 : -ENOMEM;
+	}
+	a = strdup(path);
+	b = strdup(path);
+	if (a && b) {
+		w->folder = strdup(dirname(a));
+		w->name = strdup(basename(b));
+	}
+	free(a);
+	free(b);
+	return w->folder && w->name ? 0 : -ENOMEM;
+}
+
+struct folder_watch *folder_watch_new(const char *path)
+{
+	struct folder_watch *w = calloc(1, sizeof(*w));
+	int ret;
+
+	if (!w)
+		return NULL;
+	w->fd = inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
+	ret = w->fd < 0 ? -errno : split_path(w, path);
+	if (!ret && inotify_add_watch(w->fd, w->folder, WATCH_EVENTS) < 0)
+		ret = -errno;
+	if (ret) {
+		log_warn("%s: cannot watch for new matcaps (%s); a change needs a reload", path,
+			 strerror(-ret));
+		folder_watch_free(w);
+		return NULL;
+	}
+	log_debug("watching %s for matcap changes", w->folder);
+	return w;
+}
+
+int folder_watch_fd(const struct folder_watch *w)
+{
+	return w->fd;
+}
+
+bool folder_watch_read(struct folder_watch *w)
+{
+	/* Aligned as inotify(7) asks: events are read in place. */
+	char buf[4096] __attribute__((aligned(__alignof__(struct inotify_event))));
+	bool changed = false;
+	ssize_t n;
+
+	while ((n = read(w->fd, buf, sizeof(buf))) > 0) {
+		for (char *p = buf; p < buf + n;) {
+			const struct inotify_event *ev = (const struct inotify_event *)p;
+
+			/* A lost queue or a gone folder: look at everything. */
+			if ((ev->mask & (IN_Q_OVERFLOW | IN_DELETE_SELF | IN_MOVE_SELF)) ||
+			    !w->name || (ev->len && strcmp(ev->name, w->name) == 0))
+				changed = true;
+			p += sizeof(*ev) + ev->len;
+		}
+	}
+	return changed;
+}

@@ -1,0 +1,44 @@
+#include "util/log.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+/* The level is set once from main() before anything logs; the journal check
+ * is pure (it reads the environment each time), so no other state is kept. */
+static enum log_level max_level = LOG_INFO;
+
+void log_set_level(enum log_level max)
+{
+	max_level = max;
+}
+
+static const char *level_word(enum log_level level)
+{
+	switch (level) {
+	case LOG_ERR:
+		return "error: ";
+	case LOG_WARN:
+		return "warning: ";
+	default:
+		return "";
+	}
+}
+
+void log_msg(enum log_level level, const char *fmt, ...)
+{
+	char line[1024];
+	va_list ap;
+
+	if (level > max_level)
+		return;
+	va_start(ap, fmt);
+	vsnprintf(line, sizeof(line), fmt, ap);
+	va_end(ap);
+	/* systemd sets JOURNAL_STREAM when stderr goes to the journal: then
+	 * the <N> prefix carries the priority and the name is added by it. */
+	if (getenv("JOURNAL_STREAM"))
+		fprintf(stderr, "<%d>%s\n", (int)level, line);
+	else
+		fprintf(stderr, "matcap-kiosk: %s%s\n", level_word(level), line);
+}

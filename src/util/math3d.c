@@ -1,0 +1,149 @@
+#include "util/math3d.h"
+
+#include <math.h>
+#include <string.h>
+
+void mat4_identity(float m[16])
+{
+	memset(m, 0, 16 * sizeof(float));
+	m[0] = m[5] = m[10] = m[15] = 1.0f;
+}
+
+void mat4_multiply(float out[16], const float a[16], const float b[16])
+{
+	float r[16];
+
+	for (int c = 0; c < 4; c++)
+		for (int row = 0; row < 4; row++) {
+			double s = 0.0;
+
+			for (int k = 0; k < 4; k++)
+				s += (double)a[k * 4 + row] * (double)b[c * 4 + k];
+			r[c * 4 + row] = (float)s;
+		}
+	memcpy(out, r, sizeof(r));
+}
+
+void mat4_perspective(float m[16], double fovy_rad, double aspect, double znear, double zfar)
+{
+	double f = 1.0 / tan(fovy_rad / 2.0);
+
+	memset(m, 0, 16 * sizeof(float));
+	m[0] = (float)(f / aspect);
+	m[5] = (float)f;
+	m[10] = (float)((zfar + znear) / (znear - zfar));
+	m[11] = -1.0f;
+	m[14] = (float)(2.0 * zfar * znear / (znear - zfar));
+}
+
+void mat4_ortho(float m[16], double l, double r, double b, double t, double n, double f)
+{
+	mat4_identity(m);
+	m[0] = (float)(2.0 / (r - l));
+	m[5] = (float)(2.0 / (t - b));
+	m[10] = (float)(-2.0 / (f - n));
+	m[12] = (float)(-(r + l) / (r - l));
+	m[13] = (float)(-(t + b) / (t - b));
+	m[14] = (float)(-(f + n) / (f - n));
+}
+
+void mat4_translate(float m[16], double x, double y, double z)
+{
+	mat4_identity(m);
+	m[12] = (float)x;
+	m[13] = (float)y;
+	m[14] = (float)z;
+}
+
+void mat4_from_quat(float m[16], struct quat q)
+{
+	double w = q.w, x = q.x, y = q.y, z = q.z;
+
+	mat4_identity(m);
+	m[0] = (float)(1 - 2 * (y * y + z * z));
+	m[1] = (float)(2 * (x * y + w * z));
+	m[2] = (float)(2 * (x * z - w * y));
+	m[4] = (float)(2 * (x * y - w * z));
+	m[5] = (float)(1 - 2 * (x * x + z * z));
+	m[6] = (float)(2 * (y * z + w * x));
+	m[8] = (float)(2 * (x * z + w * y));
+	m[9] = (float)(2 * (y * z - w * x));
+	m[10] = (float)(1 - 2 * (x * x + y * y));
+}
+
+void mat4_rotate_z(float m[16], int degrees)
+{
+	/* Exact for the quarter turns a portrait panel needs. */
+	static const float c[4] = {1, 0, -1, 0}, s[4] = {0, 1, 0, -1};
+	int k = ((degrees / 90) % 4 + 4) % 4;
+
+	mat4_identity(m);
+	m[0] = c[k];
+	m[1] = s[k];
+	m[4] = -s[k];
+	m[5] = c[k];
+}
+
+void mat3_from_mat4(float out[9], const float m[16])
+{
+	for (int c = 0; c < 3; c++)
+		for (int r = 0; r < 3; r++)
+			out[c * 3 + r] = m[c * 4 + r];
+}
+
+double vec3_dot(const double a[3], const double b[3])
+{
+	return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+void vec3_cross(const double a[3], const double b[3], double out[3])
+{
+	out[0] = a[1] * b[2] - a[2] * b[1];
+	out[1] = a[2] * b[0] - a[0] * b[2];
+	out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+bool vec3_normalize(double v[3])
+{
+	double l = sqrt(vec3_dot(v, v));
+
+	if (!(l > 1e-12) || !isfinite(l))
+		return false;
+	for (int k = 0; k < 3; k++)
+		v[k] /= l;
+	return true;
+}
+
+struct quat quat_identity(void)
+{
+	return (struct quat){1, 0, 0, 0};
+}
+
+struct quat quat_from_axis_angle(double x, double y, double z, double radians)
+{
+	double len = sqrt(x * x + y * y + z * z);
+	double s = sin(radians / 2.0);
+
+	if (len == 0.0)
+		return quat_identity();
+	return (struct quat){cos(radians / 2.0), x / len * s, y / len * s, z / len * s};
+}
+
+struct quat quat_multiply(struct quat a, struct quat b)
+{
+	return (struct quat){
+	    a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z,
+	    a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+	    a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
+	    a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w,
+	};
+}
+
+struct quat quat_normalize(struct quat q)
+{
+	double len = sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
+
+	if (!(len > 0.0) || !isfinite(len))
+		return quat_identity();
+	return (struct quat){q.w / len, q.x / len, q.y / len, q.z / len};
+}

@@ -1,0 +1,77 @@
+/* The speed-against-error bench (tests/bench/bench_quality.c measures,
+ * tests/bench/bench_quality_report.c writes the tables and the plot's data). */
+#ifndef MK_BENCH_QUALITY_H
+#define MK_BENCH_QUALITY_H
+
+#include "display/display.h"
+#include "util/image.h"
+#include "render/render.h"
+#include "render/shading.h"
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#define MAX_SETTINGS  24
+#define NOISE	      0.10 /* a setting must be 10% faster to count as faster */
+#define PSNR_TIE      0.25 /* ... and 0.25 dB (6% of the squared error) more accurate */
+#define OFF_TOL	      2	   /* of 255: a pixel "off" */
+#define PSNR_CAP      99.0 /* the reference against itself, in the plot */
+#define WARMUP	      2	   /* frames drawn and not counted, each round */
+#define WARMUP_SWITCH 6	   /* ... when the display before was another */
+#define ROUNDS	      3	   /* interleaved rounds over a scene's settings */
+#define MAX_FRAMES    96
+
+/* The shipped matcaps' size (matcaps/README.md); the other defaults are
+ * src/app/options.c's. */
+#define DEFAULT_MATCAP 256
+
+enum model { KNOT_16K, KNOT_100K, KNOT_1M };
+
+struct look {
+	const char *name;
+	enum model model;
+	enum shading_mode mode, cheaper; /* the default, and the cheaper variant */
+	bool iridescence, detail, lit;
+};
+
+/* The scenes, in the report's order. */
+#define LOOKS 7
+extern const struct look looks[LOOKS];
+
+struct setting {
+	char label[40];
+	enum shading_mode mode;
+	bool highp, is_default, is_reference;
+	double lod;
+	int matcap, ss;
+	/* measured */
+	int same_as; /* an earlier setting that drew exactly this, or -1 */
+	uint32_t triangles;
+	double times[MAX_FRAMES];
+	int timed;
+	double ms, p90, psnr, off;
+	bool front;
+};
+
+struct bench {
+	const char *out, *scratch;
+	int width, height, frames;
+	bool egl;
+	struct display *display[3]; /* 1x, 2x, 4x */
+	struct renderer *renderer[3];
+	struct image matcap[5];
+	char detail_path[512];
+	struct setting settings[LOOKS][MAX_SETTINGS];
+	int count[LOOKS];
+	double lod_default;
+	bool highp_default; /* the renderer's own choice for this GL */
+	char load[2][64];   /* /proc/loadavg at the start and the end */
+	int last_display;   /* the one measure() drew with last */
+};
+
+/* Frames per round for b->frames in all. */
+int bench_rounds_frames(const struct bench *b);
+/* OUTDIR/speed-error.md, .dat and -front.dat. Returns 0 or -EIO. */
+int bench_write_report(struct bench *b);
+
+#endif

@@ -1,0 +1,18 @@
+#!/bin/sh
+# Speed against error (issue 7): bench_quality draws each scene with every
+# quality setting and writes the tables and the data, gnuplot draws time
+# against error with the front marked. Printed, never asserted.
+#   sh tests/bench/bench_quality.sh OUTDIR [--frames N] [--size WxH] [--backend B]
+# `make report` writes tests/bench/report (checked in); `make bench`, a scratch
+# copy. Environment: TOOLS.
+set -eu
+out=$1
+shift
+# The maps it draws with, outside tests/out, which `make test` empties.
+scratch=$(mktemp -d /tmp/matcap-bench-XXXXXX)
+trap 'rm -rf "$scratch"' EXIT
+mkdir -p "$out"
+"$TOOLS/bench_quality" "$out" "$scratch" "$@"
+gnuplot -e "dir='$out'" tests/bench/report/speed-error.gp
+cat "$out/speed-error.md"
+echo "plot: $out/speed-error.png"

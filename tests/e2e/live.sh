@@ -1,0 +1,92 @@
+#!/bin/sh
+# The live loop of a real kiosk process (the ASan build, through OSMesa),
+# driven the way systemd and a technician drive it, with no systemd: a
+# socket of tests/notify_listen stands in for NOTIFY_SOCKET.
+#   live.sh KIOSK NOTIFY_LISTEN MODEL DIR
+# Prints one "ok NAME" or "not ok NAME" line per step; the last line is
+# "ok every step ran" when the scenario got to its end.
+set -u
+kiosk=$1
+listen=$2
+model=$3
+dir=$4
+rm -rf "$dir"
+mkdir -p "$dir/mc"
+dir=$(cd "$dir" && pwd) # NOTIFY_SOCKET must be an absolute path
+cp matcaps/gold.png matcaps/pearl.png "$dir/mc/"
+printf '[scene]\nmode = view\n' >"$dir/kiosk.ini"
+
+step() { # NAME COMMAND...: one result line
+	name=$1
+	shift
+	if "$@"; then echo "ok $name"; else echo "not ok $name"; fi
+}
+# wait_for FILE PATTERN [COUNT]: until PATTERN is on COUNT lines (10 s at most).
+wait_for() {
+	i=0
+	while [ "$(grep -c -- "$2" "$1" 2>/dev/null)" -lt "${3:-1}" ]; do
+		i=$((i + 1))
+		[ $i -gt 200 ] && return 1
+		sleep 0.05
+	done
+}
+
+"$listen" "$dir/notify" 60 >"$dir/notify.log" &
+listener=$!
+i=0
+while [ ! -S "$dir/notify" ] && [ $i -lt 100 ]; do
+	i=$((i + 1))
+	sleep 0.05
+done
+# WATCHDOG_PID must be the kiosk's own pid: the shell's, which exec keeps.
+# Leak detection is off here: Mesa's OSMesa leaks a fixed 592 bytes per
+# process inside OSMesaCreateContextAttribs and its first shader compile,
+# and as the library is unloaded at exit LeakSanitizer can neither name nor
+# suppress them. The project's own code on these paths is leak-checked by
+# valgrind in the soak test (tests/soak/soak.sh), which keeps the library loaded.
+ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 \
+NOTIFY_SOCKET=$dir/notify WATCHDOG_USEC=400000 sh -c 'export WATCHDOG_PID=$$; exec "$0" "$@"' \
+	"$kiosk" --backend osmesa --size 64x64 --config "$dir/kiosk.ini" --matcap "$dir/mc" -v \
+	2>"$dir/stderr" &
+kiosk_pid=$!
+
+step "READY=1 once the first frame is drawn" wait_for "$dir/notify.log" "READY=1 STATUS=showing"
+step "ready logged after the first frame" wait_for "$dir/stderr" "ready: the first frame"
+
+printf '[scene]\nmode = normal\nmodel = %s\n' "$model" >"$dir/kiosk.ini"
+kill -HUP $kiosk_pid
+step "SIGHUP reloads a new config and model" wait_for "$dir/stderr" "reload: done"
+step "RELOADING=1 then READY=1 around the reload" sh -c "grep -q RELOADING=1 '$dir/notify.log' &&
+	grep -A9 RELOADING=1 '$dir/notify.log' | grep -q 'READY=1 STATUS=reloaded'"
+step "the reloaded mode is used" wait_for "$dir/stderr" "mode normal"
+
+cp matcaps/skin.png "$dir/mc/skin.png.part"
+mv "$dir/mc/skin.png.part" "$dir/mc/skin.png"
+cp matcaps/clay-red.png "$dir/mc/"
+step "matcaps copied into the folder are picked up" wait_for "$dir/stderr" "$dir/mc: 4 matcaps"
+rm "$dir/mc/pearl.png"
+step "a matcap removed from the folder is dropped" wait_for "$dir/stderr" "$dir/mc: 3 matcaps"
+
+printf '[scene]\nmode = phong\n' >"$dir/kiosk.ini"
+kill -HUP $kiosk_pid
+step "a bad config is reported with its line" wait_for "$dir/stderr" "kiosk.ini:2: .scene. mode"
+step "... and says the scene stays" wait_for "$dir/stderr" "settings have errors"
+printf '[scene]\nmodel = %s/no-such-model.glb\n' "$dir" >"$dir/kiosk.ini"
+kill -HUP $kiosk_pid
+step "a missing model keeps the scene" wait_for "$dir/stderr" "reload: keeping the scene on screen"
+
+# 400 ms watchdog: a ping every 200 ms from the loop, even when idle.
+sleep 1.2
+pings=$(grep -c "WATCHDOG=1" "$dir/notify.log")
+step "watchdog pinged from the idle loop ($pings pings)" [ "$pings" -ge 5 ]
+
+step "still running after all of it" kill -0 $kiosk_pid
+kill -TERM $kiosk_pid
+wait $kiosk_pid
+status=$?
+step "SIGTERM exits 0 (status $status)" [ $status -eq 0 ]
+step "STOPPING=1 sent" wait_for "$dir/notify.log" "STOPPING=1"
+step "no sanitizer report (memory errors, undefined behaviour)" sh -c "! grep -qE 'Sanitizer|runtime error' '$dir/stderr'"
+kill $listener 2>/dev/null
+wait $listener 2>/dev/null
+echo "ok every step ran"

@@ -1,0 +1,38 @@
+/* Writes small glTF files for the tests: valid ones in every variant the
+ * loader must accept, and broken ones it must refuse with a clear error. */
+#ifndef MK_GLTF_WRITE_H
+#define MK_GLTF_WRITE_H
+
+#include "scene/mesh.h"
+
+enum gltf_container { GLTF_GLB, GLTF_EXTERNAL_BIN, GLTF_DATA_URI };
+
+struct gltf_write_opts {
+	enum gltf_container container;
+	int index_bytes;     /* 1, 2 or 4; 0 for a primitive without indices */
+	int with_normals;    /* write the NORMAL attribute */
+	const char *node;    /* extra JSON members of the mesh's node, e.g. "\"scale\":[-1,1,1]" */
+	const char *parent;  /* set: a root node with these members holds the mesh's node */
+	const char *bin_uri; /* override the external buffer's URI */
+	long position_count; /* override POSITION's count (0: the real one) */
+	long bad_index;	     /* >= 0: write this value as the first index */
+	int byte_stride;     /* byteStride of the POSITION view (0: tight) */
+	long truncate_to;    /* > 0: cut the written file to this many bytes */
+	int with_uvs;	     /* TEXCOORD_0 from the mesh's uvs */
+	int with_tangents;   /* TANGENT from the mesh's tangents */
+	/* A material, written when one of these is set. The PNG files become
+	 * its normalTexture, occlusionTexture and KHR_materials_iridescence
+	 * thickness texture: copied into the buffer (embed_images), else
+	 * named by URI (their file names: they must lie beside the model). */
+	const char *normal_png, *occlusion_png, *thickness_png;
+	int embed_images;
+	const char *image_uri;	   /* override every image's URI */
+	double iridescence_factor; /* > 0: KHR_materials_iridescence */
+	double thickness_range[2]; /* its thickness minimum and maximum, nm */
+};
+
+/* Writes path (and, for GLTF_EXTERNAL_BIN, path with .bin for .gltf).
+ * Returns 0 or -1. */
+int gltf_write(const char *path, const struct mesh *m, const struct gltf_write_opts *o);
+
+#endif

@@ -1,0 +1,177 @@
+#include "maps.h"
+#include "util/image.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+/* 16 x 8 cells of 32 texels, every other row shifted by half a cell: a
+ * scaly relief that tiles, square on a UV sphere's equator (u runs 2 pi
+ * round it, v pi from pole to pole). */
+#define DETAIL_W 512
+#define DETAIL_H 256
+#define CELL	 32.0
+
+static double wrap_delta(double d, double period)
+{
+	return d - period * floor(d / period + 0.5);
+}
+
+/* A dome per cell: 1 at its centre, 0 at its rim and between cells. */
+static double scales(double x, double y)
+{
+	double best = 1e9;
+
+	for (int dy = -1; dy <= 1; dy++) {
+		double row = floor(y / CELL) + dy, cy = (row + 0.5) * CELL;
+		double shift = fmod(row, 2.0) != 0.0 ? CELL / 2 : 0.0;
+		double cx = (floor((x - shift) / CELL) + 0.5) * CELL + shift;
+
+		for (int dx = -1; dx <= 1; dx++) {
+			double ex = wrap_delta(x - (cx + dx * CELL), DETAIL_W);
+			double ey = wrap_delta(y - cy, DETAIL_H);
+
+			best = fmin(best, sqrt(ex * ex + ey * ey));
+		}
+	}
+	best /= CELL * 0.62;
+	return best < 1.0 ? pow(cos(best * M_PI / 2), 2.0) : 0.0;
+}
+
+struct texel {
+	double n[3], ao, shift;
+};
+
+/* Tangent-space normal (x right = +u, y up = -v, as glTF), occlusion
+ * darker between the scales, and hue-shift stripes along u. */
+static void relief(int x, int y, struct texel *t)
+{
+	const double strength = 6.0;
+	double hx = scales(x + 1, y) - scales(x - 1, y), hy = scales(x, y + 1) - scales(x, y - 1);
+	double n[3] = {-strength * hx / 2, strength * hy / 2, 1.0};
+	double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+
+	for (int k = 0; k < 3; k++)
+		t->n[k] = n[k] / len;
+	t->ao = 0.35 + 0.65 * sqrt(scales(x, y));
+	t->shift = 0.5 + 0.5 * cos(2 * M_PI * 3.0 * x / DETAIL_W);
+}
+
+static unsigned char byte(double v)
+{
+	return (unsigned char)lround(fmin(fmax(v, 0.0), 1.0) * 255.0);
+}
+
+static int save(const char *dir, const char *name, const struct image *img)
+{
+	char path[4096];
+
+	snprintf(path, sizeof(path), "%s/%s", dir, name);
+	if (image_write_png(path, img)) {
+		fprintf(stderr, "maps: cannot write %s\n", path);
+		return 1;
+	}
+	return 0;
+}
+
+static int write_relief(const char *dir)
+{
+	struct image img[4];
+	static const char *const names[4] = {"detail.png", "normal.png", "occlusion.png",
+					     "thickness.png"};
+	int bad = 0;
+
+	for (int i = 0; i < 4; i++)
+		if (image_alloc(&img[i], DETAIL_W, DETAIL_H))
+			return 1;
+	for (int y = 0; y < DETAIL_H; y++)
+		for (int x = 0; x < DETAIL_W; x++) {
+			struct texel t;
+			size_t o = ((size_t)y * DETAIL_W + (size_t)x) * 4;
+			unsigned char *d = img[0].rgba + o, *n = img[1].rgba + o;
+			unsigned char *a = img[2].rgba + o, *th = img[3].rgba + o;
+
+			relief(x, y, &t);
+			d[0] = n[0] = byte(t.n[0] * 0.5 + 0.5);
+			d[1] = n[1] = byte(t.n[1] * 0.5 + 0.5);
+			n[2] = byte(t.n[2] * 0.5 + 0.5);
+			d[2] = a[0] = a[1] = a[2] = byte(t.ao);
+			d[3] = th[1] = byte(t.shift);
+			n[3] = a[3] = th[3] = 255;
+		}
+	for (int i = 0; i < 4; i++) {
+		bad |= save(dir, names[i], &img[i]);
+		image_release(&img[i]);
+	}
+	return bad;
+}
+
+/* Egg crate: 8 bumps round, 4 from pole to pole, level at the poles so
+ * the sphere's many pole vertices agree. */
+static int write_height(const char *dir)
+{
+	struct image img;
+	int bad;
+
+	if (image_alloc(&img, 256, 128))
+		return 1;
+	for (int y = 0; y < 128; y++)
+		for (int x = 0; x < 256; x++) {
+			double u = (x + 0.5) / 256, v = (y + 0.5) / 128;
+			unsigned char h =
+			    byte(0.5 + 0.5 * sin(2 * M_PI * 8 * u) * sin(2 * M_PI * 2 * v));
+			unsigned char *p = img.rgba + ((size_t)y * 256 + (size_t)x) * 4;
+
+			p[0] = p[1] = p[2] = h;
+			p[3] = 255;
+		}
+	bad = save(dir, "height.png", &img);
+	image_release(&img);
+	return bad;
+}
+
+/* Gold, teal, violet, rose and back: a ramp that wraps round. */
+static int write_ramp(const char *dir)
+{
+	static const double stops[5][3] = {{1.0, 0.76, 0.2},
+					   {0.1, 0.75, 0.7},
+					   {0.45, 0.2, 0.9},
+					   {0.9, 0.25, 0.5},
+					   {1.0, 0.76, 0.2}};
+	struct image img;
+	int bad;
+
+	if (image_alloc(&img, 256, 4))
+		return 1;
+	for (int x = 0; x < 256; x++) {
+		double t = (x + 0.5) / 256 * 4;
+		int i = (int)t;
+		double f = t - i;
+
+		for (int y = 0; y < 4; y++) {
+			unsigned char *p = img.rgba + ((size_t)y * 256 + (size_t)x) * 4;
+
+			for (int c = 0; c < 3; c++)
+				p[c] = byte(stops[i][c] * (1 - f) + stops[i + 1][c] * f);
+			p[3] = 255;
+		}
+	}
+	bad = save(dir, "ramp.png", &img);
+	image_release(&img);
+	return bad;
+}
+
+int maps_write(const char *dir)
+{
+	char path[4096];
+	FILE *f;
+	int bad = write_relief(dir) | write_height(dir) | write_ramp(dir);
+
+	snprintf(path, sizeof(path), "%s/corrupt.png", dir);
+	f = fopen(path, "wb");
+	if (!f)
+		return 1;
+	fputs("\211PNG\r\n\032\n but nothing after the signature", f);
+	fclose(f);
+	return bad;
+}

@@ -1,0 +1,140 @@
+/* Writes the test and bench models into a folder:
+ *   mkmodels DIR          sphere, loader variants, the malformed set, and
+ *                         the material maps and models (issue 6)
+ *   mkmodels DIR --bench  also torus knots of about 100k and 1M triangles */
+#include "gltf_write.h"
+#include "maps.h"
+#include "scene/mesh.h"
+#include "scene/tangent.h"
+
+#include <stdio.h>
+#include <string.h>
+
+static int put(const char *dir, const char *name, const struct mesh *m, struct gltf_write_opts o)
+{
+	char path[4096];
+
+	snprintf(path, sizeof(path), "%s/%s", dir, name);
+	if (gltf_write(path, m, &o)) {
+		fprintf(stderr, "mkmodels: cannot write %s\n", path);
+		return 1;
+	}
+	return 0;
+}
+
+static int write_material_models(const char *dir)
+{
+	struct gltf_write_opts base = {
+	    .index_bytes = 2, .with_normals = 1, .bad_index = -1, .with_uvs = 1};
+	struct gltf_write_opts o;
+	char normal[4096], occlusion[4096], thickness[4096], corrupt[4096];
+	struct mesh s, coarse;
+	int bad = maps_write(dir);
+
+	snprintf(normal, sizeof(normal), "%s/normal.png", dir);
+	snprintf(occlusion, sizeof(occlusion), "%s/occlusion.png", dir);
+	snprintf(thickness, sizeof(thickness), "%s/thickness.png", dir);
+	snprintf(corrupt, sizeof(corrupt), "%s/corrupt.png", dir);
+	if (mesh_uv_sphere(&s, 64, 32) || mesh_uv_sphere(&coarse, 24, 12))
+		return 1;
+	/* glTF normal and occlusion textures in the buffer; no TANGENT, so
+	 * the loader's consumer makes them from the UVs. */
+	o = base;
+	o.normal_png = normal;
+	o.occlusion_png = occlusion;
+	o.embed_images = 1;
+	bad |= put(dir, "sphere-detail.glb", &s, o);
+	/* A beetle: TANGENT given, textures in files beside the model, and
+	 * KHR_materials_iridescence with a thickness texture. */
+	if (tangent_generate(&s))
+		return 1;
+	o = base;
+	o.container = GLTF_EXTERNAL_BIN;
+	o.with_tangents = 1;
+	o.normal_png = normal;
+	o.occlusion_png = occlusion;
+	o.thickness_png = thickness;
+	o.iridescence_factor = 1.0;
+	o.thickness_range[0] = 250;
+	o.thickness_range[1] = 450;
+	bad |= put(dir, "sphere-beetle.gltf", &s, o);
+	/* Textures that cannot be used: a warning each, the model loads. */
+	o.image_uri = "../normal.png";
+	bad |= put(dir, "warn-texture-outside.gltf", &s, o);
+	o = base;
+	o.normal_png = corrupt;
+	o.embed_images = 1;
+	bad |= put(dir, "warn-texture-corrupt.glb", &s, o);
+	/* Coarse, for displacement: 576 triangles of 15 degrees. */
+	bad |= put(dir, "sphere-coarse.glb", &coarse, base);
+	mesh_release(&s);
+	mesh_release(&coarse);
+	return bad;
+}
+
+static int write_bench(const char *dir)
+{
+	struct mesh k100, k1m;
+	/* With UVs, for the material features' figures (a scene that does
+	 * not use them never uploads them). */
+	struct gltf_write_opts o = {
+	    .index_bytes = 4, .with_normals = 1, .bad_index = -1, .with_uvs = 1};
+	int bad = 0;
+
+	if (mesh_torus_knot(&k100, 1024, 49) || mesh_torus_knot(&k1m, 4096, 122))
+		return 1;
+	bad |= put(dir, "knot-100k.glb", &k100, o);
+	bad |= put(dir, "knot-1m.glb", &k1m, o);
+	printf("knot-100k.glb %u triangles, knot-1m.glb %u triangles\n", k100.index_count / 3,
+	       k1m.index_count / 3);
+	mesh_release(&k100);
+	mesh_release(&k1m);
+	return bad;
+}
+
+int main(int argc, char **argv)
+{
+	struct mesh s;
+	struct gltf_write_opts ok = {.index_bytes = 2, .with_normals = 1, .bad_index = -1};
+	struct gltf_write_opts o;
+	int bad = 0;
+
+	if (argc < 2) {
+		fprintf(stderr, "usage: mkmodels DIR [--bench]\n");
+		return 2;
+	}
+	if (mesh_uv_sphere(&s, 128, 64))
+		return 1;
+	bad |= put(argv[1], "sphere.glb", &s, ok);
+	o = ok;
+	o.container = GLTF_EXTERNAL_BIN;
+	o.with_normals = 0;
+	bad |= put(argv[1], "sphere-nonormals.gltf", &s, o);
+	o = ok;
+	o.container = GLTF_DATA_URI;
+	bad |= put(argv[1], "sphere-datauri.gltf", &s, o);
+	/* The broken ones: each must give one clear line and exit 1. */
+	o = ok;
+	o.truncate_to = 2000;
+	bad |= put(argv[1], "bad-truncated.glb", &s, o);
+	o = ok;
+	o.container = GLTF_EXTERNAL_BIN;
+	o.position_count = (long)s.vertex_count + 100;
+	bad |= put(argv[1], "bad-past-end.gltf", &s, o);
+	o = ok;
+	o.bad_index = 9000; /* the sphere has 8385 vertices */
+	bad |= put(argv[1], "bad-index.glb", &s, o);
+	o = ok;
+	o.container = GLTF_EXTERNAL_BIN;
+	o.bin_uri = "missing.bin";
+	bad |= put(argv[1], "bad-missing-buffer.gltf", &s, o);
+	o.bin_uri = "/etc/passwd";
+	bad |= put(argv[1], "bad-absolute-uri.gltf", &s, o);
+	o.bin_uri = "../sphere.bin";
+	bad |= put(argv[1], "bad-dotdot-uri.gltf", &s, o);
+	mesh_release(&s);
+	bad |= write_material_models(argv[1]);
+	if (argc > 2 && strcmp(argv[2], "--bench") == 0)
+		bad |= write_bench(argv[1]);
+	return bad;
+}

@@ -1,0 +1,186 @@
+/* The scene loader that the start and a reload share, the second parse of
+ * the command line that a reload does, and the matcap folder watch. */
+#include "util/folder_watch.h"
+#include "util/log.h"
+#include "app/options.h"
+#include "app/content.h"
+
+#include <errno.h>
+#include <poll.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include <cmocka.h>
+
+static char dir[64];
+
+static int make_dir(void **state)
+{
+	(void)state;
+	strcpy(dir, "/tmp/mk-scene-XXXXXX");
+	return mkdtemp(dir) ? 0 : -1;
+}
+
+static int remove_dir(void **state)
+{
+	char cmd[128];
+
+	(void)state;
+	snprintf(cmd, sizeof(cmd), "rm -rf %s", dir);
+	return system(cmd) == 0 ? 0 : -1;
+}
+
+static void copy_matcap(const char *from, const char *to)
+{
+	char cmd[256];
+
+	snprintf(cmd, sizeof(cmd), "cp matcaps/%s %s/%s", from, dir, to);
+	assert_int_equal(system(cmd), 0);
+}
+
+static void write_text(const char *path, const char *text)
+{
+	FILE *f = fopen(path, "w");
+
+	assert_non_null(f);
+	fputs(text, f);
+	fclose(f);
+}
+
+static void falls_back_unless_strict(void **state)
+{
+	struct options o = {.model = "/nonexistent/model.glb", .matcap = "/nonexistent/mc"};
+	struct content s;
+
+	(void)state;
+	/* The kiosk keeps showing something: the knot and the clay. */
+	assert_int_equal(content_load(&s, &o, false), 0);
+	assert_true(s.mesh.index_count > 0);
+	assert_null(s.set);
+	assert_null(s.matcap_path);
+	assert_int_equal(s.matcap.width, 256);
+	content_release(&s);
+	/* A reload (strict) refuses, and leaves nothing to free. */
+	assert_int_not_equal(content_load(&s, &o, true), 0);
+	assert_int_equal(s.mesh.index_count, 0);
+	assert_null(s.set);
+	o.model = NULL;
+	assert_int_not_equal(content_load(&s, &o, true), 0);
+	assert_null(s.matcap.rgba);
+}
+
+static void rescans_the_folder(void **state)
+{
+	struct options o = {.matcap = dir};
+	struct content s;
+	char path[128];
+
+	(void)state;
+	copy_matcap("gold.png", "b.png");
+	assert_int_equal(content_load(&s, &o, true), 0);
+	assert_string_equal(s.matcap_path, dir);
+	assert_int_equal(matcap_set_count(s.set), 1);
+	copy_matcap("pearl.png", "a.png");
+	assert_int_equal(content_rescan_matcaps(&s), 0);
+	assert_int_equal(matcap_set_count(s.set), 2);
+	snprintf(path, sizeof(path), "%s/a.png", dir);
+	assert_string_equal(matcap_set_path(s.set, 0), path);
+	/* An emptied folder keeps the set known before. */
+	unlink(path);
+	snprintf(path, sizeof(path), "%s/b.png", dir);
+	unlink(path);
+	assert_int_not_equal(content_rescan_matcaps(&s), 0);
+	assert_int_equal(matcap_set_count(s.set), 2);
+	content_release(&s);
+}
+
+/* A reload parses the same command line again over the file as it is
+ * now: the file's new values show, the command line still wins. */
+static void second_parse_sees_the_new_file(void **state)
+{
+	char ini[128];
+	char *argv[] = {"mk", "--config", ini, "--mode", "normal", "-q", NULL};
+	struct options a, b;
+
+	(void)state;
+	snprintf(ini, sizeof(ini), "%s/kiosk.ini", dir);
+	write_text(ini, "[scene]\nyaw = 10\nmode = view\n");
+	assert_int_equal(options_parse(&a, 6, argv), 0);
+	write_text(ini, "[scene]\nyaw = 45\nmode = sem-vertex\nmodel = m.glb\n");
+	assert_int_equal(options_parse(&b, 6, argv), 0);
+	assert_true(a.yaw == 10 && b.yaw == 45);
+	assert_int_equal(a.mode, SHADING_NORMAL);
+	assert_int_equal(b.mode, SHADING_NORMAL);
+	assert_int_equal(b.log_level, VERBOSITY_WARNING);
+	assert_string_equal(b.model, "m.glb");
+	options_release(&a);
+	options_release(&b);
+	write_text(ini, "[scene]\nyaw = east\n");
+	assert_int_equal(options_parse(&b, 6, argv), OPTIONS_CONFIG);
+	options_release(&b);
+}
+
+static bool changed_within(struct folder_watch *w, int ms)
+{
+	struct pollfd p = {.fd = folder_watch_fd(w), .events = POLLIN};
+
+	return poll(&p, 1, ms) > 0 && folder_watch_read(w);
+}
+
+static void watch_reports_written_and_moved_files(void **state)
+{
+	struct folder_watch *w = folder_watch_new(dir);
+	char a[128], b[128];
+
+	(void)state;
+	assert_non_null(w);
+	snprintf(a, sizeof(a), "%s/new.png", dir);
+	write_text(a, "x");
+	assert_true(changed_within(w, 1000));
+	assert_false(changed_within(w, 50));
+	snprintf(b, sizeof(b), "%s/moved.png", dir);
+	assert_int_equal(rename(a, b), 0);
+	assert_true(changed_within(w, 1000));
+	unlink(b);
+	assert_true(changed_within(w, 1000));
+	folder_watch_free(w);
+}
+
+static void watch_of_one_file_ignores_the_others(void **state)
+{
+	char one[128], other[128];
+	struct folder_watch *w;
+
+	(void)state;
+	snprintf(one, sizeof(one), "%s/one.png", dir);
+	snprintf(other, sizeof(other), "%s/other.png", dir);
+	write_text(one, "1");
+	w = folder_watch_new(one);
+	assert_non_null(w);
+	write_text(other, "2");
+	assert_false(changed_within(w, 200));
+	write_text(one, "3");
+	assert_true(changed_within(w, 1000));
+	folder_watch_free(w);
+	assert_null(folder_watch_new("/nonexistent/folder"));
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+	    cmocka_unit_test(falls_back_unless_strict),
+	    cmocka_unit_test_setup_teardown(rescans_the_folder, make_dir, remove_dir),
+	    cmocka_unit_test_setup_teardown(second_parse_sees_the_new_file, make_dir, remove_dir),
+	    cmocka_unit_test_setup_teardown(watch_reports_written_and_moved_files, make_dir,
+					    remove_dir),
+	    cmocka_unit_test_setup_teardown(watch_of_one_file_ignores_the_others, make_dir,
+					    remove_dir),
+	};
+
+	log_set_level(LOG_ERR);
+	return cmocka_run_group_tests_name("scene", tests, NULL, NULL);
+}
