@@ -51,7 +51,7 @@ SRC_APP     := app/app app/content app/kiosk app/options app/reload app/service
 SRC_DISPLAY := display/display display/display_egl display/display_kms display/display_osmesa \
 	       display/drm display/drm_atomic display/drm_legacy display/egl_util display/hotplug \
 	       display/kms_fb
-SRC_INPUT   := input/action input/button input/gesture input/gpio input/keyboard
+SRC_INPUT   := input/action input/button input/gesture input/touch_decode input/gpio input/keyboard
 SRC_CAMERA  := camera/camera_feed camera/camera_link camera/camera_math camera/camera_proto \
 	       camera/camera_texture
 SRC_RENDER  := render/bake render/gl render/matcap_set render/render render/shader render/shading
