@@ -6,7 +6,7 @@ UNIT_TESTS  := options mesh image gltf shading app button content service
 UNIT_TESTS  += tangent subdivide material
 UNIT_TESTS  += camera_math camera_proto camera_texture
 UNIT_TESTS  += stability fp16 lod
-UNIT_TESTS  += drm gesture touch_decode schedule power
+UNIT_TESTS  += drm gesture touch_decode schedule power cec
 TOOLS_DIR   := $(BUILD)/tools
 ASAN_BUILD  := $(BUILD)/asan
 SANITIZE    := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all \
@@ -43,6 +43,12 @@ $(TOOLS_DIR)/hues: tests/tools/hues.c $(BUILD)/util/image.o $(BUILD)/util/log.o
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -o $@ $^ $(PKG_LIBS) -lm
 test-tools: $(TOOLS_DIR)/hues
+
+# Sends CEC power messages through src/display/cec.c (tests/e2e/cec.sh).
+$(TOOLS_DIR)/cec_power: tests/tools/cec_power.c $(BUILD)/display/cec.o $(BUILD)/util/log.o
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -o $@ $^
+test-tools: $(TOOLS_DIR)/cec_power
 
 # Stands in for systemd's notify socket in tests/e2e/live.sh.
 $(TOOLS_DIR)/notify_listen: tests/tools/notify_listen.c

@@ -19,7 +19,7 @@ out=$1
 shift
 # The display (issue 3), then the buttons (4) and the camera (5) on it.
 [ $# -gt 0 ] || set -- tests/e2e/kms.sh tests/e2e/kms-hotplug.sh tests/e2e/kms-busy.sh \
-	tests/vm/gpio-test.sh tests/e2e/camera.sh
+	tests/vm/gpio-test.sh tests/e2e/camera.sh tests/e2e/cec.sh
 kiosk=${KIOSK:-./matcap-kiosk}
 imgdiff=${IMGDIFF:-build/tools/imgdiff}
 mkdir -p "$out/ref"
@@ -43,8 +43,10 @@ for script in "$@"; do
 	mkdir -p "$share"
 	cp -r "$out/ref" "$share/ref"
 	bins="--bin $kiosk --bin $imgdiff"
-	# hues counts the camera's colour bars in a screenshot.
-	for b in ${E2E_BINS:-$(dirname "$imgdiff")/hues}; do bins="$bins --bin $b"; done
+	# hues counts the camera's colour bars in a screenshot; cec_power
+	# sends the kiosk's CEC messages.
+	tools=$(dirname "$imgdiff")
+	for b in ${E2E_BINS:-$tools/hues $tools/cec_power}; do bins="$bins --bin $b"; done
 	# shellcheck disable=SC2086
 	tests/vm/run.sh --quiet --timeout "${VM_TIMEOUT:-240}" $bins --share "$share" \
 		${VM_RUN_FLAGS:-} -- "$script" >"$share/run.log" 2>&1

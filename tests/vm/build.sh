@@ -153,11 +153,12 @@ if [ ! -e "$MODDIR/.built" ]; then
 fi
 
 # ---------------------------------------------------------------- base initramfs
-GUEST_MODULES="vkms vimc gpio-sim gpio-mockup irq_sim configfs 9p 9pnet_virtio virtio_pci uinput evdev"
+GUEST_MODULES="vkms vimc gpio-sim gpio-mockup irq_sim configfs 9p 9pnet_virtio virtio_pci uinput evdev
+vivid"
 BASE_BINS="/usr/bin/busybox /usr/bin/kmod /usr/bin/udevadm /usr/bin/kmscube /usr/bin/modetest
 /usr/bin/modeprint /usr/bin/proptest /usr/bin/cam /usr/bin/gpiodetect /usr/bin/gpioinfo
 /usr/bin/gpioget /usr/bin/gpioset /usr/bin/gpiomon /usr/bin/gpiofind /usr/bin/v4l2-ctl
-/usr/bin/media-ctl"
+/usr/bin/media-ctl /usr/bin/cec-ctl"
 BASE_LIBS="/usr/lib/$ARCHDIR/dri/kms_swrast_dri.so /usr/lib/$ARCHDIR/dri/swrast_dri.so
 /usr/lib/$ARCHDIR/libEGL.so.1 /usr/lib/$ARCHDIR/libEGL_mesa.so.0 /usr/lib/$ARCHDIR/libgbm.so.1
 /usr/lib/$ARCHDIR/libGLESv2.so.2 /usr/lib/$ARCHDIR/libGLESv1_CM.so.1 /usr/lib/$ARCHDIR/libOSMesa.so.8
