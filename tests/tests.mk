@@ -6,7 +6,7 @@ UNIT_TESTS  := options mesh image gltf shading app button content service
 UNIT_TESTS  += tangent subdivide material
 UNIT_TESTS  += camera_math camera_proto camera_texture
 UNIT_TESTS  += stability fp16 lod
-UNIT_TESTS  += drm gesture touch_decode schedule power cec
+UNIT_TESTS  += drm gesture touch_decode schedule power cec backlight
 TOOLS_DIR   := $(BUILD)/tools
 ASAN_BUILD  := $(BUILD)/asan
 SANITIZE    := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all \
