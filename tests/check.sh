@@ -5,8 +5,9 @@
 #   tests/check.sh NAME        (environment as the Makefile's TEST_ENV sets it)
 #   tests/check.sh --needs NAME   prints the make targets the test needs
 #   tests/check.sh --list      prints the kinds of names and every name
-# Its scratch folder is tests/out/check. An unknown name: the list of the
-# kinds of names on stderr, and exit status 2.
+# Its scratch folder is tests/out/check/NAME (one per name, so that two
+# checks can run at once). An unknown name: the list of the kinds of names
+# on stderr, and exit status 2.
 set -u
 
 groups="layers unit golden egl program_check mirror_check ortho loaders bad-input cli"
@@ -119,7 +120,7 @@ if [ $mode = needs ]; then
 	exit 0
 fi
 
-out=tests/out/check
+out=tests/out/check/$1
 # shellcheck source=tests/suite.sh
 . tests/suite.sh
 # shellcheck disable=SC2086 # args: none, or one word

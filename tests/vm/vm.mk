@@ -55,7 +55,7 @@ vm-clean:
 # The board tests as `make test` runs them (tests/e2e/host.sh): the real
 # kiosk on vkms against OSMesa references rendered here, its GPIO buttons
 # and the camera (whose colour bars hues counts); each script's frames and
-# logs in tests/out/check/e2e/<script>/. The same as make check T=board.
+# logs in tests/out/check/board/e2e/<script>/. The same as make check T=board.
 vm-e2e: $(KIOSK) $(TOOLS_DIR)/imgdiff $(TOOLS_DIR)/hues
 	$(TEST_ENV) sh tests/check.sh board
 
