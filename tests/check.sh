@@ -85,7 +85,9 @@ needs() {
 	egl) echo "all $TOOLS/mkmodels $TOOLS/imgdiff" ;;
 	program_check | mirror_check) echo "$TOOLS/$1" ;;
 	ortho) echo "all $TOOLS/mkmodels $TOOLS/imgdiff" ;;
-	loaders | cli | config_doc | install | systemd | no-camera) echo "all $TOOLS/mkmodels" ;;
+	loaders) echo "all $TOOLS/mkmodels" ;;
+	cli) echo "all asan-kiosk" ;;
+	config_doc | install | systemd | no-camera) echo all ;;
 	bad-input) echo "asan-kiosk $TOOLS/mkmodels" ;;
 	baker) echo "$BAKE" ;;
 	live) echo "asan-kiosk $TOOLS/mkmodels $TOOLS/notify_listen" ;;
