@@ -1,6 +1,10 @@
-# Tests: included from the top-level Makefile.
-#   make test     everything below, ending in one "N passed, N failed" line
-#   make golden   regenerate tests/golden/*.png on purpose (then look at them)
+# Tests: included from the top-level Makefile (tests/README.md says more).
+#   make test          every test (tests/run.sh), ending in one "N passed,
+#                      N failed" line; VM_E2E=0 leaves the virtual board out
+#   make unit          the unit tests alone, built with ASan and UBSan
+#   make check T=NAME  one test or group by name (tests/check.sh; T= lists them)
+#   make golden        regenerate tests/golden/*.png on purpose (then look at them)
+#   make bench         speed figures (printed, never asserted); make report
 
 UNIT_TESTS  := options mesh image gltf shading app button content service
 UNIT_TESTS  += tangent subdivide material
@@ -55,7 +59,7 @@ $(TOOLS_DIR)/notify_listen: tests/tools/notify_listen.c
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -o $@ $<
 
-# What each material feature compiles, uploads and binds (issue 6).
+# What each material feature compiles, uploads and binds.
 $(TOOLS_DIR)/program_check: tests/golden/program_check.c $(LIB_OBJS)
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) -o $@ $< $(LIB_OBJS) $(TEST_LIBS)
@@ -64,14 +68,14 @@ test-tools: $(TOOLS_DIR)/mkmodels $(TOOLS_DIR)/imgdiff $(BUILD)/bake $(TOOLS_DIR
 	$(TOOLS_DIR)/soak
 test-tools: $(TOOLS_DIR)/program_check
 
-# The renderer against the C mirror of the shaders, pixel by pixel (issue 7).
+# The renderer against the C mirror of the shaders, pixel by pixel.
 $(TOOLS_DIR)/mirror_check: tests/oracle/mirror_check.c $(LIB_OBJS) $(ORACLE_OBJS)
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) -o $@ $< $(LIB_OBJS) $(ORACLE_OBJS) $(TEST_LIBS)
 
 test-tools: $(TOOLS_DIR)/mirror_check
 
-# Speed against error, for `make bench` and `make report` (issue 7).
+# Speed against error, for `make bench` and `make report`.
 $(TOOLS_DIR)/bench_quality: tests/bench/bench_quality.c tests/bench/bench_quality_report.c \
 		tests/bench/bench_quality.h tests/tools/maps.c $(LIB_OBJS) $(ORACLE_OBJS)
 	@mkdir -p $(@D)
@@ -81,31 +85,45 @@ $(TOOLS_DIR)/bench_quality: tests/bench/bench_quality.c tests/bench/bench_qualit
 test-tools: $(TOOLS_DIR)/bench_quality
 
 # The unit tests and a second kiosk binary, built with AddressSanitizer and
-# UndefinedBehaviorSanitizer: malformed input must not crash either.
+# UndefinedBehaviorSanitizer in a build folder of their own: malformed
+# input must not crash either. asan-unit, asan-kiosk and asan-test_NAME
+# build a part of it (for make unit and make check).
+ASAN_MAKE = $(MAKE) --no-print-directory BUILD=$(ASAN_BUILD) OPT="$(SANITIZE)" \
+	    LDFLAGS="$(SANITIZE)" KIOSK=$(ASAN_BUILD)/matcap-kiosk
 asan:
-	$(MAKE) --no-print-directory BUILD=$(ASAN_BUILD) OPT="$(SANITIZE)" \
-		LDFLAGS="$(SANITIZE)" KIOSK=$(ASAN_BUILD)/matcap-kiosk \
-		$(ASAN_BUILD)/matcap-kiosk unit-tests
+	$(ASAN_MAKE) $(ASAN_BUILD)/matcap-kiosk unit-tests
+asan-kiosk:
+	@$(ASAN_MAKE) $(ASAN_BUILD)/matcap-kiosk
+asan-unit:
+	@$(ASAN_MAKE) unit-tests
+asan-test_%:
+	@$(ASAN_MAKE) $(ASAN_BUILD)/tests/test_$*
+
+# What every test script reads: the binaries and tools to run.
+TEST_ENV = KIOSK=./$(KIOSK) ASAN_KIOSK=$(ASAN_BUILD)/matcap-kiosk UNIT_DIR=$(ASAN_BUILD)/tests \
+	   UNIT_TESTS="$(UNIT_TESTS)" TOOLS=$(TOOLS_DIR) BAKE=$(BUILD)/bake FUZZ_DIR=$(FUZZ_BUILD) \
+	   FUZZ_SECONDS=$(FUZZ_SECONDS)
 
 test: $(KIOSK) test-tools asan fuzzers
-	KIOSK=./$(KIOSK) ASAN_KIOSK=$(ASAN_BUILD)/matcap-kiosk UNIT_DIR=$(ASAN_BUILD)/tests \
-		TOOLS=$(TOOLS_DIR) BAKE=$(BUILD)/bake FUZZ_DIR=$(FUZZ_BUILD) \
-		FUZZ_SECONDS=$(FUZZ_SECONDS) sh tests/run.sh
+	$(TEST_ENV) sh tests/run.sh
+
+unit: asan-unit
+	@$(TEST_ENV) sh tests/check.sh unit
+
+# One test by name: tests/check.sh says which targets it needs (and lists
+# the names when T is empty or unknown), those are built, then it runs.
+check:
+	@needs=$$($(TEST_ENV) sh tests/check.sh --needs '$(T)') || exit 2; \
+		[ -z "$$needs" ] || $(MAKE) --no-print-directory $$needs
+	@$(TEST_ENV) sh tests/check.sh '$(T)'
 
 golden: $(KIOSK) test-tools
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/golden/golden.sh tests/golden
 
-.PHONY: unit-tests test-tools asan test golden
+.PHONY: unit-tests test-tools asan asan-kiosk asan-unit test unit check golden
 
 include tests/fuzz/fuzz.mk
 include tests/soak/soak.mk
-
-# The kiosk as a systemd service on the virtual board: a Debian root booted
-# with systemd (tests/vm/systemd-test.sh; a few minutes the first time).
-vm-systemd: $(KIOSK)
-	sh tests/vm/systemd-test.sh $(BUILD)/vm-systemd/out
-
-.PHONY: vm-systemd
 
 bench: $(KIOSK) test-tools
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench.sh

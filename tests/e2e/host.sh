@@ -17,7 +17,7 @@
 set -u
 out=$1
 shift
-# The display (issue 3), then the buttons (4) and the camera (5) on it.
+# The display first, then the buttons and the camera on it.
 [ $# -gt 0 ] || set -- tests/e2e/kms.sh tests/e2e/kms-hotplug.sh tests/e2e/kms-busy.sh \
 	tests/vm/gpio-test.sh tests/e2e/camera.sh tests/e2e/cec.sh
 kiosk=${KIOSK:-./matcap-kiosk}

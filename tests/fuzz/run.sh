@@ -1,7 +1,8 @@
 #!/bin/sh
 # Runs each libFuzzer harness from its seeds for FUZZ_SECONDS, then replays
 # every file of tests/fuzz/regressions once (a crash found once stays
-# fixed). Prints one line per step, "ok NAME" or "not ok NAME", with the
+# fixed).
+#   run.sh [HARNESS]...   gltf, image, config (all three when none is named) Prints one line per step, "ok NAME" or "not ok NAME", with the
 # figures (runs, seconds, runs per second, corpus size) in NAME.
 # Environment: FUZZ_DIR (the harnesses), FUZZ_SECONDS, FUZZ_JOBS (workers
 # per harness; more than 1 for long runs), FUZZ_OUT (scratch).
@@ -16,8 +17,9 @@ top=$(pwd)
 dir=$(cd "${FUZZ_DIR:-build/fuzz}" && pwd)
 out=$(cd "$out" && pwd)
 export FUZZ_GLTF_DIR="$top/tests/fuzz/corpus/gltf"
+harnesses=${*:-gltf image config}
 
-for t in gltf image config; do
+for t in $harnesses; do
 	work=$out/$t
 	rm -rf "$work"
 	mkdir -p "$work/corpus"
@@ -45,7 +47,7 @@ for t in gltf image config; do
 	fi
 done
 
-for t in gltf image config; do
+for t in $harnesses; do
 	set -- tests/fuzz/regressions/$t-*
 	[ -e "$1" ] || continue
 	if "$dir/fuzz_$t" "$@" >"$out/replay-$t.log" 2>&1; then

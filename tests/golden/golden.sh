@@ -1,33 +1,73 @@
 #!/bin/sh
-# The golden scenes, rendered through OSMesa into DIR: every mode on the
-# built-in torus knot and on a sphere. Used by `make golden` (into
-# tests/golden) and by tests/run.sh (into a scratch folder, then compared).
+# The golden scenes, rendered through OSMesa into DIR as SCENE.png: every
+# mode on the built-in torus knot and on a sphere, then the material
+# features. Used by `make golden` (into tests/golden), by tests/run.sh (into
+# a scratch folder, then compared) and by `make check T=SCENE` (one scene).
+#   golden.sh DIR [SCENE]...       (every scene when none is named)
+# Environment: KIOSK, TOOLS (mkmodels), MODELS (where the models go).
 set -eu
 out=$1
+shift
 models=${MODELS:-tests/out/models}
+scenes="knot-normal knot-view knot-sem-vertex knot-sem-fragment"
+scenes="$scenes sphere-normal sphere-view sphere-sem-vertex sphere-sem-fragment"
+scenes="$scenes knot-iridescence knot-iridescence-ramp knot-detail-map sphere-detail-gltf"
+scenes="$scenes sphere-beetle-gltf sphere-displaced sphere-lit sphere-lit-beside"
 mkdir -p "$out" "$models"
 "$TOOLS/mkmodels" "$models" >/dev/null
-for mode in normal view sem-vertex sem-fragment; do
-	$KIOSK -q --backend osmesa --size 320x240 --matcap matcaps/gold.png --mode $mode \
-		--output "$out/knot-$mode.png"
-	$KIOSK -q --backend osmesa --size 320x240 --matcap matcaps/gold.png --mode $mode \
-		--model "$models/sphere.glb" --output "$out/sphere-$mode.png"
+
+# render SCENE: one scene into DIR/SCENE.png.
+render() {
+	k="$KIOSK -q --backend osmesa --size 320x240"
+	m=$models
+	o=$out/$1.png
+	case $1 in
+	knot-normal | knot-view | knot-sem-vertex | knot-sem-fragment)
+		$k --matcap matcaps/gold.png --mode "${1#knot-}" --output "$o"
+		;;
+	sphere-normal | sphere-view | sphere-sem-vertex | sphere-sem-fragment)
+		$k --matcap matcaps/gold.png --mode "${1#sphere-}" --model "$m/sphere.glb" --output "$o"
+		;;
+	# The material features, each on a model that exercises it: glTF
+	# textures (embedded; beside the model with TANGENT and
+	# KHR_materials_iridescence), the settings' maps, displacement, lit.
+	knot-iridescence)
+		$k -c matcaps/black-shiny.png --iridescence on --output "$o"
+		;;
+	knot-iridescence-ramp)
+		$k -c matcaps/black-shiny.png --iridescence on --iridescence-ramp "$m/ramp.png" \
+			--output "$o"
+		;;
+	knot-detail-map)
+		$k -c matcaps/pearl.png --detail-map "$m/detail.png" --iridescence on --output "$o"
+		;;
+	sphere-detail-gltf)
+		$k -c matcaps/gold.png --model "$m/sphere-detail.glb" --output "$o"
+		;;
+	sphere-beetle-gltf)
+		$k -c matcaps/black-shiny.png --model "$m/sphere-beetle.gltf" --output "$o"
+		;;
+	sphere-displaced)
+		$k -c matcaps/gold.png --model "$m/sphere-coarse.glb" --displacement-map "$m/height.png" \
+			--displacement-scale 0.15 --output "$o"
+		;;
+	sphere-lit)
+		$k --model "$m/sphere-detail.glb" --lit on --output "$o"
+		;;
+	sphere-lit-beside)
+		$k -c matcaps/chrome-studio.png --model "$m/sphere-coarse.glb" \
+			--displacement-map "$m/height.png" --displacement-scale 0.15 \
+			--detail-map "$m/detail.png" --lit beside --output "$o"
+		;;
+	*)
+		echo "golden.sh: no scene named $1 (scenes: $scenes)" >&2
+		exit 2
+		;;
+	esac
+}
+
+# shellcheck disable=SC2086 # one word per scene
+[ $# -gt 0 ] || set -- $scenes
+for scene in "$@"; do
+	render "$scene"
 done
-# The material features (issue 6), each on a model that exercises it:
-# glTF textures (embedded; beside the model with TANGENT and
-# KHR_materials_iridescence), the settings' maps, displacement, lit.
-k="$KIOSK -q --backend osmesa --size 320x240"
-m=$models
-$k -c matcaps/black-shiny.png --iridescence on --output "$out/knot-iridescence.png"
-$k -c matcaps/black-shiny.png --iridescence on --iridescence-ramp "$m/ramp.png" \
-	--output "$out/knot-iridescence-ramp.png"
-$k -c matcaps/pearl.png --detail-map "$m/detail.png" --iridescence on \
-	--output "$out/knot-detail-map.png"
-$k -c matcaps/gold.png --model "$m/sphere-detail.glb" --output "$out/sphere-detail-gltf.png"
-$k -c matcaps/black-shiny.png --model "$m/sphere-beetle.gltf" --output "$out/sphere-beetle-gltf.png"
-$k -c matcaps/gold.png --model "$m/sphere-coarse.glb" --displacement-map "$m/height.png" \
-	--displacement-scale 0.15 --output "$out/sphere-displaced.png"
-$k --model "$m/sphere-detail.glb" --lit on --output "$out/sphere-lit.png"
-$k -c matcaps/chrome-studio.png --model "$m/sphere-coarse.glb" --displacement-map "$m/height.png" \
-	--displacement-scale 0.15 --detail-map "$m/detail.png" --lit beside \
-	--output "$out/sphere-lit-beside.png"

@@ -1,6 +1,6 @@
 /* Writes the test and bench models into a folder:
  *   mkmodels DIR          sphere, loader variants, the malformed set, and
- *                         the material maps and models (issue 6)
+ *                         the material maps and models
  *   mkmodels DIR --bench  also torus knots of about 100k and 1M triangles */
 #include "gltf_write.h"
 #include "maps.h"

@@ -7,8 +7,12 @@
 #   make vm-test     run every guest script in VM_TESTS, each in a fresh boot,
 #                    with VM_BINS on the guest's PATH; outputs per script in
 #                    $(VM_OUT)/<script name>/
-#   make vm-e2e      the display tests (tests/e2e/kms*.sh) as `make test` runs
-#                    them, with their references (tests/e2e/host.sh)
+#   make vm-e2e      the board tests as `make test` runs them (tests/e2e/host.sh:
+#                    the display, tests/e2e/kms*.sh, then the GPIO buttons and
+#                    the camera), with their OSMesa references; one script
+#                    alone: make check T=kms (tests/check.sh)
+#   make vm-systemd  the installed unit in a Debian root booted with systemd
+#                    (tests/vm/systemd-test.sh); not part of `make test`
 #   make vm-clean    drop the cache (next build downloads and rebuilds)
 #
 # Knobs: VM_TESTS (guest scripts), VM_BINS (host binaries to carry in),
@@ -48,10 +52,16 @@ vm-test:
 vm-clean:
 	rm -rf $(VM_CACHE)
 
-# The display end to end (tests/e2e/kms*.sh, as `make test` runs them): the
-# real kiosk on vkms against OSMesa references rendered here; each
-# script's frames and logs in tests/out/e2e/<script>/.
-vm-e2e: $(KIOSK) $(TOOLS_DIR)/imgdiff
-	KIOSK=./$(KIOSK) IMGDIFF=$(TOOLS_DIR)/imgdiff sh tests/e2e/host.sh tests/out/e2e
+# The board tests as `make test` runs them (tests/e2e/host.sh): the real
+# kiosk on vkms against OSMesa references rendered here, its GPIO buttons
+# and the camera (whose colour bars hues counts); each script's frames and
+# logs in tests/out/check/board/e2e/<script>/. The same as make check T=board.
+vm-e2e: $(KIOSK) $(TOOLS_DIR)/imgdiff $(TOOLS_DIR)/hues
+	$(TEST_ENV) sh tests/check.sh board
 
-.PHONY: vm-e2e
+# The kiosk as a systemd service on the virtual board: a Debian root booted
+# with systemd (a few minutes the first time).
+vm-systemd: $(KIOSK)
+	sh tests/vm/systemd-test.sh $(BUILD)/vm-systemd/out
+
+.PHONY: vm-e2e vm-systemd

@@ -1,0 +1,350 @@
+# shellcheck shell=sh disable=SC2154 # out: set by the script that sources this
+# Every test of `make test`, one shell function per group, sourced by
+# tests/run.sh (which runs them all) and tests/check.sh (which runs one
+# by name): a test's command line is written here once.
+#
+# Before sourcing, set out (a scratch folder, emptied here). Environment
+# (set by the Makefile's TEST_ENV): KIOSK, ASAN_KIOSK, UNIT_DIR, UNIT_TESTS,
+# TOOLS, BAKE, FUZZ_DIR, FUZZ_SECONDS.
+#
+# Each check prints "PASS NAME" or "FAIL NAME" (with the command's output);
+# summary prints the one "N passed, N failed" line.
+rm -rf "$out"
+mkdir -p "$out/models" "$out/render" "$out/bad"
+MODELS=$out/models
+export MODELS
+passed=0
+failed=0
+failures=""
+
+ok() {
+	passed=$((passed + 1))
+	echo "PASS $1"
+}
+ko() {
+	failed=$((failed + 1))
+	failures="$failures $1"
+	echo "FAIL $1"
+}
+# results PREFIX FILE [LOG]: one check per "ok NAME" or "not ok NAME" line
+# that a test script wrote (LOG is shown on a failure).
+results() {
+	while read -r word rest; do
+		case $word in
+		ok) ok "$1: $rest" ;;
+		*)
+			[ -n "${3:-}" ] && cat "$3"
+			ko "$1: ${rest#ok }"
+			;;
+		esac
+	done <"$2"
+}
+# check NAME COMMAND...: passes when the command exits 0.
+check() {
+	name=$1
+	shift
+	if "$@" >"$out/last.log" 2>&1; then ok "$name"; else cat "$out/last.log"; ko "$name"; fi
+}
+# summary: the failed checks, then "N passed, N failed"; false on a failure.
+summary() {
+	[ -n "$failures" ] && echo "failed:$failures"
+	echo "$passed passed, $failed failed"
+	[ "$failed" -eq 0 ]
+}
+
+# The models and maps the tests load (tests/tools/mkmodels.c), written once.
+need_models() {
+	[ -n "${models_written:-}" ] && return
+	models_written=1
+	check "models written" "$TOOLS/mkmodels" "$out/models"
+}
+# need_render SCENE...: the OSMesa renders of golden scenes that another
+# test compares against, when this run has not rendered them yet.
+need_render() {
+	need_models
+	missing=""
+	for s in "$@"; do
+		[ -e "$out/render/$s.png" ] || missing="$missing $s"
+	done
+	# shellcheck disable=SC2086 # one word per scene
+	[ -z "$missing" ] || check "golden scenes rendered:$missing" \
+		sh tests/golden/golden.sh "$out/render" $missing
+}
+# imgdiff_golden REFERENCE PICTURE: the golden images' tolerance, a pixel
+# differs when a channel is off by more than 8/255, and at most 0.5% may.
+imgdiff_golden() {
+	"$TOOLS/imgdiff" --tol 8 --share 0.005 "$1" "$2"
+}
+
+# The layers of src/: no include goes up or across, no circle, no file
+# over 700 lines; and the checker itself, on fake trees.
+test_layers() {
+	check "layers: no include goes up" sh tests/tools/layers.sh src
+	sh tests/tools/layers_selftest.sh >"$out/layers-selftest.log" 2>&1
+	[ -s "$out/layers-selftest.log" ] ||
+		echo "not ok the self-test printed nothing" >"$out/layers-selftest.log"
+	results "layers checker" "$out/layers-selftest.log"
+}
+
+# test_unit [NAME]...: the unit tests (cmocka), built with ASan and UBSan;
+# every one of UNIT_TESTS when no name is given.
+test_unit() {
+	if [ $# -eq 0 ] && [ -n "${UNIT_TESTS:-}" ]; then
+		# shellcheck disable=SC2086 # the Makefile's list, one word per test
+		set -- $UNIT_TESTS
+	elif [ $# -eq 0 ]; then
+		for f in "$UNIT_DIR"/test_*; do set -- "$@" "${f##*/test_}"; done
+	fi
+	for t in "$@"; do
+		check "unit test_$t" "$UNIT_DIR/test_$t"
+	done
+}
+
+# test_golden [SCENE]...: golden images through OSMesa (every one of
+# tests/golden/*.png when no scene is given), rendered as `make golden`
+# renders them and compared with the golden images' tolerance.
+test_golden() {
+	need_models
+	if [ $# -eq 0 ]; then
+		check "golden scenes rendered" sh tests/golden/golden.sh "$out/render"
+		for g in tests/golden/*.png; do set -- "$@" "$(basename "$g" .png)"; done
+	else
+		check "golden scenes rendered: $*" sh tests/golden/golden.sh "$out/render" "$@"
+	fi
+	for g in "$@"; do
+		check "golden $g.png" imgdiff_golden "tests/golden/$g.png" "$out/render/$g.png"
+	done
+}
+
+# The same scenes through EGL headless agree with OSMesa.
+test_egl() {
+	need_render knot-normal knot-view knot-sem-vertex knot-sem-fragment sphere-lit-beside
+	for mode in normal view sem-vertex sem-fragment; do
+		check "egl-headless renders $mode" "$KIOSK" -q --backend egl-headless --size 320x240 \
+			--matcap matcaps/gold.png --mode $mode --output "$out/render/egl-knot-$mode.png"
+		check "egl-headless matches osmesa ($mode)" imgdiff_golden \
+			"$out/render/knot-$mode.png" "$out/render/egl-knot-$mode.png"
+	done
+	# Every material feature at once, in a GLES2 context (llvmpipe's is strict).
+	check "egl-headless renders the material features" "$KIOSK" -q --backend egl-headless \
+		--size 320x240 -c matcaps/chrome-studio.png --model "$out/models/sphere-coarse.glb" \
+		--displacement-map "$out/models/height.png" --displacement-scale 0.15 \
+		--detail-map "$out/models/detail.png" --lit beside --output "$out/render/egl-lit-beside.png"
+	check "egl-headless matches osmesa (material features)" imgdiff_golden \
+		"$out/render/sphere-lit-beside.png" "$out/render/egl-lit-beside.png"
+}
+
+# A feature that is off costs nothing: no code, vertex array or texture.
+test_program_check() {
+	check "material features compile, upload and bind only what they use" "$TOOLS/program_check"
+}
+
+# The renderer against the C mirror of the shaders (tests/oracle), pixel by
+# pixel on a sphere, highp and mediump, each within its stated tolerance.
+test_mirror_check() {
+	check "OSMesa agrees with the C mirror of the shaders" "$TOOLS/mirror_check"
+}
+
+# The classic check: a sphere in normal mode under an orthographic camera
+# reproduces the matcap disk itself (less a 3-pixel rim, where the
+# polygonal silhouette and the disk's edge differ).
+test_ortho() {
+	need_models
+	for m in gold chrome-studio; do
+		check "ortho sphere renders ($m)" "$KIOSK" -q --backend osmesa --size 256x256 --ortho \
+			--mode normal --pitch 0 --yaw 0 --model "$out/models/sphere.glb" \
+			--matcap matcaps/$m.png --output "$out/render/ortho-$m.png"
+		check "ortho sphere reproduces the matcap ($m)" "$TOOLS/imgdiff" --disk --rim 3 \
+			--tol 8 --share 0.002 "matcaps/$m.png" "$out/render/ortho-$m.png"
+	done
+}
+
+# Loader variants that must work from the command line.
+test_loaders() {
+	need_models
+	for f in sphere-nonormals.gltf sphere-datauri.gltf; do
+		check "loads $f" "$KIOSK" -q --backend osmesa --size 64x64 --model "$out/models/$f" \
+			--output "$out/render/$f.png"
+	done
+	# A glTF texture that cannot be used (outside the model's folder, not an
+	# image) is one warning; the model still shows.
+	for f in warn-texture-outside.gltf warn-texture-corrupt.glb; do
+		check "loads $f, warning about its texture" sh -c "$KIOSK --backend osmesa \
+			--size 64x64 --model $out/models/$f --output $out/render/$f.png 2>&1 |
+			grep -q 'normalTexture.*not used'"
+	done
+}
+
+# bad_input NAME OPTION FILE: through the ASan binary, exit status 1, one
+# error line that names the file, and no sanitizer report.
+bad_input() {
+	"$ASAN_KIOSK" --backend osmesa --size 64x64 "$2" "$3" --output "$out/bad/x.png" \
+		>"$out/bad/stdout" 2>"$out/bad/stderr"
+	status=$?
+	lines=$(grep -c "error" "$out/bad/stderr")
+	if [ $status -eq 1 ] && [ "$lines" -eq 1 ] && grep -qF "$3" "$out/bad/stderr" &&
+		! grep -qE "Sanitizer|runtime error" "$out/bad/stderr"; then
+		ok "$1: $(cat "$out/bad/stderr")"
+	else
+		echo "status $status, $lines error lines:"
+		cat "$out/bad/stderr"
+		ko "$1"
+	fi
+}
+# Malformed input: broken models, matcaps and maps.
+test_bad_input() {
+	need_models
+	printf '' >"$out/bad/zero.png"
+	printf '\211\120\116\107\015\012\032\012\000\000\000\015\111\110\104\122\000\001\206\240\000\001\206\240\010\006\000\000\000\250\122\013\310' >"$out/bad/huge.png"
+	head -c 300 matcaps/gold.png >"$out/bad/truncated.png"
+	echo "not a picture" >"$out/bad/text.jpg"
+	for f in "$out"/models/bad-*; do
+		case $f in *.bin) continue ;; esac
+		bad_input "bad model $(basename "$f")" --model "$f"
+	done
+	for f in zero.png huge.png truncated.png text.jpg; do
+		bad_input "bad matcap $f" --matcap "$out/bad/$f"
+	done
+	bad_input "missing model" --model "$out/bad/no-such-model.glb"
+	bad_input "bad detail map" --detail-map "$out/models/corrupt.png"
+	bad_input "missing height map" --displacement-map "$out/bad/no-such-height.png"
+}
+
+# The command line itself, and config errors that stop the program.
+test_cli() {
+	check "--help" sh -c "$KIOSK --help | grep -q '^Usage: matcap-kiosk'"
+	check "--version" sh -c "$KIOSK --version | grep -q '^matcap-kiosk [0-9]'"
+	check "bad option value exits 2 naming it" sh -c \
+		"$KIOSK --size 12 2>&1 | grep -q -- '--size'; [ \$($KIOSK --size 12 2>/dev/null; echo \$?) -eq 2 ]"
+
+	# Two buttons on one line: a config error (78) naming the file and line.
+	printf '[buttons]\nleft = GPIO17\nright = 27\nselect = GPIO17\n' >"$out/bad/dup-line.ini"
+	check "two buttons on one line exit 78 naming file and line" sh -c \
+		"$KIOSK -C $out/bad/dup-line.ini 2>&1 | grep -q 'dup-line.ini:4: .buttons. select = GPIO17 is the line of left too (line 2)' &&
+		[ \$($KIOSK -C $out/bad/dup-line.ini 2>/dev/null; echo \$?) -eq 78 ]"
+	# A button whose chip is missing: one error naming chip and line, and the
+	# live kiosk (the ASan build; OSMesa's own leak aside, see tests/e2e/live.sh)
+	# runs on without it, and exits cleanly.
+	check "a missing GPIO chip is one error; the kiosk runs on" sh -c "
+		ASAN_OPTIONS=detect_leaks=0 $ASAN_KIOSK --backend osmesa --size 64x64 --keyboard none \
+			--gpio-chip nosuchchip --button-left GPIO17 2>$out/bad/gpio.log & p=\$!; i=0
+		until grep -q 'first frame' $out/bad/gpio.log || [ \$i -gt 300 ]; do sleep 0.1; i=\$((i+1)); done
+		kill -0 \$p && kill -TERM \$p && wait \$p && [ \$(grep -c ': error: ' $out/bad/gpio.log) = 1 ] &&
+		! grep -qE 'Sanitizer|runtime error' $out/bad/gpio.log &&
+		grep -q 'button left: GPIO chip nosuchchip not found.*line GPIO17' $out/bad/gpio.log"
+}
+
+# Every setting that the config file takes is documented in the example.
+test_config_doc() {
+	check "every config key documented in config/kiosk.ini" sh tests/e2e/config_doc.sh "$KIOSK"
+}
+
+# The shipped matcaps regenerate byte for byte from the baker.
+test_baker() {
+	mkdir -p "$out/baked"
+	check "baker runs" "$BAKE" "$out/baked" 256
+	for f in matcaps/*.png; do
+		check "matcap $(basename "$f") reproducible" cmp "$f" "$out/baked/$(basename "$f")"
+	done
+}
+
+# The live loop as systemd runs it, through the ASan binary: READY=1 after
+# the first frame, watchdog pings, SIGHUP reloads (and keeps the scene on a
+# bad config or model), new matcaps picked up, SIGTERM exits 0 with no leak.
+test_live() {
+	need_models
+	sh tests/e2e/live.sh "$ASAN_KIOSK" "$TOOLS/notify_listen" "$out/models/sphere.glb" \
+		"$out/live" >"$out/live.log" 2>&1
+	grep -q "^ok every step ran" "$out/live.log" ||
+		echo "not ok the scenario stopped early" >>"$out/live.log"
+	results live "$out/live.log" "$out/live/stderr"
+}
+
+# make install honours PREFIX and DESTDIR.
+test_install() {
+	check "make install" sh -c "make -s install DESTDIR=$PWD/$out/stage PREFIX=/usr SYSCONFDIR=/etc >/dev/null &&
+		test -x $out/stage/usr/bin/matcap-kiosk &&
+		test -f $out/stage/usr/share/matcap-kiosk/matcaps/gold.png &&
+		test -f $out/stage/etc/matcap-kiosk/kiosk.ini"
+	check "make install: the unit (with its paths), sysusers.d and udev rule" sh -c "
+		grep -qx 'ExecStart=/usr/bin/matcap-kiosk --config /etc/matcap-kiosk/kiosk.ini' \
+			$out/stage/usr/lib/systemd/system/matcap-kiosk.service &&
+		test -f $out/stage/usr/lib/sysusers.d/matcap-kiosk.conf &&
+		test -f $out/stage/usr/lib/udev/rules.d/60-matcap-kiosk-gpio.rules"
+}
+
+# The systemd unit, checked offline (no running systemd needed), from an
+# install whose ExecStart exists on this machine: verify must print nothing
+# (it exits 0 on warnings), and the sandbox must rate at most 2.5
+# (--threshold counts in tenths); the sysusers.d file, with systemd's own
+# basic.conf (video), must create the user and every group the unit names.
+test_systemd() {
+	prefix=$PWD/$out/prefix
+	unit=$prefix/lib/systemd/system/matcap-kiosk.service
+	check "make install into a prefix for systemd-analyze" sh -c "make -s install \
+		PREFIX=$prefix SYSCONFDIR=$prefix/etc >/dev/null"
+	check "systemd-analyze verify: no warning" sh -c \
+		"o=\$(systemd-analyze verify $unit 2>&1); echo \"\$o\"; [ -z \"\$o\" ]"
+	score=$(systemd-analyze security --offline=yes "$unit" 2>/dev/null |
+		sed -n 's/.*Overall exposure level for .*: \([0-9.]*\).*/\1/p')
+	check "systemd-analyze security --offline: exposure ${score:-unknown}, at most 2.5" \
+		systemd-analyze security --offline=yes --threshold=25 "$unit"
+	check "sysusers.d creates the user and the unit's groups" sh -c "
+		mkdir -p $out/sysroot/etc &&
+		systemd-sysusers --root=$PWD/$out/sysroot /usr/lib/sysusers.d/basic.conf \
+			$prefix/lib/sysusers.d/matcap-kiosk.conf &&
+		grep -q '^matcap-kiosk:' $out/sysroot/etc/passwd &&
+		for g in \$(sed -n 's/^SupplementaryGroups=//p' $unit); do
+			grep -q \"^\$g:\" $out/sysroot/etc/group || { echo \"no group \$g\"; exit 1; }
+		done"
+}
+
+# test_fuzz [HARNESS]...: libFuzzer (clang, ASan + UBSan) on the glTF
+# loader, the PNG/JPEG decoder and the config reader (every harness when
+# none is named), FUZZ_SECONDS each from tests/fuzz/corpus; then each
+# input of tests/fuzz/regressions.
+test_fuzz() {
+	FUZZ_OUT=$out/fuzz sh tests/fuzz/run.sh "$@" >"$out/fuzz.log" 2>"$out/fuzz.err"
+	[ -s "$out/fuzz.log" ] || echo "not ok the fuzz script printed nothing" >"$out/fuzz.log"
+	results fuzz "$out/fuzz.log" "$out/fuzz.err"
+}
+
+# No leak, no drift: the live loop through OSMesa with a matcap change
+# every 100 frames and a reload every 10,000, 100,000 frames (`make soak`
+# runs 500,000), memory flat; valgrind on a short run of it.
+test_soak() {
+	SOAK=$TOOLS/soak SOAK_OUT=$out/soak sh tests/soak/soak.sh >"$out/soak.log" 2>"$out/soak.err"
+	[ -s "$out/soak.log" ] || echo "not ok the soak script printed nothing" >"$out/soak.log"
+	results soak "$out/soak.log" "$out/soak.err"
+}
+
+# No camera (an id no machine has): one line in the journal, the image
+# matcaps on screen, and no camera helper process left after SIGTERM. The
+# camera itself is tested on the virtual board: tests/e2e/camera.sh.
+test_no_camera() {
+	check "no camera: said once, the kiosk runs on and ends cleanly" sh -c "
+		$KIOSK --backend egl-headless --size 64x64 --keyboard none --camera-id no-such-camera \
+			>$out/camera-none.log 2>&1 & pid=\$!
+		i=0; until grep -q 'camera: none found' $out/camera-none.log || [ \$i -gt 100 ]; do
+			sleep 0.1; i=\$((i + 1)); done
+		helper=\$(grep -ls \"^PPid:[[:space:]]*\$pid\\\$\" /proc/[0-9]*/status | cut -d/ -f3)
+		kill -TERM \$pid; wait \$pid && [ \$(grep -c 'camera:' $out/camera-none.log) = 1 ] &&
+		grep -q 'ready: the first frame' $out/camera-none.log &&
+		{ [ -z \"\$helper\" ] || ! kill -0 \$helper 2>/dev/null; }"
+}
+
+# test_board [SCRIPT]...: guest scripts on the virtual board (tests/vm:
+# qemu, Debian's kernel, vkms, gpio-sim, vimc), through tests/e2e/host.sh,
+# which renders the OSMesa references and boots the board once per
+# script. With no script: the display (tests/e2e/kms*.sh: mode set,
+# flips, frames against OSMesa, the screen given back, hotplug, a busy
+# display, errors), the GPIO buttons (tests/vm/gpio-test.sh) and the
+# camera (tests/e2e/camera.sh); about 6 minutes, and about a minute more
+# the first time, to build the board.
+test_board() {
+	KIOSK=$KIOSK IMGDIFF=$TOOLS/imgdiff sh tests/e2e/host.sh "$out/e2e" "$@" >"$out/e2e.log" \
+		2>"$out/e2e.err"
+	grep -q "^ok every script ran" "$out/e2e.log" ||
+		echo "not ok the board scripts did not all run (see $out/e2e.err)" >>"$out/e2e.log"
+	results board "$out/e2e.log" "$out/e2e.err"
+}

@@ -1,0 +1,68 @@
+#!/bin/sh
+# Checks the layer checker (tests/tools/layers.sh) on small fake src/ trees
+# in a scratch folder: a clean tree passes; one upward include, one include
+# across peers, one circle, one file over 700 lines or one file outside the
+# layer folders each make it fail, naming the file and line. A checker that
+# passes everything would otherwise look like a clean src/.
+#   tests/tools/layers_selftest.sh
+# Prints one "ok" or "not ok" line per case; exits 1 when any case failed.
+set -u
+layers=$(cd "$(dirname "$0")" && pwd)/layers.sh
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failed=0
+
+# A clean tree: every layer, each file including its own layer and lower ones.
+clean() {
+	rm -rf "$tmp/src"
+	for d in app display input camera render scene util; do mkdir -p "$tmp/src/$d"; done
+	printf '/* the bottom layer */\n' >"$tmp/src/util/log.h"
+	printf '#include "util/log.h"\n' >"$tmp/src/scene/mesh.h"
+	printf '#include "scene/mesh.h"\n#include "util/log.h"\n' >"$tmp/src/render/render.h"
+	printf '#include "render/render.h"\n' >"$tmp/src/display/display.h"
+	printf '#include "render/render.h"\n' >"$tmp/src/input/button.h"
+	printf '#include "render/render.h"\n' >"$tmp/src/camera/camera.h"
+	printf '#include "app/app.h"\n#include "display/display.h"\n#include "input/button.h"\n' \
+		>"$tmp/src/app/main.c"
+	printf '#include "camera/camera.h"\n' >"$tmp/src/app/app.h"
+}
+# expect pass|fail NAME [PATTERN]: run the checker on the tree; on a failure
+# its output must contain PATTERN (the file and line of the offence).
+expect() {
+	sh "$layers" "$tmp/src" >"$tmp/out" 2>&1
+	rc=$?
+	if { [ "$1" = pass ] && [ $rc = 0 ]; } ||
+		{ [ "$1" = fail ] && [ $rc = 1 ] && grep -qF -- "$3" "$tmp/out"; }; then
+		echo "ok $2"
+	else
+		echo "not ok $2 (exit $rc):"
+		sed 's/^/  /' "$tmp/out"
+		failed=1
+	fi
+}
+
+clean
+expect pass "a clean tree passes"
+printf '#include "util/log.h"\n#include "render/render.h"\n' >"$tmp/src/scene/lod.c"
+expect fail "an upward include fails" "src/scene/lod.c:2: #include \"render/render.h\" goes up"
+rm "$tmp/src/scene/lod.c"
+expect pass "the same tree without it passes again"
+
+clean
+printf '#include "input/button.h"\n' >>"$tmp/src/display/display.h"
+expect fail "an include across peers fails" "src/display/display.h:2: #include \"input/button.h\" goes across"
+
+clean
+printf '#include "scene/lod.h"\n' >"$tmp/src/scene/mesh.c"
+printf '#include "scene/mesh.h"\n' >"$tmp/src/scene/lod.c"
+expect fail "a circle between two files fails" "circle of includes: scene/"
+
+clean
+awk 'BEGIN { for (i = 0; i < 701; i++) print "/* line */" }' >"$tmp/src/util/long.c"
+expect fail "a file over 700 lines fails" "src/util/long.c:701: 701 lines"
+
+clean
+printf '#include "util/log.h"\n' >"$tmp/src/flat.c"
+expect fail "a file outside the layer folders fails" "src/flat.c:1: not in a layer folder"
+
+exit $failed
