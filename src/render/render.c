@@ -8,9 +8,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define FOV_Y_DEGREES 30.0
-#define FIT_MARGIN    1.08
-
 /* The lit mode's light, fixed to the camera, from where the shipped
  * matcaps' key light is (src/render/bake.c), so that the two read alike. */
 static const float light_dir[3] = {-0.5499f, 0.6198f, 0.5599f};
@@ -323,38 +320,18 @@ void render_matrices(const struct view *v, int width, int height, float modelvie
 		     float projection[16])
 {
 	bool quarter = v->rotation == 90 || v->rotation == 270;
-	double aspect = quarter ? (double)height / width : (double)width / height;
-	double half = FOV_Y_DEGREES / 2.0 * M_PI / 180.0;
-	double half_min = fmin(half, atan(tan(half) * aspect));
-	double dist = FIT_MARGIN / sin(half_min);
 	float rot[16], move[16], proj[16], panel[16];
+	struct sphere_fit fit;
 
+	sphere_fit_init(&fit, quarter ? (double)height / width : (double)width / height);
 	mat4_from_quat(rot, v->orientation);
-	mat4_translate(move, 0, 0, -dist);
+	mat4_translate(move, 0, 0, -fit.distance);
 	mat4_multiply(modelview, move, rot);
-	if (v->ortho) {
-		double sx = aspect > 1 ? aspect : 1, sy = aspect > 1 ? 1 : 1 / aspect;
-
-		mat4_ortho(proj, -sx, sx, -sy, sy, dist - 1.5, dist + 1.5);
-	} else {
-		mat4_perspective(proj, 2.0 * half, aspect, dist - 1.5, dist + 1.5);
-	}
+	sphere_fit_projection(&fit, v->ortho, proj);
 	/* A portrait panel turns the picture, not the scanout, so it works
 	 * with every driver and plane. */
 	mat4_rotate_z(panel, v->rotation);
 	mat4_multiply(projection, panel, proj);
-}
-
-double render_pixels_per_unit(int width, int height)
-{
-	double aspect = (double)width / height, short_side = width < height ? width : height;
-	double half = FOV_Y_DEGREES / 2.0 * M_PI / 180.0;
-	double half_min = fmin(half, atan(tan(half) * aspect));
-	double dist = FIT_MARGIN / sin(half_min);
-
-	/* The short side spans 2 z tan(half_min) model units at depth z; the
-	 * nearest point of the unit sphere is at dist - 1. */
-	return short_side / 2.0 / ((dist - 1.0) * tan(half_min));
 }
 
 static void bind_texture(const struct gl *gl, GLint uniform, int unit, GLuint tex)

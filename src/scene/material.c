@@ -1,7 +1,7 @@
 #include "scene/material.h"
 #include "scene/gltf.h"
 #include "util/log.h"
-#include "render/render.h"
+#include "util/math3d.h"
 #include "scene/subdivide.h"
 #include "scene/tangent.h"
 #include "scene/texture.h"
@@ -295,7 +295,7 @@ static void refit(struct mesh *mesh)
 
 static int displace(const struct material *m, struct mesh *mesh, int width, int height)
 {
-	int n = subdivide_segments(mesh, render_pixels_per_unit(width, height),
+	int n = subdivide_segments(mesh, sphere_fit_pixels_per_unit(width, height),
 				   m->displacement_pixels, &m->height, m->displacement_triangles);
 	int ret = 0;
 
