@@ -272,24 +272,22 @@ static void find_uniforms(const struct gl *gl, struct program *p)
 	p->shininess = gl->GetUniformLocation(p->id, "u_shininess");
 }
 
-#define HIGHP_DEFINE "#define PRECISION_HIGHP 1\n"
-
-/* Lit programs do not depend on the mapping mode: one per camera. */
+/* Lit programs do not depend on the mapping mode: one per camera. A
+ * program that fails to build is not kept, so the next call tries again
+ * and the one in use stays. */
 static struct program *program_get(struct renderer *r, enum shading_mode mode, bool ortho, bool lit)
 {
 	struct program *p = &r->programs[lit ? SHADING_VIEW : mode][ortho][lit];
-	char defines[512];
-	int n;
+	struct shader_source src;
+	GLuint id;
 
 	if (p->id)
 		return p;
-	n = material_defines(r->mat.features, mode, ortho, lit, defines, sizeof(defines));
-	if (n >= 0 && r->highp && (size_t)n + sizeof(HIGHP_DEFINE) <= sizeof(defines))
-		strcat(defines, HIGHP_DEFINE);
-	else if (r->highp)
-		n = -ENOSPC;
-	if (n < 0 || shader_build(r->gl, r->shader_dir, defines, &p->id))
+	if (shader_source_matcap(&src, r->shader_dir, r->mat.features, mode, ortho, lit,
+				 r->highp) ||
+	    shader_program_build(r->gl, &src, &id))
 		return NULL;
+	p->id = id;
 	find_uniforms(r->gl, p);
 	return p;
 }

@@ -347,22 +347,3 @@ bool material_needs_tangents(unsigned features)
 {
 	return (features & MATERIAL_DETAIL_NORMAL) != 0;
 }
-
-int material_defines(unsigned f, enum shading_mode mode, bool ortho, bool lit, char *buf,
-		     size_t size)
-{
-	int n;
-
-	/* These read the normal per fragment, which sem-vertex has not. */
-	if (mode == SHADING_SEM_VERTEX &&
-	    (lit || (f & (MATERIAL_IRIDESCENCE | MATERIAL_DETAIL_NORMAL))))
-		mode = SHADING_SEM_FRAGMENT;
-	n = snprintf(buf, size, "%s%s%s%s%s%s%s", shading_mode_define(mode),
-		     ortho ? "#define CAMERA_ORTHO 1\n" : "",
-		     f & MATERIAL_IRIDESCENCE ? "#define IRIDESCENCE 1\n" : "",
-		     f & MATERIAL_RAMP ? "#define IRIDESCENCE_RAMP 1\n" : "",
-		     f & MATERIAL_DETAIL ? "#define DETAIL_MAP 1\n" : "",
-		     f & MATERIAL_DETAIL_NORMAL ? "#define DETAIL_NORMAL 1\n" : "",
-		     lit ? "#define LIT 1\n" : "");
-	return n >= 0 && (size_t)n < size ? n : -ENOSPC;
-}
