@@ -101,25 +101,14 @@ static struct program *program_get(struct camera_texture *t, enum camera_kind ki
 	return p;
 }
 
-static bool has_extension(const char *list, const char *name)
-{
-	size_t n = strlen(name);
-
-	for (const char *p = list; p && (p = strstr(p, name)); p += n)
-		if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0'))
-			return true;
-	return false;
-}
-
 /* The import needs an EGL context (not OSMesa's), the dmabuf import
  * extension and GL_OES_EGL_image. */
 static struct egl_import *import_new(const struct gl *gl)
 {
-	EGLDisplay dpy = eglGetCurrentDisplay();
-	const char *renderer = (const char *)gl->GetString(GL_RENDERER);
+	const struct gl_caps *caps = &gl->caps;
 	struct egl_import *im;
 
-	if (dpy == EGL_NO_DISPLAY) {
+	if (!caps->egl_display) {
 		log_debug("camera: no EGL context, so no dmabuf import");
 		return NULL;
 	}
@@ -127,21 +116,19 @@ static struct egl_import *import_new(const struct gl *gl)
 	 * Mesa's kms_swrast takes an import it cannot map (the kernel does
 	 * not map imported buffers for it): llvmpipe then reads through a
 	 * null pointer. */
-	if (renderer && (strstr(renderer, "llvmpipe") || strstr(renderer, "softpipe") ||
-			 strstr(renderer, "swrast"))) {
+	if (caps->software) {
 		log_debug("camera: software rendering (%s): frames are uploaded, not imported",
-			  renderer);
+			  (const char *)gl->GetString(GL_RENDERER));
 		return NULL;
 	}
-	if (!has_extension(eglQueryString(dpy, EGL_EXTENSIONS), "EGL_EXT_image_dma_buf_import") ||
-	    !has_extension((const char *)gl->GetString(GL_EXTENSIONS), "GL_OES_EGL_image")) {
+	if (!caps->dmabuf_import || !caps->egl_image) {
 		log_debug("camera: EGL_EXT_image_dma_buf_import or GL_OES_EGL_image missing");
 		return NULL;
 	}
 	im = calloc(1, sizeof(*im));
 	if (!im)
 		return NULL;
-	im->dpy = dpy;
+	im->dpy = caps->egl_display;
 	im->create = (PFNEGLCREATEIMAGEKHRPROC)eglGetProcAddress("eglCreateImageKHR");
 	im->destroy = (PFNEGLDESTROYIMAGEKHRPROC)eglGetProcAddress("eglDestroyImageKHR");
 	im->target =

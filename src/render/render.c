@@ -28,7 +28,7 @@ struct renderer {
 	struct program *beside;	 /* lit = beside: the lit program, drawn right */
 	enum shading_mode mode;
 	bool ortho, mode_set;
-	bool highp;	     /* every float highp (PRECISION_HIGHP): see software_renderer */
+	bool highp;	     /* every float highp (PRECISION_HIGHP): see renderer_new */
 	struct material mat; /* the features and their numbers; no images */
 	GLuint vbo[SHADER_ATTR_COUNT], ibo, matcap, detail, ramp;
 	GLuint matcap_override; /* another's texture as the matcap (the camera's); 0: none */
@@ -38,17 +38,6 @@ struct renderer {
 	bool indexed;
 };
 
-/* A CPU rasteriser (llvmpipe, softpipe) emulates 16-bit mediump with
- * conversions: there highp is faster as well as exact (the mediump rows
- * of tests/bench/report/speed-error.md: about twice as slow). A GPU runs
- * mediump natively. */
-static bool software_renderer(const struct gl *gl)
-{
-	const char *name = (const char *)gl->GetString(GL_RENDERER);
-
-	return name && (strstr(name, "llvmpipe") || strstr(name, "softpipe"));
-}
-
 struct renderer *renderer_new(const struct gl *gl, const char *shader_dir)
 {
 	struct renderer *r = calloc(1, sizeof(*r));
@@ -57,7 +46,11 @@ struct renderer *renderer_new(const struct gl *gl, const char *shader_dir)
 		return NULL;
 	r->gl = gl;
 	r->shader_dir = shader_dir;
-	r->highp = software_renderer(gl);
+	/* A CPU rasteriser emulates 16-bit mediump with conversions: there
+	 * highp is faster as well as exact (the mediump rows of
+	 * tests/bench/report/speed-error.md: about twice as slow). A GPU runs
+	 * mediump natively. */
+	r->highp = gl->caps.software;
 	gl->GenBuffers(SHADER_ATTR_COUNT, r->vbo);
 	gl->GenBuffers(1, &r->ibo);
 	gl->GenTextures(1, &r->matcap);
@@ -95,17 +88,6 @@ void renderer_free(struct renderer *r)
 	free(r);
 }
 
-static bool has_gl_extension(const struct gl *gl, const char *name)
-{
-	const char *ext = (const char *)gl->GetString(GL_EXTENSIONS);
-	size_t n = strlen(name);
-
-	for (const char *p = ext; p && (p = strstr(p, name)); p += n)
-		if ((p == ext || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0'))
-			return true;
-	return false;
-}
-
 /* Core GLES2 indexes with 16 bits; 32-bit indices need an extension that
  * some SBC GPUs lack, and then the mesh is drawn unindexed. */
 static int upload_indices(struct renderer *r, const struct mesh *m)
@@ -128,7 +110,7 @@ static int upload_indices(struct renderer *r, const struct mesh *m)
 		r->index_type = GL_UNSIGNED_SHORT;
 		return 0;
 	}
-	if (has_gl_extension(gl, "GL_OES_element_index_uint")) {
+	if (gl->caps.element_index_uint) {
 		gl->BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)m->index_count * 4, m->indices,
 			       GL_STATIC_DRAW);
 		r->index_type = GL_UNSIGNED_INT;
