@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Seed 002's constants, and a beetle's green turning blue-violet. */
+/* The iridescence defaults: a beetle's green turning blue-violet. */
 #define DEFAULT_HUE_AVERAGE 0.33
 #define DEFAULT_HUE_RANGE   0.4
 #define DEFAULT_HUE_SHIFT   0.2
@@ -66,12 +66,12 @@ static float pick(double setting, double otherwise)
 	return (float)(isnan(setting) ? otherwise : setting);
 }
 
-/* KHR_materials_iridescence to seed 002's formula. The film's colour
- * turns once round the hue circle each time its optical path 2 eta d
- * cos(theta_t) grows by a wavelength. With cos(theta_t) ~ 1 - sin^2(theta)
+/* KHR_materials_iridescence to the hue formula of shaders/material.glsl.
+ * The film's colour turns once round the hue circle each time its
+ * optical path 2 eta d cos(theta_t) grows by a wavelength. With cos(theta_t) ~ 1 - sin^2(theta)
  * / (2 eta^2) and sin^2(theta) = 1 - (n.e)^2:
  *   hue = 2 eta d / lambda - d / (eta lambda) * (1 - (n.e)^2),
- * the seed's form, with average and range from the thickest film, and a
+ * the shader's form, with average and range from the thickest film, and a
  * thinner one (thickness map -> 0 at the minimum) shifting the hue. */
 static void iridescence_from_gltf(const struct mesh_material *g, struct material *m)
 {
@@ -123,7 +123,7 @@ static int load_named(const char *path, const char *feature, bool strict, struct
 /* glTF's normal, occlusion and thickness textures into one packed map,
  * sampled at the largest one's size (rounded to a power of two). The
  * normal is scaled as glTF says and stored as xy: the shader rebuilds z,
- * exact for unit normals, which the seed's z = 1 would not be. */
+ * exact for unit normals, which a fixed z = 1 would not be. */
 static void pack_texel(const struct mesh_material *g, const struct image *shift, double u, double v,
 		       uint8_t *out)
 {

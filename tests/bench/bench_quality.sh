@@ -1,5 +1,5 @@
 #!/bin/sh
-# Speed against error (issue 7): bench_quality draws each scene with every
+# Speed against error: bench_quality draws each scene with every
 # quality setting and writes the tables and the data, gnuplot draws time
 # against error with the front marked. Printed, never asserted.
 #   sh tests/bench/bench_quality.sh OUTDIR [--frames N] [--size WxH] [--backend B]

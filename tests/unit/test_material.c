@@ -240,7 +240,7 @@ static void tangents_follow_the_node(void **state)
 	mesh_release(&src);
 }
 
-/* KHR_materials_iridescence into the seed's numbers (see material.c):
+/* KHR_materials_iridescence into the shader's numbers (see material.c):
  * average 2 eta dmax / 550, range -dmax / (eta 550), shift 2 eta (dmax -
  * dmin) / 550, opacity 0.6 x factor; a setting overrides each. */
 static void iridescence_from_gltf_and_settings(void **state)
