@@ -139,8 +139,8 @@ static int tally_live(void)
 	return n;
 }
 
-/* Shader and program names share no namespace in GL; the tests never
- * reuse one, as Mesa hands out fresh names. */
+/* Shaders and programs share GL's name space: programs are tagged here,
+ * so that deleting one as the other counts as a bad delete. */
 static GLuint GL_APIENTRY counted_create_shader(GLenum type)
 {
 	GLuint id = tally.real.CreateShader(type);
