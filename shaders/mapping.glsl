@@ -29,7 +29,7 @@ SHADE_P vec3 safe_normalize(SHADE_P vec3 v)
 	return l2 > 1.0e-6 ? v * inversesqrt(l2) : vec3(0.0, 0.0, 1.0);
 }
 
-// Seed 000: the normal's xy is the position on the disk.
+// Normal mode: the normal's xy is the position on the disk.
 vec2 matcap_normal(vec3 n)
 {
 	return vec2(n.x, -n.y) * 0.5 + 0.5;
@@ -47,12 +47,12 @@ vec2 matcap_view(vec3 n, vec3 eye_to_point)
 	return vec2(dot(x, n), -dot(y, n)) * 0.495 + 0.5;
 }
 
-// Seed 003: spherical environment mapping of the reflected eye vector,
+// SEM: spherical environment mapping of the reflected eye vector,
 // uv = r.xy / m + 0.5 with m = 2 |r + (0,0,1)|. Since r.xy = (r + z).xy,
 // r.xy / m is half the xy of h = normalize(r + z): the same value, written
 // so that the singularity at r = (0,0,-1), where m = 0, has a safe limit.
 // Near it (r + z).z = 1 + r.z shrinks as |r.xy|^2, faster than r.xy, so h
-// reaches the rim (h.z = 0), as the seed formula does, at an angle that
+// reaches the rim (h.z = 0), as r.xy / m does, at an angle that
 // depends on the side it comes from: every rim point stands for r = -z.
 // The fallback takes the rim point in n's direction, which is r.xy's
 // there. (h = n, the textbook's limit, holds only at the screen's centre:

@@ -1,10 +1,10 @@
-// The optional features' math (issue 6), for the fragment shader only:
+// The optional features' math, for the fragment shader only:
 // each function is compiled in only when its feature's #define is set.
 // Mirrored line for line in tests/oracle/shading_mirror.h, the reference of the
 // tests. SHADE_P (mapping.glsl) marks the values that mediump cannot carry.
 
 #ifdef IRIDESCENCE
-// Seed 002: the hue of a thin film from the angle between normal and view.
+// Iridescence: the hue of a thin film from the angle between normal and view.
 // (n.e)^2 is a product, not pow(n.e, 2.0): pow of a negative base is
 // undefined in GLSL ES, and n.e < 0 on every surface facing the eye (e
 // points from the eye to the surface). map_a is the detail map's alpha,
@@ -40,7 +40,7 @@ SHADE_P vec3 detail_normal(SHADE_P vec3 n, SHADE_P vec4 tangent, SHADE_P vec2 rg
 #endif
 
 #ifdef LIT
-// Seed 004's comparison: diffuse plus Blinn-Phong specular, the light
+// Lit, to compare with the matcap: diffuse plus Blinn-Phong specular, the light
 // fixed to the camera (l in view space). pow(n.h, 48) multiplies the
 // error of n.h by 48: at mediump that is 6/255 of colour, hence SHADE_P.
 const float LIT_AMBIENT = 0.15;

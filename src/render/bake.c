@@ -302,8 +302,9 @@ static struct vec3 hue_rgb(double hue)
 static struct vec3 shade_pearl(const struct scene *s, struct vec3 n)
 {
 	const struct vec3 base = {0.80, 0.78, 0.76};
-	/* Nacre's thin layers: hue shifts with n.v (seed 002's formula, with
-	 * hue = (1 - (n.v)^2) * range + average), kept pastel. */
+	/* Nacre's thin layers: hue shifts with n.v (the iridescence of
+	 * shaders/material.glsl, hue = (1 - (n.v)^2) * range + average),
+	 * kept pastel. */
 	double hue = (1.0 - n.z * n.z) * 0.55 + 0.45;
 	struct vec3 albedo = mul(base, mix(gray(1.0), hue_rgb(hue), 0.22));
 	double light = 0.85 * wrap(dot(n, s->key), 0.6) + 0.18 * wrap(dot(n, s->fill), 0.6) +

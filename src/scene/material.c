@@ -1,7 +1,7 @@
 #include "scene/material.h"
 #include "scene/gltf.h"
 #include "util/log.h"
-#include "render/render.h"
+#include "util/math3d.h"
 #include "scene/subdivide.h"
 #include "scene/tangent.h"
 #include "scene/texture.h"
@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Seed 002's constants, and a beetle's green turning blue-violet. */
+/* The iridescence defaults: a beetle's green turning blue-violet. */
 #define DEFAULT_HUE_AVERAGE 0.33
 #define DEFAULT_HUE_RANGE   0.4
 #define DEFAULT_HUE_SHIFT   0.2
@@ -66,12 +66,12 @@ static float pick(double setting, double otherwise)
 	return (float)(isnan(setting) ? otherwise : setting);
 }
 
-/* KHR_materials_iridescence to seed 002's formula. The film's colour
- * turns once round the hue circle each time its optical path 2 eta d
- * cos(theta_t) grows by a wavelength. With cos(theta_t) ~ 1 - sin^2(theta)
+/* KHR_materials_iridescence to the hue formula of shaders/material.glsl.
+ * The film's colour turns once round the hue circle each time its
+ * optical path 2 eta d cos(theta_t) grows by a wavelength. With cos(theta_t) ~ 1 - sin^2(theta)
  * / (2 eta^2) and sin^2(theta) = 1 - (n.e)^2:
  *   hue = 2 eta d / lambda - d / (eta lambda) * (1 - (n.e)^2),
- * the seed's form, with average and range from the thickest film, and a
+ * the shader's form, with average and range from the thickest film, and a
  * thinner one (thickness map -> 0 at the minimum) shifting the hue. */
 static void iridescence_from_gltf(const struct mesh_material *g, struct material *m)
 {
@@ -123,7 +123,7 @@ static int load_named(const char *path, const char *feature, bool strict, struct
 /* glTF's normal, occlusion and thickness textures into one packed map,
  * sampled at the largest one's size (rounded to a power of two). The
  * normal is scaled as glTF says and stored as xy: the shader rebuilds z,
- * exact for unit normals, which the seed's z = 1 would not be. */
+ * exact for unit normals, which a fixed z = 1 would not be. */
 static void pack_texel(const struct mesh_material *g, const struct image *shift, double u, double v,
 		       uint8_t *out)
 {
@@ -295,7 +295,7 @@ static void refit(struct mesh *mesh)
 
 static int displace(const struct material *m, struct mesh *mesh, int width, int height)
 {
-	int n = subdivide_segments(mesh, render_pixels_per_unit(width, height),
+	int n = subdivide_segments(mesh, sphere_fit_pixels_per_unit(width, height),
 				   m->displacement_pixels, &m->height, m->displacement_triangles);
 	int ret = 0;
 
@@ -346,23 +346,4 @@ bool material_needs_uvs(unsigned features)
 bool material_needs_tangents(unsigned features)
 {
 	return (features & MATERIAL_DETAIL_NORMAL) != 0;
-}
-
-int material_defines(unsigned f, enum shading_mode mode, bool ortho, bool lit, char *buf,
-		     size_t size)
-{
-	int n;
-
-	/* These read the normal per fragment, which sem-vertex has not. */
-	if (mode == SHADING_SEM_VERTEX &&
-	    (lit || (f & (MATERIAL_IRIDESCENCE | MATERIAL_DETAIL_NORMAL))))
-		mode = SHADING_SEM_FRAGMENT;
-	n = snprintf(buf, size, "%s%s%s%s%s%s%s", shading_mode_define(mode),
-		     ortho ? "#define CAMERA_ORTHO 1\n" : "",
-		     f & MATERIAL_IRIDESCENCE ? "#define IRIDESCENCE 1\n" : "",
-		     f & MATERIAL_RAMP ? "#define IRIDESCENCE_RAMP 1\n" : "",
-		     f & MATERIAL_DETAIL ? "#define DETAIL_MAP 1\n" : "",
-		     f & MATERIAL_DETAIL_NORMAL ? "#define DETAIL_NORMAL 1\n" : "",
-		     lit ? "#define LIT 1\n" : "");
-	return n >= 0 && (size_t)n < size ? n : -ENOSPC;
 }
