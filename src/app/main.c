@@ -197,7 +197,8 @@ static int before_display(const struct options *o, struct content *scene)
 {
 	if (!is_live(o))
 		return content_load(scene, &o->content, true);
-	return kiosk_block_signals();
+	kiosk_block_signals();
+	return 0;
 }
 
 /* When auto found no display, the kiosk draws one PNG instead, with no
@@ -229,6 +230,11 @@ static int show(struct options *o, char **argv)
 	return ret;
 }
 
+static enum exit_code parse_failed(enum options_status status)
+{
+	return status == OPTIONS_CONFIG ? EXIT_CODE_CONFIG : EXIT_CODE_USAGE;
+}
+
 static enum exit_code start(struct options *o, char **argv)
 {
 	if (o->help)
@@ -251,9 +257,7 @@ int main(int argc, char **argv)
 		return camera_helper_main(CAMERA_HELPER_FD);
 	status = options_parse(&opts, argc, argv);
 	log_set_level(opts.log_level);
-	ret = status == OPTIONS_OK	 ? start(&opts, argv)
-	      : status == OPTIONS_CONFIG ? EXIT_CODE_CONFIG
-					 : EXIT_CODE_USAGE;
+	ret = status == OPTIONS_OK ? start(&opts, argv) : parse_failed(status);
 	options_release(&opts);
 	return ret;
 }

@@ -40,7 +40,7 @@ static char *read_line(char *str, int num, void *stream)
 
 static bool in_section(const struct option_def *d, const char *section)
 {
-	return d->section != CLI && !strcmp(options_sections[d->section].name, section);
+	return d->section != OPTION_CLI && !strcmp(options_sections[d->section].name, section);
 }
 
 static const struct option_def *find_key(const char *section, const char *key)
@@ -339,7 +339,7 @@ void options_usage(FILE *out)
 		snprintf(left, sizeof(left), "%c%c%c --%s%s%s", d->short_name ? '-' : ' ',
 			 d->short_name ? d->short_name : ' ', d->short_name ? ',' : ' ', d->name,
 			 d->arg ? "=" : "", d->arg ? d->arg : "");
-		if (d->section != CLI)
+		if (d->section != OPTION_CLI)
 			snprintf(ini, sizeof(ini), "\n%31s[%s] %s in the config file", "",
 				 options_sections[d->section].name, d->key);
 		fprintf(out, "  %-28s %s%s\n", left, d->help, ini);

@@ -45,11 +45,14 @@ _Static_assert(offsetof(struct display_config, height) ==
 _Static_assert(offsetof(struct camera_feed_config, height) ==
 		   offsetof(struct camera_feed_config, width) + sizeof(int),
 	       "camera width, height");
-/* Choices are kept through an int. */
-_Static_assert(sizeof(enum shading_mode) == sizeof(int) && sizeof(enum app_action) == sizeof(int) &&
+/* Choices other than a bool are kept through an int. */
+_Static_assert(sizeof(enum backend_kind) == sizeof(int) &&
+		   sizeof(enum shading_mode) == sizeof(int) &&
+		   sizeof(enum app_action) == sizeof(int) &&
+		   sizeof(enum button_active) == sizeof(int) &&
 		   sizeof(enum button_bias) == sizeof(int) &&
 		   sizeof(enum camera_feed_use) == sizeof(int) &&
-		   sizeof(enum backend_kind) == sizeof(int),
+		   sizeof(enum camera_feed_import) == sizeof(int),
 	       "enums are ints");
 
 const struct option_def option_defs[OPTION_DEFS] = {
@@ -187,18 +190,18 @@ const struct option_def option_defs[OPTION_DEFS] = {
     {"camera-import", 0, OPTIONS_CAMERA, "import", K_CHOICE, AT(camera.import), 0, 0, 0,
      import_names, "HOW",
      "auto: frames as EGLImages where the driver takes them; off: always upload"},
-    {"config", 'C', CLI, NULL, K_STRING, AT(config), 0, 0, 0, NULL, "FILE",
+    {"config", 'C', OPTION_CLI, NULL, K_STRING, AT(config), 0, 0, 0, NULL, "FILE",
      "read settings from an INI file first (see config/kiosk.ini)"},
-    {"output", 'o', CLI, NULL, K_STRING, AT(output), 0, 0, 0, NULL, "FILE",
+    {"output", 'o', OPTION_CLI, NULL, K_STRING, AT(output), 0, 0, 0, NULL, "FILE",
      "draw offscreen and write the last frame as PNG"},
-    {"frames", 0, CLI, NULL, K_INT, AT(frames), 1, 1e8, 1, NULL, "N",
+    {"frames", 0, OPTION_CLI, NULL, K_INT, AT(frames), 1, 1e8, 1, NULL, "N",
      "frames to draw offscreen (default 1)"},
-    {"stats", 0, CLI, NULL, K_FLAG, AT(stats), 0, 0, 0, NULL, NULL,
+    {"stats", 0, OPTION_CLI, NULL, K_FLAG, AT(stats), 0, 0, 0, NULL, NULL,
      "print frame timings and peak memory"},
-    {"shader-dir", 0, CLI, NULL, K_STRING, AT(shader_dir), 0, 0, 0, NULL, "DIR",
+    {"shader-dir", 0, OPTION_CLI, NULL, K_STRING, AT(shader_dir), 0, 0, 0, NULL, "DIR",
      "read shaders from DIR instead of the built-in copy"},
-    {"help", 'h', CLI, NULL, K_FLAG, AT(help), 0, 0, 0, NULL, NULL, "this text"},
-    {"version", 'V', CLI, NULL, K_FLAG, AT(version), 0, 0, 0, NULL, NULL, "the version"},
+    {"help", 'h', OPTION_CLI, NULL, K_FLAG, AT(help), 0, 0, 0, NULL, NULL, "this text"},
+    {"version", 'V', OPTION_CLI, NULL, K_FLAG, AT(version), 0, 0, 0, NULL, NULL, "the version"},
 };
 
 const char *backend_name(enum backend_kind kind)
@@ -322,10 +325,11 @@ unsigned options_changed(const struct options *a, const struct options *b)
 
 	for (size_t i = 0; i < OPTION_DEFS; i++) {
 		const struct option_def *d = &option_defs[i];
-		const struct options_section_rule *rule = &options_sections[d->section];
+		const struct options_section_rule *rule;
 
-		if (d->section == CLI || same_value(a, b, d))
+		if (d->section == OPTION_CLI || same_value(a, b, d))
 			continue;
+		rule = &options_sections[d->section];
 		if (rule->reload == OPTIONS_AT_START && rule->live_key &&
 		    !strcmp(rule->live_key, d->key))
 			continue;

@@ -13,17 +13,17 @@
 /* K_DEGREES: read in degrees, kept in radians. K_LEVEL: a log level by
  * its name. K_CHOICE: an index into choices, kept as an enum (or a bool
  * for a choice of two). */
-enum kind { K_FLAG, K_STRING, K_INT, K_DOUBLE, K_DEGREES, K_SIZE, K_CHOICE, K_LEVEL };
+enum option_kind { K_FLAG, K_STRING, K_INT, K_DOUBLE, K_DEGREES, K_SIZE, K_CHOICE, K_LEVEL };
 
 /* The command line only: no [section] key. */
-#define CLI OPTIONS_SECTIONS
+#define OPTION_CLI OPTIONS_SECTIONS
 
 struct option_def {
 	const char *name; /* --name */
 	char short_name;
-	enum options_section section; /* in kiosk.ini; CLI: the command line only */
+	enum options_section section; /* in kiosk.ini; OPTION_CLI: the command line only */
 	const char *key;
-	enum kind kind;
+	enum option_kind kind;
 	size_t offset, size;
 	double lo, hi, step; /* numbers: the accepted range (and step) */
 	const char *const *choices;
@@ -31,6 +31,8 @@ struct option_def {
 	const char *help;
 };
 
+/* The table's length: the compiler refuses an entry more, and
+ * tests/unit/test_options.c one less. */
 #define OPTION_DEFS 68
 extern const struct option_def option_defs[OPTION_DEFS];
 

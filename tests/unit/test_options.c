@@ -1,4 +1,5 @@
 #include "app/options.h"
+#include "app/options_table.h"
 #include "app/reload.h"
 
 #include <math.h>
@@ -158,6 +159,17 @@ static void indented_lines(void **state)
 	assert_int_equal(o.log_level, LOG_DEBUG);
 	options_release(&o);
 	unlink(path);
+}
+
+/* OPTION_DEFS is the table's true length: every entry is filled in. */
+static void table_is_full(void **state)
+{
+	(void)state;
+	for (size_t i = 0; i < OPTION_DEFS; i++) {
+		assert_non_null(option_defs[i].name);
+		assert_non_null(option_defs[i].help);
+		assert_true(option_defs[i].size > 0);
+	}
 }
 
 static void shipped_example_parses(void **state)
@@ -330,6 +342,7 @@ int main(void)
 	    cmocka_unit_test(config_errors),
 	    cmocka_unit_test(indented_lines),
 	    cmocka_unit_test(shipped_example_parses),
+	    cmocka_unit_test(table_is_full),
 	    cmocka_unit_test(sections_into_module_configs),
 	    cmocka_unit_test(module_defaults),
 	    cmocka_unit_test(copy_is_deep),
