@@ -1,7 +1,8 @@
 /* Reading the settings: the config file (inih) and the command line
- * (getopt_long), both through the table in src/app/options_table.c, and
+ * (getopt_long), both through the table in src/app/settings.c, and
  * --help from it. */
-#include "app/options_table.h"
+#include "app/options.h"
+#include "app/settings.h"
 #include "util/log.h"
 
 #include <errno.h>

@@ -1,5 +1,5 @@
 #include "app/options.h"
-#include "app/options_table.h"
+#include "app/settings.h"
 #include "app/reload.h"
 
 #include <math.h>
