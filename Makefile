@@ -48,7 +48,7 @@ LDLIBS    = $(PKG_LIBS) -lmeshoptimizer -ldl -lm
 # one folder per layer: each includes only the layers listed after it
 # (tests/tools/layers.sh checks that).
 SRC_APP     := app/app app/content app/kiosk app/options app/settings app/power app/reload \
-	       app/schedule app/service
+	       app/schedule app/screen app/service
 SRC_DISPLAY := display/backlight display/cec display/display display/display_egl display/display_kms \
 	       display/display_osmesa \
 	       display/drm display/drm_atomic display/drm_legacy display/egl_util display/hotplug \

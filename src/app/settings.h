@@ -9,6 +9,7 @@
 
 #include "app/app.h"
 #include "app/content.h"
+#include "app/screen.h"
 #include "camera/camera_feed.h"
 #include "display/display.h"
 #include "input/gpio.h"
@@ -29,6 +30,7 @@ enum options_section {
 	OPTIONS_KEYBOARD,
 	OPTIONS_MATERIAL,
 	OPTIONS_CAMERA,
+	OPTIONS_POWER,
 	OPTIONS_SECTIONS
 };
 
@@ -64,6 +66,8 @@ struct options {
 	struct keyboard_config keyboard;
 	/* [camera] */
 	struct camera_feed_config camera;
+	/* [power] */
+	struct screen_config power;
 	/* the command line only */
 	char *config;
 	char *output;
@@ -96,7 +100,7 @@ struct option_def {
 
 /* The table's length: the compiler refuses an entry more, and
  * tests/unit/test_options.c one less. */
-#define OPTION_DEFS 68
+#define OPTION_DEFS 72
 extern const struct option_def option_defs[OPTION_DEFS];
 
 void option_defaults(struct options *o);
