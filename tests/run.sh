@@ -2,6 +2,9 @@
 # Runs every test and ends with one "N passed, N failed" line.
 # Environment (set by `make test`): KIOSK, ASAN_KIOSK, UNIT_DIR, TOOLS, BAKE.
 set -u
+# The offscreen backend: osmesa, or egl-headless where Mesa has no OSMesa
+# (the Makefile sets OFFSCREEN_BACKEND from what the build has).
+offscreen=${OFFSCREEN_BACKEND:-osmesa}
 out=tests/out
 rm -rf "$out"
 mkdir -p "$out/models" "$out/render" "$out/bad"
@@ -76,7 +79,7 @@ check "OSMesa agrees with the C mirror of the shaders" "$TOOLS/mirror_check"
 #    reproduces the matcap disk itself (less a 3-pixel rim, where the
 #    polygonal silhouette and the disk's edge differ).
 for m in gold chrome-studio; do
-	check "ortho sphere renders ($m)" $KIOSK -q --backend osmesa --size 256x256 --ortho \
+	check "ortho sphere renders ($m)" $KIOSK -q --backend $offscreen --size 256x256 --ortho \
 		--mode normal --pitch 0 --yaw 0 --model "$out/models/sphere.glb" \
 		--matcap matcaps/$m.png --output "$out/render/ortho-$m.png"
 	check "ortho sphere reproduces the matcap ($m)" "$TOOLS/imgdiff" --disk --rim 3 \
@@ -85,13 +88,13 @@ done
 
 # 5. Loader variants that must work from the command line.
 for f in sphere-nonormals.gltf sphere-datauri.gltf; do
-	check "loads $f" $KIOSK -q --backend osmesa --size 64x64 --model "$out/models/$f" \
+	check "loads $f" $KIOSK -q --backend $offscreen --size 64x64 --model "$out/models/$f" \
 		--output "$out/render/$f.png"
 done
 # A glTF texture that cannot be used (outside the model's folder, not an
 # image) is one warning; the model still shows.
 for f in warn-texture-outside.gltf warn-texture-corrupt.glb; do
-	check "loads $f, warning about its texture" sh -c "$KIOSK --backend osmesa \
+	check "loads $f, warning about its texture" sh -c "$KIOSK --backend $offscreen \
 		--size 64x64 --model $out/models/$f --output $out/render/$f.png 2>&1 |
 		grep -q 'normalTexture.*not used'"
 done
@@ -103,7 +106,7 @@ printf '\211\120\116\107\015\012\032\012\000\000\000\015\111\110\104\122\000\001
 head -c 300 matcaps/gold.png >"$out/bad/truncated.png"
 echo "not a picture" >"$out/bad/text.jpg"
 bad_input() { # NAME OPTION FILE
-	"$ASAN_KIOSK" --backend osmesa --size 64x64 "$2" "$3" --output "$out/bad/x.png" \
+	"$ASAN_KIOSK" --backend $offscreen --size 64x64 "$2" "$3" --output "$out/bad/x.png" \
 		>"$out/bad/stdout" 2>"$out/bad/stderr"
 	status=$?
 	lines=$(grep -c "error" "$out/bad/stderr")
@@ -142,7 +145,7 @@ check "two buttons on one line exit 78 naming file and line" sh -c \
 # live kiosk (the ASan build; OSMesa's own leak aside, see tests/e2e/live.sh)
 # runs on without it, and exits cleanly.
 check "a missing GPIO chip is one error; the kiosk runs on" sh -c "
-	ASAN_OPTIONS=detect_leaks=0 $ASAN_KIOSK --backend osmesa --size 64x64 --keyboard none \
+	ASAN_OPTIONS=detect_leaks=0 $ASAN_KIOSK --backend $offscreen --size 64x64 --keyboard none \
 		--gpio-chip nosuchchip --button-left GPIO17 2>$out/bad/gpio.log & p=\$!; i=0
 	until grep -q 'first frame' $out/bad/gpio.log || [ \$i -gt 300 ]; do sleep 0.1; i=\$((i+1)); done
 	kill -0 \$p && kill -TERM \$p && wait \$p && [ \$(grep -c ': error: ' $out/bad/gpio.log) = 1 ] &&
