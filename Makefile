@@ -121,6 +121,8 @@ include tests/tests.mk
 # Package names differ between releases: clang (and its runtime for the
 # fuzzers) is 14 on Debian 12 and 19 on Debian 13; OSMesa only while Mesa
 # has it. apt-get runs through sudo unless make already runs as root.
+# procps brings /bin/kill, which the unit's ExecReload names (a minimal
+# Debian 13 has none, and systemd-analyze verify says so).
 OS_CODENAME   := $(shell . /etc/os-release 2>/dev/null && echo $$VERSION_CODENAME)
 CLANG_VERSION ?= $(if $(filter bookworm,$(OS_CODENAME)),14,19)
 APT_GET       := $(if $(filter 0,$(shell id -u)),,sudo) env DEBIAN_FRONTEND=noninteractive apt-get
@@ -128,7 +130,7 @@ DEBIAN_PACKAGES := make gcc g++ pkg-config libegl-dev libgles-dev \
 	libegl-mesa0 libgl1-mesa-dri libgbm-dev libdrm-dev libtinygltf-dev nlohmann-json3-dev \
 	libpng-dev libturbojpeg0-dev libcmocka-dev libinih-dev libudev-dev libsystemd-dev \
 	libgpiod-dev libevdev-dev libcamera-dev libcamera-ipa \
-	systemd clang-$(CLANG_VERSION) libclang-rt-$(CLANG_VERSION)-dev valgrind \
+	systemd procps clang-$(CLANG_VERSION) libclang-rt-$(CLANG_VERSION)-dev valgrind \
 	libmeshoptimizer-dev gnuplot-nox \
 	qemu-system-x86 busybox-static lz4 cpio kmod udev xz-utils kmscube libdrm-tests \
 	libcamera-tools gpiod v4l-utils

@@ -50,8 +50,17 @@ done
 #    when a channel is off by more than 8/255, and at most 0.5% may differ.
 check "models written" "$TOOLS/mkmodels" "$out/models"
 MODELS=$out/models check "golden scenes rendered" sh tests/golden/golden.sh "$out/render"
+# The knots are simplified for their size (src/scene/lod.c), the goldens'
+# by meshoptimizer 0.18 (Debian 12). A later one (0.22 on Debian 13) keeps
+# other triangles and the silhouette moves by a pixel in places: up to 2.5%
+# of the pixels. With the same triangles Mesa 25 draws them as Mesa 22 does,
+# so only there, and only on the knots, 3% may differ.
+knot_share=0.005
+grep -q '^#define MESHOPTIMIZER_VERSION 180 ' /usr/include/meshoptimizer.h || knot_share=0.03
 for g in tests/golden/*.png; do
-	check "golden $(basename "$g")" "$TOOLS/imgdiff" --tol 8 --share 0.005 "$g" \
+	share=0.005
+	case $g in */knot-*) share=$knot_share ;; esac
+	check "golden $(basename "$g")" "$TOOLS/imgdiff" --tol 8 --share $share "$g" \
 		"$out/render/$(basename "$g")"
 done
 

@@ -185,11 +185,13 @@ BASE_BINS="/usr/bin/busybox /usr/bin/kmod /usr/bin/udevadm /usr/bin/kmscube /usr
 /usr/bin/modeprint /usr/bin/proptest /usr/bin/cam /usr/bin/gpiodetect /usr/bin/gpioinfo
 /usr/bin/gpioget /usr/bin/gpioset /usr/bin/gpiomon /usr/bin/gpiofind /usr/bin/v4l2-ctl
 /usr/bin/media-ctl"
+# Not on both releases: libglapi (gone in Mesa 25), gbm/dri_gbm.so (GBM's
+# backend since Mesa 24.3), the versioned libcamera and libgpiod.
 BASE_LIBS="/usr/lib/$ARCHDIR/dri/kms_swrast_dri.so /usr/lib/$ARCHDIR/dri/swrast_dri.so
 /usr/lib/$ARCHDIR/libEGL.so.1 /usr/lib/$ARCHDIR/libEGL_mesa.so.0 /usr/lib/$ARCHDIR/libgbm.so.1
 /usr/lib/$ARCHDIR/libGLESv2.so.2 /usr/lib/$ARCHDIR/libGLESv1_CM.so.1 /usr/lib/$ARCHDIR/libudev.so.1
-$(ls /usr/lib/$ARCHDIR/libOSMesa.so.8 /usr/lib/$ARCHDIR/libglapi.so.0 /usr/lib/$ARCHDIR/libcamera.so.0.* \
-	/usr/lib/$ARCHDIR/libcamera-base.so.0.* /usr/lib/$ARCHDIR/libgpiod.so.[0-9] 2>/dev/null | sort -u)"
+$( { ls /usr/lib/$ARCHDIR/libOSMesa.so.8 /usr/lib/$ARCHDIR/libglapi.so.0 /usr/lib/$ARCHDIR/gbm/dri_gbm.so /usr/lib/$ARCHDIR/libcamera.so.0.* \
+	/usr/lib/$ARCHDIR/libcamera-base.so.0.* /usr/lib/$ARCHDIR/libgpiod.so.[0-9] 2>/dev/null || true; } | sort -u)"
 BASE_DATA="/usr/share/glvnd/egl_vendor.d /usr/share/drirc.d /usr/share/libcamera
 /usr/lib/$ARCHDIR/libcamera /usr/lib/udev/rules.d"
 
