@@ -50,7 +50,7 @@ static int setup(void **state)
 const char *__lsan_default_suppressions(void);
 const char *__lsan_default_suppressions(void)
 {
-	return "leak:libOSMesa\nleak:libLLVM\nleak:display_osmesa_new\n";
+	return "leak:libOSMesa\nleak:libLLVM\nleak:display_osmesa_new\nleak:display_egl_new\n";
 }
 
 static int teardown(void **state)
