@@ -15,6 +15,9 @@
 # PATH), VM_TIMEOUT (seconds per script, default 240) and VM_RUN_FLAGS
 # (extra tests/vm/run.sh options) are passed on.
 set -u
+# The offscreen backend: osmesa, or egl-headless where Mesa has no OSMesa
+# (the Makefile sets OFFSCREEN_BACKEND from what the build has).
+offscreen=${OFFSCREEN_BACKEND:-osmesa}
 out=$1
 shift
 # The display first, then the buttons and the camera on it.
@@ -28,7 +31,7 @@ mkdir -p "$out/ref"
 ref() { # NAME SIZE [ARGS]...
 	name=$1 size=$2
 	shift 2
-	$kiosk -q --backend osmesa --size "$size" --matcap matcaps/gold.png --lod-pixels 0 "$@" \
+	$kiosk -q --backend $offscreen --size "$size" --matcap matcaps/gold.png --lod-pixels 0 "$@" \
 		--output "$out/ref/$name.png" || echo "not ok reference $name rendered"
 }
 ref knot-1024x768 1024x768
