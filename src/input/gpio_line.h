@@ -6,7 +6,7 @@
 #ifndef MK_GPIO_LINE_H
 #define MK_GPIO_LINE_H
 
-#include "input/gpio.h"
+#include "input/wiring.h"
 
 #include <stdbool.h>
 #include <stdint.h>
