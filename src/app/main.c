@@ -174,8 +174,8 @@ static int run_live(const struct options *o, char **argv, struct content *s, str
 		k.argc++;
 	kiosk_configure(&k, o, (uint64_t)(now_ms() * 1e6));
 	ret = open_inputs(o, &k);
-	/* OSMesa has no EGL, and so no camera. */
-	k.camera = ret ? NULL : camera_feed_new(o, &d->gl, strcmp(d->name, "osmesa") != 0);
+	/* No EGL context (OSMesa), no camera. */
+	k.camera = ret ? NULL : camera_feed_new(o, &d->gl, d->gl.caps.egl_display != NULL);
 	if (!ret)
 		ret = kiosk_run(&k);
 	if (o->stats)

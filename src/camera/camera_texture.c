@@ -14,8 +14,8 @@
 /* Buffers a camera hands out at a time, at most (libcamera gives 4 to 8). */
 #define IMPORT_SLOTS 16
 
-static const char *const kind_defines[] = {"#define CAMERA_RGB\n", "#define CAMERA_SEMI\n",
-					   "#define CAMERA_PLANAR\n", "#define CAMERA_PACKED\n"};
+static const char *const kind_defines[] = {"CAMERA_RGB", "CAMERA_SEMI", "CAMERA_PLANAR",
+					   "CAMERA_PACKED"};
 
 struct program {
 	GLuint id;
@@ -56,38 +56,6 @@ struct camera_texture {
 	bool drawn, said_shrunk;
 };
 
-static int compile(const struct gl *gl, GLenum type, const char *dir, const char *defines,
-		   const char *file, GLuint *out)
-{
-	/* highp where the GPU has it: the packed formats compute pixel
-	 * columns, which mediump cannot count past 2048. */
-	const char *precision = type == GL_FRAGMENT_SHADER ? "#ifdef GL_FRAGMENT_PRECISION_HIGH\n"
-							     "precision highp float;\n#else\n"
-							     "precision mediump float;\n#endif\n"
-							   : "";
-	char *body = shader_read(dir, file);
-	const char *parts[4] = {"#version 100\n", precision, defines, body};
-	char info[2048] = "";
-	GLint ok = 0;
-
-	if (!body)
-		return -EINVAL;
-	*out = gl->CreateShader(type);
-	gl->ShaderSource(*out, 4, parts, NULL);
-	gl->CompileShader(*out);
-	gl->GetShaderiv(*out, GL_COMPILE_STATUS, &ok);
-	free(body);
-	if (ok)
-		return 0;
-	gl->GetShaderInfoLog(*out, sizeof(info), NULL, info);
-	for (char *p = info; *p; p++)
-		if (*p == '\n')
-			*p = ' ';
-	log_err("%s/%s: compile failed: %s", dir ? dir : "shaders", file, info);
-	gl->DeleteShader(*out);
-	return -EINVAL;
-}
-
 static void find_locations(const struct gl *gl, struct program *p)
 {
 	char name[32];
@@ -111,56 +79,36 @@ static void find_locations(const struct gl *gl, struct program *p)
 
 static struct program *program_get(struct camera_texture *t, enum camera_kind kind)
 {
-	const struct gl *gl = t->gl;
 	struct program *p = &t->programs[kind];
-	GLuint vs = 0, fs = 0;
-	GLint ok = 0;
+	/* highp where the GPU has it: the packed formats compute pixel
+	 * columns, which mediump cannot count past 2048. */
+	struct shader_source src = {.dir = t->shader_dir,
+				    .precision = "#ifdef GL_FRAGMENT_PRECISION_HIGH\n"
+						 "precision highp float;\n#else\n"
+						 "precision mediump float;\n#endif\n",
+				    .vertex = {"camera.vert"},
+				    .fragment = {"camera.frag"},
+				    .attributes = {"a_position"}};
+	GLuint id;
 
 	if (p->id)
 		return p;
-	if (compile(gl, GL_VERTEX_SHADER, t->shader_dir, "", "camera.vert", &vs) ||
-	    compile(gl, GL_FRAGMENT_SHADER, t->shader_dir, kind_defines[kind], "camera.frag", &fs))
-		goto out;
-	p->id = gl->CreateProgram();
-	gl->AttachShader(p->id, vs);
-	gl->AttachShader(p->id, fs);
-	gl->BindAttribLocation(p->id, 0, "a_position");
-	gl->LinkProgram(p->id);
-	gl->GetProgramiv(p->id, GL_LINK_STATUS, &ok);
-	if (!ok) {
-		log_err("camera.vert+camera.frag: link failed");
-		gl->DeleteProgram(p->id);
-		p->id = 0;
-		goto out;
-	}
-	find_locations(gl, p);
-out:
-	if (vs)
-		gl->DeleteShader(vs);
-	if (fs)
-		gl->DeleteShader(fs);
-	return p->id ? p : NULL;
-}
-
-static bool has_extension(const char *list, const char *name)
-{
-	size_t n = strlen(name);
-
-	for (const char *p = list; p && (p = strstr(p, name)); p += n)
-		if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0'))
-			return true;
-	return false;
+	if (shader_source_define(&src, kind_defines[kind]) ||
+	    shader_program_build(t->gl, &src, &id))
+		return NULL;
+	p->id = id;
+	find_locations(t->gl, p);
+	return p;
 }
 
 /* The import needs an EGL context (not OSMesa's), the dmabuf import
  * extension and GL_OES_EGL_image. */
 static struct egl_import *import_new(const struct gl *gl)
 {
-	EGLDisplay dpy = eglGetCurrentDisplay();
-	const char *renderer = (const char *)gl->GetString(GL_RENDERER);
+	const struct gl_caps *caps = &gl->caps;
 	struct egl_import *im;
 
-	if (dpy == EGL_NO_DISPLAY) {
+	if (!caps->egl_display) {
 		log_debug("camera: no EGL context, so no dmabuf import");
 		return NULL;
 	}
@@ -168,21 +116,19 @@ static struct egl_import *import_new(const struct gl *gl)
 	 * Mesa's kms_swrast takes an import it cannot map (the kernel does
 	 * not map imported buffers for it): llvmpipe then reads through a
 	 * null pointer. */
-	if (renderer && (strstr(renderer, "llvmpipe") || strstr(renderer, "softpipe") ||
-			 strstr(renderer, "swrast"))) {
+	if (caps->software) {
 		log_debug("camera: software rendering (%s): frames are uploaded, not imported",
-			  renderer);
+			  (const char *)gl->GetString(GL_RENDERER));
 		return NULL;
 	}
-	if (!has_extension(eglQueryString(dpy, EGL_EXTENSIONS), "EGL_EXT_image_dma_buf_import") ||
-	    !has_extension((const char *)gl->GetString(GL_EXTENSIONS), "GL_OES_EGL_image")) {
+	if (!caps->dmabuf_import || !caps->egl_image) {
 		log_debug("camera: EGL_EXT_image_dma_buf_import or GL_OES_EGL_image missing");
 		return NULL;
 	}
 	im = calloc(1, sizeof(*im));
 	if (!im)
 		return NULL;
-	im->dpy = dpy;
+	im->dpy = caps->egl_display;
 	im->create = (PFNEGLCREATEIMAGEKHRPROC)eglGetProcAddress("eglCreateImageKHR");
 	im->destroy = (PFNEGLDESTROYIMAGEKHRPROC)eglGetProcAddress("eglDestroyImageKHR");
 	im->target =

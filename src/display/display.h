@@ -1,6 +1,7 @@
 /* Where the pixels go. One small file per backend fills this struct, the
  * way kmscube splits drm-legacy.c and drm-atomic.c behind one interface;
- * the renderer only ever sees the GL table and the size. */
+ * the renderer only ever sees the GL table (with what the context can
+ * do, gl.caps, read once when the backend made it) and the size. */
 #ifndef MK_DISPLAY_H
 #define MK_DISPLAY_H
 

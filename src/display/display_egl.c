@@ -33,7 +33,7 @@ static EGLDisplay egl_open_device(bool want_hardware)
 		return EGL_NO_DISPLAY;
 	for (EGLint i = 0; i < n; i++) {
 		const char *ext = device_string(devs[i], EGL_EXTENSIONS);
-		bool software = egl_has_extension(ext, "EGL_MESA_device_software");
+		bool software = gl_extension_listed(ext, "EGL_MESA_device_software");
 
 		if (software != want_hardware)
 			return get_display(EGL_PLATFORM_DEVICE_EXT, devs[i], NULL);
@@ -48,12 +48,12 @@ static EGLDisplay egl_open_headless(void)
 	    (PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
 	EGLDisplay dpy = EGL_NO_DISPLAY;
 
-	if (egl_has_extension(client, "EGL_EXT_platform_device"))
+	if (gl_extension_listed(client, "EGL_EXT_platform_device"))
 		dpy = egl_open_device(true);
 	if (dpy == EGL_NO_DISPLAY && get_display &&
-	    egl_has_extension(client, "EGL_MESA_platform_surfaceless"))
+	    gl_extension_listed(client, "EGL_MESA_platform_surfaceless"))
 		dpy = get_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, NULL);
-	if (dpy == EGL_NO_DISPLAY && egl_has_extension(client, "EGL_EXT_platform_device"))
+	if (dpy == EGL_NO_DISPLAY && gl_extension_listed(client, "EGL_EXT_platform_device"))
 		dpy = egl_open_device(false);
 	return dpy;
 }
@@ -74,8 +74,8 @@ static int egl_make_context(struct display_egl *e)
 		return -ENOSYS;
 	/* Surfaceless contexts need no config where KHR_no_config_context is
 	 * offered; otherwise take any ES2-capable one, we draw into an FBO. */
-	if (!egl_has_extension(eglQueryString(e->dpy, EGL_EXTENSIONS),
-			       "EGL_KHR_no_config_context") &&
+	if (!gl_extension_listed(eglQueryString(e->dpy, EGL_EXTENSIONS),
+				 "EGL_KHR_no_config_context") &&
 	    (!eglChooseConfig(e->dpy, config_attribs, &config, 1, &n) || n < 1)) {
 		log_err("egl-headless: no OpenGL ES 2.0 config");
 		return -ENODEV;
@@ -93,11 +93,9 @@ static int egl_make_context(struct display_egl *e)
 static int egl_make_fbo(struct display_egl *e)
 {
 	struct gl *gl = &e->base.gl;
-	const char *ext = (const char *)gl->GetString(GL_EXTENSIONS);
 	/* 16-bit depth is all core ES2 promises; take 24 where offered so the
 	 * result matches the software reference more closely. */
-	GLenum depth_format = ext && strstr(ext, "GL_OES_depth24") ? 0x81A6 /* DEPTH24_OES */
-								   : GL_DEPTH_COMPONENT16;
+	GLenum depth_format = gl->caps.depth24 ? 0x81A6 /* DEPTH24_OES */ : GL_DEPTH_COMPONENT16;
 
 	gl->GenTextures(1, &e->color);
 	gl->BindTexture(GL_TEXTURE_2D, e->color);
@@ -174,7 +172,10 @@ struct display *display_egl_new(const struct display_config *cfg)
 			"libegl-mesa0)");
 		goto fail;
 	}
-	if (egl_make_context(e) || gl_load(&e->base.gl, egl_proc, NULL) || egl_make_fbo(e))
+	if (egl_make_context(e) || gl_load(&e->base.gl, egl_proc, NULL))
+		goto fail;
+	egl_read_caps(e->dpy, &e->base.gl.caps);
+	if (egl_make_fbo(e))
 		goto fail;
 	if (cfg->samples > 0)
 		log_warn("egl-headless: OpenGL ES 2.0 FBOs have no MSAA, drawing without");

@@ -139,7 +139,10 @@ static int egl_init(struct display_kms *k)
 			egl_error_string(eglGetError()));
 		return -ENODEV;
 	}
-	return gl_load(&k->base.gl, egl_proc, NULL);
+	if (gl_load(&k->base.gl, egl_proc, NULL))
+		return -ENOSYS;
+	egl_read_caps(k->dpy, &k->base.gl.caps);
+	return 0;
 }
 
 static void on_flip(int fd, unsigned int frame, unsigned int sec, unsigned int usec, void *data)

@@ -2,21 +2,6 @@
 
 #include <string.h>
 
-bool egl_has_extension(const char *list, const char *name)
-{
-	size_t n = strlen(name);
-
-	while (list && *list) {
-		const char *end = strchr(list, ' ');
-		size_t len = end ? (size_t)(end - list) : strlen(list);
-
-		if (len == n && memcmp(list, name, n) == 0)
-			return true;
-		list = end ? end + 1 : NULL;
-	}
-	return false;
-}
-
 void *egl_proc(void *ctx, const char *name)
 {
 	void (*p)(void) = eglGetProcAddress(name);
@@ -25,6 +10,13 @@ void *egl_proc(void *ctx, const char *name)
 	(void)ctx;
 	memcpy(&v, &p, sizeof(v));
 	return v;
+}
+
+void egl_read_caps(EGLDisplay dpy, struct gl_caps *caps)
+{
+	caps->egl_display = dpy;
+	caps->dmabuf_import = gl_extension_listed(eglQueryString(dpy, EGL_EXTENSIONS),
+						  "EGL_EXT_image_dma_buf_import");
 }
 
 const char *egl_error_string(EGLint err)

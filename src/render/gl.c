@@ -4,6 +4,33 @@
 #include <errno.h>
 #include <string.h>
 
+bool gl_extension_listed(const char *list, const char *name)
+{
+	size_t n = strlen(name);
+
+	while (list && *list) {
+		const char *end = strchr(list, ' ');
+		size_t len = end ? (size_t)(end - list) : strlen(list);
+
+		if (len == n && memcmp(list, name, n) == 0)
+			return true;
+		list = end ? end + 1 : NULL;
+	}
+	return false;
+}
+
+static void read_caps(const struct gl *gl, struct gl_caps *caps)
+{
+	const char *name = (const char *)gl->GetString(GL_RENDERER);
+	const char *ext = (const char *)gl->GetString(GL_EXTENSIONS);
+
+	caps->software = name && (strstr(name, "llvmpipe") || strstr(name, "softpipe") ||
+				  strstr(name, "swrast"));
+	caps->element_index_uint = gl_extension_listed(ext, "GL_OES_element_index_uint");
+	caps->depth24 = gl_extension_listed(ext, "GL_OES_depth24");
+	caps->egl_image = gl_extension_listed(ext, "GL_OES_EGL_image");
+}
+
 int gl_load(struct gl *gl, gl_get_proc_fn get_proc, void *ctx)
 {
 	void *p;
@@ -18,5 +45,6 @@ int gl_load(struct gl *gl, gl_get_proc_fn get_proc, void *ctx)
 	memcpy(&gl->name, &p, sizeof(p));
 	GL_FUNCS(GL_LOAD)
 #undef GL_LOAD
+	read_caps(gl, &gl->caps);
 	return 0;
 }

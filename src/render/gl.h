@@ -8,6 +8,7 @@
 #define MK_GL_H
 
 #include <GLES2/gl2.h>
+#include <stdbool.h>
 
 #define GL_FUNCS(X)                                                                                \
 	X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                                                   \
@@ -74,16 +75,39 @@
 	X(PFNGLVERTEXATTRIBPOINTERPROC, VertexAttribPointer)                                       \
 	X(PFNGLVIEWPORTPROC, Viewport)
 
+/* What the context can do, read once when it is made: the renderer and
+ * the camera pass look here, never at extension strings, renderer names
+ * or which display backend made the context. */
+struct gl_caps {
+	/* A CPU rasteriser (llvmpipe, softpipe, swrast): it emulates mediump,
+	 * and reads imported buffers on the CPU anyway. */
+	bool software;
+	bool element_index_uint; /* GL_OES_element_index_uint: 32-bit indices */
+	bool depth24;		 /* GL_OES_depth24 renderbuffers */
+	bool egl_image;		 /* GL_OES_EGL_image: a texture from an EGLImage */
+	/* Set by the EGL backends only: the context's EGLDisplay (NULL: not
+	 * an EGL context, as with OSMesa), and whether it imports dmabufs
+	 * (EGL_EXT_image_dma_buf_import). */
+	void *egl_display;
+	bool dmabuf_import;
+};
+
 struct gl {
 #define GL_MEMBER(type, name) type name;
 	GL_FUNCS(GL_MEMBER)
 #undef GL_MEMBER
+	struct gl_caps caps;
 };
 
 typedef void *(*gl_get_proc_fn)(void *ctx, const char *name);
 
-/* Fill every entry through get_proc("gl" + name). Returns 0, or -ENOSYS
- * after logging the first entry point the driver does not provide. */
+/* Fill every entry through get_proc("gl" + name), then the GL side of
+ * caps (the context must be current). Returns 0, or -ENOSYS after
+ * logging the first entry point the driver does not provide. */
 int gl_load(struct gl *gl, gl_get_proc_fn get_proc, void *ctx);
+
+/* Whether name is one of the space-separated names in list (GL's or
+ * EGL's extension string); a NULL list has none. */
+bool gl_extension_listed(const char *list, const char *name);
 
 #endif

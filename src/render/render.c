@@ -8,9 +8,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define FOV_Y_DEGREES 30.0
-#define FIT_MARGIN    1.08
-
 /* The lit mode's light, fixed to the camera, from where the shipped
  * matcaps' key light is (src/render/bake.c), so that the two read alike. */
 static const float light_dir[3] = {-0.5499f, 0.6198f, 0.5599f};
@@ -31,7 +28,7 @@ struct renderer {
 	struct program *beside;	 /* lit = beside: the lit program, drawn right */
 	enum shading_mode mode;
 	bool ortho, mode_set;
-	bool highp;	     /* every float highp (PRECISION_HIGHP): see software_renderer */
+	bool highp;	     /* every float highp (PRECISION_HIGHP): see renderer_new */
 	struct material mat; /* the features and their numbers; no images */
 	GLuint vbo[SHADER_ATTR_COUNT], ibo, matcap, detail, ramp;
 	GLuint matcap_override; /* another's texture as the matcap (the camera's); 0: none */
@@ -41,17 +38,6 @@ struct renderer {
 	bool indexed;
 };
 
-/* A CPU rasteriser (llvmpipe, softpipe) emulates 16-bit mediump with
- * conversions: there highp is faster as well as exact (the mediump rows
- * of tests/bench/report/speed-error.md: about twice as slow). A GPU runs
- * mediump natively. */
-static bool software_renderer(const struct gl *gl)
-{
-	const char *name = (const char *)gl->GetString(GL_RENDERER);
-
-	return name && (strstr(name, "llvmpipe") || strstr(name, "softpipe"));
-}
-
 struct renderer *renderer_new(const struct gl *gl, const char *shader_dir)
 {
 	struct renderer *r = calloc(1, sizeof(*r));
@@ -60,7 +46,11 @@ struct renderer *renderer_new(const struct gl *gl, const char *shader_dir)
 		return NULL;
 	r->gl = gl;
 	r->shader_dir = shader_dir;
-	r->highp = software_renderer(gl);
+	/* A CPU rasteriser emulates 16-bit mediump with conversions: there
+	 * highp is faster as well as exact (the mediump rows of
+	 * tests/bench/report/speed-error.md: about twice as slow). A GPU runs
+	 * mediump natively. */
+	r->highp = gl->caps.software;
 	gl->GenBuffers(SHADER_ATTR_COUNT, r->vbo);
 	gl->GenBuffers(1, &r->ibo);
 	gl->GenTextures(1, &r->matcap);
@@ -98,17 +88,6 @@ void renderer_free(struct renderer *r)
 	free(r);
 }
 
-static bool has_gl_extension(const struct gl *gl, const char *name)
-{
-	const char *ext = (const char *)gl->GetString(GL_EXTENSIONS);
-	size_t n = strlen(name);
-
-	for (const char *p = ext; p && (p = strstr(p, name)); p += n)
-		if ((p == ext || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0'))
-			return true;
-	return false;
-}
-
 /* Core GLES2 indexes with 16 bits; 32-bit indices need an extension that
  * some SBC GPUs lack, and then the mesh is drawn unindexed. */
 static int upload_indices(struct renderer *r, const struct mesh *m)
@@ -131,7 +110,7 @@ static int upload_indices(struct renderer *r, const struct mesh *m)
 		r->index_type = GL_UNSIGNED_SHORT;
 		return 0;
 	}
-	if (has_gl_extension(gl, "GL_OES_element_index_uint")) {
+	if (gl->caps.element_index_uint) {
 		gl->BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)m->index_count * 4, m->indices,
 			       GL_STATIC_DRAW);
 		r->index_type = GL_UNSIGNED_INT;
@@ -275,24 +254,22 @@ static void find_uniforms(const struct gl *gl, struct program *p)
 	p->shininess = gl->GetUniformLocation(p->id, "u_shininess");
 }
 
-#define HIGHP_DEFINE "#define PRECISION_HIGHP 1\n"
-
-/* Lit programs do not depend on the mapping mode: one per camera. */
+/* Lit programs do not depend on the mapping mode: one per camera. A
+ * program that fails to build is not kept, so the next call tries again
+ * and the one in use stays. */
 static struct program *program_get(struct renderer *r, enum shading_mode mode, bool ortho, bool lit)
 {
 	struct program *p = &r->programs[lit ? SHADING_VIEW : mode][ortho][lit];
-	char defines[512];
-	int n;
+	struct shader_source src;
+	GLuint id;
 
 	if (p->id)
 		return p;
-	n = material_defines(r->mat.features, mode, ortho, lit, defines, sizeof(defines));
-	if (n >= 0 && r->highp && (size_t)n + sizeof(HIGHP_DEFINE) <= sizeof(defines))
-		strcat(defines, HIGHP_DEFINE);
-	else if (r->highp)
-		n = -ENOSPC;
-	if (n < 0 || shader_build(r->gl, r->shader_dir, defines, &p->id))
+	if (shader_source_matcap(&src, r->shader_dir, r->mat.features, mode, ortho, lit,
+				 r->highp) ||
+	    shader_program_build(r->gl, &src, &id))
 		return NULL;
+	p->id = id;
 	find_uniforms(r->gl, p);
 	return p;
 }
@@ -323,38 +300,18 @@ void render_matrices(const struct view *v, int width, int height, float modelvie
 		     float projection[16])
 {
 	bool quarter = v->rotation == 90 || v->rotation == 270;
-	double aspect = quarter ? (double)height / width : (double)width / height;
-	double half = FOV_Y_DEGREES / 2.0 * M_PI / 180.0;
-	double half_min = fmin(half, atan(tan(half) * aspect));
-	double dist = FIT_MARGIN / sin(half_min);
 	float rot[16], move[16], proj[16], panel[16];
+	struct sphere_fit fit;
 
+	sphere_fit_init(&fit, quarter ? (double)height / width : (double)width / height);
 	mat4_from_quat(rot, v->orientation);
-	mat4_translate(move, 0, 0, -dist);
+	mat4_translate(move, 0, 0, -fit.distance);
 	mat4_multiply(modelview, move, rot);
-	if (v->ortho) {
-		double sx = aspect > 1 ? aspect : 1, sy = aspect > 1 ? 1 : 1 / aspect;
-
-		mat4_ortho(proj, -sx, sx, -sy, sy, dist - 1.5, dist + 1.5);
-	} else {
-		mat4_perspective(proj, 2.0 * half, aspect, dist - 1.5, dist + 1.5);
-	}
+	sphere_fit_projection(&fit, v->ortho, proj);
 	/* A portrait panel turns the picture, not the scanout, so it works
 	 * with every driver and plane. */
 	mat4_rotate_z(panel, v->rotation);
 	mat4_multiply(projection, panel, proj);
-}
-
-double render_pixels_per_unit(int width, int height)
-{
-	double aspect = (double)width / height, short_side = width < height ? width : height;
-	double half = FOV_Y_DEGREES / 2.0 * M_PI / 180.0;
-	double half_min = fmin(half, atan(tan(half) * aspect));
-	double dist = FIT_MARGIN / sin(half_min);
-
-	/* The short side spans 2 z tan(half_min) model units at depth z; the
-	 * nearest point of the unit sphere is at dist - 1. */
-	return short_side / 2.0 / ((dist - 1.0) * tan(half_min));
 }
 
 static void bind_texture(const struct gl *gl, GLint uniform, int unit, GLuint tex)

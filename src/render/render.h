@@ -56,10 +56,5 @@ void renderer_get_stats(const struct renderer *r, struct renderer_stats *out);
 /* The model-view and projection matrices the renderer uses (for tests). */
 void render_matrices(const struct view *v, int width, int height, float modelview[16],
 		     float projection[16]);
-/* Pixels per model unit at the front of the unit sphere in a width x
- * height frame: the most any part of a fitted model is magnified (by the
- * perspective camera; the orthographic one magnifies less). A mesh's
- * density is judged by it. */
-double render_pixels_per_unit(int width, int height);
 
 #endif

@@ -1,6 +1,7 @@
 #include "render/shader.h"
 #include "util/log.h"
 #include "render/shader_files.h"
+#include "scene/material.h"
 
 #include <errno.h>
 #include <stdbool.h>
@@ -44,96 +45,189 @@ char *shader_read(const char *dir, const char *name)
 	return NULL;
 }
 
-/* #line gives mapping.glsl the source number 1, the stage's file 2 and
- * material.glsl (fragment stage only) 3, so the driver's "1:12" or "2:40"
- * can be read back to a file and a line. */
-static void log_failure(const struct gl *gl, GLuint obj, bool is_program, const char *dir,
-			const char *file)
+int shader_source_define(struct shader_source *s, const char *name)
 {
-	char log[4096] = "";
-
-	if (is_program)
-		gl->GetProgramInfoLog(obj, sizeof(log), NULL, log);
-	else
-		gl->GetShaderInfoLog(obj, sizeof(log), NULL, log);
-	for (char *p = log; *p; p++)
-		if (*p == '\n' && p[1])
-			*p = ' ';
-	log_err("%s/%s: %s failed (source 1 is mapping.glsl, 2 is %s, 3 is material.glsl): %s",
-		dir ? dir : "shaders", file, is_program ? "link" : "compile", file, log);
+	if (s->define_count >= SHADER_MAX_DEFINES)
+		return -ENOSPC;
+	s->defines[s->define_count++] = name;
+	return 0;
 }
 
-static int compile(const struct gl *gl, GLenum type, const char *dir, const char *defines,
-		   const char *file, GLuint *out)
+int shader_source_matcap(struct shader_source *s, const char *dir, unsigned features,
+			 enum shading_mode mode, bool ortho, bool lit, bool highp)
 {
-	bool fragment = type == GL_FRAGMENT_SHADER;
-	const char *precision = fragment ? "precision mediump float;\n" : "";
-	char header[1024];
-	char *mapping = shader_read(dir, "mapping.glsl");
-	char *material = fragment ? shader_read(dir, "material.glsl") : NULL;
-	char *body = shader_read(dir, file);
-	const char *parts[6];
-	int n = 0;
-	GLint ok = 0;
-	int ret = -EINVAL;
+	static const struct {
+		unsigned feature;
+		const char *name;
+	} feature_defines[] = {{MATERIAL_IRIDESCENCE, "IRIDESCENCE"},
+			       {MATERIAL_RAMP, "IRIDESCENCE_RAMP"},
+			       {MATERIAL_DETAIL, "DETAIL_MAP"},
+			       {MATERIAL_DETAIL_NORMAL, "DETAIL_NORMAL"}};
+	int ret;
 
-	if (!mapping || !body || (fragment && !material))
-		goto out;
-	snprintf(header, sizeof(header), "#version 100\n%s%s#line 1 1\n", precision, defines);
-	parts[n++] = header;
-	parts[n++] = mapping;
-	if (fragment) {
-		parts[n++] = "#line 1 3\n";
-		parts[n++] = material;
-	}
-	parts[n++] = "#line 1 2\n";
-	parts[n++] = body;
-	*out = gl->CreateShader(type);
-	gl->ShaderSource(*out, n, parts, NULL);
-	gl->CompileShader(*out);
-	gl->GetShaderiv(*out, GL_COMPILE_STATUS, &ok);
-	if (!ok) {
-		log_failure(gl, *out, false, dir, file);
-		gl->DeleteShader(*out);
-		goto out;
-	}
-	ret = 0;
-out:
-	free(mapping);
-	free(material);
-	free(body);
+	*s = (struct shader_source){.dir = dir,
+				    .precision = "precision mediump float;\n",
+				    .vertex = {"mapping.glsl", "matcap.vert"},
+				    .fragment = {"mapping.glsl", "material.glsl", "matcap.frag"},
+				    .attributes = {[SHADER_ATTR_POSITION] = "a_position",
+						   [SHADER_ATTR_NORMAL] = "a_normal",
+						   [SHADER_ATTR_UV] = "a_uv",
+						   [SHADER_ATTR_TANGENT] = "a_tangent"}};
+	/* These read the normal per fragment, which sem-vertex has not. */
+	if (mode == SHADING_SEM_VERTEX &&
+	    (lit || (features & (MATERIAL_IRIDESCENCE | MATERIAL_DETAIL_NORMAL))))
+		mode = SHADING_SEM_FRAGMENT;
+	ret = shader_source_define(s, shading_mode_macro(mode));
+	if (!ret && ortho)
+		ret = shader_source_define(s, "CAMERA_ORTHO");
+	for (size_t i = 0; i < sizeof(feature_defines) / sizeof(feature_defines[0]); i++)
+		if (!ret && (features & feature_defines[i].feature))
+			ret = shader_source_define(s, feature_defines[i].name);
+	if (!ret && lit)
+		ret = shader_source_define(s, "LIT");
+	if (!ret && highp)
+		ret = shader_source_define(s, "PRECISION_HIGHP");
 	return ret;
 }
 
-int shader_build(const struct gl *gl, const char *dir, const char *defines, GLuint *program)
+static const char *const *stage_files(const struct shader_source *s, bool fragment)
 {
-	GLuint vs = 0, fs = 0;
-	GLint ok = 0;
-	int ret = -EINVAL;
+	return fragment ? s->fragment : s->vertex;
+}
 
-	if (compile(gl, GL_VERTEX_SHADER, dir, defines, "matcap.vert", &vs) ||
-	    compile(gl, GL_FRAGMENT_SHADER, dir, defines, "matcap.frag", &fs))
-		goto out;
-	*program = gl->CreateProgram();
-	gl->AttachShader(*program, vs);
-	gl->AttachShader(*program, fs);
-	/* Fixed locations: the renderer enables only what a program reads. */
-	gl->BindAttribLocation(*program, SHADER_ATTR_POSITION, "a_position");
-	gl->BindAttribLocation(*program, SHADER_ATTR_NORMAL, "a_normal");
-	gl->BindAttribLocation(*program, SHADER_ATTR_UV, "a_uv");
-	gl->BindAttribLocation(*program, SHADER_ATTR_TANGENT, "a_tangent");
-	gl->LinkProgram(*program);
-	gl->GetProgramiv(*program, GL_LINK_STATUS, &ok);
-	if (!ok) {
-		log_failure(gl, *program, true, dir, "matcap.vert+matcap.frag");
-		gl->DeleteProgram(*program);
-		goto out;
+/* The stage's own file: its last, after what it shares. */
+static const char *main_file(const char *const *files)
+{
+	int i = 0;
+
+	while (i + 1 < SHADER_MAX_FILES && files[i + 1])
+		i++;
+	return files[i];
+}
+
+/* One stage's text, as struct shader_source says. NULL after logging. */
+static char *stage_text(const struct shader_source *s, bool fragment)
+{
+	const char *const *files = stage_files(s, fragment);
+	char *text = NULL, *body;
+	size_t size = 0;
+	FILE *f = open_memstream(&text, &size);
+	bool ok = true;
+
+	if (!f) {
+		log_err("shader: no memory for %s", main_file(files));
+		return NULL;
 	}
-	ret = 0;
-out:
+	fputs("#version 100\n", f);
+	if (fragment && s->precision)
+		fputs(s->precision, f);
+	for (int i = 0; i < s->define_count; i++)
+		fprintf(f, "#define %s 1\n", s->defines[i]);
+	for (int i = 0; ok && i < SHADER_MAX_FILES && files[i]; i++) {
+		body = shader_read(s->dir, files[i]);
+		if (body)
+			fprintf(f, "#line 1 %d\n%s", i + 1, body);
+		ok = body != NULL;
+		free(body);
+	}
+	ok = fclose(f) == 0 && ok;
+	if (!ok) {
+		free(text);
+		text = NULL;
+	}
+	return text;
+}
+
+/* The driver's log goes on one line of the journal. */
+static void one_line(char *log)
+{
+	for (char *p = log; *p; p++)
+		if (*p == '\n')
+			*p = p[1] ? ' ' : '\0';
+}
+
+static void log_compile_failure(const struct gl *gl, GLuint shader, const struct shader_source *s,
+				bool fragment)
+{
+	const char *const *files = stage_files(s, fragment);
+	char log[4096] = "", names[256] = "";
+	size_t n = 0;
+
+	gl->GetShaderInfoLog(shader, sizeof(log), NULL, log);
+	one_line(log);
+	for (int i = 0; i < SHADER_MAX_FILES && files[i] && n < sizeof(names); i++)
+		n += (size_t)snprintf(names + n, sizeof(names) - n, "%s%d is %s", i ? ", " : "",
+				      i + 1, files[i]);
+	log_err("%s/%s: compile failed (source %s): %s", s->dir ? s->dir : "shaders",
+		main_file(files), names, log);
+}
+
+static void log_link_failure(const struct gl *gl, GLuint program, const struct shader_source *s)
+{
+	char log[4096] = "";
+
+	gl->GetProgramInfoLog(program, sizeof(log), NULL, log);
+	one_line(log);
+	log_err("%s/%s+%s: link failed: %s", s->dir ? s->dir : "shaders", main_file(s->vertex),
+		main_file(s->fragment), log);
+}
+
+/* *out is the shader made, even when it failed: the caller deletes it. */
+static int compile_stage(const struct gl *gl, const struct shader_source *s, bool fragment,
+			 GLuint *out)
+{
+	char *text = stage_text(s, fragment);
+	const char *parts[1] = {text};
+	GLint ok = 0;
+
+	if (!text)
+		return -EINVAL;
+	*out = gl->CreateShader(fragment ? GL_FRAGMENT_SHADER : GL_VERTEX_SHADER);
+	gl->ShaderSource(*out, 1, parts, NULL);
+	gl->CompileShader(*out);
+	gl->GetShaderiv(*out, GL_COMPILE_STATUS, &ok);
+	free(text);
+	if (!ok)
+		log_compile_failure(gl, *out, s, fragment);
+	return ok ? 0 : -EINVAL;
+}
+
+/* *out is the program made, even when it failed: the caller deletes it. */
+static int link_program(const struct gl *gl, const struct shader_source *s, GLuint vs, GLuint fs,
+			GLuint *out)
+{
+	GLint ok = 0;
+
+	*out = gl->CreateProgram();
+	gl->AttachShader(*out, vs);
+	gl->AttachShader(*out, fs);
+	for (int i = 0; i < SHADER_ATTR_COUNT; i++)
+		if (s->attributes[i])
+			gl->BindAttribLocation(*out, (GLuint)i, s->attributes[i]);
+	gl->LinkProgram(*out);
+	gl->GetProgramiv(*out, GL_LINK_STATUS, &ok);
+	if (!ok)
+		log_link_failure(gl, *out, s);
+	return ok ? 0 : -EINVAL;
+}
+
+int shader_program_build(const struct gl *gl, const struct shader_source *s, GLuint *program)
+{
+	GLuint vs = 0, fs = 0, prog = 0;
+	int ret = compile_stage(gl, s, false, &vs);
+
+	if (!ret)
+		ret = compile_stage(gl, s, true, &fs);
+	if (!ret)
+		ret = link_program(gl, s, vs, fs, &prog);
+	/* The program keeps what it needs of its shaders. */
 	if (vs)
 		gl->DeleteShader(vs);
 	if (fs)
 		gl->DeleteShader(fs);
+	if (ret && prog)
+		gl->DeleteProgram(prog);
+	if (!ret)
+		*program = prog;
 	return ret;
 }

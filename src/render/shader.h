@@ -1,9 +1,13 @@
-/* Compiling the shader variants: each program holds only the features its
- * scene uses, chosen by #define lines put before the sources. */
+/* The one shader builder: a program from a list of #defines and, per
+ * stage, the files that follow them. The renderer's matcap programs and
+ * the camera's conversion pass are both built here. */
 #ifndef MK_SHADER_H
 #define MK_SHADER_H
 
 #include "render/gl.h"
+#include "render/shading.h"
+
+#include <stdbool.h>
 
 /* Read a shader source: from dir when it is set (for development, so a
  * shader can be edited without a rebuild), else the built-in copy.
@@ -20,10 +24,38 @@ enum shader_attribute {
 	SHADER_ATTR_COUNT
 };
 
-/* Build a program from the vertex and fragment files, each preceded by
- * the #version line, the defines and mapping.glsl (and, for the fragment
- * stage, material.glsl). Returns 0 and the program, or -EINVAL after
- * printing the driver's log with file names. */
-int shader_build(const struct gl *gl, const char *dir, const char *defines, GLuint *program);
+#define SHADER_MAX_DEFINES 8
+#define SHADER_MAX_FILES   3
+
+/* What a program is made of. Each stage's text is the #version line, the
+ * precision statement (fragment stage only), "#define NAME 1" for each
+ * define, then the stage's files in order, each after a #line that gives
+ * it the next source number (1, 2, ...), so a driver's "2:40" reads as
+ * line 40 of the stage's second file; the log names them. */
+struct shader_source {
+	const char *dir;       /* NULL: the built-in copies */
+	const char *precision; /* NULL: the stage's default */
+	const char *defines[SHADER_MAX_DEFINES];
+	int define_count;
+	const char *vertex[SHADER_MAX_FILES]; /* file names, up to the first NULL */
+	const char *fragment[SHADER_MAX_FILES];
+	const char *attributes[SHADER_ATTR_COUNT]; /* bound at their index; NULL: none */
+};
+
+/* Add "#define name 1". Returns 0, or -ENOSPC when the list is full. */
+int shader_source_define(struct shader_source *s, const char *name);
+
+/* The matcap program for these material features (enum material_feature),
+ * mapping mode, camera and lit: sem-vertex becomes sem-fragment when a
+ * feature needs the normal per fragment; highp makes every float of the
+ * fragment stage highp where the GPU has it. Returns 0 or -ENOSPC. */
+int shader_source_matcap(struct shader_source *s, const char *dir, unsigned features,
+			 enum shading_mode mode, bool ortho, bool lit, bool highp);
+
+/* Compile and link. Returns 0 with the program in *program, or -EINVAL
+ * (-ENOMEM) after logging the driver's log once, naming the files; every
+ * shader and program made on the way is deleted exactly once, and
+ * *program is left as it was. */
+int shader_program_build(const struct gl *gl, const struct shader_source *s, GLuint *program);
 
 #endif

@@ -5,18 +5,17 @@
 
 static const char *const mode_names[SHADING_MODE_COUNT] = {"normal", "view", "sem-vertex",
 							   "sem-fragment"};
-static const char *const mode_defines[SHADING_MODE_COUNT] = {
-    "#define MODE_NORMAL 1\n", "#define MODE_VIEW 1\n", "#define MODE_SEM_VERTEX 1\n",
-    "#define MODE_SEM_FRAGMENT 1\n"};
+static const char *const mode_macros[SHADING_MODE_COUNT] = {"MODE_NORMAL", "MODE_VIEW",
+							    "MODE_SEM_VERTEX", "MODE_SEM_FRAGMENT"};
 
 const char *shading_mode_name(enum shading_mode mode)
 {
 	return mode < SHADING_MODE_COUNT ? mode_names[mode] : "?";
 }
 
-const char *shading_mode_define(enum shading_mode mode)
+const char *shading_mode_macro(enum shading_mode mode)
 {
-	return mode < SHADING_MODE_COUNT ? mode_defines[mode] : "";
+	return mode < SHADING_MODE_COUNT ? mode_macros[mode] : "MODE_UNKNOWN";
 }
 
 int shading_mode_parse(const char *name, enum shading_mode *out)

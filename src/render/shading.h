@@ -17,8 +17,8 @@ enum shading_mode {
 const char *shading_mode_name(enum shading_mode mode);
 /* Returns 0, or -EINVAL when name is not one of the modes. */
 int shading_mode_parse(const char *name, enum shading_mode *out);
-/* The #define that selects the mode in the shaders. */
-const char *shading_mode_define(enum shading_mode mode);
+/* The macro that selects the mode in the shaders (defined to 1). */
+const char *shading_mode_macro(enum shading_mode mode);
 
 #define SHADING_LIT_AMBIENT  0.15 /* LIT_AMBIENT */
 #define SHADING_LIT_SPECULAR 0.5  /* LIT_SPECULAR */

@@ -377,66 +377,103 @@ void push_tangent(Builder &b, const View &tan, size_t i, const Mat4 world, doubl
 	b.tangents.push_back((w < 0) != (det < 0) ? -1.0f : 1.0f);
 }
 
+// A primitive's vertex attributes, checked: an absent one has count 0.
+struct Attributes {
+	View pos, nrm, uv, tan;
+};
+
+int find_attribute(const tinygltf::Primitive &p, const char *key)
+{
+	auto it = p.attributes.find(key);
+	return it == p.attributes.end() ? -1 : it->second;
+}
+
+// An attribute the primitive may leave out: absent, or checked.
+bool check_optional(Builder &b, const tinygltf::Model &m, int index, int type, const int *types,
+		    const std::string &what, View *v)
+{
+	return index < 0 || check_accessor(b, m, index, type, types, what, v);
+}
+
+bool same_count(const View &v, size_t count)
+{
+	return v.count == 0 || v.count == count;
+}
+
+bool check_attributes(Builder &b, const tinygltf::Model &m, const tinygltf::Primitive &p,
+		      const std::string &what, Attributes *a)
+{
+	int ipos = find_attribute(p, "POSITION"), inrm = find_attribute(p, "NORMAL"),
+	    iuv = find_attribute(p, "TEXCOORD_0"), itan = find_attribute(p, "TANGENT");
+	if (ipos < 0)
+		return fail(b, what, "has no POSITION attribute");
+	if (!check_accessor(b, m, ipos, TINYGLTF_TYPE_VEC3, float_only, what + " POSITION",
+			    &a->pos) ||
+	    !check_optional(b, m, inrm, TINYGLTF_TYPE_VEC3, float_only, what + " NORMAL",
+			    &a->nrm) ||
+	    !check_optional(b, m, iuv, TINYGLTF_TYPE_VEC2, uv_types, what + " TEXCOORD_0",
+			    &a->uv) ||
+	    !check_optional(b, m, itan, TINYGLTF_TYPE_VEC4, float_only, what + " TANGENT", &a->tan))
+		return false;
+	size_t n = a->pos.count;
+	if (!same_count(a->nrm, n) || !same_count(a->uv, n) || !same_count(a->tan, n))
+		return fail(b, what, "attributes differ in count from POSITION");
+	if (b.positions.size() / 3 + n > 0x7fffffff)
+		return fail(b, what, "too many vertices in the model");
+	return true;
+}
+
+bool push_position(Builder &b, const View &pos, size_t i, const Mat4 world, const std::string &what)
+{
+	double x = read_component(pos, i, 0), y = read_component(pos, i, 1),
+	       z = read_component(pos, i, 2);
+	if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
+		return fail(b, what + " POSITION",
+			    "vertex " + std::to_string(i) + " is not a finite number");
+	for (int k = 0; k < 3; k++)
+		b.positions.push_back(world[k] * x + world[4 + k] * y + world[8 + k] * z +
+				      world[12 + k]);
+	return true;
+}
+
+// Through the normal matrix and normalised; +z where the model has no
+// normals, or this one has no length.
+void push_normal(Builder &b, const View *nrm, size_t i, const double nm[9])
+{
+	double n[3] = {0, 0, 1}, len = 0;
+	if (nrm) {
+		double a = read_component(*nrm, i, 0), c = read_component(*nrm, i, 1),
+		       d = read_component(*nrm, i, 2);
+		for (int k = 0; k < 3; k++)
+			n[k] = nm[k] * a + nm[3 + k] * c + nm[6 + k] * d;
+		len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+	}
+	for (int k = 0; k < 3; k++)
+		b.normals.push_back(len > 0 && std::isfinite(len) ? (float)(n[k] / len)
+								  : (float)(k == 2));
+}
+
 bool read_vertices(Builder &b, const tinygltf::Model &m, const tinygltf::Primitive &p,
 		   const Mat4 world, const std::string &what, Range *r)
 {
-	View pos, nrm, uv, tan;
-	auto find = [&](const char *key) {
-		auto it = p.attributes.find(key);
-		return it == p.attributes.end() ? -1 : it->second;
-	};
-	int ipos = find("POSITION"), inrm = find("NORMAL"), iuv = find("TEXCOORD_0"),
-	    itan = find("TANGENT");
-	if (ipos < 0)
-		return fail(b, what, "has no POSITION attribute");
-	if (!check_accessor(b, m, ipos, TINYGLTF_TYPE_VEC3, float_only, what + " POSITION", &pos))
+	Attributes a = {};
+	if (!check_attributes(b, m, p, what, &a))
 		return false;
-	if (inrm >= 0 &&
-	    !check_accessor(b, m, inrm, TINYGLTF_TYPE_VEC3, float_only, what + " NORMAL", &nrm))
-		return false;
-	if (iuv >= 0 &&
-	    !check_accessor(b, m, iuv, TINYGLTF_TYPE_VEC2, uv_types, what + " TEXCOORD_0", &uv))
-		return false;
-	if (itan >= 0 &&
-	    !check_accessor(b, m, itan, TINYGLTF_TYPE_VEC4, float_only, what + " TANGENT", &tan))
-		return false;
-	if ((inrm >= 0 && nrm.count != pos.count) || (iuv >= 0 && uv.count != pos.count) ||
-	    (itan >= 0 && tan.count != pos.count))
-		return fail(b, what, "attributes differ in count from POSITION");
-	if (b.positions.size() / 3 + pos.count > 0x7fffffff)
-		return fail(b, what, "too many vertices in the model");
 	double nm[9];
 	double det = normal_matrix(world, nm);
-	bool singular = det == 0.0;
-	r->has_normals = inrm >= 0 && !singular;
-	r->has_tangents = itan >= 0 && r->has_normals;
-	for (size_t i = 0; i < pos.count; i++) {
-		double x = read_component(pos, i, 0), y = read_component(pos, i, 1),
-		       z = read_component(pos, i, 2);
-		if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
-			return fail(b, what + " POSITION",
-				    "vertex " + std::to_string(i) + " is not a finite number");
-		for (int k = 0; k < 3; k++)
-			b.positions.push_back(world[k] * x + world[4 + k] * y + world[8 + k] * z +
-					      world[12 + k]);
-		double n[3] = {0, 0, 1}, len = 0;
-		if (r->has_normals) {
-			double a = read_component(nrm, i, 0), c = read_component(nrm, i, 1),
-			       d = read_component(nrm, i, 2);
-			for (int k = 0; k < 3; k++)
-				n[k] = nm[k] * a + nm[3 + k] * c + nm[6 + k] * d;
-			len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-		}
-		for (int k = 0; k < 3; k++)
-			b.normals.push_back(len > 0 && std::isfinite(len) ? (float)(n[k] / len)
-									  : (float)(k == 2));
+	r->has_normals = a.nrm.count > 0 && det != 0.0;
+	r->has_tangents = a.tan.count > 0 && r->has_normals;
+	for (size_t i = 0; i < a.pos.count; i++) {
+		if (!push_position(b, a.pos, i, world, what))
+			return false;
+		push_normal(b, r->has_normals ? &a.nrm : nullptr, i, nm);
 		for (int k = 0; k < 2; k++)
-			b.uvs.push_back(iuv >= 0 ? (float)read_component(uv, i, k) : 0.0f);
+			b.uvs.push_back(a.uv.count ? (float)read_component(a.uv, i, k) : 0.0f);
 		if (r->has_tangents)
-			push_tangent(b, tan, i, world, det);
+			push_tangent(b, a.tan, i, world, det);
 	}
-	b.any_uvs |= iuv >= 0;
-	r->vertex_count = (uint32_t)pos.count;
+	b.any_uvs |= a.uv.count > 0;
+	r->vertex_count = (uint32_t)a.pos.count;
 	return true;
 }
 

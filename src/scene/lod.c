@@ -1,6 +1,6 @@
 #include "scene/lod.h"
 #include "util/log.h"
-#include "render/render.h"
+#include "util/math3d.h"
 
 #include <errno.h>
 #include <math.h>
@@ -14,7 +14,7 @@
 
 double lod_model_error(double pixels, int width, int height)
 {
-	return pixels / render_pixels_per_unit(width, height);
+	return pixels / sphere_fit_pixels_per_unit(width, height);
 }
 
 static double surface_area(const struct mesh *m)
@@ -39,7 +39,7 @@ static double surface_area(const struct mesh *m)
 
 double lod_triangles_wanted(const struct mesh *m, double pixels, int width, int height)
 {
-	double ppu = render_pixels_per_unit(width, height);
+	double ppu = sphere_fit_pixels_per_unit(width, height);
 
 	return pixels > 0.0 ? surface_area(m) * ppu * ppu / (2.0 * pixels * pixels) : INFINITY;
 }
@@ -167,7 +167,7 @@ out:
 	r.triangles_after = m->index_count / 3;
 	r.vertices_after = m->vertex_count;
 	r.error = error;
-	r.error_pixels = error * render_pixels_per_unit(width, height);
+	r.error_pixels = error * sphere_fit_pixels_per_unit(width, height);
 	if (ret)
 		log_err("lod: no memory to simplify %u triangles", r.triangles_before);
 	else if (r.triangles_after < r.triangles_before)

@@ -1,7 +1,7 @@
 #include "scene/material.h"
 #include "scene/gltf.h"
 #include "util/log.h"
-#include "render/render.h"
+#include "util/math3d.h"
 #include "scene/subdivide.h"
 #include "scene/tangent.h"
 #include "scene/texture.h"
@@ -295,7 +295,7 @@ static void refit(struct mesh *mesh)
 
 static int displace(const struct material *m, struct mesh *mesh, int width, int height)
 {
-	int n = subdivide_segments(mesh, render_pixels_per_unit(width, height),
+	int n = subdivide_segments(mesh, sphere_fit_pixels_per_unit(width, height),
 				   m->displacement_pixels, &m->height, m->displacement_triangles);
 	int ret = 0;
 
@@ -346,23 +346,4 @@ bool material_needs_uvs(unsigned features)
 bool material_needs_tangents(unsigned features)
 {
 	return (features & MATERIAL_DETAIL_NORMAL) != 0;
-}
-
-int material_defines(unsigned f, enum shading_mode mode, bool ortho, bool lit, char *buf,
-		     size_t size)
-{
-	int n;
-
-	/* These read the normal per fragment, which sem-vertex has not. */
-	if (mode == SHADING_SEM_VERTEX &&
-	    (lit || (f & (MATERIAL_IRIDESCENCE | MATERIAL_DETAIL_NORMAL))))
-		mode = SHADING_SEM_FRAGMENT;
-	n = snprintf(buf, size, "%s%s%s%s%s%s%s", shading_mode_define(mode),
-		     ortho ? "#define CAMERA_ORTHO 1\n" : "",
-		     f & MATERIAL_IRIDESCENCE ? "#define IRIDESCENCE 1\n" : "",
-		     f & MATERIAL_RAMP ? "#define IRIDESCENCE_RAMP 1\n" : "",
-		     f & MATERIAL_DETAIL ? "#define DETAIL_MAP 1\n" : "",
-		     f & MATERIAL_DETAIL_NORMAL ? "#define DETAIL_NORMAL 1\n" : "",
-		     lit ? "#define LIT 1\n" : "");
-	return n >= 0 && (size_t)n < size ? n : -ENOSPC;
 }

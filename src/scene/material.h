@@ -1,4 +1,4 @@
-/* The optional shading features of a scene (seeds 002 and 004): an
+/* The optional shading features of a scene: an
  * iridescent hue layer, a packed detail map, displacement and a lit mode.
  * Which are on, and with what, comes from [material] in kiosk.ini and from
  * the model's glTF material. A feature that is off costs nothing: no code
@@ -8,7 +8,6 @@
 
 #include "util/image.h"
 #include "scene/mesh.h"
-#include "render/shading.h"
 
 #include <stdbool.h>
 #include <stddef.h>
@@ -75,12 +74,6 @@ void material_release(struct material *m);
  * subdivided and displaced to the screen's density, refitted to the unit
  * sphere, with tangents for a detail normal map. Returns 0 or -ENOMEM. */
 int material_prepare_mesh(const struct material *m, struct mesh *mesh, int width, int height);
-
-/* The #define lines of one program: the mapping mode, the camera, the
- * features and lit. sem-vertex becomes sem-fragment when a feature needs
- * the normal per fragment. Returns the length, or -ENOSPC. */
-int material_defines(unsigned features, enum shading_mode mode, bool ortho, bool lit, char *buf,
-		     size_t size);
 
 /* The vertex attributes a program with these features reads. */
 bool material_needs_uvs(unsigned features);

@@ -47,6 +47,41 @@ void mat4_ortho(float m[16], double l, double r, double b, double t, double n, d
 	m[14] = (float)(-(f + n) / (f - n));
 }
 
+#define FOV_Y_DEGREES 30.0
+#define FIT_MARGIN    1.08
+
+void sphere_fit_init(struct sphere_fit *f, double aspect)
+{
+	f->aspect = aspect;
+	f->half_fov = FOV_Y_DEGREES / 2.0 * M_PI / 180.0;
+	f->half_min = fmin(f->half_fov, atan(tan(f->half_fov) * aspect));
+	f->distance = FIT_MARGIN / sin(f->half_min);
+}
+
+void sphere_fit_projection(const struct sphere_fit *f, bool ortho, float m[16])
+{
+	double a = f->aspect, dist = f->distance;
+
+	if (ortho) {
+		double sx = a > 1 ? a : 1, sy = a > 1 ? 1 : 1 / a;
+
+		mat4_ortho(m, -sx, sx, -sy, sy, dist - 1.5, dist + 1.5);
+	} else {
+		mat4_perspective(m, 2.0 * f->half_fov, a, dist - 1.5, dist + 1.5);
+	}
+}
+
+double sphere_fit_pixels_per_unit(int width, int height)
+{
+	double short_side = width < height ? width : height;
+	struct sphere_fit f;
+
+	sphere_fit_init(&f, (double)width / height);
+	/* The short side spans 2 z tan(half_min) model units at depth z; the
+	 * nearest point of the unit sphere is at distance - 1. */
+	return short_side / 2.0 / ((f.distance - 1.0) * tan(f.half_min));
+}
+
 void mat4_translate(float m[16], double x, double y, double z)
 {
 	mat4_identity(m);

@@ -18,6 +18,29 @@ void mat4_rotate_z(float m[16], int degrees);
 /* The upper 3x3 of an orthonormal transform is its own normal matrix. */
 void mat3_from_mat4(float out[9], const float m[16]);
 
+/* How the kiosk's camera frames the unit sphere in a frame of this
+ * aspect (width over height): a 30 degree vertical field of view,
+ * narrowed to the horizontal one on a portrait frame, from the distance
+ * at which the sphere, with a margin, just fills the short side. The
+ * renderer's projection and the mesh code's pixel density both come
+ * from here, so the two cannot disagree. */
+struct sphere_fit {
+	double aspect;
+	double half_fov; /* vertical, radians */
+	double half_min; /* across the short side, radians */
+	double distance; /* from the eye to the sphere's centre */
+};
+
+void sphere_fit_init(struct sphere_fit *f, double aspect);
+/* Perspective, or orthographic where the unit sphere fills the short
+ * side; depth from just before the sphere to just behind it. */
+void sphere_fit_projection(const struct sphere_fit *f, bool ortho, float m[16]);
+/* Pixels per model unit at the front of the unit sphere in a width x
+ * height frame: the most any part of a fitted model is magnified (by the
+ * perspective camera; the orthographic one magnifies less). A mesh's
+ * density is judged by it. */
+double sphere_fit_pixels_per_unit(int width, int height);
+
 /* Small double-precision vector helpers, for the mesh code. */
 double vec3_dot(const double a[3], const double b[3]);
 void vec3_cross(const double a[3], const double b[3], double out[3]);

@@ -3,7 +3,7 @@
  * seams and attributes survive, and the normals' error is measured. */
 #include "scene/lod.h"
 #include "scene/mesh.h"
-#include "render/render.h"
+#include "util/math3d.h"
 #include "scene/tangent.h"
 
 #include <math.h>
@@ -173,13 +173,13 @@ static void follows_the_display(void **state)
 	}
 	assert_true(last == knot.index_count / 3);
 	/* 1 px at 1280x720 is this many model units (render.c's camera). */
-	assert_true(fabs(lod_model_error(1.0, 1280, 720) * render_pixels_per_unit(1280, 720) -
+	assert_true(fabs(lod_model_error(1.0, 1280, 720) * sphere_fit_pixels_per_unit(1280, 720) -
 			 1.0) < 1e-12);
 	/* Triangles of 1 px: a unit sphere (area 4 pi) at 1280x720 wants
 	 * 4 pi ppu^2 / 2 of them. */
 	{
 		struct mesh s;
-		double ppu = render_pixels_per_unit(1280, 720);
+		double ppu = sphere_fit_pixels_per_unit(1280, 720);
 
 		assert_int_equal(mesh_uv_sphere(&s, 256, 128), 0);
 		assert_true(fabs(lod_triangles_wanted(&s, 1.0, 1280, 720) / (2 * M_PI * ppu * ppu) -

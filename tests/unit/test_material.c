@@ -5,6 +5,7 @@
 #include "scene/mesh.h"
 #include "oracle/oracle.h"
 #include "scene/tangent.h"
+#include "render/shader.h"
 
 #include <errno.h>
 #include <math.h>
@@ -92,31 +93,46 @@ static void write_model(const struct fixture *f, const char *name, struct gltf_w
 	assert_int_equal(gltf_write(path, &f->sphere, &o), 0);
 }
 
+/* The matcap program's defines, space-separated, as the builder gets them. */
+static const char *matcap_defines(unsigned features, enum shading_mode mode, bool ortho, bool lit,
+				  bool highp)
+{
+	static char buf[512];
+	struct shader_source src;
+	size_t n = 0;
+
+	buf[0] = '\0';
+	assert_int_equal(shader_source_matcap(&src, NULL, features, mode, ortho, lit, highp), 0);
+	for (int i = 0; i < src.define_count; i++)
+		n += (size_t)snprintf(buf + n, sizeof(buf) - n, "%s%s", i ? " " : "",
+				      src.defines[i]);
+	return buf;
+}
+
 /* A feature that is off puts no line in the program: the defines are the
  * mapping mode's and nothing else. */
 static void defines_hold_only_what_is_on(void **state)
 {
-	char buf[512];
+	struct shader_source src = {0};
 
 	(void)state;
-	assert_true(material_defines(0, SHADING_VIEW, false, false, buf, sizeof(buf)) > 0);
-	assert_string_equal(buf, "#define MODE_VIEW 1\n");
-	material_defines(MATERIAL_IRIDESCENCE | MATERIAL_RAMP, SHADING_VIEW, true, false, buf,
-			 sizeof(buf));
-	assert_string_equal(buf, "#define MODE_VIEW 1\n#define CAMERA_ORTHO 1\n"
-				 "#define IRIDESCENCE 1\n#define IRIDESCENCE_RAMP 1\n");
+	assert_string_equal(matcap_defines(0, SHADING_VIEW, false, false, false), "MODE_VIEW");
+	assert_string_equal(
+	    matcap_defines(MATERIAL_IRIDESCENCE | MATERIAL_RAMP, SHADING_VIEW, true, false, false),
+	    "MODE_VIEW CAMERA_ORTHO IRIDESCENCE IRIDESCENCE_RAMP");
 	/* Displacement is done on the CPU: it adds nothing to the program. */
-	material_defines(MATERIAL_DISPLACEMENT, SHADING_NORMAL, false, false, buf, sizeof(buf));
-	assert_string_equal(buf, "#define MODE_NORMAL 1\n");
+	assert_string_equal(
+	    matcap_defines(MATERIAL_DISPLACEMENT, SHADING_NORMAL, false, false, false),
+	    "MODE_NORMAL");
 	/* sem-vertex has no per-fragment normal for these to work on. */
-	material_defines(MATERIAL_DETAIL | MATERIAL_DETAIL_NORMAL, SHADING_SEM_VERTEX, false, true,
-			 buf, sizeof(buf));
-	assert_string_equal(buf, "#define MODE_SEM_FRAGMENT 1\n#define DETAIL_MAP 1\n"
-				 "#define DETAIL_NORMAL 1\n#define LIT 1\n");
-	material_defines(MATERIAL_DETAIL, SHADING_SEM_VERTEX, false, false, buf, sizeof(buf));
-	assert_string_equal(buf, "#define MODE_SEM_VERTEX 1\n#define DETAIL_MAP 1\n");
-	assert_int_equal(material_defines(MATERIAL_IRIDESCENCE, SHADING_VIEW, false, false, buf, 8),
-			 -ENOSPC);
+	assert_string_equal(matcap_defines(MATERIAL_DETAIL | MATERIAL_DETAIL_NORMAL,
+					   SHADING_SEM_VERTEX, false, true, false),
+			    "MODE_SEM_FRAGMENT DETAIL_MAP DETAIL_NORMAL LIT");
+	assert_string_equal(matcap_defines(MATERIAL_DETAIL, SHADING_SEM_VERTEX, false, false, true),
+			    "MODE_SEM_VERTEX DETAIL_MAP PRECISION_HIGHP");
+	for (int i = 0; i < SHADER_MAX_DEFINES; i++)
+		assert_int_equal(shader_source_define(&src, "X"), 0);
+	assert_int_equal(shader_source_define(&src, "X"), -ENOSPC);
 	assert_false(material_needs_uvs(MATERIAL_IRIDESCENCE | MATERIAL_DISPLACEMENT));
 	assert_true(material_needs_uvs(MATERIAL_DETAIL));
 	assert_false(material_needs_tangents(MATERIAL_DETAIL));

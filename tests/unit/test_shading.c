@@ -1,10 +1,18 @@
+#include "display/display.h"
 #include "oracle/oracle.h"
+#include "render/render.h"
+#include "render/shader.h"
+#include "scene/mesh.h"
 
 #include <errno.h>
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
 #include <cmocka.h>
 
 static void mode_names_round_trip(void **state)
@@ -88,6 +96,260 @@ static void view_mode_stays_inside_the_disk(void **state)
 	}
 }
 
+/* The shader builder on a real GL (OSMesa), through a copy of the GL table
+ * that counts the shaders and programs made and deleted: a build that
+ * fails must delete each exactly once, leave no GL error and return
+ * nothing. */
+#define MAX_OBJECTS 64
+
+struct tally {
+	struct gl real;
+	GLuint live[MAX_OBJECTS]; /* shaders and programs not deleted yet */
+	int made, bad_deletes;
+};
+
+static struct tally tally; /* the wrappers below have no user pointer */
+
+static void tally_add(GLuint id)
+{
+	tally.made++;
+	for (int i = 0; i < MAX_OBJECTS; i++)
+		if (!tally.live[i]) {
+			tally.live[i] = id;
+			return;
+		}
+}
+
+static void tally_remove(GLuint id)
+{
+	for (int i = 0; i < MAX_OBJECTS; i++)
+		if (id && tally.live[i] == id) {
+			tally.live[i] = 0;
+			return;
+		}
+	tally.bad_deletes++;
+}
+
+static int tally_live(void)
+{
+	int n = 0;
+
+	for (int i = 0; i < MAX_OBJECTS; i++)
+		n += tally.live[i] != 0;
+	return n;
+}
+
+/* Shader and program names share no namespace in GL; the tests never
+ * reuse one, as Mesa hands out fresh names. */
+static GLuint GL_APIENTRY counted_create_shader(GLenum type)
+{
+	GLuint id = tally.real.CreateShader(type);
+
+	tally_add(id);
+	return id;
+}
+
+static void GL_APIENTRY counted_delete_shader(GLuint id)
+{
+	tally_remove(id);
+	tally.real.DeleteShader(id);
+}
+
+static GLuint GL_APIENTRY counted_create_program(void)
+{
+	GLuint id = tally.real.CreateProgram();
+
+	tally_add(id | 0x80000000u);
+	return id;
+}
+
+static void GL_APIENTRY counted_delete_program(GLuint id)
+{
+	tally_remove(id | 0x80000000u);
+	tally.real.DeleteProgram(id);
+}
+
+struct builder_fixture {
+	struct display *d;
+	struct gl gl; /* the display's, with the counting wrappers */
+	char dir[64];
+};
+
+static void write_file(const char *dir, const char *name, const char *text)
+{
+	char path[128];
+	FILE *f;
+
+	snprintf(path, sizeof(path), "%s/%s", dir, name);
+	f = fopen(path, "w");
+	assert_non_null(f);
+	fputs(text, f);
+	fclose(f);
+}
+
+/* The built-in matcap sources, so one of them can be broken. */
+static void copy_builtin(const char *dir, const char *name)
+{
+	char *text = shader_read(NULL, name);
+
+	assert_non_null(text);
+	write_file(dir, name, text);
+	free(text);
+}
+
+static int builder_setup(void **state)
+{
+	static const char *const files[] = {"mapping.glsl", "material.glsl", "matcap.vert",
+					    "matcap.frag"};
+	struct display_config cfg = {.width = 16, .height = 16};
+	struct builder_fixture *f = calloc(1, sizeof(*f));
+
+	if (!f)
+		return -1;
+	f->d = display_osmesa_new(&cfg);
+	if (!f->d || f->d->begin_frame(f->d))
+		return -1;
+	memset(&tally, 0, sizeof(tally));
+	tally.real = f->d->gl;
+	f->gl = f->d->gl;
+	f->gl.CreateShader = counted_create_shader;
+	f->gl.DeleteShader = counted_delete_shader;
+	f->gl.CreateProgram = counted_create_program;
+	f->gl.DeleteProgram = counted_delete_program;
+	strcpy(f->dir, "/tmp/mk-shader-XXXXXX");
+	if (!mkdtemp(f->dir))
+		return -1;
+	for (size_t i = 0; i < sizeof(files) / sizeof(files[0]); i++)
+		copy_builtin(f->dir, files[i]);
+	write_file(f->dir, "plain.vert",
+		   "attribute vec4 a_position;\nvoid main() { gl_Position = a_position; }\n");
+	write_file(f->dir, "plain.frag", "void main() { gl_FragColor = vec4(VALUE); }\n");
+	write_file(f->dir, "typo.frag", "void main() { gl_FragColor = vec4(1.0) }\n");
+	/* Compiles, but a program needs a main in each stage: the link fails. */
+	write_file(f->dir, "no_main.frag", "vec4 colour() { return vec4(1.0); }\n");
+	*state = f;
+	return 0;
+}
+
+/* OSMesa leaks a fixed few hundred bytes per process; see
+ * tests/unit/test_camera_texture.c. */
+const char *__lsan_default_suppressions(void);
+const char *__lsan_default_suppressions(void)
+{
+	return "leak:libOSMesa\nleak:libLLVM\nleak:display_osmesa_new\n";
+}
+
+static int builder_teardown(void **state)
+{
+	struct builder_fixture *f = *state;
+	char cmd[96];
+
+	snprintf(cmd, sizeof(cmd), "rm -rf '%s'", f->dir);
+	if (system(cmd) != 0)
+		return -1;
+	/* The display is left open: see __lsan_default_suppressions. */
+	free(f);
+	return 0;
+}
+
+static struct shader_source plain_source(const char *dir, const char *fragment)
+{
+	struct shader_source src = {.dir = dir,
+				    .precision = "precision mediump float;\n",
+				    .vertex = {"plain.vert"},
+				    .fragment = {fragment},
+				    .attributes = {"a_position"}};
+
+	return src;
+}
+
+static void builder_makes_a_program(void **state)
+{
+	struct builder_fixture *f = *state;
+	struct shader_source src = plain_source(f->dir, "plain.frag");
+	GLuint prog = 0;
+	GLint linked = 0;
+
+	assert_int_equal(shader_source_define(&src, "VALUE"), 0);
+	assert_int_equal(shader_program_build(&f->gl, &src, &prog), 0);
+	assert_true(prog != 0);
+	f->gl.GetProgramiv(prog, GL_LINK_STATUS, &linked);
+	assert_true(linked);
+	/* The two shaders went with the build; the program is the caller's. */
+	assert_int_equal(tally.made, 3);
+	assert_int_equal(tally_live(), 1);
+	f->gl.DeleteProgram(prog);
+	assert_int_equal(tally_live(), 0);
+	assert_int_equal(tally.bad_deletes, 0);
+	assert_int_equal(f->gl.GetError(), GL_NO_ERROR);
+}
+
+static void check_failed_build(struct builder_fixture *f, const char *fragment, int made)
+{
+	struct shader_source src = plain_source(f->dir, fragment);
+	GLuint prog = 12345;
+
+	tally.made = 0;
+	assert_int_equal(shader_program_build(&f->gl, &src, &prog), -EINVAL);
+	assert_int_equal(prog, 12345);
+	assert_int_equal(tally.made, made);
+	assert_int_equal(tally_live(), 0);
+	assert_int_equal(tally.bad_deletes, 0);
+	assert_int_equal(f->gl.GetError(), GL_NO_ERROR);
+}
+
+static void builder_frees_a_failed_build_once(void **state)
+{
+	struct builder_fixture *f = *state;
+
+	check_failed_build(f, "typo.frag", 2);	  /* the fragment stage fails */
+	check_failed_build(f, "no_main.frag", 3); /* both compile, the link fails */
+	check_failed_build(f, "missing.frag", 1); /* the file is not there */
+}
+
+/* A variant that fails to build leaves the one in use drawing, and is not
+ * remembered: asked again, the renderer tries again. */
+static void renderer_keeps_its_program_when_a_build_fails(void **state)
+{
+	struct builder_fixture *f = *state;
+	struct renderer *r = renderer_new(&f->gl, f->dir);
+	struct material mat = {0};
+	struct renderer_stats st;
+	struct mesh m;
+	GLuint first;
+	GLint linked = 0;
+
+	assert_non_null(r);
+	assert_int_equal(mesh_uv_sphere(&m, 8, 4), 0);
+	assert_int_equal(renderer_set_material(r, &mat), 0);
+	assert_int_equal(renderer_set_mesh(r, &m), 0);
+	assert_int_equal(renderer_set_mode(r, SHADING_VIEW, false), 0);
+	renderer_get_stats(r, &st);
+	first = st.program;
+	write_file(f->dir, "matcap.frag", "vec4 colour() { return vec4(1.0); }\n");
+	for (int i = 0; i < 2; i++) {
+		assert_int_equal(renderer_set_mode(r, SHADING_NORMAL, false), -EINVAL);
+		renderer_get_stats(r, &st);
+		assert_int_equal(st.program, first);
+	}
+	write_file(f->dir, "matcap.frag", "void main() { gl_FragColor = vec4(1.0) }\n");
+	assert_int_equal(renderer_set_mode(r, SHADING_NORMAL, true), -EINVAL);
+	f->gl.GetProgramiv(first, GL_LINK_STATUS, &linked);
+	assert_true(linked);
+	f->d->begin_frame(f->d);
+	renderer_draw(r, &(struct view){.orientation = quat_identity()}, 16, 16);
+	assert_int_equal(f->gl.GetError(), GL_NO_ERROR);
+	copy_builtin(f->dir, "matcap.frag");
+	assert_int_equal(renderer_set_mode(r, SHADING_NORMAL, false), 0);
+	renderer_get_stats(r, &st);
+	assert_true(st.program != 0 && st.program != first);
+	renderer_free(r);
+	mesh_release(&m);
+	assert_int_equal(tally_live(), 0);
+	assert_int_equal(tally.bad_deletes, 0);
+	assert_int_equal(f->gl.GetError(), GL_NO_ERROR);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -97,5 +359,13 @@ int main(void)
 	    cmocka_unit_test(sem_facing_viewer_is_centre),
 	    cmocka_unit_test(view_mode_stays_inside_the_disk),
 	};
-	return cmocka_run_group_tests_name("shading", tests, NULL, NULL);
+	const struct CMUnitTest builder[] = {
+	    cmocka_unit_test(builder_makes_a_program),
+	    cmocka_unit_test(builder_frees_a_failed_build_once),
+	    cmocka_unit_test(renderer_keeps_its_program_when_a_build_fails),
+	};
+	int failed = cmocka_run_group_tests_name("shading", tests, NULL, NULL);
+
+	return failed + cmocka_run_group_tests_name("shader builder", builder, builder_setup,
+						    builder_teardown);
 }
