@@ -27,7 +27,7 @@ BUILD   ?= build
 # call goes through the table in src/render/gl.c (see DESIGN.md). Their headers
 # are still found through pkg-config.
 PKGS_LINK    := egl gbm libdrm libudev libpng libturbojpeg tinygltf inih libsystemd libgpiod libevdev \
-		libcamera
+		libcamera draco
 PKGS_HEADERS := osmesa glesv2
 
 PKG_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(PKGS_LINK) $(PKGS_HEADERS))
@@ -59,8 +59,9 @@ SRC_SCENE   := scene/lod scene/material scene/mesh scene/mesh_gen scene/subdivid
 	       scene/texture
 SRC_UTIL    := util/folder_watch util/image util/log util/math3d
 LIB_C  := $(SRC_APP) $(SRC_DISPLAY) $(SRC_INPUT) $(SRC_CAMERA) $(SRC_RENDER) $(SRC_SCENE) $(SRC_UTIL)
-# The two C++ shims, each behind a C header.
-LIB_CC := scene/gltf scene/gltf_material camera/camera
+# The C++ shims, each behind a C header (gltf_ext.h is internal to the glTF one).
+LIB_CC := scene/gltf scene/gltf_material scene/gltf_ext scene/gltf_pose scene/gltf_draco \
+	  camera/camera
 SHADERS := shaders/mapping.glsl shaders/matcap.vert shaders/matcap.frag shaders/material.glsl
 SHADERS += shaders/camera.vert shaders/camera.frag
 
@@ -112,6 +113,8 @@ DEBIAN_PACKAGES := make gcc g++ pkg-config libegl-dev libgles-dev libosmesa6-dev
 	systemd clang-14 libclang-rt-14-dev valgrind libmeshoptimizer-dev gnuplot-nox \
 	qemu-system-x86 busybox-static lz4 cpio kmod udev xz-utils kmscube libdrm-tests \
 	libcamera-tools gpiod v4l-utils
+# glTF: Draco meshes, and the tools and sample files of the model corpus test.
+DEBIAN_PACKAGES += libdraco-dev draco gltfpack assimp-testmodels
 
 deps:
 	apt-get update -qq

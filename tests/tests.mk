@@ -2,7 +2,7 @@
 #   make test     everything below, ending in one "N passed, N failed" line
 #   make golden   regenerate tests/golden/*.png on purpose (then look at them)
 
-UNIT_TESTS  := options mesh image gltf shading app button content service
+UNIT_TESTS  := options mesh image gltf gltf_ext shading app button content service
 UNIT_TESTS  += tangent subdivide material
 UNIT_TESTS  += camera_math camera_proto camera_texture
 UNIT_TESTS  += stability fp16 lod
