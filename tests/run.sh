@@ -127,6 +127,12 @@ bad_input "missing model" --model "$out/bad/no-such-model.glb"
 bad_input "bad detail map" --detail-map "$out/models/corrupt.png"
 bad_input "missing height map" --displacement-map "$out/bad/no-such-height.png"
 
+# 6b. The glTF corpus: files nobody on the project wrote, and files that
+#     gltfpack and Draco's tools make, through the ASan build.
+FUZZ_GLTF=${FUZZ_DIR:-build/fuzz}/fuzz_gltf sh tests/corpus/run.sh "$ASAN_KIOSK" "$TOOLS" \
+	"$out/models" "$out/corpus" >"$out/corpus.log" 2>&1
+results corpus "$out/corpus.log"
+
 # 7. The command line itself.
 check "--help" sh -c "$KIOSK --help | grep -q '^Usage: matcap-kiosk'"
 check "--version" sh -c "$KIOSK --version | grep -q '^matcap-kiosk [0-9]'"

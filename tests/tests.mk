@@ -44,6 +44,12 @@ $(TOOLS_DIR)/hues: tests/tools/hues.c $(BUILD)/util/image.o $(BUILD)/util/log.o
 	$(CC) $(ALL_CFLAGS) -o $@ $^ $(PKG_LIBS) -lm
 test-tools: $(TOOLS_DIR)/hues
 
+# Whether a model with no reference image shows (tests/corpus/run.sh).
+$(TOOLS_DIR)/silhouette: tests/corpus/silhouette.c $(BUILD)/util/image.o $(BUILD)/util/log.o
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -o $@ $^ $(PKG_LIBS) -lm
+test-tools: $(TOOLS_DIR)/silhouette
+
 # Stands in for systemd's notify socket in tests/e2e/live.sh.
 $(TOOLS_DIR)/notify_listen: tests/tools/notify_listen.c
 	@mkdir -p $(@D)

@@ -700,6 +700,8 @@ std::string parse_fault(const Context &c, const tinygltf::Model &m, const uint8_
 		return buffer;
 	if (!c.missing.empty())
 		return "buffer file \"" + c.missing + "\" does not exist beside the model";
+	if (size >= 8 && std::memcmp(data, "glTF", 4) == 0 && data[4] != 2)
+		return "GLB version " + std::to_string(data[4]) + ", expected 2 (glTF 2.0)";
 	if (!c.refused.empty())
 		return "buffer URI \"" + c.refused +
 		       "\" is not a file beside the model (absolute paths and \"..\" are refused)";
@@ -757,9 +759,16 @@ int load_memory(const char *name, const uint8_t *data, size_t size, const char *
 	if (!ok && err.find("invalid bufferView") != std::string::npos)
 		ok = parse(loader, &model, data, size, ctx, true, &err);
 	std::string required = gltf_ext::unsupported(model.extensionsRequired);
-	if (!ok || !required.empty()) {
+	const std::string &version = model.asset.version;
+	if (ok && !version.empty() && version.compare(0, 2, "2.") != 0) {
+		ok = false;
+		err = "asset.version \"" + version + "\", expected 2.0 (convert glTF 1.0 files first)";
+	} else if (!ok || !required.empty()) {
 		err = ok ? "extensionsRequired: " + required + " not supported"
 			 : parse_fault(ctx, model, data, size, err);
+		ok = false;
+	}
+	if (!ok) {
 		log_err("%s: %s", gltf_ext::escape(name).c_str(), gltf_ext::escape(err).c_str());
 		return -EINVAL;
 	}

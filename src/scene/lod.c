@@ -138,11 +138,14 @@ static int weld(const struct mesh *m, bool by_uv, uint32_t *rep)
 	first = malloc((size_t)m->vertex_count * sizeof(uint32_t) + 1);
 	if (!first)
 		return -ENOMEM;
-	meshopt_generateVertexRemapMulti(rep, NULL, m->vertex_count, m->vertex_count, streams, 2);
+	/* Over the indices: a vertex no triangle uses stays its own. */
+	meshopt_generateVertexRemapMulti(rep, m->indices, m->index_count, m->vertex_count, streams,
+					 2);
 	for (uint32_t v = m->vertex_count; v-- > 0;)
-		first[rep[v]] = v;
+		if (rep[v] != ~0u)
+			first[rep[v]] = v;
 	for (uint32_t v = 0; v < m->vertex_count; v++)
-		rep[v] = first[rep[v]];
+		rep[v] = rep[v] == ~0u ? v : first[rep[v]];
 	free(first);
 	return 0;
 }

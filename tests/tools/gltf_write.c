@@ -175,14 +175,15 @@ static void write_json(FILE *f, const struct mesh *m, const struct gltf_write_op
 	if (o->byte_stride)
 		fprintf(f, ",\"byteStride\":%d", o->byte_stride);
 	fprintf(f, "},");
-	fprintf(f, "{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu},", l->nrm,
-		o->with_normals ? (size_t)m->vertex_count * 12 : 4);
+	/* An absent attribute's view is 4 bytes at the start, inside the buffer. */
+	fprintf(f, "{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu},",
+		o->with_normals ? l->nrm : 0, o->with_normals ? (size_t)m->vertex_count * 12 : 4);
 	fprintf(f, "{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu},", l->idx,
 		(size_t)m->index_count * (size_t)(o->index_bytes ? o->index_bytes : 1));
-	fprintf(f, "{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu},", l->uv,
+	fprintf(f, "{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu},", o->with_uvs ? l->uv : 0,
 		o->with_uvs ? (size_t)m->vertex_count * 8 : 4);
-	fprintf(f, "{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu}", l->tan,
-		o->with_tangents ? (size_t)m->vertex_count * 16 : 4);
+	fprintf(f, "{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu}",
+		o->with_tangents ? l->tan : 0, o->with_tangents ? (size_t)m->vertex_count * 16 : 4);
 	for (int i = 0; i < 3; i++)
 		if (l->img_path[i] && o->embed_images)
 			fprintf(f, ",{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu}",
