@@ -571,33 +571,6 @@ int finish_mesh(Builder &b, struct mesh *out)
 	return 0;
 }
 
-// The scene to show: the one asked for (an index or a name), else the
-// file's default, else the first; -1 when the file has none.
-bool choose_scene(const tinygltf::Model &m, const char *want, int *scene, std::string *err)
-{
-	*scene = m.scenes.empty() ? -1 : m.defaultScene >= 0 ? m.defaultScene : 0;
-	if (want && *want) {
-		char *end;
-		long i = std::strtol(want, &end, 10);
-		*scene = -2;
-		for (size_t k = 0; k < m.scenes.size() && *scene == -2; k++)
-			if (m.scenes[k].name == want || (!*end && i == (long)k))
-				*scene = (int)k;
-		if (*scene == -2) {
-			*err = "scenes: no scene \"" + std::string(want) +
-			       "\", expected an index below " + std::to_string(m.scenes.size()) +
-			       " or a scene's name";
-			return false;
-		}
-	}
-	if (*scene >= (int)m.scenes.size()) {
-		*err = "scene: " + std::to_string(*scene) + " does not exist, expected below " +
-		       std::to_string(m.scenes.size());
-		return false;
-	}
-	return true;
-}
-
 bool prepare(tinygltf::Model &m, const char *name, Pose *pose, std::string *err)
 {
 	std::string unused = gltf_ext::unsupported(m.extensionsUsed);
@@ -619,7 +592,8 @@ int build_mesh(const char *name, tinygltf::Model &m, const struct gltf_options *
 	Pose pose;
 	int scene, ret;
 	b.name = name;
-	if (prepare(m, name, &pose, &b.error) && choose_scene(m, o->scene, &scene, &b.error)) {
+	if (prepare(m, name, &pose, &b.error) &&
+	    gltf_ext::choose_scene(m, o->scene, &scene, &b.error)) {
 		std::vector<int> roots;
 		if (scene >= 0)
 			roots = m.scenes[(size_t)scene].nodes;
@@ -645,74 +619,6 @@ int build_mesh(const char *name, tinygltf::Model &m, const struct gltf_options *
 	if (ret == 0)
 		gltf_read_material(m, b.material, o->textures, images, name, &out->material);
 	return ret;
-}
-
-std::string percent_decoded(const std::string &uri)
-{
-	std::string out;
-	for (size_t i = 0; i < uri.size(); i++) {
-		unsigned v;
-		if (uri[i] == '%' && i + 2 < uri.size() + 0 &&
-		    std::sscanf(uri.c_str() + i + 1, "%2x", &v) == 1) {
-			out.push_back((char)v);
-			i += 2;
-		} else {
-			out.push_back(uri[i]);
-		}
-	}
-	return out;
-}
-
-// After tinygltf refused a file: which buffer, by its URI as written.
-std::string buffer_fault(const Context &c, const uint8_t *data, size_t size)
-{
-	std::vector<std::string> uris;
-	bool glb;
-	if (!gltf_ext::buffer_uris(data, size, &uris, &glb))
-		return "";
-	for (size_t i = 0; i < uris.size(); i++) {
-		const std::string &u = uris[i];
-		std::string what = "buffers[" + std::to_string(i) + "]";
-		if (u.empty() && !(glb && i == 0))
-			return what + ": has no uri, expected a file name or a data: URI (only a "
-				      ".glb's first buffer may leave it out)";
-		if (u.empty() || u.compare(0, 5, "data:") == 0)
-			continue;
-		std::string path = (c.dir.empty() ? "" : c.dir + "/") + percent_decoded(u);
-		if (!path_allowed(c, path))
-			return what + ".uri \"" + u +
-			       "\": not a file beside the model (absolute paths and \"..\" are "
-			       "refused)";
-		if (!std::ifstream(path, std::ios::binary).good())
-			return what + ".uri \"" + u + "\": no such file beside the model";
-	}
-	return "";
-}
-
-std::string parse_fault(const Context &c, const tinygltf::Model &m, const uint8_t *data,
-			size_t size, std::string err)
-{
-	std::string required = gltf_ext::unsupported(m.extensionsRequired);
-	std::string buffer = buffer_fault(c, data, size);
-	if (!required.empty())
-		return "extensionsRequired: " + required + " not supported";
-	if (!buffer.empty())
-		return buffer;
-	if (!c.missing.empty())
-		return "buffer file \"" + c.missing + "\" does not exist beside the model";
-	if (size >= 8 && std::memcmp(data, "glTF", 4) == 0 && data[4] != 2)
-		return "GLB version " + std::to_string(data[4]) + ", expected 2 (glTF 2.0)";
-	if (!c.refused.empty())
-		return "buffer URI \"" + c.refused +
-		       "\" is not a file beside the model (absolute paths and \"..\" are refused)";
-	if (err.empty())
-		return "not a glTF 2.0 file";
-	for (char &ch : err)
-		if (ch == '\n')
-			ch = ' ';
-	while (!err.empty() && err.back() == ' ')
-		err.pop_back();
-	return err;
 }
 
 bool parse(tinygltf::TinyGLTF &loader, tinygltf::Model *model, const uint8_t *data, size_t size,
@@ -762,10 +668,15 @@ int load_memory(const char *name, const uint8_t *data, size_t size, const char *
 	const std::string &version = model.asset.version;
 	if (ok && !version.empty() && version.compare(0, 2, "2.") != 0) {
 		ok = false;
-		err = "asset.version \"" + version + "\", expected 2.0 (convert glTF 1.0 files first)";
+		err = "asset.version \"" + version +
+		      "\", expected 2.0 (convert glTF 1.0 files first)";
 	} else if (!ok || !required.empty()) {
 		err = ok ? "extensionsRequired: " + required + " not supported"
-			 : parse_fault(ctx, model, data, size, err);
+			 : gltf_ext::parse_fault({ctx.dir, ctx.missing, ctx.refused,
+						  [&ctx](const std::string &path) {
+							  return path_allowed(ctx, path);
+						  }},
+						 model, data, size, err);
 		ok = false;
 	}
 	if (!ok) {

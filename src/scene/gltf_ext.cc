@@ -6,7 +6,6 @@
 #include "scene/gltf_draco.h"
 
 #include <meshoptimizer.h>
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -27,43 +26,6 @@ const char *const supported_extensions[] = {
     "KHR_draco_mesh_compression",
     "KHR_materials_iridescence",
 };
-
-uint32_t read_u32(const unsigned char *p)
-{
-	return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
-}
-
-void put_u32(std::vector<unsigned char> &out, uint32_t v)
-{
-	for (int k = 0; k < 4; k++)
-		out.push_back((unsigned char)(v >> (8 * k)));
-}
-
-// Where the JSON text lies: the whole file, or a GLB's first chunk.
-bool json_span(const unsigned char *data, size_t size, size_t *begin, size_t *len, bool *glb)
-{
-	*glb = size >= 4 && std::memcmp(data, "glTF", 4) == 0;
-	if (!*glb) {
-		*begin = 0;
-		*len = size;
-		return true;
-	}
-	if (size < 20 || read_u32(data + 16) != 0x4E4F534Au)
-		return false;
-	*begin = 20;
-	*len = read_u32(data + 12);
-	return *len <= size - 20;
-}
-
-bool parse_json(const unsigned char *data, size_t size, nlohmann::json *j, bool *glb, size_t *end)
-{
-	size_t begin, len;
-	if (!json_span(data, size, &begin, &len, glb))
-		return false;
-	*j = nlohmann::json::parse(data + begin, data + begin + len, nullptr, false);
-	*end = begin + len;
-	return j->is_object();
-}
 
 std::string path_of(const char *array, size_t i)
 {
@@ -154,22 +116,6 @@ bool read_sparse(const tinygltf::Model &m, const tinygltf::Accessor &a, const st
 			    a.componentType, a.normalized);
 	}
 	return true;
-}
-
-std::vector<unsigned char> glb_with_json(const unsigned char *data, size_t size, size_t json_end,
-					 std::string text)
-{
-	std::vector<unsigned char> out;
-	while (text.size() % 4)
-		text.push_back(' ');
-	size_t rest = size - json_end;
-	out.insert(out.end(), data, data + 8);
-	put_u32(out, (uint32_t)(12 + 8 + text.size() + rest));
-	put_u32(out, (uint32_t)text.size());
-	put_u32(out, 0x4E4F534Au);
-	out.insert(out.end(), text.begin(), text.end());
-	out.insert(out.end(), data + json_end, data + size);
-	return out;
 }
 
 } // namespace
@@ -292,103 +238,6 @@ std::string escape(const std::string &s)
 		i += len;
 	}
 	return out;
-}
-
-const char *const moved_indices = "matcap_kiosk_indices";
-
-namespace
-{
-
-bool mentions(const unsigned char *data, size_t size, const char *key)
-{
-	return std::search(data, data + size, key, key + std::strlen(key)) != data + size;
-}
-
-bool has_view(const nlohmann::json &j, const nlohmann::json &index)
-{
-	if (!index.is_number_unsigned() || !j.contains("accessors") || !j["accessors"].is_array() ||
-	    index.get<size_t>() >= j["accessors"].size())
-		return true; // not ours to judge: the accessor checks name it
-	const nlohmann::json &a = j["accessors"][index.get<size_t>()];
-	return !a.is_object() || a.contains("bufferView");
-}
-
-bool move_indices(nlohmann::json &j)
-{
-	bool changed = false;
-	if (!j.contains("meshes") || !j["meshes"].is_array())
-		return false;
-	for (nlohmann::json &mesh : j["meshes"]) {
-		if (!mesh.is_object() || !mesh.contains("primitives") ||
-		    !mesh["primitives"].is_array())
-			continue;
-		for (nlohmann::json &p : mesh["primitives"]) {
-			if (!p.is_object() || !p.contains("indices") || has_view(j, p["indices"]))
-				continue;
-			if (!p.contains("extras") || !p["extras"].is_object())
-				p["extras"] = nlohmann::json::object();
-			p["extras"][moved_indices] = p["indices"];
-			p.erase("indices");
-			changed = true;
-		}
-	}
-	return changed;
-}
-
-bool empty_fallbacks(nlohmann::json &j)
-{
-	static const char key[] = "EXT_meshopt_compression";
-	bool changed = false;
-	if (!j.contains("buffers") || !j["buffers"].is_array())
-		return false;
-	for (nlohmann::json &b : j["buffers"]) {
-		if (!b.is_object() || !b.contains("extensions") || !b["extensions"].is_object())
-			continue;
-		const nlohmann::json &e = b["extensions"];
-		if (!e.contains(key) || !e[key].is_object() || !e[key].value("fallback", false))
-			continue;
-		// tinygltf insists on bytes for every buffer; a fallback has none.
-		b["uri"] = "data:application/octet-stream;base64,AA==";
-		b["byteLength"] = 1;
-		changed = true;
-	}
-	return changed;
-}
-
-} // namespace
-
-std::vector<unsigned char> tinygltf_compatible(const unsigned char *data, size_t size, bool all)
-{
-	if (!all && !mentions(data, size, "EXT_meshopt_compression") &&
-	    !mentions(data, size, "KHR_draco_mesh_compression"))
-		return {};
-	nlohmann::json j;
-	bool glb;
-	size_t json_end;
-	if (!parse_json(data, size, &j, &glb, &json_end))
-		return {};
-	bool moved = move_indices(j), emptied = empty_fallbacks(j);
-	if (!moved && !emptied)
-		return {};
-	std::string text = j.dump();
-	if (glb)
-		return glb_with_json(data, size, json_end, text);
-	return std::vector<unsigned char>(text.begin(), text.end());
-}
-
-bool buffer_uris(const unsigned char *data, size_t size, std::vector<std::string> *uris, bool *glb)
-{
-	nlohmann::json j;
-	size_t json_end;
-	if (!parse_json(data, size, &j, glb, &json_end))
-		return false;
-	if (!j.contains("buffers") || !j["buffers"].is_array())
-		return true;
-	for (const nlohmann::json &b : j["buffers"]) {
-		const nlohmann::json *u = b.is_object() && b.contains("uri") ? &b["uri"] : nullptr;
-		uris->push_back(u && u->is_string() ? u->get<std::string>() : "");
-	}
-	return true;
 }
 
 bool read_accessor(const tinygltf::Model &m, int index, std::vector<double> *out, int *components,

@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,19 @@ extern const char *const moved_indices;
 // Each buffer's URI as written (empty: none), for naming a missing one
 // after tinygltf refused the file; false when the JSON cannot be read.
 bool buffer_uris(const unsigned char *data, size_t size, std::vector<std::string> *uris, bool *glb);
+
+// What the file callbacks saw while tinygltf read the file: the model's
+// folder, the first path refused and the first missing, and the rule.
+struct FileFault {
+	std::string dir, missing, refused;
+	std::function<bool(const std::string &)> allowed; // a path inside dir?
+};
+
+// After tinygltf refused the file, the reason in one line: an unsupported
+// required extension, a missing buffer by its URI as written, a GLB of
+// another version, else tinygltf's own words.
+std::string parse_fault(const FileFault &f, const tinygltf::Model &m, const unsigned char *data,
+			size_t size, std::string err);
 
 // Names of the extensions in `names` that the loader does not support,
 // joined by ", "; empty when it supports them all.
@@ -68,6 +82,9 @@ bool make_dense(tinygltf::Model &m, std::string *err);
 // and a child index out of range, without recursion.
 bool node_worlds(const tinygltf::Model &m, std::vector<Mat4> *worlds, std::vector<int> *parent,
 		 std::string *err);
+// The scene to show: `want` (an index or a scene's name), else the
+// file's default, else the first; -1 when the file has none.
+bool choose_scene(const tinygltf::Model &m, const char *want, int *scene, std::string *err);
 bool apply_morphs(tinygltf::Model &m, std::string *err);
 // Each skinned node gets a posed copy of its mesh; mesh_source[i] is the
 // file's index of mesh i.

@@ -5,6 +5,7 @@
 #include "scene/gltf_ext.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 
 namespace gltf_ext
@@ -293,6 +294,31 @@ bool node_worlds(const tinygltf::Model &m, std::vector<Mat4> *worlds, std::vecto
 			*err = node_path(i) + ": is its own ancestor (a cycle of children)";
 			return false;
 		}
+	return true;
+}
+
+bool choose_scene(const tinygltf::Model &m, const char *want, int *scene, std::string *err)
+{
+	*scene = m.scenes.empty() ? -1 : m.defaultScene >= 0 ? m.defaultScene : 0;
+	if (want && *want) {
+		char *end;
+		long i = std::strtol(want, &end, 10);
+		*scene = -2;
+		for (size_t k = 0; k < m.scenes.size() && *scene == -2; k++)
+			if (m.scenes[k].name == want || (!*end && i == (long)k))
+				*scene = (int)k;
+		if (*scene == -2) {
+			*err = "scenes: no scene \"" + std::string(want) +
+			       "\", expected an index below " + std::to_string(m.scenes.size()) +
+			       " or a scene's name";
+			return false;
+		}
+	}
+	if (*scene >= (int)m.scenes.size()) {
+		*err = "scene: " + std::to_string(*scene) + " does not exist, expected below " +
+		       std::to_string(m.scenes.size());
+		return false;
+	}
 	return true;
 }
 
