@@ -31,7 +31,7 @@ said() {
 	tr '\n' ' ' <"$out/stderr" | cut -c1-400
 }
 fuzz_once() { # FILE
-	[ -n "${FUZZ_GLTF:-}" ] || return 0
+	[ -x "${FUZZ_GLTF:-}" ] || return 0
 	FUZZ_GLTF_DIR=$(cd "$(dirname "$1")" && pwd) "$FUZZ_GLTF" "$1" >"$out/fuzz.log" 2>&1 &&
 		echo "ok no sanitizer report in the loader alone: $2" ||
 		echo "not ok the loader alone on $2: $(grep -m3 -E 'ERROR|SUMMARY' "$out/fuzz.log")"
