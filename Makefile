@@ -29,7 +29,7 @@ BUILD   ?= build
 # call goes through the table in src/render/gl.c (see DESIGN.md). Their headers
 # are still found through pkg-config.
 PKGS_LINK    := egl gbm libdrm libudev libpng libturbojpeg tinygltf inih libsystemd libgpiod libevdev \
-		libcamera
+		libcamera draco
 # Mesa 25.1 and later have no OSMesa: without its headers the osmesa
 # backend is left out (OSMESA=0 leaves it out by hand) and offscreen
 # rendering, the tests' included, goes through egl-headless.
@@ -75,8 +75,9 @@ SRC_SCENE   := scene/lod scene/material scene/mesh scene/mesh_gen scene/subdivid
 	       scene/texture
 SRC_UTIL    := util/folder_watch util/image util/log util/math3d
 LIB_C  := $(SRC_APP) $(SRC_DISPLAY) $(SRC_INPUT) $(SRC_CAMERA) $(SRC_RENDER) $(SRC_SCENE) $(SRC_UTIL)
-# The two C++ shims, each behind a C header.
-LIB_CC := scene/gltf scene/gltf_material camera/camera
+# The C++ shims, each behind a C header (gltf_ext.h is internal to the glTF one).
+LIB_CC := scene/gltf scene/gltf_material scene/gltf_ext scene/gltf_files scene/gltf_pose \
+	  scene/gltf_draco camera/camera
 SHADERS := shaders/mapping.glsl shaders/matcap.vert shaders/matcap.frag shaders/material.glsl
 SHADERS += shaders/camera.vert shaders/camera.frag
 
@@ -137,6 +138,8 @@ DEBIAN_PACKAGES := make gcc g++ pkg-config libegl-dev libgles-dev \
 	libmeshoptimizer-dev gnuplot-nox \
 	qemu-system-x86 busybox-static lz4 cpio kmod udev xz-utils kmscube libdrm-tests \
 	libcamera-tools gpiod v4l-utils
+# glTF: Draco meshes, and the tools and sample files of the model corpus test.
+DEBIAN_PACKAGES += libdraco-dev draco gltfpack assimp-testmodels
 
 deps:
 	$(APT_GET) update -qq

@@ -22,6 +22,15 @@ enum gltf_texture {
 	GLTF_TEXTURE_THICKNESS = 1u << 2, /* KHR_materials_iridescence thickness */
 };
 
+/* What to load beyond the geometry. */
+struct gltf_options {
+	unsigned textures; /* enum gltf_texture bits */
+	/* The scene to show: an index ("1") or a scene's name; NULL or "" for
+	 * the file's `scene`, else the first. A file without scenes shows
+	 * every tree of nodes. */
+	const char *scene;
+};
+
 /* Load every triangle primitive of the default scene, each with its node
  * transform, into one mesh fitted to the unit sphere. Every accessor is
  * bounds-checked here, whatever tinygltf checked. Returns 0, or a negative
@@ -35,11 +44,16 @@ int gltf_load(const char *path, struct mesh *out);
  * warning and stays empty; the model still loads. */
 int gltf_load_textures(const char *path, unsigned textures, struct mesh *out);
 
+/* The same with every option. */
+int gltf_load_options(const char *path, const struct gltf_options *o, struct mesh *out);
+
 /* The same from memory (for the fuzzer); external buffers resolve in dir. */
 int gltf_load_memory(const char *name, const uint8_t *data, size_t size, const char *dir,
 		     struct mesh *out);
 int gltf_load_memory_textures(const char *name, const uint8_t *data, size_t size, const char *dir,
 			      unsigned textures, struct mesh *out);
+int gltf_load_memory_options(const char *name, const uint8_t *data, size_t size, const char *dir,
+			     const struct gltf_options *o, struct mesh *out);
 
 #ifdef __cplusplus
 }
