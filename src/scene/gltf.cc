@@ -4,6 +4,7 @@
 // checked here before a byte is read.
 #include "scene/gltf.h"
 #include "scene/gltf_ext.h"
+#include "scene/gltf_fs.h"
 #include "scene/gltf_material.h"
 #include "util/log.h"
 
@@ -13,142 +14,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 namespace
 {
-
-struct Context {
-	std::string dir; // the model's folder; external files must stay in it
-	std::string refused;
-	std::string missing;
-};
-
-// A buffer URI may name a file beside the model or below it, never an
-// absolute path or one that climbs out with "..".
-bool path_allowed(const Context &c, const std::string &path)
-{
-	std::string prefix = c.dir.empty() ? "" : c.dir + "/";
-	if (path.compare(0, prefix.size(), prefix) != 0)
-		return false;
-	std::string rel = path.substr(prefix.size());
-	if (rel.empty() || rel[0] == '/')
-		return false;
-	size_t start = 0;
-	while (start <= rel.size()) {
-		size_t end = rel.find('/', start);
-		if (end == std::string::npos)
-			end = rel.size();
-		if (rel.compare(start, end - start, "..") == 0 && end - start == 2)
-			return false;
-		start = end + 1;
-	}
-	return true;
-}
-
-// tinygltf looks for a buffer in more than one folder; remember the first
-// refused path and any allowed one that was missing, to say which it was.
-bool fs_exists(const std::string &path, void *user)
-{
-	Context *c = static_cast<Context *>(user);
-	size_t skip = c->dir.empty() ? 0 : c->dir.size() + 1;
-	std::string shown = path.size() > skip ? path.substr(skip) : path;
-	if (!path_allowed(*c, path)) {
-		if (c->refused.empty())
-			c->refused = shown;
-		return false;
-	}
-	std::ifstream f(path, std::ios::binary);
-	if (!f.good() && c->missing.empty())
-		c->missing = shown;
-	return f.good();
-}
-
-std::string fs_expand(const std::string &path, void *)
-{
-	return path; // no "~" or variables: a URI means what it says
-}
-
-bool read_file(const std::string &path, std::vector<unsigned char> *out, std::string *err)
-{
-	std::ifstream f(path, std::ios::binary | std::ios::ate);
-	if (!f) {
-		*err = "cannot open " + path + ": " + std::strerror(errno);
-		return false;
-	}
-	std::streamoff size = f.tellg();
-	if (size < 0 || (unsigned long long)size > GLTF_MAX_FILE) {
-		*err = path + " is larger than the limit";
-		return false;
-	}
-	out->resize((size_t)size);
-	f.seekg(0);
-	if (size > 0 && !f.read(reinterpret_cast<char *>(out->data()), size)) {
-		*err = "read error in " + path;
-		return false;
-	}
-	return true;
-}
-
-bool fs_read(std::vector<unsigned char> *out, std::string *err, const std::string &path, void *user)
-{
-	Context *c = static_cast<Context *>(user);
-	if (!path_allowed(*c, path)) {
-		*err = "URI leaves the model's folder: " + path;
-		return false;
-	}
-	return read_file(path, out, err);
-}
-
-bool fs_write(std::string *err, const std::string &, const std::vector<unsigned char> &, void *)
-{
-	*err = "writing is not allowed";
-	return false;
-}
-
-// tinygltf 2.9 (Debian 13) asks for a file's size before reading it, and
-// takes no callbacks at all unless this one is given too; 2.7 has no such
-// member.
-[[maybe_unused]] bool fs_size(size_t *size, std::string *err, const std::string &path, void *user)
-{
-	Context *c = static_cast<Context *>(user);
-	if (!path_allowed(*c, path)) {
-		*err = "URI leaves the model's folder: " + path;
-		return false;
-	}
-	std::ifstream f(path, std::ios::binary | std::ios::ate);
-	std::streamoff n = f ? std::streamoff(f.tellg()) : std::streamoff(-1);
-	if (n < 0) {
-		*err = "cannot open " + path + ": " + std::strerror(errno);
-		return false;
-	}
-	*size = (size_t)n;
-	return true;
-}
-
-template <typename T, typename = void> struct HasFileSize : std::false_type {
-};
-template <typename T>
-struct HasFileSize<T, std::void_t<decltype(&T::GetFileSizeInBytes)>> : std::true_type {
-};
-
-// Members by name: 2.9 added one before user_data, so a brace list that
-// fits one version does not fit the other.
-template <typename T> T fs_callbacks(Context *ctx)
-{
-	T fs{};
-	fs.FileExists = fs_exists;
-	fs.ExpandFilePath = fs_expand;
-	fs.ReadWholeFile = fs_read;
-	fs.WriteWholeFile = fs_write;
-	if constexpr (HasFileSize<T>::value)
-		fs.GetFileSizeInBytes = fs_size;
-	fs.user_data = ctx;
-	return fs;
-}
 
 // One primitive's vertices and indices, as appended to the builder.
 struct Range {
@@ -664,7 +534,7 @@ int build_mesh(const char *name, tinygltf::Model &m, const struct gltf_options *
 }
 
 bool parse(tinygltf::TinyGLTF &loader, tinygltf::Model *model, const uint8_t *data, size_t size,
-	   const Context &ctx, bool all, std::string *err)
+	   const GltfFiles &ctx, bool all, std::string *err)
 {
 	std::string warn;
 	std::vector<unsigned char> fixed = gltf_ext::tinygltf_compatible(data, size, all);
@@ -686,9 +556,10 @@ int load_memory(const char *name, const uint8_t *data, size_t size, const char *
 	tinygltf::TinyGLTF loader;
 	tinygltf::Model model;
 	std::string err;
-	Context ctx;
+	GltfFiles ctx;
 	GltfImages images;
 	ctx.dir = dir ? dir : "";
+	ctx.max_size = GLTF_MAX_FILE;
 	images.keep = o->textures != 0;
 	std::memset(out, 0, sizeof(*out));
 
@@ -697,7 +568,7 @@ int load_memory(const char *name, const uint8_t *data, size_t size, const char *
 			gltf_ext::escape(name).c_str(), size, GLTF_MAX_FILE);
 		return -EFBIG;
 	}
-	loader.SetFsCallbacks(fs_callbacks<tinygltf::FsCallbacks>(&ctx));
+	loader.SetFsCallbacks(gltf_fs_callbacks(&ctx));
 	// Images are decoded by our own libpng/libjpeg path, and only those a
 	// feature asked for; never by the stb copy inside the library.
 	loader.SetImageLoader(gltf_keep_image, &images);
@@ -716,7 +587,7 @@ int load_memory(const char *name, const uint8_t *data, size_t size, const char *
 		err = ok ? "extensionsRequired: " + required + " not supported"
 			 : gltf_ext::parse_fault({ctx.dir, ctx.missing, ctx.refused,
 						  [&ctx](const std::string &path) {
-							  return path_allowed(ctx, path);
+							  return gltf_path_allowed(ctx, path);
 						  }},
 						 model, data, size, err);
 		ok = false;
@@ -769,7 +640,7 @@ extern "C" int gltf_load_options(const char *path, const struct gltf_options *o,
 	dir = slash == std::string::npos ? "" : dir.substr(0, slash);
 
 	std::memset(out, 0, sizeof(*out));
-	if (!read_file(path, &bytes, &err)) {
+	if (!gltf_read_file(path, GLTF_MAX_FILE, &bytes, &err)) {
 		log_err("%s: %s", gltf_ext::escape(path).c_str(), gltf_ext::escape(err).c_str());
 		return -ENOENT;
 	}

@@ -3,6 +3,7 @@
 #ifndef MK_GLTF_H
 #define MK_GLTF_H
 
+#include "scene/gltf_texture.h"
 #include "scene/mesh.h"
 
 #include <stddef.h>
@@ -14,13 +15,6 @@ extern "C" {
 
 /* Models larger than this are refused before parsing. */
 #define GLTF_MAX_FILE (512u << 20)
-
-/* The material textures a caller may ask to have decoded. */
-enum gltf_texture {
-	GLTF_TEXTURE_NORMAL = 1u << 0,	  /* normalTexture */
-	GLTF_TEXTURE_OCCLUSION = 1u << 1, /* occlusionTexture */
-	GLTF_TEXTURE_THICKNESS = 1u << 2, /* KHR_materials_iridescence thickness */
-};
 
 /* What to load beyond the geometry. */
 struct gltf_options {
