@@ -37,7 +37,9 @@ WARN      := -Wall -Wextra -Werror
 OPT       ?= -O2 -g
 CFLAGS    ?=
 CXXFLAGS  ?=
-ALL_CFLAGS   = -std=c11 -D_GNU_SOURCE $(OPT) $(WARN) -Isrc -I$(BUILD) $(PKG_CFLAGS) \
+# 64-bit file offsets on 32-bit ARM too: without them readdir() and stat()
+# fail (EOVERFLOW) where a filesystem hands out 64-bit inodes or cookies.
+ALL_CFLAGS   = -std=c11 -D_GNU_SOURCE -D_FILE_OFFSET_BITS=64 $(OPT) $(WARN) -Isrc -I$(BUILD) $(PKG_CFLAGS) \
 	       -DMK_VERSION='"$(VERSION)"' -DMK_MATCAP_DIR='"$(DATADIR)/matcaps"' $(CFLAGS)
 ALL_CXXFLAGS = -std=c++17 $(OPT) $(WARN) -Isrc $(PKG_CFLAGS) $(CXXFLAGS)
 # meshoptimizer (Debian's 0.18) ships no .pc file; it is C++, and the link
@@ -104,6 +106,7 @@ run: matcap-kiosk
 
 include tests/tests.mk
 -include tests/vm/vm.mk
+-include tests/cross/cross.mk
 
 DEBIAN_PACKAGES := make gcc g++ pkg-config libegl-dev libgles-dev libosmesa6-dev libosmesa6 \
 	libegl-mesa0 libgl1-mesa-dri libgbm-dev libdrm-dev libtinygltf-dev nlohmann-json3-dev \
