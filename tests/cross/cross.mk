@@ -102,7 +102,13 @@ deps-deb:
 	$(CROSS_SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
 		--no-install-recommends debhelper lintian dpkg-dev
 
+# A package for another architecture (dpkg-buildpackage -a) would need
+# that architecture's libraries installed with dpkg, for dpkg-shlibdeps to
+# find ${shlibs:Depends}; the sysroot above does without them on purpose.
 deb:
+	@[ -z "$(ARCH)" ] || [ "$(ARCH)" = "$$(dpkg --print-architecture)" ] || \
+		{ echo "make deb builds for this machine only: build the $(ARCH) package on the Pi"; \
+		exit 2; }
 	@v=$$(dpkg-parsechangelog -l config/debian/changelog -SVersion); [ "$$v" = "$(VERSION)" ] || \
 		{ echo "config/debian/changelog: version $$v, the Makefile says $(VERSION)"; exit 1; }
 	rm -rf $(DEB_BUILD)
