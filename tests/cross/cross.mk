@@ -40,8 +40,8 @@ CROSS_HOST_PACKAGES := gcc-$(CROSS_TRIPLET) g++-$(CROSS_TRIPLET) qemu-user-stati
 CROSS_PKG_CONFIG := env PKG_CONFIG_LIBDIR=$(CROSS_SYSROOT)/usr/lib/$(CROSS_TRIPLET)/pkgconfig:$(CROSS_SYSROOT)/usr/share/pkgconfig \
 	PKG_CONFIG_SYSROOT_DIR=$(CROSS_SYSROOT) $(PKG_CONFIG)
 # UBSan runs under qemu-user and catches what a 32-bit size_t or long, or
-# a misaligned access, would break; ASan does not (its shadow memory is
-# more than qemu-user maps), so the cross tests go without it.
+# a misaligned access, would break; ASan does not (its leak checker stops
+# with a fatal error under qemu-user), so the cross tests go without it.
 CROSS_SANITIZE := -fsanitize=undefined -fno-sanitize-recover=all
 # GCC's note that armhf passes some C++ arguments differently since GCC 7.1
 # concerns only code built with GCC 6 and older, none of it here.
