@@ -49,8 +49,10 @@ WARN      := -Wall -Wextra -Werror
 OPT       ?= -O2 -g
 CFLAGS    ?=
 CXXFLAGS  ?=
-ALL_CFLAGS   = -std=c11 -D_GNU_SOURCE $(OPT) $(WARN) -Isrc -I$(BUILD) $(PKG_CFLAGS) \
-	       $(if $(filter 1,$(OSMESA)),-DMK_HAVE_OSMESA) \
+# 64-bit file offsets on 32-bit ARM too: without them readdir() and stat()
+# fail (EOVERFLOW) where a filesystem hands out 64-bit inodes or cookies.
+ALL_CFLAGS   = -std=c11 -D_GNU_SOURCE -D_FILE_OFFSET_BITS=64 $(OPT) $(WARN) -Isrc -I$(BUILD) \
+	       $(PKG_CFLAGS) $(if $(filter 1,$(OSMESA)),-DMK_HAVE_OSMESA) \
 	       -DMK_VERSION='"$(VERSION)"' -DMK_MATCAP_DIR='"$(DATADIR)/matcaps"' $(CFLAGS)
 ALL_CXXFLAGS = -std=c++17 $(OPT) $(WARN) -Isrc $(PKG_CFLAGS) $(CXXFLAGS)
 # meshoptimizer (Debian's 0.18) ships no .pc file; it is C++, and the link
@@ -121,6 +123,7 @@ run: matcap-kiosk
 
 include tests/tests.mk
 -include tests/vm/vm.mk
+-include tests/cross/cross.mk
 
 # Package names differ between releases: clang (and its runtime for the
 # fuzzers) is 14 on Debian 12 and 19 on Debian 13; OSMesa only while Mesa
