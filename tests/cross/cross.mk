@@ -100,7 +100,7 @@ DEB_TREE  := Makefile README.md LICENSE src shaders matcaps config systemd tests
 deps-deb:
 	$(CROSS_SUDO) apt-get update -qq
 	$(CROSS_SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
-		--no-install-recommends debhelper lintian dpkg-dev
+		--no-install-recommends debhelper lintian dpkg-dev mmdebstrap file
 
 # A package for another architecture (dpkg-buildpackage -a) would need
 # that architecture's libraries installed with dpkg, for dpkg-shlibdeps to
