@@ -11,12 +11,23 @@
 #include <cmath>
 #include <cstring>
 #include <memory>
+#include <type_traits>
 
 namespace gltf_ext
 {
 
 namespace
 {
+
+// tinygltf 2.7 (Debian 12) keeps offsets and counts as int, 2.9 (Debian 13)
+// as size_t: a negative one is possible only in the first.
+template <typename T> bool negative(T v)
+{
+	if constexpr (std::is_signed_v<T>)
+		return v < 0;
+	else
+		return false;
+}
 
 // The loader's one list of what it understands. Anything else in
 // extensionsRequired refuses the file, naming it.
@@ -81,7 +92,7 @@ bool read_sparse(const tinygltf::Model &m, const tinygltf::Accessor &a, const st
 	size_t isize = component_size(s.indices.componentType);
 	size_t vsize = component_size(a.componentType) * (size_t)n;
 	const unsigned char *ip, *vp;
-	if (s.count < 0 || (size_t)s.count > a.count) {
+	if (negative(s.count) || (size_t)s.count > a.count) {
 		*err = what + ".sparse.count: " + std::to_string(s.count) +
 		       ", expected at most the accessor's count " + std::to_string(a.count);
 		return false;
@@ -93,7 +104,7 @@ bool read_sparse(const tinygltf::Model &m, const tinygltf::Accessor &a, const st
 		       "UNSIGNED_SHORT or UNSIGNED_INT";
 		return false;
 	}
-	if (s.indices.byteOffset < 0 || s.values.byteOffset < 0 ||
+	if (negative(s.indices.byteOffset) || negative(s.values.byteOffset) ||
 	    !view_span(m, s.indices.bufferView, (size_t)s.indices.byteOffset, isize, isize,
 		       (size_t)s.count, what + ".sparse.indices", &ip, err) ||
 	    !view_span(m, s.values.bufferView, (size_t)s.values.byteOffset, vsize, vsize,
