@@ -7,7 +7,7 @@
 #   make bench         speed figures (printed, never asserted); make report
 
 UNIT_TESTS  := options mesh image gltf shading app button content service
-UNIT_TESTS  += tangent subdivide material
+UNIT_TESTS  += tangent subdivide material mesh_cache
 UNIT_TESTS  += camera_math camera_proto camera_texture
 UNIT_TESTS  += stability fp16 lod
 UNIT_TESTS  += drm gesture touch_decode schedule power cec backlight

@@ -102,7 +102,7 @@ void renderer_free(struct renderer *r)
 
 /* Core GLES2 indexes with 16 bits; 32-bit indices need an extension that
  * some SBC GPUs lack, and then the mesh is drawn unindexed. */
-static int upload_indices(struct renderer *r, const struct mesh *m)
+static int upload_indices(struct renderer *r, const struct mesh_packed *m)
 {
 	const struct gl *gl = r->gl;
 
@@ -132,75 +132,27 @@ static int upload_indices(struct renderer *r, const struct mesh *m)
 	return 0;
 }
 
-static const int attr_size[SHADER_ATTR_COUNT] = {3, 3, 2, 4};
-
-/* How an attribute is stored on the GPU: float32, or (compact) 16-bit
- * integers read as normalized: positions scaled by the mesh's largest
- * coordinate (the fitted mesh is inside the unit sphere, so 1/32767 of
- * it is far below a pixel), unit normals and tangents as they are. The
- * UVs stay float: a repeated map's UVs leave [0, 1]. */
-static bool attr_compact(const struct renderer *r, int a)
-{
-	return r->drawn == VERTEX_COMPACT && a != SHADER_ATTR_UV;
-}
-
-static size_t attr_stride(const struct renderer *r, int a)
-{
-	return (size_t)attr_size[a] * (attr_compact(r, a) ? sizeof(int16_t) : sizeof(float));
-}
-
-static int16_t snorm16(float v)
-{
-	float c = v < -1.0f ? -1.0f : v > 1.0f ? 1.0f : v;
-
-	return (int16_t)lrintf(c * 32767.0f);
-}
-
-static float position_scale(const struct mesh *m)
-{
-	float scale = 0.0f;
-
-	for (size_t i = 0; i < (size_t)m->vertex_count * 3; i++)
-		scale = fmaxf(scale, fabsf(m->positions[i]));
-	return scale > 0.0f && isfinite(scale) ? scale : 1.0f;
-}
-
-/* One attribute in its GPU format: entry i is vertex i when indexed, else
- * the vertex of index i. */
-static void *attr_convert(const struct renderer *r, const struct mesh *m, int a, const float *src,
-			  size_t count)
-{
-	size_t n = (size_t)attr_size[a], stride = attr_stride(r, a);
-	float inv = a == SHADER_ATTR_POSITION ? 1.0f / r->position_scale : 1.0f;
-	char *out = malloc(count * stride + 1);
-
-	for (size_t i = 0; out && i < count; i++) {
-		const float *v = src + (r->indexed ? i : m->indices[i]) * n;
-
-		if (!attr_compact(r, a)) {
-			memcpy(out + i * stride, v, stride);
-			continue;
-		}
-		for (size_t c = 0; c < n; c++)
-			((int16_t *)(void *)(out + i * stride))[c] = snorm16(v[c] * inv);
-	}
-	return out;
-}
-
 /* One attribute array: as it is when indexed, else one entry per index. */
-static int upload_attribute(struct renderer *r, const struct mesh *m, int a, const float *src)
+static int upload_attribute(struct renderer *r, const struct mesh_packed *m, int a)
 {
 	const struct gl *gl = r->gl;
+	size_t stride = mesh_array_stride(m->format, (enum mesh_array)a);
 	size_t count = r->indexed ? m->vertex_count : m->index_count;
-	bool copy = !r->indexed || attr_compact(r, a);
-	void *data = copy ? attr_convert(r, m, a, src, count) : NULL;
+	const char *src = m->arrays[a];
+	char *flat = NULL;
 
-	if (copy && !data)
-		return -ENOMEM;
-	r->attr_bytes[a] = (long)(count * attr_stride(r, a));
+	if (!r->indexed) {
+		flat = malloc(count * stride + 1);
+		if (!flat)
+			return -ENOMEM;
+		for (uint32_t i = 0; i < m->index_count; i++)
+			memcpy(flat + i * stride, src + (size_t)m->indices[i] * stride, stride);
+	}
+	r->attr_bytes[a] = (long)(count * stride);
 	gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo[a]);
-	gl->BufferData(GL_ARRAY_BUFFER, r->attr_bytes[a], copy ? data : src, GL_STATIC_DRAW);
-	free(data);
+	gl->BufferData(GL_ARRAY_BUFFER, r->attr_bytes[a], flat ? (const void *)flat : src,
+		       GL_STATIC_DRAW);
+	free(flat);
 	return 0;
 }
 
@@ -209,21 +161,20 @@ void renderer_set_vertex_format(struct renderer *r, enum vertex_format format)
 	r->format = format;
 }
 
-int renderer_set_mesh(struct renderer *r, const struct mesh *m)
+int renderer_set_packed(struct renderer *r, const struct mesh_packed *m)
 {
 	bool uvs = material_needs_uvs(r->mat.features);
 	bool tangents = material_needs_tangents(r->mat.features);
-	const float *src[SHADER_ATTR_COUNT] = {m->positions, m->normals, uvs ? m->uvs : NULL,
-					       tangents ? m->tangents : NULL};
+	bool used[SHADER_ATTR_COUNT] = {true, true, uvs, tangents};
 	int ret = upload_indices(r, m);
 
-	r->drawn = r->format;
-	r->position_scale = r->drawn == VERTEX_COMPACT ? position_scale(m) : 1.0f;
-	if ((uvs && !m->uvs) || (tangents && !m->tangents))
+	r->drawn = m->format;
+	r->position_scale = m->position_scale;
+	if ((uvs && !m->arrays[MESH_UVS]) || (tangents && !m->arrays[MESH_TANGENTS]))
 		log_warn("render: the mesh lacks the UVs or tangents its material needs");
 	for (int a = 0; a < SHADER_ATTR_COUNT && !ret; a++) {
-		if (src[a]) {
-			ret = upload_attribute(r, m, a, src[a]);
+		if (used[a] && m->arrays[a]) {
+			ret = upload_attribute(r, m, a);
 		} else if (r->attr_bytes[a]) {
 			/* A feature no longer used gives its memory back. */
 			r->gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo[a]);
@@ -235,6 +186,17 @@ int renderer_set_mesh(struct renderer *r, const struct mesh *m)
 		log_err("render: out of GPU memory for %u vertices", m->vertex_count);
 		ret = -ENOMEM;
 	}
+	return ret;
+}
+
+int renderer_set_mesh(struct renderer *r, const struct mesh *m)
+{
+	struct mesh_packed packed;
+	int ret = mesh_pack(m, r->format, &packed);
+
+	if (!ret)
+		ret = renderer_set_packed(r, &packed);
+	mesh_packed_release(&packed);
 	return ret;
 }
 
@@ -460,14 +422,16 @@ static void draw_with(struct renderer *r, const struct program *p, const struct 
 	gl->UniformMatrix3fv(p->normal_matrix, 1, GL_FALSE, nm);
 	set_uniforms(r, p);
 	for (int a = 0; a < SHADER_ATTR_COUNT; a++) {
+		bool int16 = mesh_array_int16(r->drawn, (enum mesh_array)a);
+
 		if (!r->attr_bytes[a]) {
 			gl->DisableVertexAttribArray((GLuint)a);
 			continue;
 		}
 		gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo[a]);
-		gl->VertexAttribPointer((GLuint)a, attr_size[a],
-					attr_compact(r, a) ? GL_SHORT : GL_FLOAT,
-					attr_compact(r, a) ? GL_TRUE : GL_FALSE, 0, NULL);
+		gl->VertexAttribPointer((GLuint)a, mesh_array_components((enum mesh_array)a),
+					int16 ? GL_SHORT : GL_FLOAT, int16 ? GL_TRUE : GL_FALSE, 0,
+					NULL);
 		gl->EnableVertexAttribArray((GLuint)a);
 	}
 	if (r->indexed) {

@@ -7,6 +7,7 @@
 #include "scene/material.h"
 #include "util/math3d.h"
 #include "scene/mesh.h"
+#include "scene/mesh_pack.h"
 #include "render/shading.h"
 
 #include <stdbool.h>
@@ -29,11 +30,12 @@ void renderer_free(struct renderer *r);
  * read. Without it the renderer draws the plain matcap. */
 int renderer_set_material(struct renderer *r, const struct material *m);
 int renderer_set_mesh(struct renderer *r, const struct mesh *m);
+/* The same from arrays already in the GPU's format (a mapped cache entry),
+ * uploaded as they are; m may be unmapped once it returns. */
+int renderer_set_packed(struct renderer *r, const struct mesh_packed *m);
 
-/* How renderer_set_mesh stores the vertices: float32 throughout, or
- * (the default) compact: positions and unit vectors as normalized int16
- * (half the memory; the UVs stay float). */
-enum vertex_format { VERTEX_FLOAT32, VERTEX_COMPACT };
+/* How renderer_set_mesh stores the vertices (scene/mesh_pack.h); the
+ * default: compact. */
 void renderer_set_vertex_format(struct renderer *r, enum vertex_format format);
 /* Whether renderer_set_matcap mipmaps the matcap (a size that is not a
  * power of two is resampled to the nearest one first); the default: no. */

@@ -1,0 +1,63 @@
+/* The prepared-mesh cache: a mesh loaded, given its normals, tangents and
+ * level of detail, fitted, and packed in the GPU's vertex format, kept on
+ * disk so that the next start maps it and uploads it as it is, with no
+ * parse and no preparation. An entry is keyed by the model's content and
+ * by every setting that changes the result, written atomically, and
+ * checked (header, sizes, checksums, index range) before it is used: a
+ * truncated, stale or corrupt entry is a miss, removed and rebuilt. */
+#ifndef MK_MESH_CACHE_H
+#define MK_MESH_CACHE_H
+
+#include "scene/mesh.h"
+#include "scene/mesh_pack.h"
+
+#include <stddef.h>
+#include <stdint.h>
+
+/* Entries beyond this, oldest first, are removed after each write. */
+#define MESH_CACHE_MAX_BYTES (256ull << 20)
+
+struct mesh_cache_key {
+	uint64_t content;  /* mesh_cache_hash_model */
+	uint64_t settings; /* the caller's settings, through mesh_cache_hash */
+};
+
+/* A fast 64-bit hash (not a cryptographic one: the cache trusts its own
+ * directory, and checks what it reads for damage, not for malice). */
+uint64_t mesh_cache_hash(const void *data, size_t size, uint64_t seed);
+
+/* The model file's bytes and, for a .gltf, those of every file its "uri"s
+ * name beside it (buffers, images). Returns 0 or a negative errno code. */
+int mesh_cache_hash_model(const char *path, uint64_t *out);
+
+/* $CACHE_DIRECTORY (systemd's CacheDirectory=, the first when it lists
+ * several), else $XDG_CACHE_HOME/matcap-kiosk, else ~/.cache/matcap-kiosk.
+ * Returns 0, or -ENOENT when none can be named, -ENAMETOOLONG. */
+int mesh_cache_dir(char *buf, size_t size);
+
+struct mesh_cache_entry;
+
+/* Map dir's entry for key and check it. Returns 0, -ENOENT when there is
+ * none, or -EBADMSG when it is damaged or stale (it is then removed). */
+int mesh_cache_open(const char *dir, const struct mesh_cache_key *key,
+		    struct mesh_cache_entry **out);
+/* The entry's mesh, its arrays pointing into the mapping. */
+const struct mesh_packed *mesh_cache_entry_mesh(const struct mesh_cache_entry *e);
+/* The model's material factors (no images: an entry is written only
+ * for a scene that decodes none). */
+const struct mesh_material *mesh_cache_entry_material(const struct mesh_cache_entry *e);
+void mesh_cache_entry_free(struct mesh_cache_entry *e);
+
+/* Check an entry's bytes (what mesh_cache_open does once mapped): 0 and
+ * out's arrays pointing into data, or -EBADMSG. key may be NULL (any). */
+int mesh_cache_parse(const void *data, size_t size, const struct mesh_cache_key *key,
+		     struct mesh_packed *out, struct mesh_material *material);
+
+/* Write m and material's factors as key's entry: a temporary file,
+ * fsync, rename, so that a reader sees the whole entry or none; then the
+ * directory is trimmed to max_bytes, oldest entries first. The directory
+ * is made when missing. Returns 0 or a negative errno code. */
+int mesh_cache_write(const char *dir, const struct mesh_cache_key *key, const struct mesh_packed *m,
+		     const struct mesh_material *material, uint64_t max_bytes);
+
+#endif

@@ -1,0 +1,260 @@
+/* The prepared-mesh cache: what is written reads back the same, and an
+ * entry that is truncated, flipped, stale or of another key is never
+ * trusted. Also the compact vertex format it stores. */
+#include "scene/mesh.h"
+#include "scene/mesh_cache.h"
+#include "scene/mesh_pack.h"
+#include "util/log.h"
+
+#include <errno.h>
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <cmocka.h>
+
+struct fixture {
+	char dir[64];
+	struct mesh mesh;
+	struct mesh_packed packed;
+	struct mesh_material material;
+	struct mesh_cache_key key;
+};
+
+static int setup(void **state)
+{
+	struct fixture *f = calloc(1, sizeof(*f));
+
+	assert_non_null(f);
+	snprintf(f->dir, sizeof(f->dir), "/tmp/mk-cache-XXXXXX");
+	assert_non_null(mkdtemp(f->dir));
+	assert_int_equal(mesh_uv_sphere(&f->mesh, 24, 12), 0);
+	assert_int_equal(mesh_pack(&f->mesh, VERTEX_COMPACT, &f->packed), 0);
+	mesh_material_default(&f->material);
+	f->material.present = true;
+	f->material.base_color[1] = 0.25f;
+	f->key = (struct mesh_cache_key){.content = 0x1234, .settings = 0x5678};
+	log_set_level(LOG_ERR);
+	*state = f;
+	return 0;
+}
+
+static int teardown(void **state)
+{
+	struct fixture *f = *state;
+	char cmd[128];
+
+	snprintf(cmd, sizeof(cmd), "rm -rf %s", f->dir);
+	assert_int_equal(system(cmd), 0);
+	mesh_packed_release(&f->packed);
+	mesh_release(&f->mesh);
+	free(f);
+	return 0;
+}
+
+static void *read_entry(const struct fixture *f, size_t *size)
+{
+	char path[128];
+	FILE *file;
+	void *data;
+	long n;
+
+	snprintf(path, sizeof(path), "%s/%016llx-%016llx.mkmesh", f->dir,
+		 (unsigned long long)f->key.content, (unsigned long long)f->key.settings);
+	file = fopen(path, "rb");
+	assert_non_null(file);
+	fseek(file, 0, SEEK_END);
+	n = ftell(file);
+	rewind(file);
+	data = malloc((size_t)n);
+	assert_int_equal(fread(data, 1, (size_t)n, file), (size_t)n);
+	fclose(file);
+	*size = (size_t)n;
+	return data;
+}
+
+static void compact_vertices_are_within_a_step(void **state)
+{
+	struct fixture *f = *state;
+	const int16_t *p = f->packed.arrays[MESH_POSITIONS], *n = f->packed.arrays[MESH_NORMALS];
+	float s = f->packed.position_scale;
+
+	assert_true(s > 0.9f && s <= 1.0f);
+	assert_int_equal(mesh_array_stride(VERTEX_COMPACT, MESH_POSITIONS), 6);
+	assert_int_equal(mesh_array_stride(VERTEX_FLOAT32, MESH_POSITIONS), 12);
+	for (uint32_t i = 0; i < f->mesh.vertex_count * 3; i++) {
+		assert_true(fabsf(p[i] / 32767.0f * s - f->mesh.positions[i]) <= s / 32767.0f);
+		assert_true(fabsf(n[i] / 32767.0f - f->mesh.normals[i]) <= 1.0f / 32767.0f);
+	}
+}
+
+static void an_entry_reads_back_as_written(void **state)
+{
+	struct fixture *f = *state;
+	struct mesh_cache_entry *e;
+	const struct mesh_packed *m;
+	size_t bytes = f->mesh.vertex_count * mesh_array_stride(VERTEX_COMPACT, MESH_POSITIONS);
+
+	assert_int_equal(mesh_cache_open(f->dir, &f->key, &e), -ENOENT);
+	assert_int_equal(
+	    mesh_cache_write(f->dir, &f->key, &f->packed, &f->material, MESH_CACHE_MAX_BYTES), 0);
+	assert_int_equal(mesh_cache_open(f->dir, &f->key, &e), 0);
+	m = mesh_cache_entry_mesh(e);
+	assert_int_equal(m->vertex_count, f->packed.vertex_count);
+	assert_int_equal(m->index_count, f->packed.index_count);
+	assert_true(m->position_scale == f->packed.position_scale);
+	assert_memory_equal(m->arrays[MESH_POSITIONS], f->packed.arrays[MESH_POSITIONS], bytes);
+	assert_memory_equal(m->indices, f->packed.indices, f->packed.index_count * 4);
+	assert_null(m->arrays[MESH_TANGENTS]);
+	assert_true(mesh_cache_entry_material(e)->base_color[1] == 0.25f);
+	mesh_cache_entry_free(e);
+}
+
+/* Every truncation and every single-bit flip of the header, and flips
+ * spread over the payload: each is refused, none crashes. */
+static void a_damaged_entry_is_refused(void **state)
+{
+	struct fixture *f = *state;
+	struct mesh_packed out;
+	struct mesh_material mat;
+	size_t size;
+	unsigned char *data;
+
+	assert_int_equal(
+	    mesh_cache_write(f->dir, &f->key, &f->packed, &f->material, MESH_CACHE_MAX_BYTES), 0);
+	data = read_entry(f, &size);
+	assert_int_equal(mesh_cache_parse(data, size, &f->key, &out, &mat), 0);
+	for (size_t n = 0; n < size; n += n < 512 ? 1 : 97)
+		assert_int_equal(mesh_cache_parse(data, n, &f->key, &out, &mat), -EBADMSG);
+	for (size_t i = 0; i < size; i += i < 256 ? 1 : 13)
+		for (int bit = 0; bit < 8; bit++) {
+			data[i] ^= (unsigned char)(1u << bit);
+			assert_int_equal(mesh_cache_parse(data, size, &f->key, &out, &mat),
+					 -EBADMSG);
+			data[i] ^= (unsigned char)(1u << bit);
+		}
+	free(data);
+}
+
+static void another_key_or_version_is_a_miss(void **state)
+{
+	struct fixture *f = *state;
+	struct mesh_cache_key other = {.content = f->key.content, .settings = 1};
+	struct mesh_cache_entry *e;
+	struct mesh_packed out;
+	size_t size;
+	unsigned char *data;
+
+	assert_int_equal(
+	    mesh_cache_write(f->dir, &f->key, &f->packed, &f->material, MESH_CACHE_MAX_BYTES), 0);
+	data = read_entry(f, &size);
+	assert_int_equal(mesh_cache_parse(data, size, &other, &out, NULL), -EBADMSG);
+	assert_int_equal(mesh_cache_open(f->dir, &other, &e), -ENOENT);
+	/* An entry renamed under another key is stale: refused and removed. */
+	{
+		char from[128], to[128];
+
+		snprintf(from, sizeof(from), "%s/%016llx-%016llx.mkmesh", f->dir, 0x1234ull,
+			 0x5678ull);
+		snprintf(to, sizeof(to), "%s/%016llx-%016llx.mkmesh", f->dir, 0x1234ull, 1ull);
+		assert_int_equal(rename(from, to), 0);
+		assert_int_equal(mesh_cache_open(f->dir, &other, &e), -EBADMSG);
+		assert_int_equal(access(to, F_OK), -1);
+	}
+	free(data);
+}
+
+static void the_directory_stays_under_its_bound(void **state)
+{
+	struct fixture *f = *state;
+	struct mesh_cache_entry *e;
+	size_t size;
+	void *data;
+
+	assert_int_equal(
+	    mesh_cache_write(f->dir, &f->key, &f->packed, &f->material, MESH_CACHE_MAX_BYTES), 0);
+	data = read_entry(f, &size);
+	free(data);
+	/* Room for two: the third write removes the oldest. */
+	for (uint64_t k = 1; k <= 3; k++) {
+		struct mesh_cache_key key = {.content = k, .settings = 0};
+
+		assert_int_equal(
+		    mesh_cache_write(f->dir, &key, &f->packed, &f->material, 2 * size + size / 2),
+		    0);
+		usleep(20000); /* distinct times, coarse file systems too */
+	}
+	{
+		struct mesh_cache_key first = {.content = 1}, last = {.content = 3};
+
+		assert_int_equal(mesh_cache_open(f->dir, &first, &e), -ENOENT);
+		assert_int_equal(mesh_cache_open(f->dir, &last, &e), 0);
+		mesh_cache_entry_free(e);
+	}
+}
+
+static void the_key_follows_the_bytes(void **state)
+{
+	struct fixture *f = *state;
+	char model[128], buffer[128];
+	uint64_t a, b, c;
+	FILE *file;
+
+	assert_int_not_equal(mesh_cache_hash("abc", 3, 0), mesh_cache_hash("abd", 3, 0));
+	assert_int_not_equal(mesh_cache_hash("abc", 3, 0), mesh_cache_hash("abc", 3, 1));
+	snprintf(model, sizeof(model), "%s/m.gltf", f->dir);
+	snprintf(buffer, sizeof(buffer), "%s/m.bin", f->dir);
+	file = fopen(model, "w");
+	fputs("{\"buffers\": [{\"uri\" : \"m.bin\", \"byteLength\": 4}]}", file);
+	fclose(file);
+	file = fopen(buffer, "w");
+	fputs("abcd", file);
+	fclose(file);
+	assert_int_equal(mesh_cache_hash_model(model, &a), 0);
+	file = fopen(buffer, "w");
+	fputs("abce", file);
+	fclose(file);
+	assert_int_equal(mesh_cache_hash_model(model, &b), 0);
+	assert_int_equal(mesh_cache_hash_model(model, &c), 0);
+	assert_int_not_equal(a, b); /* the buffer beside it counts */
+	assert_int_equal(b, c);
+	assert_int_equal(mesh_cache_hash_model("/nonexistent/m.glb", &a), -ENOENT);
+}
+
+static void the_directory_is_named_as_systemd_and_xdg_say(void **state)
+{
+	char dir[256];
+
+	(void)state;
+	setenv("CACHE_DIRECTORY", "/var/cache/matcap-kiosk:/var/cache/other", 1);
+	assert_int_equal(mesh_cache_dir(dir, sizeof(dir)), 0);
+	assert_string_equal(dir, "/var/cache/matcap-kiosk");
+	unsetenv("CACHE_DIRECTORY");
+	setenv("XDG_CACHE_HOME", "/x/cache", 1);
+	assert_int_equal(mesh_cache_dir(dir, sizeof(dir)), 0);
+	assert_string_equal(dir, "/x/cache/matcap-kiosk");
+	unsetenv("XDG_CACHE_HOME");
+	setenv("HOME", "/home/k", 1);
+	assert_int_equal(mesh_cache_dir(dir, sizeof(dir)), 0);
+	assert_string_equal(dir, "/home/k/.cache/matcap-kiosk");
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+	    cmocka_unit_test_setup_teardown(compact_vertices_are_within_a_step, setup, teardown),
+	    cmocka_unit_test_setup_teardown(an_entry_reads_back_as_written, setup, teardown),
+	    cmocka_unit_test_setup_teardown(a_damaged_entry_is_refused, setup, teardown),
+	    cmocka_unit_test_setup_teardown(another_key_or_version_is_a_miss, setup, teardown),
+	    cmocka_unit_test_setup_teardown(the_directory_stays_under_its_bound, setup, teardown),
+	    cmocka_unit_test_setup_teardown(the_key_follows_the_bytes, setup, teardown),
+	    cmocka_unit_test(the_directory_is_named_as_systemd_and_xdg_say),
+	};
+
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
