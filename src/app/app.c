@@ -1,25 +1,67 @@
 #include "app/app.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* While something moves, redraw at about the display's rate. */
 #define FRAME_NS 16666667ull
 
-void app_init(struct app *a, const struct app_config *cfg, uint64_t now_ns)
+/* One direction of turning. A press turns from its time on; the turn
+ * lasts while any source holds it, and at least until until_ns, so a tap
+ * shorter than a frame still turns turn_step, smoothly. */
+struct app_turn {
+	int held;	   /* sources holding it (a key and a button may both) */
+	uint64_t until_ns; /* the tap's minimum end */
+};
+
+struct app {
+	struct app_state state;
+	struct app_config cfg;
+	int matcap_count;	  /* image matcaps that next/prev cycle through */
+	bool camera_available;	  /* found by the camera feed, not by the settings */
+	bool camera_resume;	  /* show the camera when it is (back) there */
+	bool attract;		  /* turning by itself */
+	uint64_t now_ns;	  /* the last time the state was advanced to */
+	struct app_turn turns[4]; /* left, right, up, down */
+};
+
+static void init(struct app *a, const struct app_config *cfg, int matcap_count, uint64_t now_ns)
 {
 	memset(a, 0, sizeof(*a));
 	a->cfg = *cfg;
-	a->orientation = quat_normalize(cfg->rest);
-	a->mode = cfg->mode;
+	a->matcap_count = matcap_count;
+	a->state.orientation = quat_normalize(cfg->rest);
+	a->state.mode = cfg->mode;
+	a->state.last_input_ns = now_ns;
+	a->state.dirty = true;
 	a->now_ns = now_ns;
-	a->last_input_ns = now_ns;
-	a->dirty = true;
+	/* The first time a camera is found, it is shown. */
+	a->camera_resume = true;
+}
+
+struct app *app_new(const struct app_config *cfg, int matcap_count, uint64_t now_ns)
+{
+	struct app *a = malloc(sizeof(*a));
+
+	if (a)
+		init(a, cfg, matcap_count, now_ns);
+	return a;
+}
+
+void app_free(struct app *a)
+{
+	free(a);
+}
+
+const struct app_state *app_state(const struct app *a)
+{
+	return &a->state;
 }
 
 static void turn(struct app *a, double yaw, double pitch)
 {
-	struct quat q = a->orientation;
+	struct quat q = a->state.orientation;
 
 	/* Turns about the viewer's axes, applied on the left, so "left" is
 	 * left on the screen whatever the model's orientation (and no gimbal
@@ -29,8 +71,8 @@ static void turn(struct app *a, double yaw, double pitch)
 		q = quat_multiply(quat_from_axis_angle(0, 1, 0, yaw), q);
 	if (pitch != 0.0)
 		q = quat_multiply(quat_from_axis_angle(1, 0, 0, pitch), q);
-	a->orientation = quat_normalize(q);
-	a->dirty = true;
+	a->state.orientation = quat_normalize(q);
+	a->state.dirty = true;
 }
 
 /* Seconds that one direction turned within [from, to]. */
@@ -63,12 +105,12 @@ static uint64_t attract_at(const struct app *a)
 {
 	if (!(a->cfg.attract_after_s > 0))
 		return CLOCK_NEVER;
-	return a->last_input_ns + (uint64_t)(a->cfg.attract_after_s * 1e9);
+	return a->state.last_input_ns + (uint64_t)(a->cfg.attract_after_s * 1e9);
 }
 
 static int entries(const struct app *a)
 {
-	return a->cfg.matcap_count > 0 ? a->cfg.matcap_count : 1;
+	return a->matcap_count > 0 ? a->matcap_count : 1;
 }
 
 static void press_turn(struct app *a, enum app_action action, uint64_t t)
@@ -88,18 +130,21 @@ static void press_turn(struct app *a, enum app_action action, uint64_t t)
  * when there is one: a kiosk with three buttons reaches all of them. */
 static void cycle(struct app *a, int step)
 {
-	int n = entries(a), slots = n + (a->cfg.camera_available ? 1 : 0);
-	int pos = a->camera_on ? n : a->matcap;
+	struct app_state *st = &a->state;
+	int n = entries(a), slots = n + (a->camera_available ? 1 : 0);
+	int pos = st->camera_on ? n : st->matcap;
 
 	pos = ((pos + step) % slots + slots) % slots;
-	a->camera_on = pos == n;
-	if (!a->camera_on)
-		a->matcap = pos;
-	a->dirty = true;
+	st->camera_on = pos == n;
+	if (!st->camera_on)
+		st->matcap = pos;
+	st->dirty = true;
 }
 
 static void press(struct app *a, enum app_action action, uint64_t t)
 {
+	struct app_state *st = &a->state;
+
 	if (app_action_is_turn(action)) {
 		press_turn(a, action, t);
 		return;
@@ -110,34 +155,34 @@ static void press(struct app *a, enum app_action action, uint64_t t)
 		cycle(a, action == ACTION_NEXT_MATCAP ? 1 : -1);
 		break;
 	case ACTION_TOGGLE_CAMERA:
-		if (a->camera_on || a->cfg.camera_available) {
-			a->camera_on = !a->camera_on;
-			a->dirty = true;
+		if (st->camera_on || a->camera_available) {
+			st->camera_on = !st->camera_on;
+			st->dirty = true;
 		}
 		break;
 	case ACTION_NEXT_MODE:
-		a->mode = (enum shading_mode)((a->mode + 1) % SHADING_MODE_COUNT);
-		a->dirty = true;
+		st->mode = (enum shading_mode)((st->mode + 1) % SHADING_MODE_COUNT);
+		st->dirty = true;
 		break;
 	case ACTION_RESET:
-		a->orientation = quat_normalize(a->cfg.rest);
-		a->mode = a->cfg.mode;
+		st->orientation = quat_normalize(a->cfg.rest);
+		st->mode = a->cfg.mode;
 		for (int i = 0; i < 4; i++)
 			a->turns[i].until_ns = 0; /* a tap's remainder would undo it */
-		a->dirty = true;
+		st->dirty = true;
 		break;
 	default:
 		break;
 	}
 }
 
-void app_handle(struct app *a, const struct app_event *ev)
+static void input(struct app *a, const struct app_event *ev)
 {
 	uint64_t t = ev->time_ns > a->now_ns ? ev->time_ns : a->now_ns;
 
 	app_advance(a, t);
-	if (t > a->last_input_ns)
-		a->last_input_ns = t;
+	if (t > a->state.last_input_ns)
+		a->state.last_input_ns = t;
 	a->attract = false; /* any press or release stops it, where it is */
 	if (ev->action <= ACTION_NONE || ev->action >= ACTION_COUNT)
 		return;
@@ -177,21 +222,75 @@ uint64_t app_advance(struct app *a, uint64_t now_ns)
 	return next_change(a);
 }
 
-void app_set_camera_available(struct app *a, bool available)
+static void set_camera_available(struct app *a, bool available)
 {
-	a->cfg.camera_available = available;
-	if (!available && a->camera_on) {
-		a->camera_on = false; /* back to the last image matcap */
-		a->dirty = true;
+	a->camera_available = available;
+	if (!available && a->state.camera_on) {
+		a->state.camera_on = false; /* back to the last image matcap */
+		a->state.dirty = true;
 	}
 }
 
-void app_set_matcap_count(struct app *a, int count)
+/* Lost while shown: back to it when it returns. A new frame is drawn
+ * only while the camera is shown. */
+static void camera(struct app *a, bool available, bool frame)
 {
-	if (count == a->cfg.matcap_count)
-		return;
-	a->cfg.matcap_count = count;
-	if (a->matcap >= entries(a))
-		a->matcap = 0;
-	a->dirty = true;
+	if (available != a->camera_available) {
+		if (!available && a->state.camera_on)
+			a->camera_resume = true;
+		set_camera_available(a, available);
+		if (available && a->camera_resume) {
+			a->state.camera_on = true;
+			a->state.dirty = true;
+			a->camera_resume = false;
+		}
+	}
+	if (frame && a->state.camera_on)
+		a->state.dirty = true;
+}
+
+/* Staying on the picture shown when it is still there. */
+static void matcaps(struct app *a, int count, int shown)
+{
+	a->matcap_count = count;
+	if (shown >= 0 && shown < entries(a))
+		a->state.matcap = shown;
+	else if (a->state.matcap >= entries(a))
+		a->state.matcap = 0;
+	a->state.dirty = true; /* it may be the very file that was rewritten */
+}
+
+static void reload(struct app *a, const struct app_config *cfg, int matcap_count, uint64_t now_ns)
+{
+	bool camera_on = a->state.camera_on, available = a->camera_available;
+	bool resume = a->camera_resume;
+
+	init(a, cfg, matcap_count, now_ns);
+	a->camera_available = available;
+	a->camera_resume = resume;
+	a->state.camera_on = camera_on && available;
+}
+
+void app_apply(struct app *a, const struct app_msg *m)
+{
+	switch (m->kind) {
+	case APP_INPUT:
+		input(a, &m->input);
+		break;
+	case APP_CAMERA:
+		camera(a, m->camera.available, m->camera.frame);
+		break;
+	case APP_MATCAPS:
+		matcaps(a, m->matcaps.count, m->matcaps.shown);
+		break;
+	case APP_RELOADED:
+		reload(a, m->reload.config, m->reload.matcap_count, m->reload.now_ns);
+		break;
+	case APP_DISPLAY_BACK:
+		a->state.dirty = true;
+		break;
+	case APP_FRAME_SHOWN:
+		a->state.dirty = false;
+		break;
+	}
 }

@@ -1,7 +1,9 @@
 /* The kiosk's state, and nothing of GL, DRM, GPIO or files: timestamped
- * actions in, new state out. That is what makes it testable without
- * hardware. Buttons and keys are turned into actions elsewhere
- * (src/input/). */
+ * messages in (a button or key, the camera, the matcap folder, a reload,
+ * the display), new state out. This file is the one place the state
+ * changes; everyone else reads it through app_state(). That is what makes
+ * it testable without hardware. Buttons and keys are turned into actions
+ * elsewhere (src/input/). */
 #ifndef MK_APP_H
 #define MK_APP_H
 
@@ -13,6 +15,8 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+/* [kiosk] in kiosk.ini (turn_* and attract_*), and the resting pose the
+ * kiosk takes from [scene]. */
 struct app_config {
 	double turn_speed;	/* radians per second while a turn is held */
 	double turn_step;	/* radians a tap turns, however short the tap */
@@ -20,43 +24,63 @@ struct app_config {
 	double attract_speed;	/* radians per second in attract mode */
 	struct quat rest;	/* orientation at start and after a reset */
 	enum shading_mode mode;
-	int matcap_count; /* image matcaps that next/prev cycle through */
-	bool camera_available;
 };
 
-/* One direction of turning. A press turns from its time on; the turn
- * lasts while any source holds it, and at least until until_ns, so a tap
- * shorter than a frame still turns turn_step, smoothly. */
-struct app_turn {
-	int held;	   /* sources holding it (a key and a button may both) */
-	uint64_t until_ns; /* the tap's minimum end */
-};
-
-struct app {
-	struct app_config cfg;
+/* What a frame shows: read-only outside src/app/app.c. */
+struct app_state {
 	struct quat orientation;
 	int matcap;	/* index into the image matcaps */
 	bool camera_on; /* the live camera frame is the matcap */
 	enum shading_mode mode;
-	bool dirty;	 /* something changed since the last frame drawn */
-	bool attract;	 /* turning by itself */
-	uint64_t now_ns; /* the last time the state was advanced to */
+	bool dirty; /* something changed since the last frame drawn */
 	uint64_t last_input_ns;
-	uint64_t attract_since_ns;
-	struct app_turn turns[4]; /* left, right, up, down */
 };
 
-void app_init(struct app *a, const struct app_config *cfg, uint64_t now_ns);
-/* Events may come a little late (a deadline serviced after the loop
- * advanced); an event older than the state counts at the state's time. */
-void app_handle(struct app *a, const struct app_event *ev);
+enum app_msg_kind {
+	APP_INPUT,	  /* .input: a button or a key */
+	APP_CAMERA,	  /* .camera: what the camera feed found */
+	APP_MATCAPS,	  /* .matcaps: the matcap folder was read again */
+	APP_RELOADED,	  /* .reload: the settings were read again */
+	APP_DISPLAY_BACK, /* a display came (back): everything is drawn again */
+	APP_FRAME_SHOWN,  /* the state was drawn and handed to the display */
+};
+
+struct app_msg {
+	enum app_msg_kind kind;
+	union {
+		struct app_event input;
+		struct {
+			bool available; /* a camera is there and can be drawn */
+			bool frame;	/* it sent a new frame */
+		} camera;
+		struct {
+			int count; /* image matcaps that next/prev cycle through */
+			int shown; /* where the image shown before is now; -1: gone */
+		} matcaps;
+		struct {
+			const struct app_config *config;
+			int matcap_count;
+			uint64_t now_ns;
+		} reload;
+	};
+};
+
+struct app;
+
+/* matcap_count: the image matcaps (at least one is assumed). NULL when out
+ * of memory. */
+struct app *app_new(const struct app_config *cfg, int matcap_count, uint64_t now_ns);
+void app_free(struct app *a);
+const struct app_state *app_state(const struct app *a);
+/* Apply one message. Inputs may come a little late (a deadline serviced
+ * after the loop advanced); one older than the state counts at the
+ * state's time. A reload starts the state afresh, but a live camera
+ * stays on. */
+void app_apply(struct app *a, const struct app_msg *m);
 /* Advance the clock: held turns and attract mode move the model. Returns
  * the time at which the state next changes by itself, or CLOCK_NEVER. */
 uint64_t app_advance(struct app *a, uint64_t now_ns);
 /* True while the model moves by itself or by a held turn. */
 bool app_moving(const struct app *a);
-/* The camera appeared or went away (unplugged, stalled). */
-void app_set_camera_available(struct app *a, bool available);
-void app_set_matcap_count(struct app *a, int count);
 
 #endif

@@ -17,7 +17,7 @@
 #define KNOT_TUBULAR 256
 #define KNOT_RADIAL  32
 
-static int load_model(const struct options *o, bool strict, struct mesh *mesh)
+static int load_model(const struct content_config *o, bool strict, struct mesh *mesh)
 {
 	if (o->model) {
 		int ret = gltf_load_textures(o->model, material_gltf_textures(&o->material), mesh);
@@ -37,7 +37,7 @@ static const char *default_matcaps(void)
 	return access("matcaps", R_OK) == 0 ? "matcaps" : NULL;
 }
 
-static int load_matcap(const struct options *o, bool strict, struct content *s)
+static int load_matcap(const struct content_config *o, bool strict, struct content *s)
 {
 	const char *path = o->matcap ? o->matcap : default_matcaps();
 	int ret = -ENOENT;
@@ -57,7 +57,7 @@ static int load_matcap(const struct options *o, bool strict, struct content *s)
 	return s->matcap_path ? 0 : -ENOMEM;
 }
 
-int content_load(struct content *s, const struct options *o, bool strict)
+int content_load(struct content *s, const struct content_config *o, bool strict)
 {
 	int ret;
 
@@ -82,7 +82,7 @@ void content_release(struct content *s)
 	memset(s, 0, sizeof(*s));
 }
 
-int content_prepare(struct content *s, const struct options *o, int width, int height)
+int content_prepare(struct content *s, const struct content_config *o, int width, int height)
 {
 	int ret = material_prepare_mesh(&s->material, &s->mesh, width, height);
 	bool displaced = s->material.features & MATERIAL_DISPLACEMENT;
@@ -103,7 +103,7 @@ int content_upload(const struct content *s, struct renderer *r)
 	return ret ? ret : renderer_set_matcap(r, &s->matcap);
 }
 
-struct view content_view(const struct options *o)
+struct view content_view(const struct content_config *o)
 {
 	struct view v = {
 	    .ortho = o->ortho, .rotation = o->rotation, .background = {0.06f, 0.06f, 0.07f}};

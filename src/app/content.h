@@ -7,11 +7,25 @@
 
 #include "util/image.h"
 #include "render/matcap_set.h"
+#include "scene/material.h"
 #include "scene/mesh.h"
-#include "app/options.h"
 #include "render/render.h"
+#include "render/shading.h"
 
 #include <stdbool.h>
+
+/* [scene] in kiosk.ini, with [display] rotation and [material]: what is
+ * shown, and how it is seen. */
+struct content_config {
+	char *model;  /* NULL: the built-in torus knot */
+	char *matcap; /* a file or a folder; NULL: the shipped folder */
+	enum shading_mode mode;
+	bool ortho;
+	double yaw, pitch; /* degrees, the resting orientation */
+	double lod_pixels; /* simplify to this error on the display; 0: off */
+	int rotation;	   /* the panel's, degrees */
+	struct material_config material;
+};
 
 struct content {
 	struct mesh mesh;
@@ -25,18 +39,18 @@ struct content {
  * useless with a substitute, and a reload keeps the old scene instead).
  * Otherwise a model or matcap that fails is replaced by the built-in one,
  * and the journal says so. On failure s is left empty. */
-int content_load(struct content *s, const struct options *o, bool strict);
+int content_load(struct content *s, const struct content_config *c, bool strict);
 void content_release(struct content *s);
 /* Fit the mesh to the display it will be drawn on: subdivided for a
  * displacement map at this display's density, then simplified to no more
  * triangles than the display shows (a displaced mesh is only reordered).
  * The start and a reload do the same, so a reload shows what a restart
  * would. */
-int content_prepare(struct content *s, const struct options *o, int width, int height);
+int content_prepare(struct content *s, const struct content_config *c, int width, int height);
 /* Hand the mesh and the first matcap to the renderer. */
 int content_upload(const struct content *s, struct renderer *r);
 /* The camera and panel the settings ask for, at the resting orientation. */
-struct view content_view(const struct options *o);
+struct view content_view(const struct content_config *c);
 /* The matcap folder was changed: open the set again. Returns 0 and
  * replaces s->set, or a negative errno (after logging) and keeps it. */
 int content_rescan_matcaps(struct content *s);

@@ -1,10 +1,18 @@
 #include "app/kiosk.h"
+#include "app/app.h"
+#include "app/reload.h"
+#include "app/service.h"
+#include "camera/camera_feed.h"
+#include "input/gpio.h"
+#include "input/keyboard.h"
 #include "util/clock.h"
+#include "util/folder_watch.h"
 #include "util/log.h"
 
 #include <errno.h>
 #include <poll.h>
 #include <signal.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/signalfd.h>
 #include <time.h>
@@ -18,33 +26,131 @@
 
 enum { FD_SIGNAL, FD_DISPLAY, FD_WATCH, FD_CAMERA, FD_INPUTS };
 
-int kiosk_add_input(struct kiosk *k, struct input_source *s)
+/* Where an input source came from: a reload opens the buttons or the
+ * keyboards again, and leaves the others alone. */
+enum input_origin { INPUT_CALLER, INPUT_BUTTON, INPUT_KEYBOARD };
+
+enum signal_result { SIGNALS_NONE, SIGNALS_QUIT, SIGNALS_RELOADED };
+
+struct kiosk {
+	struct display *display;
+	struct renderer *renderer;
+	struct content *scene; /* on screen; a reload swaps what it holds */
+	char **argv;
+	int argc;
+	bool camera_possible;
+	struct options started; /* [display] stays as it was at the start */
+	struct options applied; /* the settings in use, from the last reload */
+	struct app *app;	/* the one owner of the state; changed by messages */
+	struct view view;
+	struct input_source *inputs[KIOSK_MAX_INPUTS];
+	enum input_origin origins[KIOSK_MAX_INPUTS];
+	int input_count;
+	/* What the renderer holds now. */
+	int shown_matcap; /* the image in the texture, -1 for none */
+	bool shown_ortho;
+	enum shading_mode shown_mode;
+	long frames_drawn;
+	uint64_t input_drawn_ns;    /* the last input a drawn frame shows */
+	struct folder_watch *watch; /* the matcap folder, NULL when not watched */
+	uint64_t rescan_at;	    /* act on matcap changes then; CLOCK_NEVER: none */
+	uint64_t waiting_since;	    /* when the pending page flip was queued */
+	bool display_absent;	    /* the last draw found no display to show it on */
+	struct service service;
+	struct camera_feed *camera; /* the live camera; NULL: none */
+};
+
+static void tell_app(struct kiosk *k, enum app_msg_kind kind)
+{
+	struct app_msg m = {.kind = kind};
+
+	app_apply(k->app, &m);
+}
+
+static int add_input(struct kiosk *k, struct input_source *s, enum input_origin origin)
 {
 	if (k->input_count == KIOSK_MAX_INPUTS) {
 		log_warn("%s: too many input sources, ignored", s->name);
 		s->destroy(s);
 		return -ENOSPC;
 	}
+	k->origins[k->input_count] = origin;
 	k->inputs[k->input_count++] = s;
 	return 0;
+}
+
+int kiosk_add_input(struct kiosk *k, struct input_source *s)
+{
+	return add_input(k, s, INPUT_CALLER);
+}
+
+static void remove_input(struct kiosk *k, int i)
+{
+	size_t after = (size_t)(k->input_count - i - 1);
+
+	k->inputs[i]->destroy(k->inputs[i]);
+	memmove(&k->inputs[i], &k->inputs[i + 1], sizeof(k->inputs[0]) * after);
+	memmove(&k->origins[i], &k->origins[i + 1], sizeof(k->origins[0]) * after);
+	k->input_count--;
 }
 
 static void drop_input(struct kiosk *k, int i)
 {
 	log_warn("%s: input lost, running on without it", k->inputs[i]->name);
-	k->inputs[i]->destroy(k->inputs[i]);
-	memmove(&k->inputs[i], &k->inputs[i + 1],
-		sizeof(k->inputs[0]) * (size_t)(k->input_count - i - 1));
-	k->input_count--;
+	remove_input(k, i);
+}
+
+static void close_inputs(struct kiosk *k, enum input_origin origin)
+{
+	for (int i = k->input_count - 1; i >= 0; i--)
+		if (k->origins[i] == origin)
+			remove_input(k, i);
+}
+
+/* Two buttons on one line is a config error: -EEXIST. */
+static int open_buttons(struct kiosk *k)
+{
+	struct input_source *in[KIOSK_MAX_INPUTS];
+	int n = gpio_open_buttons(&k->applied.buttons, in, KIOSK_MAX_INPUTS - k->input_count);
+
+	for (int i = 0; i < n; i++)
+		add_input(k, in[i], INPUT_BUTTON);
+	return n < 0 ? n : 0;
+}
+
+static void open_keyboards(struct kiosk *k)
+{
+	struct input_source *in[KIOSK_MAX_INPUTS];
+	int n = keyboard_open(&k->applied.keyboard, in, KIOSK_MAX_INPUTS - k->input_count);
+
+	for (int i = 0; i < n; i++)
+		add_input(k, in[i], INPUT_KEYBOARD);
+}
+
+static void start_camera(struct kiosk *k)
+{
+	camera_feed_free(k->camera);
+	k->camera = camera_feed_new(&k->applied.camera, &k->display->gl, k->applied.shader_dir,
+				    k->camera_possible);
+}
+
+int kiosk_open_devices(struct kiosk *k)
+{
+	int ret = open_buttons(k);
+
+	if (ret)
+		return ret;
+	open_keyboards(k);
+	start_camera(k);
+	return 0;
 }
 
 /* Decoding a matcap is done here, when it is shown, so a folder of many
  * large images costs one image of memory. A file that fails keeps the
  * previous texture and says so. */
-static void sync_matcap(struct kiosk *k)
+static void sync_matcap(struct kiosk *k, int want)
 {
 	struct image img;
-	int want = k->app.matcap;
 
 	if (want == k->shown_matcap || !k->scene->set)
 		return;
@@ -56,44 +162,57 @@ static void sync_matcap(struct kiosk *k)
 	k->shown_matcap = want;
 }
 
+static void sync_mode(struct kiosk *k, enum shading_mode mode)
+{
+	if (mode == k->shown_mode && k->view.ortho == k->shown_ortho)
+		return;
+	if (renderer_set_mode(k->renderer, mode, k->view.ortho) == 0)
+		log_info("mode %s", shading_mode_name(mode));
+	k->shown_mode = mode;
+	k->shown_ortho = k->view.ortho;
+}
+
+/* The input-to-frame latency, for the bench (input events carry the
+ * kernel's timestamps). */
+static void log_latency(struct kiosk *k, uint64_t last_input_ns)
+{
+	if (last_input_ns <= k->input_drawn_ns)
+		return;
+	k->input_drawn_ns = last_input_ns;
+	log_debug("frame %ld presented %.1f ms after the input", k->frames_drawn,
+		  (double)(monotonic_ns() - k->input_drawn_ns) / 1e6);
+}
+
 static int draw(struct kiosk *k, uint64_t now)
 {
+	const struct app_state *st = app_state(k->app);
+	struct display *d = k->display;
 	int ret;
 
-	if (k->app.mode != k->shown_mode || k->view.ortho != k->shown_ortho) {
-		if (renderer_set_mode(k->renderer, k->app.mode, k->view.ortho) == 0)
-			log_info("mode %s", shading_mode_name(k->app.mode));
-		k->shown_mode = k->app.mode;
-		k->shown_ortho = k->view.ortho;
-	}
-	sync_matcap(k);
-	k->view.orientation = k->app.orientation;
+	sync_mode(k, st->mode);
+	sync_matcap(k, st->matcap);
+	k->view.orientation = st->orientation;
 	/* Not connected, or waiting for the display: stay dirty, the display
 	 * asks for a redraw through dispatch() when it is back. */
 	k->display_absent = true;
-	if (k->display->begin_frame(k->display))
+	if (d->begin_frame(d))
 		return 0;
 	if (k->camera)
-		renderer_use_matcap_texture(k->renderer, camera_feed_draw(k->camera, &k->app));
-	renderer_draw(k->renderer, &k->view, k->display->width, k->display->height);
-	ret = k->display->present(k->display);
+		renderer_use_matcap_texture(k->renderer,
+					    camera_feed_draw(k->camera, st->camera_on));
+	renderer_draw(k->renderer, &k->view, d->width, d->height);
+	ret = d->present(d);
 	if (ret == -EAGAIN)
 		return 0;
 	k->display_absent = false;
 	k->waiting_since = now;
 	if (ret) {
-		log_err("%s: cannot show the frame: %s", k->display->name, strerror(-ret));
+		log_err("%s: cannot show the frame: %s", d->name, strerror(-ret));
 		return ret;
 	}
 	k->frames_drawn++;
-	k->app.dirty = false;
-	/* The input-to-frame latency, for the bench (input events carry the
-	 * kernel's timestamps). */
-	if (k->app.last_input_ns > k->input_drawn_ns) {
-		k->input_drawn_ns = k->app.last_input_ns;
-		log_debug("frame %ld presented %.1f ms after the input", k->frames_drawn,
-			  (double)(monotonic_ns() - k->input_drawn_ns) / 1e6);
-	}
+	tell_app(k, APP_FRAME_SHOWN);
+	log_latency(k, st->last_input_ns);
 	return 0;
 }
 
@@ -132,31 +251,106 @@ static int open_signals(void)
 	return fd < 0 ? -errno : fd;
 }
 
-/* True when the loop should stop. SIGHUPs queued together are one reload. */
-static bool read_signals(struct kiosk *k, int fd)
+static void watch_matcaps(struct kiosk *k)
+{
+	folder_watch_free(k->watch);
+	k->watch = k->scene->matcap_path ? folder_watch_new(k->scene->matcap_path) : NULL;
+	k->rescan_at = CLOCK_NEVER;
+}
+
+/* The app state, the view and the matcap watch from k->applied and
+ * k->scene (at the start, and after a reload). */
+static int configure(struct kiosk *k, uint64_t now_ns)
+{
+	const struct options *o = &k->applied;
+	struct app_config cfg = o->app;
+	int count = k->scene->set ? matcap_set_count(k->scene->set) : 1;
+	struct app_msg m = {.kind = APP_RELOADED, .reload = {&cfg, count, now_ns}};
+
+	log_set_level(o->log_level);
+	k->view = content_view(&o->content);
+	cfg.rest = k->view.orientation;
+	cfg.mode = o->content.mode;
+	if (k->app)
+		app_apply(k->app, &m);
+	else
+		k->app = app_new(&cfg, count, now_ns);
+	/* content_upload gave the renderer the set's first image. */
+	k->shown_matcap = 0;
+	watch_matcaps(k);
+	return k->app ? 0 : -ENOMEM;
+}
+
+static void reopen_devices(struct kiosk *k, unsigned sections)
+{
+	if (sections & 1u << OPTIONS_BUTTONS) {
+		log_info("reload: [buttons] changed: opening the buttons again");
+		close_inputs(k, INPUT_BUTTON);
+		if (open_buttons(k))
+			log_err("reload: two buttons are one line; running on without buttons");
+	}
+	if (sections & 1u << OPTIONS_KEYBOARD) {
+		log_info("reload: [keyboard] changed: opening the keyboards again");
+		close_inputs(k, INPUT_KEYBOARD);
+		open_keyboards(k);
+	}
+	if (sections & 1u << OPTIONS_CAMERA) {
+		log_info("reload: [camera] changed: starting the camera again");
+		start_camera(k);
+	}
+}
+
+/* SIGHUP: the settings, model and matcaps again, swapped in only when all
+ * of it loaded; on failure the scene on screen stays and the log says why. */
+static void reload(struct kiosk *k, uint64_t now_ns)
+{
+	struct options fresh;
+	unsigned reopen;
+
+	service_reloading(false);
+	log_info("reload: reading the settings, the model and the matcaps again");
+	if (options_parse(&fresh, k->argc, k->argv) != OPTIONS_OK) {
+		log_err("reload: the settings have errors (above); keeping the scene on screen");
+		goto out;
+	}
+	if (reload_content(k->scene, &fresh.content, k->renderer, k->display->width,
+			   k->display->height))
+		goto out;
+	reopen = reload_reopen(&k->started, &k->applied, &fresh);
+	options_release(&k->applied);
+	k->applied = fresh;
+	memset(&fresh, 0, sizeof(fresh)); /* k->applied owns its strings now */
+	configure(k, now_ns);
+	reopen_devices(k, reopen);
+	log_info("reload: done");
+out:
+	options_release(&fresh);
+	service_reloading(true);
+}
+
+/* SIGHUPs queued together are one reload. */
+static enum signal_result read_signals(struct kiosk *k, int fd)
 {
 	struct signalfd_siginfo si;
-	bool quit = false, reload = false;
+	bool quit = false, hup = false;
 
 	while (read(fd, &si, sizeof(si)) == sizeof(si)) {
 		if (si.ssi_signo == SIGHUP) {
-			reload = true;
+			hup = true;
 			continue;
 		}
 		log_info("%s: shutting down", strsignal((int)si.ssi_signo));
 		quit = true;
 	}
-	if (reload && !quit) {
-		bool camera_on = k->app.camera_on;
-
-		/* A large model may take a while: the watchdog must not
-		 * run out meanwhile. */
-		service_keepalive(&k->service, monotonic_ns());
-		kiosk_reload(k, monotonic_ns());
-		/* The app state starts afresh; a live camera stays on. */
-		k->app.camera_on = camera_on && k->app.cfg.camera_available;
-	}
-	return quit;
+	if (quit)
+		return SIGNALS_QUIT;
+	if (!hup)
+		return SIGNALS_NONE;
+	/* A large model may take a while: the watchdog must not run out
+	 * meanwhile. */
+	service_keepalive(&k->service, monotonic_ns());
+	reload(k, monotonic_ns());
+	return SIGNALS_RELOADED;
 }
 
 static void read_input(struct kiosk *k, int i, uint64_t now)
@@ -168,8 +362,11 @@ static void read_input(struct kiosk *k, int i, uint64_t now)
 		drop_input(k, i);
 		return;
 	}
-	for (int e = 0; e < n; e++)
-		app_handle(&k->app, &ev[e]);
+	for (int e = 0; e < n; e++) {
+		struct app_msg m = {.kind = APP_INPUT, .input = ev[e]};
+
+		app_apply(k->app, &m);
+	}
 }
 
 static int poll_timeout_ms(struct kiosk *k, uint64_t deadline, uint64_t now)
@@ -230,17 +427,104 @@ static uint64_t earliest(uint64_t a, uint64_t b, uint64_t c)
 	return ab < c ? ab : c;
 }
 
+/* The matcap folder changed: its images again, staying on the one shown. */
+static int find_matcap(const struct matcap_set *set, const char *path)
+{
+	for (int i = 0; i < matcap_set_count(set); i++)
+		if (strcmp(matcap_set_path(set, i), path) == 0)
+			return i;
+	return -1;
+}
+
+static void rescan_matcaps(struct kiosk *k)
+{
+	struct app_msg m = {.kind = APP_MATCAPS};
+	char *shown;
+
+	k->rescan_at = CLOCK_NEVER;
+	if (!k->scene->set)
+		return;
+	shown = strdup(matcap_set_path(k->scene->set, app_state(k->app)->matcap));
+	if (shown && content_rescan_matcaps(k->scene) == 0) {
+		m.matcaps.count = matcap_set_count(k->scene->set);
+		m.matcaps.shown = find_matcap(k->scene->set, shown);
+		app_apply(k->app, &m);
+		/* It may be the very file that was rewritten: decode it again. */
+		k->shown_matcap = -1;
+	}
+	free(shown);
+}
+
 static void service_matcaps(struct kiosk *k, const struct pollfd *fds, uint64_t now)
 {
 	if ((fds[FD_WATCH].revents & POLLIN) && k->watch && folder_watch_read(k->watch))
 		k->rescan_at = now + MATCAP_SETTLE_NS;
 	if (now >= k->rescan_at)
-		kiosk_rescan_matcaps(k);
+		rescan_matcaps(k);
+}
+
+/* What the camera found goes to the app state; it streams while shown. */
+static void service_camera(struct kiosk *k, short revents)
+{
+	struct camera_feed_report r =
+	    camera_feed_service(k->camera, revents, k->display->waiting, monotonic_ns());
+	struct app_msg m = {.kind = APP_CAMERA, .camera = {r.available, r.frame}};
+
+	app_apply(k->app, &m);
+	camera_feed_stream(k->camera, app_state(k->app)->camera_on);
+}
+
+/* A page flip done or a display plugged in; < 0: the display is gone. */
+static int service_display(struct kiosk *k, const struct pollfd *fds)
+{
+	int ret;
+
+	if (!(fds[FD_DISPLAY].revents & POLLIN))
+		return 0;
+	ret = k->display->dispatch(k->display);
+	if (ret < 0) {
+		log_err("%s: display failed", k->display->name);
+		return ret;
+	}
+	if (ret > 0)
+		tell_app(k, APP_DISPLAY_BACK);
+	return 0;
+}
+
+/* One pass: draw when the state changed, sleep until something happens,
+ * and hand it on. Returns 1 to stop, 0 to go on, or a negative errno. */
+static int loop_once(struct kiosk *k, int sig_fd)
+{
+	struct pollfd fds[FD_INPUTS + KIOSK_MAX_INPUTS];
+	uint64_t now = monotonic_ns();
+	uint64_t next = app_advance(k->app, now);
+	enum signal_result sig = SIGNALS_NONE;
+	int n, ret;
+
+	if (app_state(k->app)->dirty && !k->display->waiting && (ret = draw(k, now)))
+		return ret;
+	service_camera(k, 0);
+	tell_service(k, now);
+	next = earliest(next, k->rescan_at, service_deadline(&k->service));
+	n = fill_fds(k, fds, sig_fd);
+	if (poll(fds, (nfds_t)n, poll_timeout_ms(k, next, now)) < 0 && errno != EINTR)
+		return -errno;
+	if (fds[FD_SIGNAL].revents & POLLIN)
+		sig = read_signals(k, sig_fd);
+	/* After a reload the inputs and the camera may be new: their
+	 * revents are stale, and the next poll asks again. */
+	if (sig != SIGNALS_NONE)
+		return sig == SIGNALS_QUIT;
+	if ((ret = service_display(k, fds)))
+		return ret;
+	service_camera(k, fds[FD_CAMERA].revents);
+	service_matcaps(k, fds, monotonic_ns());
+	service_inputs(k, fds, monotonic_ns());
+	return 0;
 }
 
 int kiosk_run(struct kiosk *k)
 {
-	struct pollfd fds[FD_INPUTS + KIOSK_MAX_INPUTS];
 	int sig_fd = open_signals();
 	int ret = 0;
 
@@ -249,38 +533,58 @@ int kiosk_run(struct kiosk *k)
 		return sig_fd;
 	}
 	service_init(&k->service, monotonic_ns());
-	for (;;) {
-		uint64_t now = monotonic_ns();
-		uint64_t next = app_advance(&k->app, now);
-		int n;
-
-		if (k->app.dirty && !k->display->waiting && (ret = draw(k, now)))
-			break;
-		camera_feed_service(k->camera, &k->app, 0, k->display->waiting, monotonic_ns());
-		tell_service(k, now);
-		next = earliest(next, k->rescan_at, service_deadline(&k->service));
-		n = fill_fds(k, fds, sig_fd);
-		if (poll(fds, (nfds_t)n, poll_timeout_ms(k, next, now)) < 0 && errno != EINTR) {
-			ret = -errno;
-			break;
-		}
-		if ((fds[FD_SIGNAL].revents & POLLIN) && read_signals(k, sig_fd))
-			break;
-		if (fds[FD_DISPLAY].revents & POLLIN) {
-			ret = k->display->dispatch(k->display);
-			if (ret < 0) {
-				log_err("%s: display failed", k->display->name);
-				break;
-			}
-			k->app.dirty |= ret > 0;
-			ret = 0;
-		}
-		camera_feed_service(k->camera, &k->app, fds[FD_CAMERA].revents, k->display->waiting,
-				    monotonic_ns());
-		service_matcaps(k, fds, monotonic_ns());
-		service_inputs(k, fds, monotonic_ns());
-	}
+	while (!(ret = loop_once(k, sig_fd)))
+		;
 	service_stopping();
 	close(sig_fd);
-	return ret;
+	return ret < 0 ? ret : 0;
+}
+
+struct kiosk *kiosk_new(const struct kiosk_parts *p, uint64_t now_ns)
+{
+	struct kiosk *k = calloc(1, sizeof(*k));
+
+	if (!k)
+		return NULL;
+	k->display = p->display;
+	k->renderer = p->renderer;
+	k->scene = p->scene;
+	k->argv = p->argv;
+	while (p->argv[k->argc])
+		k->argc++;
+	k->camera_possible = p->camera_possible;
+	/* The renderer already holds the mode. */
+	k->shown_mode = p->options->content.mode;
+	k->shown_ortho = p->options->content.ortho;
+	if (options_copy(&k->started, p->options) || options_copy(&k->applied, p->options) ||
+	    configure(k, now_ns)) {
+		kiosk_free(k);
+		return NULL;
+	}
+	return k;
+}
+
+void kiosk_free(struct kiosk *k)
+{
+	if (!k)
+		return;
+	close_inputs(k, INPUT_CALLER);
+	close_inputs(k, INPUT_BUTTON);
+	close_inputs(k, INPUT_KEYBOARD);
+	camera_feed_free(k->camera);
+	folder_watch_free(k->watch);
+	app_free(k->app);
+	options_release(&k->started);
+	options_release(&k->applied);
+	free(k);
+}
+
+long kiosk_frames_drawn(const struct kiosk *k)
+{
+	return k->frames_drawn;
+}
+
+void kiosk_print_stats(const struct kiosk *k, FILE *out)
+{
+	camera_feed_print_stats(k->camera, out);
 }

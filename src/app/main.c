@@ -3,9 +3,7 @@
 #include "camera/camera.h"
 #include "util/clock.h"
 #include "display/display.h"
-#include "input/gpio.h"
 #include "util/image.h"
-#include "input/keyboard.h"
 #include "app/kiosk.h"
 #include "util/log.h"
 #include "app/options.h"
@@ -34,16 +32,10 @@ static double now_ms(void)
  * README's first command on a machine with no screen). */
 static struct display *open_display(struct options *o)
 {
-	struct display_config cfg = {.width = o->size[0],
-				     .height = o->size[1],
-				     .device = o->device,
-				     .connector = o->connector,
-				     .mode = o->display_mode,
-				     .exit_when_busy = o->on_busy == 1,
-				     .kms_api = o->kms_api,
-				     .quiet = o->backend == BACKEND_AUTO};
+	struct display_config cfg = o->display;
 	struct display *d;
 
+	cfg.quiet = o->backend == BACKEND_AUTO;
 	switch (o->backend) {
 	case BACKEND_EGL_HEADLESS:
 		return display_egl_new(&cfg);
@@ -83,7 +75,7 @@ static void print_stats(double *times, int n, double first_frame_ms)
 static int render_frames(const struct options *o, struct display *d, struct renderer *r,
 			 double start_ms)
 {
-	struct view v = content_view(o);
+	struct view v = content_view(&o->content);
 	double *times = calloc((size_t)o->frames, sizeof(double));
 	double first = 0;
 	int ret = 0;
@@ -122,67 +114,26 @@ static int write_output(const struct options *o, struct display *d)
 }
 
 /* argv: a reload (SIGHUP) parses the same command line again. */
-/* Buttons and keyboards. One that cannot be had is logged and left out;
- * two buttons on one line is a config error. */
-static void gpio_config_from(const struct options *o, struct gpio_config *c)
-{
-	*c = (struct gpio_config){.chip = o->gpio_chip,
-				  .active = (enum button_active)o->button_active,
-				  .bias = (enum button_bias)o->button_bias,
-				  .debounce_ms = o->debounce_ms,
-				  .long_press_ms = o->long_press_ms,
-				  .repeat_ms = o->repeat_ms};
-	for (int i = 0; i < GPIO_BUTTONS; i++)
-		c->buttons[i] =
-		    (struct gpio_button){.line = o->button_line[i],
-					 .press = (enum app_action)o->button_press[i],
-					 .long_press = (enum app_action)o->button_long[i]};
-}
-
-static int open_inputs(const struct options *o, struct kiosk *k)
-{
-	struct input_source *in[KIOSK_MAX_INPUTS];
-	struct gpio_config gc;
-	int n;
-
-	gpio_config_from(o, &gc);
-	n = gpio_open_buttons(&gc, in, KIOSK_MAX_INPUTS);
-	if (n == -EEXIST)
-		return OPTIONS_CONFIG;
-	if (n < 0)
-		return n;
-	n += keyboard_open(o->keyboard, in + n, KIOSK_MAX_INPUTS - n);
-	for (int i = 0; i < n; i++)
-		kiosk_add_input(k, in[i]);
-	return 0;
-}
-
 static int run_live(const struct options *o, char **argv, struct content *s, struct display *d,
 		    struct renderer *r)
 {
-	/* The renderer already holds the first matcap and the mode. */
-	struct kiosk k = {.display = d,
-			  .renderer = r,
-			  .scene = s,
-			  .opts = o,
-			  .argv = argv,
-			  .shown_mode = (enum shading_mode)o->mode,
-			  .shown_ortho = o->ortho};
-	int ret;
+	struct kiosk_parts parts = {.display = d,
+				    .renderer = r,
+				    .scene = s,
+				    .options = o,
+				    .argv = argv,
+				    /* No EGL context (OSMesa), no camera. */
+				    .camera_possible = d->gl.caps.egl_display != NULL};
+	struct kiosk *k = kiosk_new(&parts, monotonic_ns());
+	int ret = k ? kiosk_open_devices(k) : -ENOMEM;
 
-	while (argv[k.argc])
-		k.argc++;
-	kiosk_configure(&k, o, (uint64_t)(now_ms() * 1e6));
-	ret = open_inputs(o, &k);
-	/* No EGL context (OSMesa), no camera. */
-	k.camera = ret ? NULL : camera_feed_new(o, &d->gl, d->gl.caps.egl_display != NULL);
 	if (!ret)
-		ret = kiosk_run(&k);
-	if (o->stats)
-		camera_feed_print_stats(k.camera, stdout);
-	camera_feed_free(k.camera);
-	kiosk_release(&k);
-	log_info("%ld frames drawn", k.frames_drawn);
+		ret = kiosk_run(k);
+	if (k && o->stats)
+		kiosk_print_stats(k, stdout);
+	if (k)
+		log_info("%ld frames drawn", kiosk_frames_drawn(k));
+	kiosk_free(k);
 	return ret;
 }
 
@@ -196,11 +147,11 @@ static int run(const struct options *o, char **argv, struct content *s, struct d
 	 * simplified), as a reload does. The scene's material goes up before
 	 * the mode, so its program is the first and only one compiled. */
 	if (!ret)
-		ret = content_prepare(s, o, d->width, d->height);
+		ret = content_prepare(s, &o->content, d->width, d->height);
 	if (!ret)
 		ret = content_upload(s, r);
 	if (!ret)
-		ret = renderer_set_mode(r, (enum shading_mode)o->mode, o->ortho);
+		ret = renderer_set_mode(r, o->content.mode, o->content.ortho);
 	if (ret)
 		goto out;
 	if (o->output || o->frames > 1) {
@@ -215,55 +166,98 @@ out:
 	return ret;
 }
 
-int main(int argc, char **argv)
+/* The exit status: 2 for a bad command line, 78 (EX_CONFIG) for a bad
+ * config file, 1 when a model, image or display fails. */
+enum exit_code {
+	EXIT_CODE_OK = 0,
+	EXIT_CODE_FAILED = 1,
+	EXIT_CODE_USAGE = 2,
+	EXIT_CODE_CONFIG = 78
+};
+
+/* -EEXIST comes only from kiosk_open_devices: two buttons on one line,
+ * which the settings could not tell (GPIO17 and 17), a config error. */
+static enum exit_code exit_code(int ret)
+{
+	if (ret == -EEXIST)
+		return EXIT_CODE_CONFIG;
+	return ret ? EXIT_CODE_FAILED : EXIT_CODE_OK;
+}
+
+static bool is_live(const struct options *o)
+{
+	return !o->output && o->frames == 1;
+}
+
+/* A one-shot render fails fast, before the GPU is touched, when a file
+ * the user named does not load. The live kiosk blocks its signals instead,
+ * before any thread starts (the GL driver's): the loop reads them from a
+ * signalfd. */
+static int before_display(const struct options *o, struct content *scene)
+{
+	if (!is_live(o))
+		return content_load(scene, &o->content, true);
+	kiosk_block_signals();
+	return 0;
+}
+
+/* When auto found no display, the kiosk draws one PNG instead, with no
+ * loop for the signals. The kiosk falls back to the built-in model and
+ * matcap, and says so. */
+static int after_display(const struct options *o, bool was_live, struct content *scene)
+{
+	if (was_live && !is_live(o))
+		kiosk_unblock_signals();
+	return scene->mesh.index_count ? 0 : content_load(scene, &o->content, false);
+}
+
+static int show(struct options *o, char **argv)
 {
 	double start_ms = now_ms();
-	struct options opts;
+	bool live = is_live(o);
 	struct content scene = {0};
-	struct display *display;
-	bool live;
-	int ret;
+	struct display *display = NULL;
+	int ret = before_display(o, &scene);
+
+	if (!ret && !(display = open_display(o)))
+		ret = -ENODEV;
+	if (!ret)
+		ret = after_display(o, live, &scene);
+	if (!ret)
+		ret = run(o, argv, &scene, display, start_ms);
+	display_free(display);
+	content_release(&scene);
+	return ret;
+}
+
+static enum exit_code parse_failed(enum options_status status)
+{
+	return status == OPTIONS_CONFIG ? EXIT_CODE_CONFIG : EXIT_CODE_USAGE;
+}
+
+static enum exit_code start(struct options *o, char **argv)
+{
+	if (o->help)
+		options_usage(stdout);
+	else if (o->version)
+		printf("matcap-kiosk %s\n", MK_VERSION);
+	else
+		return exit_code(show(o, argv));
+	return EXIT_CODE_OK;
+}
+
+int main(int argc, char **argv)
+{
+	struct options opts;
+	enum options_status status;
+	enum exit_code ret;
 
 	/* The kiosk starts itself again as its camera helper (src/camera/camera.h). */
 	if (argc > 0 && strcmp(argv[0], CAMERA_HELPER_NAME) == 0)
 		return camera_helper_main(CAMERA_HELPER_FD);
-
-	ret = options_parse(&opts, argc, argv);
-	if (ret) {
-		options_release(&opts);
-		return ret == OPTIONS_CONFIG ? 78 /* EX_CONFIG */ : 2;
-	}
-	if (opts.help || opts.version) {
-		if (opts.help)
-			options_usage(stdout);
-		else
-			printf("matcap-kiosk %s\n", MK_VERSION);
-		options_release(&opts);
-		return 0;
-	}
-	static const enum log_level levels[] = {LOG_ERR, LOG_WARN, LOG_INFO, LOG_DEBUG};
-	log_set_level(levels[opts.log_level]);
-	/* Before any thread starts: the live loop reads them from a signalfd. */
-	live = !opts.output && opts.frames == 1;
-	if (live)
-		kiosk_block_signals();
-	/* A one-shot render fails fast, before the GPU is touched, when a file
-	 * the user named does not load; the kiosk itself falls back to the
-	 * built-in model and matcap, and says so. */
-	ret = live ? 0 : content_load(&scene, &opts, true);
-	display = ret ? NULL : open_display(&opts);
-	if (!ret && !display)
-		ret = -ENODEV;
-	if (!ret && live && opts.output) {
-		live = false; /* auto found no display: one PNG instead */
-		kiosk_unblock_signals();
-	}
-	if (!ret && !scene.mesh.index_count)
-		ret = content_load(&scene, &opts, false);
-	if (!ret)
-		ret = run(&opts, argv, &scene, display, start_ms);
-	display_free(display);
-	content_release(&scene);
+	status = options_parse(&opts, argc, argv);
+	log_set_level(opts.log_level);
+	ret = status == OPTIONS_OK ? start(&opts, argv) : parse_failed(status);
 	options_release(&opts);
-	return ret == OPTIONS_CONFIG ? 78 : ret ? 1 : 0;
+	return ret;
 }

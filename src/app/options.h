@@ -1,66 +1,74 @@
-/* Every setting, from the command line and from kiosk.ini. One table
+/* Every setting, from the command line and from kiosk.ini, parsed into
+ * the config structs of the modules that use them. One table
  * (src/app/options.c) names each setting's option, its [section] key, its
- * type and range, and its help: the two sources cannot drift apart. */
+ * type and range, and its help: the two sources cannot drift apart. A
+ * second table says what a reload (SIGHUP) does with each section. */
 #ifndef MK_OPTIONS_H
 #define MK_OPTIONS_H
 
+#include "app/app.h"
+#include "app/content.h"
+#include "camera/camera_feed.h"
+#include "display/display.h"
 #include "input/gpio.h"
-#include "scene/material.h"
-#include "render/shading.h"
+#include "input/keyboard.h"
+#include "util/log.h"
 
 #include <stdbool.h>
 #include <stdio.h>
 
 enum backend_kind { BACKEND_AUTO, BACKEND_KMS, BACKEND_OSMESA, BACKEND_EGL_HEADLESS };
-enum verbosity { VERBOSITY_ERROR, VERBOSITY_WARNING, VERBOSITY_INFO, VERBOSITY_DEBUG };
 
-/* Status of options_parse() besides 0. */
-#define OPTIONS_USAGE  (-1000) /* a bad command line: exit 2 */
-#define OPTIONS_CONFIG (-1001) /* a bad config file: exit 78, EX_CONFIG */
+enum options_status {
+	OPTIONS_OK,
+	OPTIONS_USAGE,	/* a bad command line: exit 2 */
+	OPTIONS_CONFIG, /* a bad config file: exit 78, EX_CONFIG */
+};
+
+/* The config file's sections, in the order kiosk.ini has them. */
+enum options_section {
+	OPTIONS_DISPLAY,
+	OPTIONS_SCENE,
+	OPTIONS_KIOSK,
+	OPTIONS_BUTTONS,
+	OPTIONS_KEYBOARD,
+	OPTIONS_MATERIAL,
+	OPTIONS_CAMERA,
+	OPTIONS_SECTIONS
+};
+
+/* What a reload does with a section's settings. */
+enum options_reload {
+	OPTIONS_AT_START, /* read once (the display is opened once): a restart applies them */
+	OPTIONS_LIVE,	  /* applied with the new scene and a fresh app state */
+	OPTIONS_REOPEN,	  /* applied live: its devices are opened again when they changed */
+};
+
+struct options_section_rule {
+	const char *name;
+	enum options_reload reload;
+	const char *live_key; /* a key applied live in an at-start section, or NULL */
+	const char *says;     /* what --help and kiosk.ini say a reload does */
+};
+
+/* The reload rules, by enum options_section. */
+extern const struct options_section_rule options_sections[OPTIONS_SECTIONS];
 
 struct options {
 	/* [display] */
-	int backend; /* enum backend_kind */
-	int size[2]; /* offscreen width, height */
-	int rotation;
-	char *device;	    /* KMS: /dev/dri/cardN; NULL: the first with a display */
-	char *connector;    /* KMS: HDMI-A-1; NULL: the first connected */
-	char *display_mode; /* KMS: WxH or WxH@Hz; NULL: the preferred */
-	int on_busy;	    /* KMS: 0 wait, 1 exit when another program holds it */
-	int kms_api;	    /* KMS: 0 auto, 1 atomic, 2 legacy (for tests) */
-	/* [scene] */
-	char *model;  /* NULL: the built-in torus knot */
-	char *matcap; /* a file or a folder; NULL: the shipped folder */
-	int mode;     /* enum shading_mode */
-	bool ortho;
-	double yaw, pitch;
-	double lod_pixels; /* simplify to this error on the display; 0: off */
+	enum backend_kind backend;
+	struct display_config display; /* size, device, connector, mode, on_busy, kms_api */
+	/* [scene], [display] rotation and [material] */
+	struct content_config content;
 	/* [kiosk] */
-	int log_level;	      /* enum verbosity */
-	double attract_after; /* seconds idle before turning by itself; 0: never */
-	double attract_speed; /* degrees per second */
-	double turn_speed;    /* degrees per second while a turn is held */
-	double turn_step;     /* degrees a tap turns */
+	enum log_level log_level;
+	struct app_config app; /* turning and attract mode; the kiosk adds the rest */
 	/* [buttons] */
-	char *gpio_chip;   /* NULL or "": line names are looked for on every chip */
-	int button_active; /* enum button_active */
-	int button_bias;   /* enum button_bias */
-	int debounce_ms, long_press_ms, repeat_ms;
-	char *button_line[GPIO_BUTTONS]; /* GPIO17, 17...; NULL, "" or "none": not wired */
-	int button_press[GPIO_BUTTONS];	 /* enum app_action */
-	int button_long[GPIO_BUTTONS];	 /* enum app_action; 0 (none): no long press */
+	struct gpio_config buttons;
 	/* [keyboard] */
-	char *keyboard; /* NULL or "auto": every keyboard; "none"; or one device */
-	/* [material] */
-	struct material_config material;
+	struct keyboard_config keyboard;
 	/* [camera] */
-	int camera;	       /* 0 off, 1 on: the live camera as a matcap */
-	char *camera_id;       /* a libcamera id or an index; NULL: the first */
-	int camera_size[2];    /* asked of the camera */
-	double camera_crop[3]; /* the ball's centre x, y and radius, 0..1 */
-	bool camera_mirror;
-	double camera_stall; /* seconds without a frame: the camera is lost */
-	int camera_import;   /* 0 auto: import dmabufs where the driver can; 1 off */
+	struct camera_feed_config camera;
 	/* the command line only */
 	char *config;
 	char *output;
@@ -71,15 +79,21 @@ struct options {
 };
 
 /* Defaults, then the file named by --config, then the rest of the command
- * line over it. Returns 0, OPTIONS_USAGE or OPTIONS_CONFIG;
- * every error is one line naming the option, or the file, line and key,
- * and what is accepted. */
-int options_parse(struct options *opts, int argc, char **argv);
-/* Read one INI file over opts (used by options_parse and by reload). */
-int options_read_file(struct options *opts, const char *path);
+ * line over it. Every error is one line naming the option, or the file,
+ * line and key, and what is accepted. opts is to be released whatever
+ * the status. */
+enum options_status options_parse(struct options *opts, int argc, char **argv);
+/* Read one INI file over opts. */
+enum options_status options_read_file(struct options *opts, const char *path);
 /* The same from memory (for the fuzzer); name is used in messages only. */
-int options_read_memory(struct options *opts, const char *name, const char *text, size_t size);
+enum options_status options_read_memory(struct options *opts, const char *name, const char *text,
+					size_t size);
+/* A deep copy; 0 or -ENOMEM (dst then holds nothing to release). */
+int options_copy(struct options *dst, const struct options *src);
 void options_release(struct options *opts);
+/* Bit (1u << enum options_section) for each section whose settings
+ * differ; an at-start section's live_key is not counted. */
+unsigned options_changed(const struct options *a, const struct options *b);
 void options_usage(FILE *out);
 const char *backend_name(enum backend_kind kind);
 

@@ -14,7 +14,7 @@
 struct camera_feed {
 	struct camera *cam;
 	struct camera_texture *tex;
-	bool resume;	   /* show the camera when it is (back) there */
+	bool present;	   /* the camera said it is there */
 	bool broken;	   /* frames cannot be drawn: the journal said why */
 	bool have_frame;   /* the texture holds a frame of this showing */
 	bool have_seq;	   /* last_seq holds the last frame's sequence */
@@ -24,19 +24,17 @@ struct camera_feed {
 	struct camera_stats latency_ms, cpu_us[3]; /* by enum camera_path */
 };
 
-struct camera_feed *camera_feed_new(const struct options *o, const struct gl *gl, bool egl)
+struct camera_feed *camera_feed_new(const struct camera_feed_config *c, const struct gl *gl,
+				    const char *shader_dir, bool egl)
 {
-	static const enum log_level levels[] = {LOG_ERR, LOG_WARN, LOG_INFO, LOG_DEBUG};
-	struct camera_config cfg = {.id = o->camera_id,
-				    .width = o->camera_size[0],
-				    .height = o->camera_size[1],
-				    .stall_s = o->camera_stall,
-				    .log_level = levels[o->log_level]};
-	struct camera_view view = {o->camera_crop[0], o->camera_crop[1], o->camera_crop[2],
-				   o->camera_mirror};
+	struct camera_config cfg = {.id = c->id,
+				    .width = c->width,
+				    .height = c->height,
+				    .stall_s = c->stall_s,
+				    .log_level = log_get_level()};
 	struct camera_feed *f;
 
-	if (!o->camera)
+	if (c->use == CAMERA_FEED_OFF)
 		return NULL;
 	if (!egl) {
 		log_debug("camera: not with the osmesa backend (kms and egl-headless have it)");
@@ -45,15 +43,15 @@ struct camera_feed *camera_feed_new(const struct options *o, const struct gl *gl
 	f = calloc(1, sizeof(*f));
 	if (!f)
 		return NULL;
-	f->resume = true;
-	f->tex = camera_texture_new(gl, o->shader_dir, MATCAP_SIZE, o->camera_import == 0);
+	f->tex =
+	    camera_texture_new(gl, shader_dir, MATCAP_SIZE, c->import == CAMERA_FEED_IMPORT_AUTO);
 	f->cam = f->tex ? camera_new(&cfg) : NULL;
 	if (!f->cam) {
 		log_err("camera: cannot be set up; running without one");
 		camera_feed_free(f);
 		return NULL;
 	}
-	camera_texture_set_view(f->tex, &view);
+	camera_texture_set_view(f->tex, &c->view);
 	return f;
 }
 
@@ -71,42 +69,31 @@ int camera_feed_fd(const struct camera_feed *f)
 	return camera_fd(f->cam);
 }
 
-static void read_camera(struct camera_feed *f, struct app *app)
+struct camera_feed_report camera_feed_service(struct camera_feed *f, short revents,
+					      bool display_waiting, uint64_t now_ns)
 {
+	struct camera_feed_report r = {0};
 	struct camera_state st;
-	bool available;
 
-	camera_dispatch(f->cam, &st);
-	available = st.present && !f->broken;
-	if (available != app->cfg.camera_available) {
-		/* Lost while shown: back to it when it returns. */
-		if (!available && app->camera_on)
-			f->resume = true;
-		app_set_camera_available(app, available);
-		if (available && f->resume) {
-			app->camera_on = true;
-			app->dirty = true;
-			f->resume = false;
-		}
-	}
-	if (st.frame && app->camera_on)
-		app->dirty = true;
-}
-
-void camera_feed_service(struct camera_feed *f, struct app *app, short revents,
-			 bool display_waiting, uint64_t now_ns)
-{
 	if (!f)
-		return;
-	if (revents & POLLIN)
-		read_camera(f, app);
+		return r;
+	if (revents & POLLIN) {
+		camera_dispatch(f->cam, &st);
+		f->present = st.present;
+		r.frame = st.frame;
+	}
 	if (f->pending_ns && !display_waiting) {
 		camera_stats_add(&f->latency_ms, (double)(now_ns - f->pending_ns) * 1e-6);
 		f->pending_ns = 0;
 	}
-	if (f->broken && app->camera_on)
-		app_set_camera_available(app, false);
-	camera_set_streaming(f->cam, app->camera_on && !f->broken);
+	r.available = f->present && !f->broken;
+	return r;
+}
+
+void camera_feed_stream(struct camera_feed *f, bool shown)
+{
+	if (f)
+		camera_set_streaming(f->cam, shown && !f->broken);
 }
 
 static double thread_cpu_us(void)
@@ -124,7 +111,7 @@ static void count_frame(struct camera_feed *f, const struct camera_frame *fr)
 	f->pending_ns = fr->completed_ns;
 }
 
-GLuint camera_feed_draw(struct camera_feed *f, const struct app *app)
+GLuint camera_feed_draw(struct camera_feed *f, bool shown)
 {
 	const struct camera_frame *fr;
 	double t0;
@@ -134,7 +121,7 @@ GLuint camera_feed_draw(struct camera_feed *f, const struct app *app)
 		return 0;
 	/* Off (or lost): when it is on again, the image matcap stays until
 	 * a new frame, rather than the last one from before. */
-	if (!app->camera_on || f->broken) {
+	if (!shown || f->broken) {
 		f->have_frame = false;
 		return 0;
 	}

@@ -43,6 +43,11 @@ struct display {
 	 * 1 when everything must be drawn again (a display came back), 0, or
 	 * a negative errno when the display is gone for good. */
 	int (*dispatch)(struct display *d);
+	/* Let the screen sleep (on false) or wake it (on true); NULL where
+	 * there is no screen (the offscreen backends). While asleep nothing
+	 * is presented; the first frame after waking sets the mode again.
+	 * Returns 0 or a negative errno after logging. */
+	int (*set_power)(struct display *d, bool on);
 	void (*destroy)(struct display *d);
 };
 

@@ -516,6 +516,28 @@ static int open_fds(struct display_kms *k)
 	return 0;
 }
 
+static int kms_set_power(struct display *d, bool on)
+{
+	struct display_kms *k = (struct display_kms *)d;
+	int ret;
+
+	if (on) {
+		/* The next present is a modeset, which wakes the CRTC. */
+		k->modeset = true;
+		return 0;
+	}
+	if (!k->connected || !k->touched)
+		return 0;
+	drain_flip(k, 1000);
+	ret = k->drm.ops->sleep(&k->drm);
+	if (ret)
+		log_err("kms: %s cannot sleep (%s modesetting): %s", k->drm.connector_name,
+			k->drm.ops->name, strerror(-ret));
+	else
+		log_info("kms: %s asleep", k->drm.connector_name);
+	return ret;
+}
+
 static void init_base(struct display_kms *k, const struct display_config *cfg)
 {
 	k->base.name = "kms";
@@ -527,6 +549,7 @@ static void init_base(struct display_kms *k, const struct display_config *cfg)
 	k->base.read_frame = kms_read_frame;
 	k->base.get_fd = kms_get_fd;
 	k->base.dispatch = kms_dispatch;
+	k->base.set_power = kms_set_power;
 	k->base.destroy = kms_destroy;
 	k->drm.fd = k->gpu_fd = k->epoll_fd = k->timer_fd = -1;
 	k->dpy = EGL_NO_DISPLAY;

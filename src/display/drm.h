@@ -21,6 +21,10 @@ struct drm_ops {
 	int (*flip)(struct drm *drm, uint32_t fb, bool modeset);
 	/* Turn the output off (the display went away). Blocks. */
 	void (*disable)(struct drm *drm);
+	/* Let the screen sleep, keeping the mode and the connector: ACTIVE
+	 * 0 on the CRTC (atomic), the connector's DPMS off (legacy). The
+	 * next flip with modeset wakes it. Blocks; returns 0 or -errno. */
+	int (*sleep)(struct drm *drm);
 	void (*destroy)(struct drm *drm);
 };
 

@@ -175,6 +175,22 @@ static void atomic_disable(struct drm *drm)
 	drmModeAtomicFree(req);
 }
 
+static int atomic_sleep(struct drm *drm)
+{
+	struct atomic *a = drm->priv;
+	drmModeAtomicReq *req = drmModeAtomicAlloc();
+	int ret = 0;
+
+	if (!req)
+		return -ENOMEM;
+	/* An inactive CRTC may keep its mode: the atomic form of DPMS off. */
+	drmModeAtomicAddProperty(req, drm->crtc_id, a->prop[P_CRTC_ACTIVE], 0);
+	if (drmModeAtomicCommit(drm->fd, req, DRM_MODE_ATOMIC_ALLOW_MODESET, NULL))
+		ret = -errno;
+	drmModeAtomicFree(req);
+	return ret;
+}
+
 static void atomic_destroy(struct drm *drm)
 {
 	struct atomic *a = drm->priv;
@@ -189,5 +205,6 @@ const struct drm_ops drm_atomic_ops = {
     .name = "atomic",
     .flip = atomic_flip,
     .disable = atomic_disable,
+    .sleep = atomic_sleep,
     .destroy = atomic_destroy,
 };

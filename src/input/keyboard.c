@@ -223,8 +223,9 @@ static int scan(struct input_source **out, int max)
 	return count;
 }
 
-int keyboard_open(const char *device, struct input_source **out, int max)
+int keyboard_open(const struct keyboard_config *c, struct input_source **out, int max)
 {
+	const char *device = c->device;
 	struct input_source *s;
 
 	if (max < 1 || (device && !strcmp(device, "none")))

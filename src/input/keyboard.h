@@ -7,10 +7,15 @@
 
 #include "input/input.h"
 
-/* device: NULL or "auto" takes every keyboard under /dev/input (event
- * devices with letter keys), "none" none, else the one device named.
- * Writes up to max sources into out and returns their count; a device
+/* [keyboard] in kiosk.ini. */
+struct keyboard_config {
+	/* NULL or "auto": every keyboard under /dev/input (event devices
+	 * with letter keys); "none": none; else the one device named. */
+	char *device;
+};
+
+/* Writes up to max sources into out and returns their count; a device
  * that cannot be opened is logged and left out. */
-int keyboard_open(const char *device, struct input_source **out, int max);
+int keyboard_open(const struct keyboard_config *c, struct input_source **out, int max);
 
 #endif

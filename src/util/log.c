@@ -8,9 +8,17 @@
  * is pure (it reads the environment each time), so no other state is kept. */
 static enum log_level max_level = LOG_INFO;
 
+const enum log_level log_levels[LOG_LEVELS] = {LOG_ERR, LOG_WARN, LOG_INFO, LOG_DEBUG};
+const char *const log_level_names[LOG_LEVELS + 1] = {"error", "warning", "info", "debug", NULL};
+
 void log_set_level(enum log_level max)
 {
 	max_level = max;
+}
+
+enum log_level log_get_level(void)
+{
+	return max_level;
 }
 
 static const char *level_word(enum log_level level)

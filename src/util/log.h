@@ -9,8 +9,16 @@ extern "C" {
 
 enum log_level { LOG_ERR = 3, LOG_WARN = 4, LOG_INFO = 6, LOG_DEBUG = 7 };
 
-/* Set once at start-up, before anything else runs. */
+/* The levels a user can pick, quietest first, and the names the settings
+ * give them ("error", "warning", "info", "debug"; then NULL). */
+#define LOG_LEVELS 4
+extern const enum log_level log_levels[LOG_LEVELS];
+extern const char *const log_level_names[LOG_LEVELS + 1];
+
+/* Set at start-up, before anything else runs, and again by a reload. */
 void log_set_level(enum log_level max);
+/* For a helper process, which is told the level on its command line. */
+enum log_level log_get_level(void);
 void log_msg(enum log_level level, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 #define log_err(...)   log_msg(LOG_ERR, __VA_ARGS__)

@@ -432,7 +432,7 @@ static int parse_args(struct bench *b, int argc, char **argv)
 
 	if (options_parse(&o, 1, none))
 		return -EINVAL;
-	b->lod_default = o.lod_pixels;
+	b->lod_default = o.content.lod_pixels;
 	options_release(&o);
 	b->width = 1280, b->height = 720, b->frames = 15;
 	if (argc < 3)

@@ -19,7 +19,7 @@ out=$1
 shift
 # The display first, then the buttons and the camera on it.
 [ $# -gt 0 ] || set -- tests/e2e/kms.sh tests/e2e/kms-hotplug.sh tests/e2e/kms-busy.sh \
-	tests/vm/gpio-test.sh tests/e2e/camera.sh tests/e2e/cec.sh
+	tests/vm/gpio-test.sh tests/e2e/reload-devices.sh tests/e2e/camera.sh tests/e2e/cec.sh
 kiosk=${KIOSK:-./matcap-kiosk}
 imgdiff=${IMGDIFF:-build/tools/imgdiff}
 mkdir -p "$out/ref"

@@ -60,6 +60,30 @@ step "RELOADING=1 then READY=1 around the reload" sh -c "grep -q RELOADING=1 '$d
 	grep -A9 RELOADING=1 '$dir/notify.log' | grep -q 'READY=1 STATUS=reloaded'"
 step "the reloaded mode is used" wait_for "$dir/stderr" "mode normal"
 
+# SIGHUP does what --help says of each section: [buttons] and [camera]
+# are opened again when they changed (there is no GPIO chip here: one
+# error line, and the kiosk runs on), [display] waits for a restart.
+printf '[scene]\nmode = normal\nmodel = %s\n[buttons]\nchip = gpiochip9\nleft = 5\n[camera]\nstall_timeout = 5\n[display]\non_busy = exit\n' \
+	"$model" >"$dir/kiosk.ini"
+kill -HUP $kiosk_pid
+step "a reload with new [buttons] opens the buttons again" wait_for "$dir/stderr" \
+	"reload: .buttons. changed: opening the buttons again"
+step "... a missing GPIO chip is one error line" wait_for "$dir/stderr" \
+	"button left: GPIO chip gpiochip9 not found"
+step "a reload with new [camera] starts the camera again" wait_for "$dir/stderr" \
+	"reload: .camera. changed: starting the camera again"
+step "a reload with new [display] says it waits for a restart" wait_for "$dir/stderr" \
+	"reload: .display. settings apply at the next start"
+step "... and the reload is done" wait_for "$dir/stderr" "reload: done" 2
+kill -HUP $kiosk_pid
+step "a reload with the same [buttons] and [camera] leaves them" sh -c "
+	i=0; while [ \$(grep -c 'reload: done' '$dir/stderr') -lt 3 ] && [ \$i -lt 200 ]; do
+		i=\$((i + 1)); sleep 0.05; done
+	[ \$(grep -c 'reload: done' '$dir/stderr') -eq 3 ] &&
+	[ \$(grep -c 'opening the buttons again' '$dir/stderr') -eq 1 ] &&
+	[ \$(grep -c 'starting the camera again' '$dir/stderr') -eq 1 ] &&
+	[ \$(grep -c 'gpiochip9 not found' '$dir/stderr') -eq 1 ]"
+
 cp matcaps/skin.png "$dir/mc/skin.png.part"
 mv "$dir/mc/skin.png.part" "$dir/mc/skin.png"
 cp matcaps/clay-red.png "$dir/mc/"

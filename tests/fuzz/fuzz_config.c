@@ -21,7 +21,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	char *argv[] = {"matcap-kiosk", NULL};
 	struct options o;
 
-	if (options_parse(&o, 1, argv) == 0)
+	if (options_parse(&o, 1, argv) == OPTIONS_OK)
 		options_read_memory(&o, "fuzz.ini", (const char *)data, size);
 	options_release(&o);
 	return 0;

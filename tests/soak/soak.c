@@ -47,6 +47,7 @@ struct soak_opts {
 struct script {
 	struct input_source base; /* first: the loop hands this back */
 	struct kiosk *k;
+	const struct content *scene; /* the kiosk's: a reload swaps what it holds */
 	const struct soak_opts *o;
 	long last_frame;
 	long next_reload;     /* frame */
@@ -136,7 +137,7 @@ static void change_folder(const struct script *s, int i)
  * and the sphere's must be another. */
 static void check_previous(struct script *s, int i)
 {
-	const struct content *sc = s->k->scene;
+	const struct content *sc = s->scene;
 	int v = (i - 1) % VARIANTS;
 	bool knot = sc->mesh.vertex_count == s->knot_vertices;
 	int matcaps = s->base_matcaps + ((i - 1) % 2 == 0 ? 1 : 0);
@@ -163,7 +164,7 @@ static void reload(struct script *s)
 	check_previous(s, i);
 	if (i < MAX_RELOADS)
 		s->rss_kib[i] = rss_kib();
-	printf("reload %3d  frame %8ld  rss %7ld KiB  variant %d\n", i, s->k->frames_drawn,
+	printf("reload %3d  frame %8ld  rss %7ld KiB  variant %d\n", i, kiosk_frames_drawn(s->k),
 	       s->rss_kib[i < MAX_RELOADS ? i : MAX_RELOADS - 1], i % VARIANTS);
 	fflush(stdout);
 	write_variant(s, i);
@@ -175,7 +176,7 @@ static void reload(struct script *s)
 static int script_read(struct input_source *src, uint64_t now, struct app_event *out, int max)
 {
 	struct script *s = (struct script *)src;
-	long f = s->k->frames_drawn;
+	long f = kiosk_frames_drawn(s->k);
 	enum app_action a = ACTION_TURN_LEFT;
 
 	if (f >= s->o->frames) {
@@ -272,7 +273,7 @@ static int report(const struct script *s, double seconds)
 		top = s->rss_kib[i] > top ? s->rss_kib[i] : top;
 	printf("soak: %ld frames in %.1f s (%.0f frames/s), %d reloads, a matcap change every "
 	       "%ld frames\n",
-	       s->k->frames_drawn, seconds, s->k->frames_drawn / seconds, s->reloads,
+	       kiosk_frames_drawn(s->k), seconds, kiosk_frames_drawn(s->k) / seconds, s->reloads,
 	       o->matcap_every);
 	if (first < 0) {
 		printf("soak: too few reloads to judge memory (warm-up %ld)\n", o->warmup);
@@ -284,8 +285,8 @@ static int report(const struct script *s, double seconds)
 		    o->warmup, first, top, top - first, o->rss_bound_kib);
 		failures += top - first > o->rss_bound_kib;
 	}
-	if (s->k->frames_drawn < o->frames) {
-		printf("soak: the loop stopped after %ld of %ld frames\n", s->k->frames_drawn,
+	if (kiosk_frames_drawn(s->k) < o->frames) {
+		printf("soak: the loop stopped after %ld of %ld frames\n", kiosk_frames_drawn(s->k),
 		       o->frames);
 		failures++;
 	}
@@ -299,37 +300,40 @@ static int run(const struct soak_opts *so, char **kiosk_argv, int kiosk_argc, st
 	struct display_config cfg = {.width = so->size, .height = so->size};
 	struct display *d = NULL;
 	struct renderer *r = NULL;
-	struct kiosk k = {.scene = &scene, .opts = &o, .argc = kiosk_argc, .argv = kiosk_argv};
+	struct kiosk_parts parts = {.scene = &scene, .options = &o, .argv = kiosk_argv};
+	struct kiosk *k;
 	double start;
 	int ret;
 
 	ret = options_parse(&o, kiosk_argc, kiosk_argv);
 	if (!ret)
-		ret = content_load(&scene, &o, true);
+		ret = content_load(&scene, &o.content, true);
 	if (ret)
 		goto out_opts;
 	s->base_matcaps = matcap_set_count(scene.set);
 	d = display_osmesa_new(&cfg);
 	r = d ? renderer_new(&d->gl, NULL) : NULL;
-	ret = r ? content_prepare(&scene, &o, d->width, d->height) : -ENODEV;
+	ret = r ? content_prepare(&scene, &o.content, d->width, d->height) : -ENODEV;
 	if (!ret)
 		ret = content_upload(&scene, r);
 	if (!ret)
-		ret = renderer_set_mode(r, (enum shading_mode)o.mode, o.ortho);
+		ret = renderer_set_mode(r, o.content.mode, o.content.ortho);
 	if (ret)
 		goto out;
 	s->knot_vertices = scene.mesh.vertex_count;
-	k.display = d;
-	k.renderer = r;
-	k.shown_mode = (enum shading_mode)o.mode;
-	k.shown_ortho = o.ortho;
-	kiosk_configure(&k, &o, 0);
-	s->k = &k;
-	kiosk_add_input(&k, &s->base);
+	s->scene = &scene;
+	parts.display = d;
+	parts.renderer = r;
+	k = kiosk_new(&parts, 0);
+	ret = k ? 0 : -ENOMEM;
+	if (ret)
+		goto out;
+	s->k = k;
+	kiosk_add_input(k, &s->base);
 	start = now_s();
-	ret = kiosk_run(&k);
+	ret = kiosk_run(k);
 	ret = ret ? ret : report(s, now_s() - start);
-	kiosk_release(&k);
+	kiosk_free(k);
 out:
 	renderer_free(r);
 	display_free(d);

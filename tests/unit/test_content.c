@@ -53,7 +53,7 @@ static void write_text(const char *path, const char *text)
 
 static void falls_back_unless_strict(void **state)
 {
-	struct options o = {.model = "/nonexistent/model.glb", .matcap = "/nonexistent/mc"};
+	struct content_config o = {.model = "/nonexistent/model.glb", .matcap = "/nonexistent/mc"};
 	struct content s;
 
 	(void)state;
@@ -75,7 +75,7 @@ static void falls_back_unless_strict(void **state)
 
 static void rescans_the_folder(void **state)
 {
-	struct options o = {.matcap = dir};
+	struct content_config o = {.matcap = dir};
 	struct content s;
 	char path[128];
 
@@ -112,11 +112,11 @@ static void second_parse_sees_the_new_file(void **state)
 	assert_int_equal(options_parse(&a, 6, argv), 0);
 	write_text(ini, "[scene]\nyaw = 45\nmode = sem-vertex\nmodel = m.glb\n");
 	assert_int_equal(options_parse(&b, 6, argv), 0);
-	assert_true(a.yaw == 10 && b.yaw == 45);
-	assert_int_equal(a.mode, SHADING_NORMAL);
-	assert_int_equal(b.mode, SHADING_NORMAL);
-	assert_int_equal(b.log_level, VERBOSITY_WARNING);
-	assert_string_equal(b.model, "m.glb");
+	assert_true(a.content.yaw == 10 && b.content.yaw == 45);
+	assert_int_equal(a.content.mode, SHADING_NORMAL);
+	assert_int_equal(b.content.mode, SHADING_NORMAL);
+	assert_int_equal(b.log_level, LOG_WARN);
+	assert_string_equal(b.content.model, "m.glb");
 	options_release(&a);
 	options_release(&b);
 	write_text(ini, "[scene]\nyaw = east\n");

@@ -1,5 +1,8 @@
 #include "app/options.h"
+#include "app/options_table.h"
+#include "app/reload.h"
 
+#include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -35,12 +38,12 @@ static void defaults(void **state)
 	(void)state;
 	assert_int_equal(parse(&o, 1, argv), 0);
 	assert_int_equal(o.backend, BACKEND_AUTO);
-	assert_int_equal(o.size[0], 1280);
-	assert_int_equal(o.size[1], 720);
-	assert_int_equal(o.mode, SHADING_VIEW);
+	assert_int_equal(o.display.width, 1280);
+	assert_int_equal(o.display.height, 720);
+	assert_int_equal(o.content.mode, SHADING_VIEW);
 	assert_int_equal(o.frames, 1);
-	assert_int_equal(o.log_level, VERBOSITY_INFO);
-	assert_null(o.model);
+	assert_int_equal(o.log_level, LOG_INFO);
+	assert_null(o.content.model);
 	options_release(&o);
 }
 
@@ -59,15 +62,15 @@ static void full_line(void **state)
 	(void)state;
 	assert_int_equal(parse(&o, 16, argv), 0);
 	assert_int_equal(o.backend, BACKEND_OSMESA);
-	assert_string_equal(o.model, "m.glb");
-	assert_string_equal(o.matcap, "p.png");
+	assert_string_equal(o.content.model, "m.glb");
+	assert_string_equal(o.content.matcap, "p.png");
 	assert_string_equal(o.output, "f.png");
-	assert_int_equal(o.size[0], 640);
-	assert_int_equal(o.size[1], 480);
-	assert_int_equal(o.mode, SHADING_SEM_FRAGMENT);
-	assert_int_equal(o.rotation, 90);
-	assert_true(o.ortho);
-	assert_int_equal(o.log_level, VERBOSITY_WARNING);
+	assert_int_equal(o.display.width, 640);
+	assert_int_equal(o.display.height, 480);
+	assert_int_equal(o.content.mode, SHADING_SEM_FRAGMENT);
+	assert_int_equal(o.content.rotation, 90);
+	assert_true(o.content.ortho);
+	assert_int_equal(o.log_level, LOG_WARN);
 	options_release(&o);
 }
 
@@ -99,12 +102,12 @@ static void config_file_then_command_line(void **state)
 	(void)state;
 	assert_int_equal(parse(&o, 5, argv), 0);
 	assert_int_equal(o.backend, BACKEND_OSMESA);
-	assert_int_equal(o.rotation, 180);
-	assert_string_equal(o.model, "a.glb");
-	assert_true(o.ortho);
-	assert_int_equal(o.log_level, VERBOSITY_DEBUG);
+	assert_int_equal(o.content.rotation, 180);
+	assert_string_equal(o.content.model, "a.glb");
+	assert_true(o.content.ortho);
+	assert_int_equal(o.log_level, LOG_DEBUG);
 	/* The command line wins over the file, wherever --config stands. */
-	assert_int_equal(o.mode, SHADING_NORMAL);
+	assert_int_equal(o.content.mode, SHADING_NORMAL);
 	options_release(&o);
 	unlink(path);
 }
@@ -151,11 +154,22 @@ static void indented_lines(void **state)
 
 	(void)state;
 	assert_int_equal(parse(&o, 3, argv), 0);
-	assert_int_equal(o.mode, SHADING_NORMAL);
-	assert_true(o.yaw == 10.0);
-	assert_int_equal(o.log_level, VERBOSITY_DEBUG);
+	assert_int_equal(o.content.mode, SHADING_NORMAL);
+	assert_true(o.content.yaw == 10.0);
+	assert_int_equal(o.log_level, LOG_DEBUG);
 	options_release(&o);
 	unlink(path);
+}
+
+/* OPTION_DEFS is the table's true length: every entry is filled in. */
+static void table_is_full(void **state)
+{
+	(void)state;
+	for (size_t i = 0; i < OPTION_DEFS; i++) {
+		assert_non_null(option_defs[i].name);
+		assert_non_null(option_defs[i].help);
+		assert_true(option_defs[i].size > 0);
+	}
 }
 
 static void shipped_example_parses(void **state)
@@ -168,6 +182,156 @@ static void shipped_example_parses(void **state)
 	options_release(&o);
 }
 
+/* Each [section] lands in its module's config, with real enum types and
+ * the units the module works in. */
+static void sections_into_module_configs(void **state)
+{
+	const char *path = write_ini(
+	    "[display]\nsize = 320x200\non_busy = exit\nkms_api = legacy\nconnector = DSI-1\n"
+	    "[kiosk]\nturn_speed = 180\nattract_after = 5\n"
+	    "[buttons]\nchip = gpiochip1\nactive = high\nbias = disable\nleft = 5\n"
+	    "left_press = reset\nselect_long_press = none\n"
+	    "[keyboard]\ndevice = none\n"
+	    "[material]\nlit = beside\n"
+	    "[camera]\nenabled = off\nsize = 640x480\ncrop_x = 0.25\nmirror = true\n"
+	    "import = off\n");
+	const char *argv[] = {"mk", "--config", path, "--turn-step=90"};
+	struct options o;
+
+	(void)state;
+	assert_int_equal(parse(&o, 4, argv), OPTIONS_OK);
+	assert_int_equal(o.display.width, 320);
+	assert_int_equal(o.display.height, 200);
+	assert_true(o.display.exit_when_busy);
+	assert_int_equal(o.display.kms_api, 2);
+	assert_string_equal(o.display.connector, "DSI-1");
+	assert_float_equal(o.app.turn_speed, M_PI, 1e-12);
+	assert_float_equal(o.app.turn_step, M_PI / 2, 1e-12);
+	assert_float_equal(o.app.attract_after_s, 5, 0);
+	assert_string_equal(o.buttons.chip, "gpiochip1");
+	assert_int_equal(o.buttons.active, BUTTON_ACTIVE_HIGH);
+	assert_int_equal(o.buttons.bias, BUTTON_BIAS_DISABLE);
+	assert_string_equal(o.buttons.buttons[0].line, "5");
+	assert_int_equal(o.buttons.buttons[0].press, ACTION_RESET);
+	assert_int_equal(o.buttons.buttons[2].press, ACTION_NEXT_MATCAP);
+	assert_int_equal(o.buttons.buttons[2].long_press, ACTION_NONE);
+	assert_string_equal(o.keyboard.device, "none");
+	assert_int_equal(o.content.material.lit, 2);
+	assert_int_equal(o.camera.use, CAMERA_FEED_OFF);
+	assert_int_equal(o.camera.width, 640);
+	assert_int_equal(o.camera.height, 480);
+	assert_float_equal(o.camera.view.cx, 0.25, 0);
+	assert_float_equal(o.camera.view.cy, 0.5, 0);
+	assert_true(o.camera.view.mirror);
+	assert_int_equal(o.camera.import, CAMERA_FEED_IMPORT_OFF);
+	options_release(&o);
+	unlink(path);
+}
+
+/* The defaults of the modules' configs. */
+static void module_defaults(void **state)
+{
+	const char *argv[] = {"mk"};
+	struct options o;
+
+	(void)state;
+	assert_int_equal(parse(&o, 1, argv), OPTIONS_OK);
+	assert_false(o.display.exit_when_busy);
+	assert_float_equal(o.app.turn_speed, 90 * M_PI / 180, 0);
+	assert_int_equal(o.buttons.active, BUTTON_ACTIVE_LOW);
+	assert_int_equal(o.buttons.bias, BUTTON_BIAS_PULL_UP);
+	assert_int_equal(o.buttons.buttons[0].press, ACTION_TURN_LEFT);
+	assert_int_equal(o.buttons.buttons[2].long_press, ACTION_TOGGLE_CAMERA);
+	assert_null(o.keyboard.device);
+	assert_int_equal(o.camera.use, CAMERA_FEED_ON);
+	assert_int_equal(o.camera.import, CAMERA_FEED_IMPORT_AUTO);
+	assert_float_equal(o.camera.stall_s, 3, 0);
+	options_release(&o);
+}
+
+/* A deep copy: the copy's strings are its own. */
+static void copy_is_deep(void **state)
+{
+	const char *argv[] = {"mk", "--model", "m.glb", "--button-left", "GPIO5"};
+	struct options o, c;
+
+	(void)state;
+	assert_int_equal(parse(&o, 5, argv), OPTIONS_OK);
+	assert_int_equal(options_copy(&c, &o), 0);
+	assert_ptr_not_equal(c.content.model, o.content.model);
+	assert_string_equal(c.content.model, "m.glb");
+	assert_string_equal(c.buttons.buttons[0].line, "GPIO5");
+	assert_int_equal(options_changed(&o, &c), 0);
+	options_release(&o);
+	assert_string_equal(c.content.model, "m.glb");
+	options_release(&c);
+}
+
+static unsigned changed_by(const char *arg)
+{
+	const char *base[] = {"mk"}, *argv[] = {"mk", arg};
+	struct options a, b;
+	unsigned changed;
+
+	assert_int_equal(parse(&a, 1, base), OPTIONS_OK);
+	assert_int_equal(parse(&b, 2, argv), OPTIONS_OK);
+	changed = options_changed(&a, &b);
+	options_release(&a);
+	options_release(&b);
+	return changed;
+}
+
+#define BIT(s) (1u << (s))
+
+/* One table says what a reload does with each section; a change is
+ * found per section, and rotation is live in an at-start section. */
+static void reload_table(void **state)
+{
+	(void)state;
+	assert_int_equal(options_sections[OPTIONS_DISPLAY].reload, OPTIONS_AT_START);
+	assert_int_equal(options_sections[OPTIONS_SCENE].reload, OPTIONS_LIVE);
+	assert_int_equal(options_sections[OPTIONS_KIOSK].reload, OPTIONS_LIVE);
+	assert_int_equal(options_sections[OPTIONS_BUTTONS].reload, OPTIONS_REOPEN);
+	assert_int_equal(options_sections[OPTIONS_KEYBOARD].reload, OPTIONS_REOPEN);
+	assert_int_equal(options_sections[OPTIONS_MATERIAL].reload, OPTIONS_LIVE);
+	assert_int_equal(options_sections[OPTIONS_CAMERA].reload, OPTIONS_REOPEN);
+	for (int i = 0; i < OPTIONS_SECTIONS; i++)
+		assert_non_null(options_sections[i].says);
+	assert_int_equal(changed_by("--size=100x100"), BIT(OPTIONS_DISPLAY));
+	assert_int_equal(changed_by("--on-busy=exit"), BIT(OPTIONS_DISPLAY));
+	assert_int_equal(changed_by("--rotate=90"), 0);
+	assert_int_equal(changed_by("--yaw=3"), BIT(OPTIONS_SCENE));
+	assert_int_equal(changed_by("--turn-step=1"), BIT(OPTIONS_KIOSK));
+	assert_int_equal(changed_by("--button-left=GPIO5"), BIT(OPTIONS_BUTTONS));
+	assert_int_equal(changed_by("--left-long-press=reset"), BIT(OPTIONS_BUTTONS));
+	assert_int_equal(changed_by("--keyboard=none"), BIT(OPTIONS_KEYBOARD));
+	assert_int_equal(changed_by("--lit=on"), BIT(OPTIONS_MATERIAL));
+	assert_int_equal(changed_by("--camera-size=64x32"), BIT(OPTIONS_CAMERA));
+	assert_int_equal(changed_by("--camera-mirror"), BIT(OPTIONS_CAMERA));
+	assert_int_equal(changed_by("--stats"), 0);
+}
+
+/* A reload opens again what changed since the last one; what waits for
+ * a restart is measured against the start. */
+static void reload_reopens_what_changed(void **state)
+{
+	const char *start[] = {"mk"}, *last[] = {"mk", "--camera=off", "--size=80x80"},
+		   *now[] = {"mk", "--camera=off", "--size=80x80", "--button-bias=disable",
+			     "--keyboard=none"};
+	struct options s, l, n;
+
+	(void)state;
+	assert_int_equal(parse(&s, 1, start), OPTIONS_OK);
+	assert_int_equal(parse(&l, 3, last), OPTIONS_OK);
+	assert_int_equal(parse(&n, 5, now), OPTIONS_OK);
+	assert_int_equal(reload_reopen(&s, &l, &n), BIT(OPTIONS_BUTTONS) | BIT(OPTIONS_KEYBOARD));
+	assert_int_equal(reload_reopen(&s, &s, &l), BIT(OPTIONS_CAMERA));
+	assert_int_equal(reload_reopen(&s, &n, &n), 0);
+	options_release(&s);
+	options_release(&l);
+	options_release(&n);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -178,6 +342,12 @@ int main(void)
 	    cmocka_unit_test(config_errors),
 	    cmocka_unit_test(indented_lines),
 	    cmocka_unit_test(shipped_example_parses),
+	    cmocka_unit_test(table_is_full),
+	    cmocka_unit_test(sections_into_module_configs),
+	    cmocka_unit_test(module_defaults),
+	    cmocka_unit_test(copy_is_deep),
+	    cmocka_unit_test(reload_table),
+	    cmocka_unit_test(reload_reopens_what_changed),
 	};
 	return cmocka_run_group_tests_name("options", tests, NULL, NULL);
 }

@@ -1,0 +1,473 @@
+/* The settings: each one's option, [section] key, type, range and help,
+ * where it is kept in struct options, and what is done with one setting
+ * (parse, copy, compare, release). The reload rules are the second
+ * table here. */
+#include "app/options_table.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+const struct options_section_rule options_sections[OPTIONS_SECTIONS] = {
+    [OPTIONS_DISPLAY] = {"display", OPTIONS_AT_START, "rotation",
+			 "at the next start (systemctl restart), but rotation at once"},
+    [OPTIONS_SCENE] = {"scene", OPTIONS_LIVE, NULL, "at once"},
+    [OPTIONS_KIOSK] = {"kiosk", OPTIONS_LIVE, NULL, "at once"},
+    [OPTIONS_BUTTONS] = {"buttons", OPTIONS_REOPEN, NULL,
+			 "at once; the buttons are opened again if this section changed"},
+    [OPTIONS_KEYBOARD] = {"keyboard", OPTIONS_REOPEN, NULL,
+			  "at once; the keyboards are opened again if this section changed"},
+    [OPTIONS_MATERIAL] = {"material", OPTIONS_LIVE, NULL, "at once"},
+    [OPTIONS_CAMERA] = {"camera", OPTIONS_REOPEN, NULL,
+			"at once; the camera is started again if this section changed"},
+};
+
+static const char *const backend_names[] = {"auto", "kms", "osmesa", "egl-headless", NULL};
+static const char *const mode_names[] = {"normal", "view", "sem-vertex", "sem-fragment", NULL};
+static const char *const busy_names[] = {"wait", "exit", NULL}; /* exit_when_busy */
+static const char *const kms_api_names[] = {"auto", "atomic", "legacy", NULL};
+static const char *const active_names[] = {"low", "high", NULL};
+static const char *const bias_names[] = {"pull-up", "pull-down", "disable", "as-is", NULL};
+static const char *const switch_names[] = {"auto", "off", "on", NULL}; /* enum material_switch */
+static const char *const lit_names[] = {"off", "on", "beside", NULL};  /* enum material_lit */
+static const char *const camera_names[] = {"off", "on", NULL};	       /* enum camera_feed_use */
+static const char *const import_names[] = {"auto", "off", NULL};       /* enum camera_feed_import */
+
+/* A field's place and size: the size tells a bool from an enum, and the
+ * copy, the comparison and the release go by it. */
+#define AT(f) offsetof(struct options, f), sizeof(((struct options *)0)->f)
+
+/* A WxH setting is two ints side by side. */
+_Static_assert(offsetof(struct display_config, height) ==
+		   offsetof(struct display_config, width) + sizeof(int),
+	       "display width, height");
+_Static_assert(offsetof(struct camera_feed_config, height) ==
+		   offsetof(struct camera_feed_config, width) + sizeof(int),
+	       "camera width, height");
+/* Choices other than a bool are kept through an int. */
+_Static_assert(sizeof(enum backend_kind) == sizeof(int) &&
+		   sizeof(enum shading_mode) == sizeof(int) &&
+		   sizeof(enum app_action) == sizeof(int) &&
+		   sizeof(enum button_active) == sizeof(int) &&
+		   sizeof(enum button_bias) == sizeof(int) &&
+		   sizeof(enum camera_feed_use) == sizeof(int) &&
+		   sizeof(enum camera_feed_import) == sizeof(int),
+	       "enums are ints");
+
+const struct option_def option_defs[OPTION_DEFS] = {
+    {"backend", 'b', OPTIONS_DISPLAY, "backend", K_CHOICE, AT(backend), 0, 0, 0, backend_names,
+     "NAME", "auto, kms, osmesa or egl-headless; auto takes kms where there is a display output"},
+    {"size", 's', OPTIONS_DISPLAY, "size", K_SIZE, AT(display.width), 16, 8192, 1, NULL, "WxH",
+     "offscreen frame size"},
+    {"rotate", 0, OPTIONS_DISPLAY, "rotation", K_INT, AT(content.rotation), 0, 270, 90, NULL, "DEG",
+     "panel rotation: 0, 90, 180 or 270"},
+    {"device", 0, OPTIONS_DISPLAY, "device", K_STRING, AT(display.device), 0, 0, 0, NULL, "PATH",
+     "KMS: the DRM device (default: the first with a display)"},
+    {"connector", 0, OPTIONS_DISPLAY, "connector", K_STRING, AT(display.connector), 0, 0, 0, NULL,
+     "NAME", "KMS: the output, e.g. HDMI-A-1 or DSI-1 (default: the first connected)"},
+    {"display-mode", 0, OPTIONS_DISPLAY, "mode", K_STRING, AT(display.mode), 0, 0, 0, NULL,
+     "WxH[@HZ]", "KMS: the mode (default: the preferred, else the largest)"},
+    {"on-busy", 0, OPTIONS_DISPLAY, "on_busy", K_CHOICE, AT(display.exit_when_busy), 0, 0, 0,
+     busy_names, "WHAT", "KMS: when another program holds the display: wait or exit"},
+    {"kms-api", 0, OPTIONS_DISPLAY, "kms_api", K_CHOICE, AT(display.kms_api), 0, 0, 0,
+     kms_api_names, "API",
+     "KMS: auto (atomic where the driver has it), atomic or legacy; for testing"},
+    {"model", 'm', OPTIONS_SCENE, "model", K_STRING, AT(content.model), 0, 0, 0, NULL, "FILE",
+     "a .gltf or .glb model (default: a built-in torus knot)"},
+    {"matcap", 'c', OPTIONS_SCENE, "matcap", K_STRING, AT(content.matcap), 0, 0, 0, NULL, "PATH",
+     "a PNG/JPEG matcap, or a folder of them (cycled in name order)"},
+    {"mode", 0, OPTIONS_SCENE, "mode", K_CHOICE, AT(content.mode), 0, 0, 0, mode_names, "MODE",
+     "normal, view, sem-vertex or sem-fragment"},
+    {"ortho", 0, OPTIONS_SCENE, "ortho", K_FLAG, AT(content.ortho), 0, 0, 0, NULL, NULL,
+     "orthographic camera"},
+    {"yaw", 0, OPTIONS_SCENE, "yaw", K_DOUBLE, AT(content.yaw), -360, 360, 0, NULL, "DEG",
+     "turn the model about the vertical axis"},
+    {"pitch", 0, OPTIONS_SCENE, "pitch", K_DOUBLE, AT(content.pitch), -360, 360, 0, NULL, "DEG",
+     "tilt the model about the horizontal axis"},
+    {"lod-pixels", 0, OPTIONS_SCENE, "lod_pixels", K_DOUBLE, AT(content.lod_pixels), 0, 64, 0, NULL,
+     "PX", "draw no detail under PX pixels: simplify smaller triangles to that; 0: never"},
+    {"log-level", 0, OPTIONS_KIOSK, "log_level", K_LEVEL, AT(log_level), 0, 0, 0, log_level_names,
+     "LEVEL", "error, warning, info or debug"},
+    {"attract-after", 0, OPTIONS_KIOSK, "attract_after", K_DOUBLE, AT(app.attract_after_s), 0,
+     86400, 0, NULL, "S", "seconds without input before the model turns by itself; 0: never"},
+    {"attract-speed", 0, OPTIONS_KIOSK, "attract_speed", K_DEGREES, AT(app.attract_speed), 0, 360,
+     0, NULL, "DEG/S", "how fast it turns by itself"},
+    {"turn-speed", 0, OPTIONS_KIOSK, "turn_speed", K_DEGREES, AT(app.turn_speed), 1, 1440, 0, NULL,
+     "DEG/S", "how fast a held button or arrow key turns the model"},
+    {"turn-step", 0, OPTIONS_KIOSK, "turn_step", K_DEGREES, AT(app.turn_step), 0, 90, 0, NULL,
+     "DEG", "how far a short tap turns it"},
+    {"gpio-chip", 0, OPTIONS_BUTTONS, "chip", K_STRING, AT(buttons.chip), 0, 0, 0, NULL, "CHIP",
+     "GPIO chip by name, path or label (default: line names on every chip)"},
+    {"button-active", 0, OPTIONS_BUTTONS, "active", K_CHOICE, AT(buttons.active), 0, 0, 0,
+     active_names, "LEVEL", "low (a button that pulls the line to ground) or high"},
+    {"button-bias", 0, OPTIONS_BUTTONS, "bias", K_CHOICE, AT(buttons.bias), 0, 0, 0, bias_names,
+     "BIAS", "pull-up, pull-down, disable or as-is"},
+    {"debounce-ms", 0, OPTIONS_BUTTONS, "debounce_ms", K_INT, AT(buttons.debounce_ms), 0, 100, 1,
+     NULL, "MS", "edges this close to the one before are contact bounce"},
+    {"long-press-ms", 0, OPTIONS_BUTTONS, "long_press_ms", K_INT, AT(buttons.long_press_ms), 100,
+     10000, 1, NULL, "MS", "a press held this long is a long press"},
+    {"repeat-ms", 0, OPTIONS_BUTTONS, "repeat_ms", K_INT, AT(buttons.repeat_ms), 0, 5000, 1, NULL,
+     "MS", "a held button with no long action repeats every MS (0: never)"},
+    {"button-left", 0, OPTIONS_BUTTONS, "left", K_STRING, AT(buttons.buttons[0].line), 0, 0, 0,
+     NULL, "LINE", "the left button's line: a name (GPIO17) or an offset; none: not wired"},
+    {"left-press", 0, OPTIONS_BUTTONS, "left_press", K_CHOICE, AT(buttons.buttons[0].press), 0, 0,
+     0, app_action_names, "ACT", "what a press of left does"},
+    {"left-long-press", 0, OPTIONS_BUTTONS, "left_long_press", K_CHOICE,
+     AT(buttons.buttons[0].long_press), 0, 0, 0, app_action_names, "ACT",
+     "what a long press of left does (none: no long press)"},
+    {"button-right", 0, OPTIONS_BUTTONS, "right", K_STRING, AT(buttons.buttons[1].line), 0, 0, 0,
+     NULL, "LINE", "the right button's line: a name (GPIO17) or an offset; none: not wired"},
+    {"right-press", 0, OPTIONS_BUTTONS, "right_press", K_CHOICE, AT(buttons.buttons[1].press), 0, 0,
+     0, app_action_names, "ACT", "what a press of right does"},
+    {"right-long-press", 0, OPTIONS_BUTTONS, "right_long_press", K_CHOICE,
+     AT(buttons.buttons[1].long_press), 0, 0, 0, app_action_names, "ACT",
+     "what a long press of right does (none: no long press)"},
+    {"button-select", 0, OPTIONS_BUTTONS, "select", K_STRING, AT(buttons.buttons[2].line), 0, 0, 0,
+     NULL, "LINE", "the select button's line: a name (GPIO17) or an offset; none: not wired"},
+    {"select-press", 0, OPTIONS_BUTTONS, "select_press", K_CHOICE, AT(buttons.buttons[2].press), 0,
+     0, 0, app_action_names, "ACT", "what a press of select does"},
+    {"select-long-press", 0, OPTIONS_BUTTONS, "select_long_press", K_CHOICE,
+     AT(buttons.buttons[2].long_press), 0, 0, 0, app_action_names, "ACT",
+     "what a long press of select does (none: no long press)"},
+    {"keyboard", 0, OPTIONS_KEYBOARD, "device", K_STRING, AT(keyboard.device), 0, 0, 0, NULL, "DEV",
+     "auto (every keyboard under /dev/input), none, or one /dev/input/eventN"},
+    {"iridescence", 0, OPTIONS_MATERIAL, "iridescence", K_CHOICE, AT(content.material.iridescence),
+     0, 0, 0, switch_names, "WHEN",
+     "hue layer from the view angle: auto (when the glTF has it), off, on"},
+    {"iridescence-range", 0, OPTIONS_MATERIAL, "iridescence_range", K_DOUBLE,
+     AT(content.material.hue_range), -8, 8, 0, NULL, "TURNS", "hue change from face-on to grazing"},
+    {"iridescence-average", 0, OPTIONS_MATERIAL, "iridescence_average", K_DOUBLE,
+     AT(content.material.hue_average), -8, 8, 0, NULL, "TURNS", "hue face-on (0 red, 1/3 green)"},
+    {"iridescence-shift", 0, OPTIONS_MATERIAL, "iridescence_shift", K_DOUBLE,
+     AT(content.material.hue_shift), -8, 8, 0, NULL, "TURNS",
+     "hue shift where the detail map's alpha is 0"},
+    {"iridescence-opacity", 0, OPTIONS_MATERIAL, "iridescence_opacity", K_DOUBLE,
+     AT(content.material.opacity), 0, 1, 0, NULL, "A", "how much the hue layer covers the matcap"},
+    {"iridescence-saturation", 0, OPTIONS_MATERIAL, "iridescence_saturation", K_DOUBLE,
+     AT(content.material.saturation), 0, 1, 0, NULL, "S", "the hue layer's HSV saturation"},
+    {"iridescence-value", 0, OPTIONS_MATERIAL, "iridescence_value", K_DOUBLE,
+     AT(content.material.value), 0, 1, 0, NULL, "V", "the hue layer's HSV value"},
+    {"iridescence-ramp", 0, OPTIONS_MATERIAL, "iridescence_ramp", K_STRING,
+     AT(content.material.ramp), 0, 0, 0, NULL, "FILE",
+     "a PNG/JPEG colour ramp to use instead of HSV"},
+    {"detail", 0, OPTIONS_MATERIAL, "detail", K_CHOICE, AT(content.material.detail), 0, 0, 0,
+     switch_names, "WHEN", "detail map: auto (when one is given), off, on"},
+    {"detail-map", 0, OPTIONS_MATERIAL, "detail_map", K_STRING, AT(content.material.detail_map), 0,
+     0, 0, NULL, "FILE", "packed map: normal xy (rg), occlusion (b), hue shift (a)"},
+    {"displacement-map", 0, OPTIONS_MATERIAL, "displacement_map", K_STRING,
+     AT(content.material.height_map), 0, 0, 0, NULL, "FILE",
+     "a height map: subdivide and displace the model"},
+    {"displacement-scale", 0, OPTIONS_MATERIAL, "displacement_scale", K_DOUBLE,
+     AT(content.material.displacement_scale), 0, 1, 0, NULL, "R",
+     "height of white, in model radii"},
+    {"displacement-pixels", 0, OPTIONS_MATERIAL, "displacement_pixels", K_DOUBLE,
+     AT(content.material.displacement_pixels), 0.5, 64, 0, NULL, "PX",
+     "edge length to subdivide to"},
+    {"displacement-triangles", 0, OPTIONS_MATERIAL, "displacement_triangles", K_INT,
+     AT(content.material.displacement_triangles), 1000, 16000000, 1, NULL, "N",
+     "most triangles subdivision may make"},
+    {"lit", 0, OPTIONS_MATERIAL, "lit", K_CHOICE, AT(content.material.lit), 0, 0, 0, lit_names,
+     "HOW", "diffuse + Blinn-Phong instead of the matcap: off, on, beside (both)"},
+    {"lit-shininess", 0, OPTIONS_MATERIAL, "lit_shininess", K_DOUBLE,
+     AT(content.material.shininess), 1, 256, 0, NULL, "N", "the lit mode's specular exponent"},
+    {"camera", 0, OPTIONS_CAMERA, "enabled", K_CHOICE, AT(camera.use), 0, 0, 0, camera_names,
+     "WHEN", "on: a live camera is the matcap whenever one is there; off: never"},
+    {"camera-id", 0, OPTIONS_CAMERA, "id", K_STRING, AT(camera.id), 0, 0, 0, NULL, "ID",
+     "the camera, by libcamera id or by index (0: the first)"},
+    {"camera-size", 0, OPTIONS_CAMERA, "size", K_SIZE, AT(camera.width), 16, 4096, 1, NULL, "WxH",
+     "the frame size asked of the camera"},
+    {"camera-crop-x", 0, OPTIONS_CAMERA, "crop_x", K_DOUBLE, AT(camera.view.cx), 0, 1, 0, NULL, "X",
+     "the ball's centre, 0 (left) to 1 (right) of the frame"},
+    {"camera-crop-y", 0, OPTIONS_CAMERA, "crop_y", K_DOUBLE, AT(camera.view.cy), 0, 1, 0, NULL, "Y",
+     "the ball's centre, 0 (top) to 1 (bottom) of the frame"},
+    {"camera-crop-radius", 0, OPTIONS_CAMERA, "crop_radius", K_DOUBLE, AT(camera.view.radius), 0.01,
+     1, 0, NULL, "R", "the ball's radius, in shares of the frame's shorter side"},
+    {"camera-mirror", 0, OPTIONS_CAMERA, "mirror", K_FLAG, AT(camera.view.mirror), 0, 0, 0, NULL,
+     NULL, "mirror the camera picture left to right"},
+    {"camera-stall", 0, OPTIONS_CAMERA, "stall_timeout", K_DOUBLE, AT(camera.stall_s), 0.2, 600, 0,
+     NULL, "S", "seconds without a frame before the camera counts as lost"},
+    {"camera-import", 0, OPTIONS_CAMERA, "import", K_CHOICE, AT(camera.import), 0, 0, 0,
+     import_names, "HOW",
+     "auto: frames as EGLImages where the driver takes them; off: always upload"},
+    {"config", 'C', OPTION_CLI, NULL, K_STRING, AT(config), 0, 0, 0, NULL, "FILE",
+     "read settings from an INI file first (see config/kiosk.ini)"},
+    {"output", 'o', OPTION_CLI, NULL, K_STRING, AT(output), 0, 0, 0, NULL, "FILE",
+     "draw offscreen and write the last frame as PNG"},
+    {"frames", 0, OPTION_CLI, NULL, K_INT, AT(frames), 1, 1e8, 1, NULL, "N",
+     "frames to draw offscreen (default 1)"},
+    {"stats", 0, OPTION_CLI, NULL, K_FLAG, AT(stats), 0, 0, 0, NULL, NULL,
+     "print frame timings and peak memory"},
+    {"shader-dir", 0, OPTION_CLI, NULL, K_STRING, AT(shader_dir), 0, 0, 0, NULL, "DIR",
+     "read shaders from DIR instead of the built-in copy"},
+    {"help", 'h', OPTION_CLI, NULL, K_FLAG, AT(help), 0, 0, 0, NULL, NULL, "this text"},
+    {"version", 'V', OPTION_CLI, NULL, K_FLAG, AT(version), 0, 0, 0, NULL, NULL, "the version"},
+};
+
+const char *backend_name(enum backend_kind kind)
+{
+	return backend_names[kind];
+}
+
+static double radians(double degrees)
+{
+	return degrees * M_PI / 180;
+}
+
+void option_defaults(struct options *o)
+{
+	static const struct gpio_button buttons[GPIO_BUTTONS] = {
+	    {NULL, ACTION_TURN_LEFT, ACTION_NONE},
+	    {NULL, ACTION_TURN_RIGHT, ACTION_NONE},
+	    {NULL, ACTION_NEXT_MATCAP, ACTION_TOGGLE_CAMERA},
+	};
+
+	memset(o, 0, sizeof(*o));
+	o->display.width = 1280;
+	o->display.height = 720;
+	o->content.mode = SHADING_VIEW;
+	o->content.pitch = 20.0;
+	o->content.yaw = -30.0;
+	o->content.lod_pixels = 4.0;
+	material_config_defaults(&o->content.material);
+	o->log_level = LOG_INFO;
+	o->app.attract_after_s = 60;
+	o->app.attract_speed = radians(15);
+	o->app.turn_speed = radians(90);
+	o->app.turn_step = radians(5);
+	o->buttons.debounce_ms = 10;
+	o->buttons.long_press_ms = 800;
+	memcpy(o->buttons.buttons, buttons, sizeof(buttons));
+	o->camera.use = CAMERA_FEED_ON;
+	o->camera.width = o->camera.height = 512;
+	o->camera.view = (struct camera_view){0.5, 0.5, 0.5, false};
+	o->camera.stall_s = 3;
+	o->frames = 1;
+}
+
+/* Strings are kept as char * or const char * (the module configs hold
+ * them const); both have the same representation, and memcpy says so. */
+static char *get_string(const void *field)
+{
+	char *s;
+
+	memcpy(&s, field, sizeof(s));
+	return s;
+}
+
+static void put_string(void *field, char *s)
+{
+	memcpy(field, &s, sizeof(s));
+}
+
+static void *field_of(struct options *o, const struct option_def *d)
+{
+	return (char *)o + d->offset;
+}
+
+static const void *const_field_of(const struct options *o, const struct option_def *d)
+{
+	return (const char *)o + d->offset;
+}
+
+void options_release(struct options *o)
+{
+	for (size_t i = 0; i < OPTION_DEFS; i++)
+		if (option_defs[i].kind == K_STRING) {
+			free(get_string(field_of(o, &option_defs[i])));
+			put_string(field_of(o, &option_defs[i]), NULL);
+		}
+}
+
+int options_copy(struct options *dst, const struct options *src)
+{
+	int ret = 0;
+
+	*dst = *src;
+	for (size_t i = 0; i < OPTION_DEFS; i++)
+		if (option_defs[i].kind == K_STRING)
+			put_string(field_of(dst, &option_defs[i]), NULL);
+	for (size_t i = 0; i < OPTION_DEFS && !ret; i++) {
+		char *s;
+
+		if (option_defs[i].kind != K_STRING)
+			continue;
+		s = get_string(const_field_of(src, &option_defs[i]));
+		if (!s)
+			continue;
+		s = strdup(s);
+		put_string(field_of(dst, &option_defs[i]), s);
+		ret = s ? 0 : -ENOMEM;
+	}
+	if (ret)
+		options_release(dst);
+	return ret;
+}
+
+static bool same_string(const char *a, const char *b)
+{
+	return a == b || (a && b && strcmp(a, b) == 0);
+}
+
+static bool same_value(const struct options *a, const struct options *b, const struct option_def *d)
+{
+	const void *x = const_field_of(a, d), *y = const_field_of(b, d);
+
+	if (d->kind == K_STRING)
+		return same_string(get_string(x), get_string(y));
+	/* WxH: the height is the int after the width. */
+	return memcmp(x, y, d->kind == K_SIZE ? 2 * sizeof(int) : d->size) == 0;
+}
+
+unsigned options_changed(const struct options *a, const struct options *b)
+{
+	unsigned changed = 0;
+
+	for (size_t i = 0; i < OPTION_DEFS; i++) {
+		const struct option_def *d = &option_defs[i];
+		const struct options_section_rule *rule;
+
+		if (d->section == OPTION_CLI || same_value(a, b, d))
+			continue;
+		rule = &options_sections[d->section];
+		if (rule->reload == OPTIONS_AT_START && rule->live_key &&
+		    !strcmp(rule->live_key, d->key))
+			continue;
+		changed |= 1u << d->section;
+	}
+	return changed;
+}
+
+void option_accepted(const struct option_def *d, char *buf, size_t n)
+{
+	size_t len = 0;
+
+	switch (d->kind) {
+	case K_INT:
+		if (d->step > 1)
+			snprintf(buf, n, "a multiple of %g from %g to %g", d->step, d->lo, d->hi);
+		else
+			snprintf(buf, n, "a whole number from %g to %g", d->lo, d->hi);
+		return;
+	case K_DOUBLE:
+	case K_DEGREES:
+		snprintf(buf, n, "a number from %g to %g", d->lo, d->hi);
+		return;
+	case K_SIZE:
+		snprintf(buf, n, "WIDTHxHEIGHT, each from %g to %g", d->lo, d->hi);
+		return;
+	case K_FLAG:
+		snprintf(buf, n, "true or false");
+		return;
+	case K_CHOICE:
+	case K_LEVEL:
+		buf[0] = '\0';
+		for (const char *const *c = d->choices; *c && len + 1 < n; c++)
+			len += (size_t)snprintf(buf + len, n - len, "%s%s",
+						c == d->choices ? "" : ", ", *c);
+		return;
+	default:
+		snprintf(buf, n, "a path");
+	}
+}
+
+static bool parse_number(const char *s, double lo, double hi, double step, double *out)
+{
+	char *end;
+
+	errno = 0;
+	*out = strtod(s, &end);
+	if (errno || end == s || *end || !(*out >= lo && *out <= hi))
+		return false;
+	return step == 0 || (*out == (double)(long)*out && (long)*out % (long)step == 0);
+}
+
+/* WxH into two ints side by side (the static asserts above). */
+static bool parse_size(const char *s, const struct option_def *d, char *field)
+{
+	char w[16], h[16];
+	double a, b;
+	int wh[2];
+	const char *x = strchr(s, 'x');
+
+	if (!x || x == s || (size_t)(x - s) >= sizeof(w) || strlen(x + 1) >= sizeof(h))
+		return false;
+	memcpy(w, s, (size_t)(x - s));
+	w[x - s] = '\0';
+	strcpy(h, x + 1);
+	if (!parse_number(w, d->lo, d->hi, 1, &a) || !parse_number(h, d->lo, d->hi, 1, &b))
+		return false;
+	wh[0] = (int)a;
+	wh[1] = (int)b;
+	memcpy(field, &wh[0], sizeof(int));
+	memcpy(field + sizeof(int), &wh[1], sizeof(int));
+	return true;
+}
+
+static bool parse_flag(const char *s, bool *out)
+{
+	static const char *const yes[] = {"true", "yes", "on", "1"}, *const no[] = {"false", "no",
+										    "off", "0"};
+
+	for (int i = 0; i < 4; i++) {
+		if (strcmp(s, yes[i]) == 0 || strcmp(s, no[i]) == 0) {
+			*out = strcmp(s, yes[i]) == 0;
+			return true;
+		}
+	}
+	return false;
+}
+
+static bool set_number(void *p, const struct option_def *d, const char *value)
+{
+	double v;
+
+	if (!parse_number(value, d->lo, d->hi, d->kind == K_INT ? (d->step ? d->step : 1) : 0, &v))
+		return false;
+	if (d->kind == K_INT)
+		*(int *)p = (int)v;
+	else
+		*(double *)p = d->kind == K_DEGREES ? radians(v) : v;
+	return true;
+}
+
+/* A choice of two may be kept as a bool (on_busy: exit_when_busy). */
+static bool set_choice(void *p, const struct option_def *d, const char *value)
+{
+	int i = 0;
+
+	while (d->choices[i] && strcmp(value, d->choices[i]) != 0)
+		i++;
+	if (!d->choices[i])
+		return false;
+	if (d->kind == K_LEVEL)
+		*(enum log_level *)p = log_levels[i];
+	else if (d->size == sizeof(bool))
+		*(bool *)p = i != 0;
+	else
+		*(int *)p = i;
+	return true;
+}
+
+bool option_set_value(struct options *o, const struct option_def *d, const char *value)
+{
+	void *p = field_of(o, d);
+	char *copy;
+
+	switch (d->kind) {
+	case K_FLAG:
+		return parse_flag(value, p);
+	case K_STRING:
+		copy = strdup(value);
+		free(get_string(p));
+		put_string(p, copy);
+		return copy != NULL;
+	case K_SIZE:
+		return parse_size(value, d, p);
+	case K_CHOICE:
+	case K_LEVEL:
+		return set_choice(p, d, value);
+	default:
+		return set_number(p, d, value);
+	}
+}
