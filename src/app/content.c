@@ -1,4 +1,5 @@
 #include "app/content.h"
+#include "app/content_cache.h"
 #include "render/bake.h"
 #include "scene/gltf.h"
 #include "scene/lod.h"
@@ -62,7 +63,8 @@ int content_load(struct content *s, const struct content_config *o, bool strict)
 	int ret;
 
 	memset(s, 0, sizeof(*s));
-	ret = load_model(o, strict, &s->mesh);
+	/* A model prepared before is mapped from the cache, not parsed. */
+	ret = content_cache_lookup(s, o) ? load_model(o, strict, &s->mesh) : 0;
 	if (!ret)
 		ret = load_matcap(o, strict, s);
 	if (!ret)
@@ -74,6 +76,7 @@ int content_load(struct content *s, const struct content_config *o, bool strict)
 
 void content_release(struct content *s)
 {
+	mesh_cache_entry_free(s->cached);
 	mesh_release(&s->mesh);
 	material_release(&s->material);
 	image_release(&s->matcap);
@@ -84,12 +87,26 @@ void content_release(struct content *s)
 
 int content_prepare(struct content *s, const struct content_config *o, int width, int height)
 {
-	int ret = material_prepare_mesh(&s->material, &s->mesh, width, height);
 	bool displaced = s->material.features & MATERIAL_DISPLACEMENT;
+	int ret = 0;
 
-	return ret ? ret
-		   : lod_prepare_mesh(&s->mesh, displaced ? 0.0 : o->lod_pixels, width, height,
-				      NULL);
+	if (content_cache_fits(s, width, height))
+		return 0;
+	if (s->cached) {
+		/* Cached for another display: its level of detail is another. */
+		mesh_cache_entry_free(s->cached);
+		s->cached = NULL;
+		mesh_release(&s->mesh);
+		ret = load_model(o, true, &s->mesh);
+	}
+	if (!ret)
+		ret = material_prepare_mesh(&s->material, &s->mesh, width, height);
+	if (!ret)
+		ret = lod_prepare_mesh(&s->mesh, displaced ? 0.0 : o->lod_pixels, width, height,
+				       NULL);
+	if (!ret)
+		content_cache_store(s, o, width, height);
+	return ret;
 }
 
 int content_upload(const struct content *s, struct renderer *r)
@@ -97,8 +114,14 @@ int content_upload(const struct content *s, struct renderer *r)
 	/* The material first: it decides which attributes the mesh uploads. */
 	int ret = renderer_set_material(r, &s->material);
 
-	if (!ret)
+	if (!ret && s->cached)
+		ret = renderer_set_packed(r, mesh_cache_entry_mesh(s->cached));
+	else if (!ret)
 		ret = renderer_set_mesh(r, &s->mesh);
+	/* On the GPU now: the entry's pages leave the process (a reload that
+	 * fails uploads this scene again, from the file). */
+	if (!ret && s->cached)
+		mesh_cache_entry_evict(s->cached);
 
 	return ret ? ret : renderer_set_matcap(r, &s->matcap);
 }

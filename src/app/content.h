@@ -9,6 +9,7 @@
 #include "render/matcap_set.h"
 #include "scene/material.h"
 #include "scene/mesh.h"
+#include "scene/mesh_cache.h"
 #include "render/render.h"
 #include "render/shading.h"
 
@@ -28,7 +29,12 @@ struct content_config {
 };
 
 struct content {
+	/* The mesh as loaded and prepared; once a prepared mesh is in the
+	 * cache (cached), a shell holding only the model's material. */
 	struct mesh mesh;
+	struct mesh_cache_entry *cached; /* the prepared mesh, mapped; or NULL */
+	struct mesh_cache_key cache_key;
+	bool cacheable;		  /* the key is known and the cache directory named */
 	struct image matcap;	  /* the first one shown */
 	struct matcap_set *set;	  /* NULL: the built-in clay only */
 	char *matcap_path;	  /* the file or folder set came from; NULL with set */

@@ -31,16 +31,20 @@ struct cache_header {
 	uint32_t arrays; /* bit a: array a is present */
 	float position_scale;
 	float material[MATERIAL_WORDS];
-	uint32_t reserved;
+	uint32_t width, height, reserved;
 	uint64_t payload_size, payload_hash;
 	uint64_t header_hash; /* of every byte before it */
 };
+
+/* The payload starts 8-aligned, so its arrays can be read in place. */
+_Static_assert(sizeof(struct cache_header) % 8 == 0, "the header keeps the payload aligned");
 
 struct mesh_cache_entry {
 	void *map;
 	size_t size;
 	struct mesh_packed mesh;
 	struct mesh_material material;
+	struct mesh_cache_key key;
 };
 
 static uint64_t rotl(uint64_t x, int r)
@@ -251,7 +255,8 @@ static bool header_sane(const struct cache_header *h, size_t size)
 }
 
 int mesh_cache_parse(const void *data, size_t size, const struct mesh_cache_key *key,
-		     struct mesh_packed *out, struct mesh_material *material)
+		     struct mesh_packed *out, struct mesh_material *material,
+		     struct mesh_cache_key *found)
 {
 	struct cache_header h;
 	uint64_t offset[MESH_ARRAYS + 1];
@@ -283,6 +288,8 @@ int mesh_cache_parse(const void *data, size_t size, const struct mesh_cache_key 
 	out->indices = idx;
 	if (material)
 		material_from_words(h.material, material);
+	if (found)
+		*found = (struct mesh_cache_key){h.content, h.settings, h.width, h.height};
 	return 0;
 }
 
@@ -333,7 +340,7 @@ int mesh_cache_open(const char *dir, const struct mesh_cache_key *key,
 	if (!ret)
 		ret = map_entry(path, e);
 	if (!ret)
-		ret = mesh_cache_parse(e->map, e->size, key, &e->mesh, &e->material);
+		ret = mesh_cache_parse(e->map, e->size, key, &e->mesh, &e->material, &e->key);
 	if (ret == -EBADMSG) {
 		log_warn("%s: a damaged or stale cache entry, removed; the model is prepared again",
 			 path);
@@ -355,6 +362,17 @@ const struct mesh_packed *mesh_cache_entry_mesh(const struct mesh_cache_entry *e
 const struct mesh_material *mesh_cache_entry_material(const struct mesh_cache_entry *e)
 {
 	return &e->material;
+}
+
+void mesh_cache_entry_evict(const struct mesh_cache_entry *e)
+{
+	/* A private mapping never written: dropping its pages loses nothing. */
+	madvise(e->map, e->size, MADV_DONTNEED);
+}
+
+const struct mesh_cache_key *mesh_cache_entry_key(const struct mesh_cache_entry *e)
+{
+	return &e->key;
 }
 
 void mesh_cache_entry_free(struct mesh_cache_entry *e)
@@ -418,6 +436,8 @@ static void fill_header(struct cache_header *h, const struct mesh_cache_key *key
 	h->header_size = sizeof(*h);
 	h->content = key->content;
 	h->settings = key->settings;
+	h->width = key->width;
+	h->height = key->height;
 	h->vertex_count = m->vertex_count;
 	h->index_count = m->index_count;
 	h->format = m->format;

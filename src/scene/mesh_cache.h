@@ -20,6 +20,11 @@
 struct mesh_cache_key {
 	uint64_t content;  /* mesh_cache_hash_model */
 	uint64_t settings; /* the caller's settings, through mesh_cache_hash */
+	/* The display the mesh was prepared for (its level of detail). Not
+	 * in the entry's name: a model has one entry per settings, replaced
+	 * when the display changes. 0 x 0 in a lookup: any display
+	 * (mesh_cache_entry_key says which). */
+	uint32_t width, height;
 };
 
 /* A fast 64-bit hash (not a cryptographic one: the cache trusts its own
@@ -46,12 +51,19 @@ const struct mesh_packed *mesh_cache_entry_mesh(const struct mesh_cache_entry *e
 /* The model's material factors (no images: an entry is written only
  * for a scene that decodes none). */
 const struct mesh_material *mesh_cache_entry_material(const struct mesh_cache_entry *e);
+/* Once its mesh is on the GPU: the mapping's pages leave the process
+ * (the file keeps them; a later read maps them in again). */
+void mesh_cache_entry_evict(const struct mesh_cache_entry *e);
+/* The key the entry was written with (its display's size included). */
+const struct mesh_cache_key *mesh_cache_entry_key(const struct mesh_cache_entry *e);
 void mesh_cache_entry_free(struct mesh_cache_entry *e);
 
 /* Check an entry's bytes (what mesh_cache_open does once mapped): 0 and
- * out's arrays pointing into data, or -EBADMSG. key may be NULL (any). */
+ * out's arrays pointing into data, or -EBADMSG. key may be NULL (any);
+ * found (may be NULL) gets the entry's own key. */
 int mesh_cache_parse(const void *data, size_t size, const struct mesh_cache_key *key,
-		     struct mesh_packed *out, struct mesh_material *material);
+		     struct mesh_packed *out, struct mesh_material *material,
+		     struct mesh_cache_key *found);
 
 /* Write m and material's factors as key's entry: a temporary file,
  * fsync, rename, so that a reader sees the whole entry or none; then the

@@ -128,13 +128,13 @@ static void a_damaged_entry_is_refused(void **state)
 	assert_int_equal(
 	    mesh_cache_write(f->dir, &f->key, &f->packed, &f->material, MESH_CACHE_MAX_BYTES), 0);
 	data = read_entry(f, &size);
-	assert_int_equal(mesh_cache_parse(data, size, &f->key, &out, &mat), 0);
+	assert_int_equal(mesh_cache_parse(data, size, &f->key, &out, &mat, NULL), 0);
 	for (size_t n = 0; n < size; n += n < 512 ? 1 : 97)
-		assert_int_equal(mesh_cache_parse(data, n, &f->key, &out, &mat), -EBADMSG);
+		assert_int_equal(mesh_cache_parse(data, n, &f->key, &out, &mat, NULL), -EBADMSG);
 	for (size_t i = 0; i < size; i += i < 256 ? 1 : 13)
 		for (int bit = 0; bit < 8; bit++) {
 			data[i] ^= (unsigned char)(1u << bit);
-			assert_int_equal(mesh_cache_parse(data, size, &f->key, &out, &mat),
+			assert_int_equal(mesh_cache_parse(data, size, &f->key, &out, &mat, NULL),
 					 -EBADMSG);
 			data[i] ^= (unsigned char)(1u << bit);
 		}
@@ -153,7 +153,7 @@ static void another_key_or_version_is_a_miss(void **state)
 	assert_int_equal(
 	    mesh_cache_write(f->dir, &f->key, &f->packed, &f->material, MESH_CACHE_MAX_BYTES), 0);
 	data = read_entry(f, &size);
-	assert_int_equal(mesh_cache_parse(data, size, &other, &out, NULL), -EBADMSG);
+	assert_int_equal(mesh_cache_parse(data, size, &other, &out, NULL, NULL), -EBADMSG);
 	assert_int_equal(mesh_cache_open(f->dir, &other, &e), -ENOENT);
 	/* An entry renamed under another key is stale: refused and removed. */
 	{
