@@ -208,8 +208,7 @@ static int after_display(const struct options *o, bool was_live, struct content 
 {
 	if (was_live && !is_live(o))
 		kiosk_unblock_signals();
-	return scene->mesh.index_count || scene->cached ? 0
-							: content_load(scene, &o->content, false);
+	return scene->mesh.index_count ? 0 : content_load(scene, &o->content, false);
 }
 
 static int show(struct options *o, char **argv)
