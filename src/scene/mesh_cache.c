@@ -293,6 +293,19 @@ int mesh_cache_parse(const void *data, size_t size, const struct mesh_cache_key 
 	return 0;
 }
 
+void mesh_cache_reseal(void *data, size_t size)
+{
+	struct cache_header h;
+
+	if (size < sizeof(h))
+		return;
+	memcpy(&h, data, sizeof(h));
+	h.payload_hash =
+	    mesh_cache_hash((const char *)data + sizeof(h), size - sizeof(h), h.content);
+	h.header_hash = mesh_cache_hash(&h, offsetof(struct cache_header, header_hash), 0);
+	memcpy(data, &h, sizeof(h));
+}
+
 static int entry_path(const char *dir, const struct mesh_cache_key *key, char *buf, size_t size)
 {
 	int n = snprintf(buf, size, "%s/%016llx-%016llx" CACHE_SUFFIX, dir,

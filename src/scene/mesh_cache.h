@@ -65,6 +65,11 @@ int mesh_cache_parse(const void *data, size_t size, const struct mesh_cache_key 
 		     struct mesh_packed *out, struct mesh_material *material,
 		     struct mesh_cache_key *found);
 
+/* For the fuzzer: recompute an entry's checksums in place (what a
+ * deliberate forgery would do), so that the fields behind them are what
+ * mesh_cache_parse then checks. Does nothing to fewer bytes than a header. */
+void mesh_cache_reseal(void *data, size_t size);
+
 /* Write m and material's factors as key's entry: a temporary file,
  * fsync, rename, so that a reader sees the whole entry or none; then the
  * directory is trimmed to max_bytes, oldest entries first. The directory

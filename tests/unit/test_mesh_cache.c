@@ -141,6 +141,29 @@ static void a_damaged_entry_is_refused(void **state)
 	free(data);
 }
 
+/* Checksums made right over a wrong field (a forgery, or a bug in the
+ * writer): the index range and the layout are still checked. */
+static void a_resealed_entry_is_still_checked(void **state)
+{
+	struct fixture *f = *state;
+	struct mesh_packed out;
+	size_t size;
+	unsigned char *data;
+	uint32_t bad;
+
+	assert_int_equal(
+	    mesh_cache_write(f->dir, &f->key, &f->packed, &f->material, MESH_CACHE_MAX_BYTES), 0);
+	data = read_entry(f, &size);
+	bad = f->packed.vertex_count;
+	memcpy(data + size - 4 - (f->packed.index_count % 2 ? 4 : 0), &bad, 4);
+	mesh_cache_reseal(data, size);
+	assert_int_equal(mesh_cache_parse(data, size, NULL, &out, NULL, NULL), -EBADMSG);
+	/* A size that does not match the layout, resealed. */
+	mesh_cache_reseal(data, size - 8);
+	assert_int_equal(mesh_cache_parse(data, size - 8, NULL, &out, NULL, NULL), -EBADMSG);
+	free(data);
+}
+
 static void another_key_or_version_is_a_miss(void **state)
 {
 	struct fixture *f = *state;
@@ -250,6 +273,7 @@ int main(void)
 	    cmocka_unit_test_setup_teardown(compact_vertices_are_within_a_step, setup, teardown),
 	    cmocka_unit_test_setup_teardown(an_entry_reads_back_as_written, setup, teardown),
 	    cmocka_unit_test_setup_teardown(a_damaged_entry_is_refused, setup, teardown),
+	    cmocka_unit_test_setup_teardown(a_resealed_entry_is_still_checked, setup, teardown),
 	    cmocka_unit_test_setup_teardown(another_key_or_version_is_a_miss, setup, teardown),
 	    cmocka_unit_test_setup_teardown(the_directory_stays_under_its_bound, setup, teardown),
 	    cmocka_unit_test_setup_teardown(the_key_follows_the_bytes, setup, teardown),
