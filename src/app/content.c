@@ -4,7 +4,9 @@
 #include "scene/lod.h"
 #include "util/log.h"
 
+#include <elf.h>
 #include <limits.h>
+#include <link.h>
 
 #include <errno.h>
 #include <math.h>
@@ -44,16 +46,48 @@ static bool keeps(const struct content_config *c)
 	return c->model && !m->height_map && !m->detail_map && m->detail != MATERIAL_ON;
 }
 
-/* The settings that change the prepared mesh, and the program's own
- * bytes: a rebuilt kiosk (another loader, another simplifier) prepares
- * again rather than trust what an older one wrote. */
+/* The program's GNU build ID (gcc and Debian write one), from its own
+ * ELF notes: what the kiosk was built from, without reading its bytes. */
+static int build_id_note(struct dl_phdr_info *info, size_t size, void *data)
+{
+	uint64_t *out = data;
+
+	(void)size;
+	for (int i = 0; i < info->dlpi_phnum; i++) {
+		const char *p = (const char *)(info->dlpi_addr + info->dlpi_phdr[i].p_vaddr);
+		const char *end = p + info->dlpi_phdr[i].p_memsz;
+
+		if (info->dlpi_phdr[i].p_type != PT_NOTE)
+			continue;
+		while (p + sizeof(ElfW(Nhdr)) <= end) {
+			const ElfW(Nhdr) *n = (const ElfW(Nhdr) *)(const void *)p;
+			const char *desc = p + sizeof(*n) + ((n->n_namesz + 3) & ~3u);
+
+			if (n->n_type == NT_GNU_BUILD_ID && n->n_namesz == 4 &&
+			    desc + n->n_descsz <= end) {
+				*out = mesh_cache_hash(desc, n->n_descsz, 0);
+				return 1;
+			}
+			p = desc + ((n->n_descsz + 3) & ~3u);
+		}
+	}
+	return 1; /* the first object is the program itself: no further */
+}
+
+/* The settings that change the prepared mesh, and the program's build: a
+ * rebuilt kiosk (another loader, another simplifier) prepares again
+ * rather than trust what an older one wrote. Without a build ID, the
+ * program's bytes. */
 static int settings_key(const struct content_config *c, uint64_t *out)
 {
 	const double values[] = {c->lod_pixels, c->material.detail, c->material.iridescence,
 				 VERTEX_COMPACT};
-	uint64_t program;
-	int ret = mesh_cache_hash_model("/proc/self/exe", &program);
+	uint64_t program = 0;
+	int ret = 0;
 
+	dl_iterate_phdr(build_id_note, &program);
+	if (!program)
+		ret = mesh_cache_hash_model("/proc/self/exe", &program);
 	*out = mesh_cache_hash(values, sizeof(values), program);
 	return ret;
 }
