@@ -7,6 +7,7 @@
 #include <elf.h>
 #include <limits.h>
 #include <link.h>
+#include <malloc.h>
 
 #include <errno.h>
 #include <math.h>
@@ -264,6 +265,10 @@ int content_upload(const struct content *s, struct renderer *r)
 	 * fails uploads this scene again, from the file). */
 	if (!ret && s->cached)
 		mesh_cache_entry_evict(s->cached);
+	/* The parse, the preparation and the upload freed far more than the
+	 * scene keeps; malloc holds freed heap for reuse, and a kiosk reuses
+	 * little: back to the system before the first frame. */
+	malloc_trim(0);
 
 	return ret ? ret : renderer_set_matcap(r, &s->matcap);
 }
