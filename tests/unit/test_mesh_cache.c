@@ -1,6 +1,8 @@
 /* The prepared-mesh cache: what is written reads back the same, and an
  * entry that is truncated, flipped, stale or of another key is never
  * trusted. Also the compact vertex format it stores. */
+#include "app/content.h"
+#include "gltf_write.h"
 #include "scene/mesh.h"
 #include "scene/mesh_cache.h"
 #include "scene/mesh_pack.h"
@@ -267,6 +269,44 @@ static void the_directory_is_named_as_systemd_and_xdg_say(void **state)
 	assert_string_equal(dir, "/home/k/.cache/matcap-kiosk");
 }
 
+/* The kiosk's content: the first start prepares the model and writes its
+ * entry, the next maps it (no parse) with the same counts, and another
+ * display prepares it again from the file. */
+static void content_maps_a_model_prepared_before(void **state)
+{
+	struct fixture *f = *state;
+	struct gltf_write_opts o = {.index_bytes = 4, .with_normals = 1, .bad_index = -1};
+	struct content_config c = {.lod_pixels = 4.0};
+	struct content s;
+	char model[128];
+	uint32_t triangles;
+
+	snprintf(model, sizeof(model), "%s/sphere.glb", f->dir);
+	assert_int_equal(gltf_write(model, &f->mesh, &o), 0);
+	setenv("XDG_CACHE_HOME", f->dir, 1);
+	material_config_defaults(&c.material);
+	c.model = model;
+	assert_int_equal(content_load(&s, &c, true), 0);
+	assert_null(s.cached);
+	assert_non_null(s.mesh.positions);
+	assert_int_equal(content_prepare(&s, &c, 64, 64), 0);
+	assert_non_null(s.cached); /* written, and the mesh's arrays given back */
+	assert_null(s.mesh.positions);
+	triangles = s.mesh.index_count / 3;
+	content_release(&s);
+
+	assert_int_equal(content_load(&s, &c, true), 0);
+	assert_non_null(s.cached);
+	assert_null(s.mesh.positions);
+	assert_int_equal(s.mesh.index_count / 3, triangles);
+	assert_int_equal(content_prepare(&s, &c, 64, 64), 0);
+	assert_int_equal(mesh_cache_entry_key(s.cached)->width, 64);
+	assert_int_equal(content_prepare(&s, &c, 640, 480), 0);
+	assert_int_equal(mesh_cache_entry_key(s.cached)->width, 640);
+	content_release(&s);
+	unsetenv("XDG_CACHE_HOME");
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -277,6 +317,7 @@ int main(void)
 	    cmocka_unit_test_setup_teardown(another_key_or_version_is_a_miss, setup, teardown),
 	    cmocka_unit_test_setup_teardown(the_directory_stays_under_its_bound, setup, teardown),
 	    cmocka_unit_test_setup_teardown(the_key_follows_the_bytes, setup, teardown),
+	    cmocka_unit_test_setup_teardown(content_maps_a_model_prepared_before, setup, teardown),
 	    cmocka_unit_test(the_directory_is_named_as_systemd_and_xdg_say),
 	};
 
