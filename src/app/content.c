@@ -4,9 +4,7 @@
 #include "scene/lod.h"
 #include "util/log.h"
 
-#include <elf.h>
 #include <limits.h>
-#include <link.h>
 #include <malloc.h>
 
 #include <errno.h>
@@ -34,65 +32,7 @@ static int load_model(const struct content_config *o, bool strict, struct mesh *
 	return mesh_torus_knot(mesh, KNOT_TUBULAR, KNOT_RADIAL);
 }
 
-/* The prepared-mesh cache (scene/mesh_cache.h): which scenes it keeps,
- * and under which key. */
-/* A scene is kept when nothing but the model file and these settings
- * shape its mesh: no displacement (a height map reshapes it), no detail
- * map (its tangents need UVs that the shell does not show material_load),
- * and no texture decoded from the model (the entry holds no images). */
-static bool keeps(const struct content_config *c)
-{
-	const struct material_config *m = &c->material;
-
-	return c->model && !m->height_map && !m->detail_map && m->detail != MATERIAL_ON;
-}
-
-/* The program's GNU build ID (gcc and Debian write one), from its own
- * ELF notes: what the kiosk was built from, without reading its bytes. */
-static int build_id_note(struct dl_phdr_info *info, size_t size, void *data)
-{
-	uint64_t *out = data;
-
-	(void)size;
-	for (int i = 0; i < info->dlpi_phnum; i++) {
-		const char *p = (const char *)(info->dlpi_addr + info->dlpi_phdr[i].p_vaddr);
-		const char *end = p + info->dlpi_phdr[i].p_memsz;
-
-		if (info->dlpi_phdr[i].p_type != PT_NOTE)
-			continue;
-		while (p + sizeof(ElfW(Nhdr)) <= end) {
-			const ElfW(Nhdr) *n = (const ElfW(Nhdr) *)(const void *)p;
-			const char *desc = p + sizeof(*n) + ((n->n_namesz + 3) & ~3u);
-
-			if (n->n_type == NT_GNU_BUILD_ID && n->n_namesz == 4 &&
-			    desc + n->n_descsz <= end) {
-				*out = mesh_cache_hash(desc, n->n_descsz, 0);
-				return 1;
-			}
-			p = desc + ((n->n_descsz + 3) & ~3u);
-		}
-	}
-	return 1; /* the first object is the program itself: no further */
-}
-
-/* The settings that change the prepared mesh, and the program's build: a
- * rebuilt kiosk (another loader, another simplifier) prepares again
- * rather than trust what an older one wrote. Without a build ID, the
- * program's bytes. */
-static int settings_key(const struct content_config *c, uint64_t *out)
-{
-	const double values[] = {c->lod_pixels, c->material.detail, c->material.iridescence,
-				 VERTEX_COMPACT};
-	uint64_t program = 0;
-	int ret = 0;
-
-	dl_iterate_phdr(build_id_note, &program);
-	if (!program)
-		ret = mesh_cache_hash_model("/proc/self/exe", &program);
-	*out = mesh_cache_hash(values, sizeof(values), program);
-	return ret;
-}
-
+/* The prepared-mesh cache (scene/mesh_cache.h). */
 /* The shell says what the entry holds (vertex and index counts), with no
  * array: the renderer is given the entry. */
 static void shell_counts(struct content *s)
@@ -106,12 +46,10 @@ static void shell_counts(struct content *s)
 static int content_cache_lookup(struct content *s, const struct content_config *c)
 {
 	char dir[PATH_MAX];
-	int ret = keeps(c) ? mesh_cache_dir(dir, sizeof(dir)) : -ENOENT;
+	int ret = mesh_cache_scene_key(c->model, c->lod_pixels, &c->material, &s->cache_key);
 
 	if (!ret)
-		ret = mesh_cache_hash_model(c->model, &s->cache_key.content);
-	if (!ret)
-		ret = settings_key(c, &s->cache_key.settings);
+		ret = mesh_cache_dir(dir, sizeof(dir));
 	s->cacheable = !ret;
 	if (!ret)
 		ret = mesh_cache_open(dir, &s->cache_key, &s->cached);
@@ -155,8 +93,7 @@ static void content_cache_store(struct content *s, const struct content_config *
 	struct mesh_packed packed;
 	char dir[PATH_MAX];
 
-	if (!s->cacheable || decoded_images(&s->mesh.material) || !keeps(c) ||
-	    mesh_cache_dir(dir, sizeof(dir)))
+	if (!s->cacheable || decoded_images(&s->mesh.material) || mesh_cache_dir(dir, sizeof(dir)))
 		return;
 	s->cache_key.width = (uint32_t)width;
 	s->cache_key.height = (uint32_t)height;
