@@ -3,7 +3,9 @@
 #   make test       every test (unit, golden images, malformed input under ASan)
 #   make bench      speed figures (printed, never asserted)
 #   make install    PREFIX=/usr/local DESTDIR= (staging)
-#   make deps       install the Debian 12 packages (as root)
+#   make deps       install the packages this Debian release names them
+#                   (12 bookworm or 13 trixie; through sudo unless root)
+#   make test-trixie  make deps and make test in a Debian 13 chroot
 
 VERSION    := 0.1.0
 PREFIX     ?= /usr/local
@@ -28,7 +30,17 @@ BUILD   ?= build
 # are still found through pkg-config.
 PKGS_LINK    := egl gbm libdrm libudev libpng libturbojpeg tinygltf inih libsystemd libgpiod libevdev \
 		libcamera
-PKGS_HEADERS := osmesa glesv2
+# Mesa 25.1 and later have no OSMesa: without its headers the osmesa
+# backend is left out (OSMESA=0 leaves it out by hand) and offscreen
+# rendering, the tests' included, goes through egl-headless.
+OSMESA ?= $(if $(shell $(PKG_CONFIG) --exists osmesa && echo y),1,0)
+PKGS_HEADERS := glesv2 $(if $(filter 1,$(OSMESA)),osmesa)
+OFFSCREEN_BACKEND ?= $(if $(filter 1,$(OSMESA)),osmesa,egl-headless)
+export OFFSCREEN_BACKEND
+# libgpiod 2 (Debian 13) is a new API: one backend file per API, the one
+# pkg-config's version asks for.
+GPIOD_API ?= $(if $(filter 0 1,$(firstword $(subst ., ,$(shell $(PKG_CONFIG) \
+	--modversion libgpiod)))),v1,v2)
 
 PKG_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(PKGS_LINK) $(PKGS_HEADERS))
 PKG_LIBS   := $(shell $(PKG_CONFIG) --libs $(PKGS_LINK))
@@ -38,6 +50,7 @@ OPT       ?= -O2 -g
 CFLAGS    ?=
 CXXFLAGS  ?=
 ALL_CFLAGS   = -std=c11 -D_GNU_SOURCE $(OPT) $(WARN) -Isrc -I$(BUILD) $(PKG_CFLAGS) \
+	       $(if $(filter 1,$(OSMESA)),-DMK_HAVE_OSMESA) \
 	       -DMK_VERSION='"$(VERSION)"' -DMK_MATCAP_DIR='"$(DATADIR)/matcaps"' $(CFLAGS)
 ALL_CXXFLAGS = -std=c++17 $(OPT) $(WARN) -Isrc $(PKG_CFLAGS) $(CXXFLAGS)
 # meshoptimizer (Debian's 0.18) ships no .pc file; it is C++, and the link
@@ -47,13 +60,14 @@ LDLIBS    = $(PKG_LIBS) -lmeshoptimizer -ldl -lm
 # The program's sources, minus app/main.c (tests link the same objects),
 # one folder per layer: each includes only the layers listed after it
 # (tests/tools/layers.sh checks that).
-SRC_APP     := app/app app/content app/kiosk app/options app/options_table app/power app/reload \
-	       app/schedule app/service
+SRC_APP     := app/app app/content app/kiosk app/options app/settings app/power app/reload \
+	       app/schedule app/screen app/service
 SRC_DISPLAY := display/backlight display/cec display/display display/display_egl display/display_kms \
 	       display/display_osmesa \
 	       display/drm display/drm_atomic display/drm_legacy display/egl_util display/hotplug \
 	       display/kms_fb
-SRC_INPUT   := input/action input/button input/gesture input/touch_decode input/gpio input/keyboard
+SRC_INPUT   := input/action input/button input/gesture input/touch_decode input/gpio \
+	       input/gpio_$(GPIOD_API) input/keyboard
 SRC_CAMERA  := camera/camera_feed camera/camera_link camera/camera_math camera/camera_proto \
 	       camera/camera_texture
 SRC_RENDER  := render/bake render/gl render/matcap_set render/render render/shader render/shading
@@ -107,18 +121,32 @@ run: matcap-kiosk
 include tests/tests.mk
 -include tests/vm/vm.mk
 
-DEBIAN_PACKAGES := make gcc g++ pkg-config libegl-dev libgles-dev libosmesa6-dev libosmesa6 \
+# Package names differ between releases: clang (and its runtime for the
+# fuzzers) is 14 on Debian 12 and 19 on Debian 13; OSMesa only while Mesa
+# has it. apt-get runs through sudo unless make already runs as root.
+# procps brings /bin/kill, which the unit's ExecReload names (a minimal
+# Debian 13 has none, and systemd-analyze verify says so).
+OS_CODENAME   := $(shell . /etc/os-release 2>/dev/null && echo $$VERSION_CODENAME)
+CLANG_VERSION ?= $(if $(filter bookworm,$(OS_CODENAME)),14,19)
+APT_GET       := $(if $(filter 0,$(shell id -u)),,sudo) env DEBIAN_FRONTEND=noninteractive apt-get
+DEBIAN_PACKAGES := make gcc g++ pkg-config libegl-dev libgles-dev \
 	libegl-mesa0 libgl1-mesa-dri libgbm-dev libdrm-dev libtinygltf-dev nlohmann-json3-dev \
 	libpng-dev libturbojpeg0-dev libcmocka-dev libinih-dev libudev-dev libsystemd-dev \
 	libgpiod-dev libevdev-dev libcamera-dev libcamera-ipa \
-	systemd clang-14 libclang-rt-14-dev valgrind libmeshoptimizer-dev gnuplot-nox \
+	systemd procps clang-$(CLANG_VERSION) libclang-rt-$(CLANG_VERSION)-dev valgrind \
+	libmeshoptimizer-dev gnuplot-nox \
 	qemu-system-x86 busybox-static lz4 cpio kmod udev xz-utils kmscube libdrm-tests \
 	libcamera-tools gpiod v4l-utils
 
 deps:
-	apt-get update -qq
-	DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
-		$(DEBIAN_PACKAGES)
+	$(APT_GET) update -qq
+	osmesa=$$(apt-cache show libosmesa6-dev >/dev/null 2>&1 && echo libosmesa6-dev libosmesa6); \
+	$(APT_GET) install -y -qq --no-install-recommends $(DEBIAN_PACKAGES) $$osmesa
+
+# The tests on Debian 13 in a chroot made from Debian's archive (root:
+# debootstrap, mount and chroot; tests/trixie/chroot.sh says more).
+test-trixie:
+	$(if $(filter 0,$(shell id -u)),,sudo) tests/trixie/chroot.sh
 
 install: matcap-kiosk
 	install -D -m 0755 matcap-kiosk $(DESTDIR)$(BINDIR)/matcap-kiosk
@@ -151,4 +179,4 @@ format:
 clean:
 	rm -rf $(BUILD) matcap-kiosk tests/out
 
-.PHONY: all run matcaps deps install uninstall format clean
+.PHONY: all run matcaps deps test-trixie install uninstall format clean

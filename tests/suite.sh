@@ -9,6 +9,16 @@
 #
 # Each check prints "PASS NAME" or "FAIL NAME" (with the command's output);
 # summary prints the one "N passed, N failed" line.
+# The offscreen backend: osmesa, or egl-headless where Mesa has no OSMesa
+# (the Makefile sets OFFSCREEN_BACKEND from what the build has).
+offscreen=${OFFSCREEN_BACKEND:-osmesa}
+# The knots are simplified for their size (src/scene/lod.c), the goldens'
+# by meshoptimizer 0.18 (Debian 12). A later one (0.22 on Debian 13) keeps
+# other triangles and the silhouette moves by a pixel in places: up to 2.5%
+# of the pixels. With the same triangles Mesa 25 draws them as Mesa 22 does,
+# so only there, and only on the knots, 3% may differ.
+knot_share=0.005
+grep -q '^#define MESHOPTIMIZER_VERSION 180 ' /usr/include/meshoptimizer.h || knot_share=0.03
 rm -rf "$out"
 mkdir -p "$out/models" "$out/render" "$out/bad"
 MODELS=$out/models
@@ -78,7 +88,9 @@ need_render() {
 # imgdiff_golden REFERENCE PICTURE: the golden images' tolerance, a pixel
 # differs when a channel is off by more than 8/255, and at most 0.5% may.
 imgdiff_golden() {
-	"$TOOLS/imgdiff" --tol 8 --share 0.005 "$1" "$2"
+	_share=0.005
+	case $1 in */knot-*) _share=$knot_share ;; esac
+	"$TOOLS/imgdiff" --tol 8 --share $_share "$1" "$2"
 }
 
 # The layers of src/: no include goes up or across, no circle, no file
@@ -156,7 +168,7 @@ test_mirror_check() {
 test_ortho() {
 	need_models
 	for m in gold chrome-studio; do
-		check "ortho sphere renders ($m)" "$KIOSK" -q --backend osmesa --size 256x256 --ortho \
+		check "ortho sphere renders ($m)" "$KIOSK" -q --backend $offscreen --size 256x256 --ortho \
 			--mode normal --pitch 0 --yaw 0 --model "$out/models/sphere.glb" \
 			--matcap matcaps/$m.png --output "$out/render/ortho-$m.png"
 		check "ortho sphere reproduces the matcap ($m)" "$TOOLS/imgdiff" --disk --rim 3 \
@@ -168,13 +180,13 @@ test_ortho() {
 test_loaders() {
 	need_models
 	for f in sphere-nonormals.gltf sphere-datauri.gltf; do
-		check "loads $f" "$KIOSK" -q --backend osmesa --size 64x64 --model "$out/models/$f" \
+		check "loads $f" "$KIOSK" -q --backend $offscreen --size 64x64 --model "$out/models/$f" \
 			--output "$out/render/$f.png"
 	done
 	# A glTF texture that cannot be used (outside the model's folder, not an
 	# image) is one warning; the model still shows.
 	for f in warn-texture-outside.gltf warn-texture-corrupt.glb; do
-		check "loads $f, warning about its texture" sh -c "$KIOSK --backend osmesa \
+		check "loads $f, warning about its texture" sh -c "$KIOSK --backend $offscreen \
 			--size 64x64 --model $out/models/$f --output $out/render/$f.png 2>&1 |
 			grep -q 'normalTexture.*not used'"
 	done
@@ -183,7 +195,7 @@ test_loaders() {
 # bad_input NAME OPTION FILE: through the ASan binary, exit status 1, one
 # error line that names the file, and no sanitizer report.
 bad_input() {
-	"$ASAN_KIOSK" --backend osmesa --size 64x64 "$2" "$3" --output "$out/bad/x.png" \
+	"$ASAN_KIOSK" --backend $offscreen --size 64x64 "$2" "$3" --output "$out/bad/x.png" \
 		>"$out/bad/stdout" 2>"$out/bad/stderr"
 	status=$?
 	lines=$(grep -c "error" "$out/bad/stderr")
@@ -231,7 +243,7 @@ test_cli() {
 	# live kiosk (the ASan build; OSMesa's own leak aside, see tests/e2e/live.sh)
 	# runs on without it, and exits cleanly.
 	check "a missing GPIO chip is one error; the kiosk runs on" sh -c "
-		ASAN_OPTIONS=detect_leaks=0 $ASAN_KIOSK --backend osmesa --size 64x64 --keyboard none \
+		ASAN_OPTIONS=detect_leaks=0 $ASAN_KIOSK --backend $offscreen --size 64x64 --keyboard none \
 			--gpio-chip nosuchchip --button-left GPIO17 2>$out/bad/gpio.log & p=\$!; i=0
 		until grep -q 'first frame' $out/bad/gpio.log || [ \$i -gt 300 ]; do sleep 0.1; i=\$((i+1)); done
 		kill -0 \$p && kill -TERM \$p && wait \$p && [ \$(grep -c ': error: ' $out/bad/gpio.log) = 1 ] &&

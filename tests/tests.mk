@@ -54,6 +54,12 @@ $(TOOLS_DIR)/cec_power: tests/tools/cec_power.c $(BUILD)/display/cec.o $(BUILD)/
 	$(CC) $(ALL_CFLAGS) -o $@ $^
 test-tools: $(TOOLS_DIR)/cec_power
 
+# Sets the board's clock and its synchronised flag (tests/e2e/power.sh).
+$(TOOLS_DIR)/clock_set: tests/tools/clock_set.c
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -o $@ $^
+test-tools: $(TOOLS_DIR)/clock_set
+
 # Stands in for systemd's notify socket in tests/e2e/live.sh.
 $(TOOLS_DIR)/notify_listen: tests/tools/notify_listen.c
 	@mkdir -p $(@D)

@@ -1,6 +1,7 @@
 #include "app/kiosk.h"
 #include "app/app.h"
 #include "app/reload.h"
+#include "app/screen.h"
 #include "app/service.h"
 #include "camera/camera_feed.h"
 #include "input/gpio.h"
@@ -58,6 +59,7 @@ struct kiosk {
 	bool display_absent;	    /* the last draw found no display to show it on */
 	struct service service;
 	struct camera_feed *camera; /* the live camera; NULL: none */
+	struct screen *screen;	    /* its power; NULL: always on */
 };
 
 static void tell_app(struct kiosk *k, enum app_msg_kind kind)
@@ -65,6 +67,27 @@ static void tell_app(struct kiosk *k, enum app_msg_kind kind)
 	struct app_msg m = {.kind = kind};
 
 	app_apply(k->app, &m);
+}
+
+static bool awake(const struct kiosk *k)
+{
+	return !k->screen || screen_on(k->screen);
+}
+
+/* The screen's power decided again; a screen that just woke is drawn
+ * whole, with the view as it is now. */
+static void service_screen(struct kiosk *k, uint64_t now)
+{
+	if (k->screen && screen_update(k->screen, now))
+		tell_app(k, APP_DISPLAY_BACK);
+}
+
+static void start_screen(struct kiosk *k, uint64_t now)
+{
+	screen_free(k->screen);
+	k->screen = screen_new(&k->applied.power, k->display, now);
+	if (!k->screen)
+		log_err("screen: its power cannot be managed; it stays on");
 }
 
 static int add_input(struct kiosk *k, struct input_source *s, enum input_origin origin)
@@ -298,6 +321,10 @@ static void reopen_devices(struct kiosk *k, unsigned sections)
 		log_info("reload: [camera] changed: starting the camera again");
 		start_camera(k);
 	}
+	if (sections & 1u << OPTIONS_POWER) {
+		log_info("reload: [power] changed: deciding the screen's power again");
+		start_screen(k, monotonic_ns());
+	}
 }
 
 /* SIGHUP: the settings, model and matcaps again, swapped in only when all
@@ -365,6 +392,9 @@ static void read_input(struct kiosk *k, int i, uint64_t now)
 	for (int e = 0; e < n; e++) {
 		struct app_msg m = {.kind = APP_INPUT, .input = ev[e]};
 
+		/* Any input wakes a sleeping screen; it also does what it does. */
+		if (k->screen && screen_input(k->screen, now))
+			tell_app(k, APP_DISPLAY_BACK);
 		app_apply(k->app, &m);
 	}
 }
@@ -471,7 +501,8 @@ static void service_camera(struct kiosk *k, short revents)
 	struct app_msg m = {.kind = APP_CAMERA, .camera = {r.available, r.frame}};
 
 	app_apply(k->app, &m);
-	camera_feed_stream(k->camera, app_state(k->app)->camera_on);
+	/* A sleeping screen shows no camera: it need not stream. */
+	camera_feed_stream(k->camera, app_state(k->app)->camera_on && awake(k));
 }
 
 /* A page flip done or a display plugged in; < 0: the display is gone. */
@@ -501,10 +532,16 @@ static int loop_once(struct kiosk *k, int sig_fd)
 	enum signal_result sig = SIGNALS_NONE;
 	int n, ret;
 
-	if (app_state(k->app)->dirty && !k->display->waiting && (ret = draw(k, now)))
+	service_screen(k, now);
+	if (app_state(k->app)->dirty && awake(k) && !k->display->waiting && (ret = draw(k, now)))
 		return ret;
 	service_camera(k, 0);
 	tell_service(k, now);
+	/* Asleep, nothing is drawn: what moves by itself need not wake us. */
+	if (!awake(k))
+		next = CLOCK_NEVER;
+	if (k->screen)
+		next = earliest(next, screen_deadline(k->screen, now), CLOCK_NEVER);
 	next = earliest(next, k->rescan_at, service_deadline(&k->service));
 	n = fill_fds(k, fds, sig_fd);
 	if (poll(fds, (nfds_t)n, poll_timeout_ms(k, next, now)) < 0 && errno != EINTR)
@@ -561,6 +598,7 @@ struct kiosk *kiosk_new(const struct kiosk_parts *p, uint64_t now_ns)
 		kiosk_free(k);
 		return NULL;
 	}
+	start_screen(k, now_ns);
 	return k;
 }
 
@@ -572,6 +610,7 @@ void kiosk_free(struct kiosk *k)
 	close_inputs(k, INPUT_BUTTON);
 	close_inputs(k, INPUT_KEYBOARD);
 	camera_feed_free(k->camera);
+	screen_free(k->screen);
 	folder_watch_free(k->watch);
 	app_free(k->app);
 	options_release(&k->started);

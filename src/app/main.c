@@ -51,7 +51,11 @@ static struct display *open_display(struct options *o)
 			o->output = strdup("matcap-kiosk.png");
 			log_info("no display found: drawing the scene into %s", o->output);
 		}
+#ifdef MK_HAVE_OSMESA
 		return display_osmesa_new(&cfg);
+#else /* Mesa 25.1 and later: no OSMesa, the same through EGL */
+		return display_egl_new(&cfg);
+#endif
 	}
 }
 

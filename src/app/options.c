@@ -1,7 +1,9 @@
 /* Reading the settings: the config file (inih) and the command line
- * (getopt_long), both through the table in src/app/options_table.c, and
+ * (getopt_long), both through the table in src/app/settings.c, and
  * --help from it. */
-#include "app/options_table.h"
+#include "app/options.h"
+#include "app/schedule.h"
+#include "app/settings.h"
 #include "util/log.h"
 
 #include <errno.h>
@@ -176,12 +178,30 @@ static void check_lines(struct file_state *st)
 		gpio_button_names[i], first);
 }
 
+/* Counts an error when this file set a schedule that does not parse: the
+ * kiosk must not start and sleep at the wrong hours. */
+static void check_schedule(struct file_state *st)
+{
+	const char *text = st->opts->power.schedule;
+	int at = st->seen_line[find_key("power", "schedule") - option_defs];
+	struct schedule sch;
+	char err[160];
+
+	if (!at || !text || !*text || !schedule_parse(&sch, text, err, sizeof(err)))
+		return;
+	st->errors++;
+	log_err("%s:%d: [power] schedule = '%s' is not valid: %s; expected days and spans like "
+		"'Mon-Fri 08:00-20:00, Sat 10:00-16:00'",
+		st->path, at, text, err);
+}
+
 static enum options_status read_stream(struct options *o, const char *path, FILE *f)
 {
 	struct file_state st = {.opts = o, .path = path, .f = f};
 	int ret = ini_parse_stream(read_line, &st, on_key, &st);
 
 	check_lines(&st);
+	check_schedule(&st);
 	if (ret > 0)
 		log_err("%s:%d: not an INI line; expected [section], key = value or a comment",
 			path, ret);
@@ -290,6 +310,8 @@ static enum options_status read_config_first(struct options *o, int argc, char *
 
 static enum options_status check_command_line(const struct options *o, int argc, char **argv)
 {
+	struct schedule sch;
+	char err[160];
 	int first, second;
 
 	if (optind < argc) {
@@ -301,6 +323,12 @@ static enum options_status check_command_line(const struct options *o, int argc,
 			"line",
 			gpio_button_names[first], gpio_button_names[second],
 			o->buttons.buttons[second].line);
+		return OPTIONS_USAGE;
+	}
+	/* A file's bad schedule stopped its reading: this one is --schedule's. */
+	if (o->power.schedule && *o->power.schedule &&
+	    schedule_parse(&sch, o->power.schedule, err, sizeof(err))) {
+		log_err("--schedule: '%s' is not valid: %s", o->power.schedule, err);
 		return OPTIONS_USAGE;
 	}
 	return OPTIONS_OK;

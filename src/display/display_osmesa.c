@@ -1,9 +1,24 @@
 /* Offscreen rendering in software through Mesa's OSMesa: the reference for
  * golden images and CI. The library is opened with dlopen and kept local
  * so its gl* symbols never shadow another driver's, and so the kiosk runs
- * on a board where libOSMesa is not installed. */
+ * on a board where libOSMesa is not installed. Mesa 25.1 and later have no
+ * OSMesa: the Makefile then builds without MK_HAVE_OSMESA, and the backend
+ * is only a message pointing at egl-headless (the same renders through EGL
+ * surfaceless on llvmpipe). */
 #include "display/display.h"
 #include "util/log.h"
+
+#ifndef MK_HAVE_OSMESA
+
+struct display *display_osmesa_new(const struct display_config *cfg)
+{
+	(void)cfg;
+	log_err("osmesa: this build has no OSMesa (Mesa 25.1 and later dropped it); use "
+		"--backend egl-headless");
+	return NULL;
+}
+
+#else
 
 #include <GL/osmesa.h>
 #include <dlfcn.h>
@@ -146,3 +161,5 @@ fail:
 	osmesa_destroy(&o->base);
 	return NULL;
 }
+
+#endif

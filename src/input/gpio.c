@@ -1,11 +1,12 @@
 #include "input/gpio.h"
-#include "util/clock.h"
 #include "input/button.h"
+#include "input/gpio_line.h"
+#include "util/clock.h"
 #include "util/log.h"
 
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
-#include <gpiod.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -18,8 +19,8 @@ const char *const gpio_button_names[GPIO_BUTTONS] = {"left", "right", "select"};
 
 struct gpio_source {
 	struct input_source base;
-	struct gpiod_chip *chip; /* owned: one handle per line keeps them apart */
-	struct gpiod_line *line;
+	struct gpio_chip *chip; /* owned: one handle per line keeps them apart */
+	struct gpio_request *req;
 	struct button button;
 	bool lost;
 	char name[128];
@@ -28,8 +29,8 @@ struct gpio_source {
 /* A resolved line, before it is requested. */
 struct gpio_wire {
 	int slot;
-	struct gpiod_chip *chip;
-	struct gpiod_line *line;
+	struct gpio_chip *chip;
+	unsigned offset;
 };
 
 static struct gpio_source *source_of(struct input_source *s)
@@ -45,9 +46,8 @@ static uint64_t distance(uint64_t a, uint64_t b)
 /* Linux 5.7 and later stamp line events with CLOCK_MONOTONIC, the main
  * loop's clock; older kernels used CLOCK_REALTIME. A stamp nearer the
  * wall clock is moved onto the monotonic one. */
-static uint64_t event_ns(const struct timespec *ts)
+static uint64_t event_ns(uint64_t t)
 {
-	uint64_t t = (uint64_t)ts->tv_sec * 1000000000ull + (uint64_t)ts->tv_nsec;
 	uint64_t mono = clock_ns(CLOCK_MONOTONIC), real = clock_ns(CLOCK_REALTIME);
 
 	if (distance(t, real) < distance(t, mono))
@@ -65,6 +65,73 @@ static bool all_digits(const char *s)
 	return true;
 }
 
+static int chip_filter(const struct dirent *d)
+{
+	return !strncmp(d->d_name, "gpiochip", 8);
+}
+
+/* Whether the chip has a line called name (its offset in *offset). */
+static bool match_line(struct gpio_chip *chip, const char *name, int *offset)
+{
+	*offset = gpio_chip_find_line(chip, name);
+	return *offset >= 0;
+}
+
+static bool match_label(struct gpio_chip *chip, const char *label, int *offset)
+{
+	*offset = -1;
+	return !strcmp(gpio_chip_label(chip), label);
+}
+
+/* Opens every chip in /dev in name order, as libgpiod 1's line search did
+ * (libgpiod 2 has none: both APIs use this one), and returns the first one
+ * that matches. A chip that cannot be opened is passed over; its error
+ * (errno) is told only when no other chip matches, else ENOENT. */
+static struct gpio_chip *chips_search(bool (*match)(struct gpio_chip *, const char *, int *),
+				      const char *what, int *offset)
+{
+	struct dirent **dirs = NULL;
+	struct gpio_chip *found = NULL;
+	int n = scandir("/dev", &dirs, chip_filter, alphasort), err = n < 0 ? errno : ENOENT;
+	char path[300];
+
+	for (int i = 0; i < n && !found; i++) {
+		struct gpio_chip *c;
+
+		snprintf(path, sizeof(path), "/dev/%s", dirs[i]->d_name);
+		c = gpio_chip_open(path);
+		if (!c)
+			err = errno;
+		else if (match(c, what, offset))
+			found = c;
+		else
+			gpio_chip_free(c);
+	}
+	for (int i = 0; i < n; i++)
+		free(dirs[i]);
+	free(dirs);
+	errno = err;
+	return found;
+}
+
+/* A chip as [buttons] chip names it: a number, a /dev path, a name in
+ * /dev (gpiochip0) or a label (pinctrl-bcm2711), as gpiodetect shows. */
+static struct gpio_chip *chip_lookup(const char *chip)
+{
+	struct gpio_chip *c;
+	char path[300];
+	int unused;
+
+	if (all_digits(chip))
+		snprintf(path, sizeof(path), "/dev/gpiochip%s", chip);
+	else
+		snprintf(path, sizeof(path), "%s%s", chip[0] == '/' ? "" : "/dev/", chip);
+	c = gpio_chip_open(path);
+	if (!c && !all_digits(chip) && chip[0] != '/')
+		c = chips_search(match_label, chip, &unused);
+	return c;
+}
+
 /* Finds the line a [buttons] key names: an offset on the configured chip
  * (gpiochip0 when none is set), or a line name on that chip or, with no
  * chip set, on every chip. Logs one line on failure. */
@@ -72,32 +139,27 @@ static int wire_find(const struct gpio_config *c, int slot, struct gpio_wire *w)
 {
 	const char *spec = c->buttons[slot].line, *button = gpio_button_names[slot];
 	const char *chip = c->chip && *c->chip ? c->chip : NULL;
-	int ret = 0;
+	int ret = 0, offset;
 
 	*w = (struct gpio_wire){.slot = slot};
 	if (!chip && !all_digits(spec)) {
-		errno = 0;
-		w->line = gpiod_line_find(spec);
-		if (!w->line && (errno == ENOENT || !errno)) {
+		w->chip = chips_search(match_line, spec, &offset);
+		w->offset = (unsigned)offset;
+		ret = w->chip ? 0 : -errno;
+		if (ret == -ENOENT)
 			log_err(
 			    "button %s: no GPIO line named %s on any chip (gpioinfo lists them); "
 			    "running without this button",
 			    button, spec);
-			return -ENOENT;
-		}
-		if (!w->line) {
-			ret = -errno;
+		else if (ret)
 			log_err("button %s: cannot look through the GPIO chips for line %s: %s; "
 				"running without this button",
-				button, spec, strerror(errno));
-			return ret;
-		}
-		w->chip = gpiod_line_get_chip(w->line);
-		return 0;
+				button, spec, strerror(-ret));
+		return ret;
 	}
 	if (!chip)
 		chip = "gpiochip0";
-	w->chip = gpiod_chip_open_lookup(chip);
+	w->chip = chip_lookup(chip);
 	if (!w->chip) {
 		ret = -errno;
 		log_err("button %s: GPIO chip %s not found (%s); running without the button on "
@@ -105,19 +167,23 @@ static int wire_find(const struct gpio_config *c, int slot, struct gpio_wire *w)
 			button, chip, strerror(errno), spec);
 		return ret;
 	}
-	if (all_digits(spec))
-		w->line = gpiod_chip_get_line(w->chip, (unsigned)strtoul(spec, NULL, 10));
-	else
-		w->line = gpiod_chip_find_line(w->chip, spec);
-	if (!w->line) {
-		ret = errno ? -errno : -ENOENT;
+	if (all_digits(spec)) {
+		unsigned long o = strtoul(spec, NULL, 10);
+
+		offset = o < gpio_chip_num_lines(w->chip) ? (int)o : -1;
+	} else {
+		offset = gpio_chip_find_line(w->chip, spec);
+	}
+	if (offset < 0) {
 		log_err("button %s: GPIO chip %s has no line %s (it has lines 0 to %u); running "
 			"without this button",
-			button, gpiod_chip_name(w->chip), spec, gpiod_chip_num_lines(w->chip) - 1);
-		gpiod_chip_close(w->chip);
+			button, gpio_chip_name(w->chip), spec, gpio_chip_num_lines(w->chip) - 1);
+		gpio_chip_free(w->chip);
 		w->chip = NULL;
+		return -ENOENT;
 	}
-	return ret;
+	w->offset = (unsigned)offset;
+	return 0;
 }
 
 /* GPIO17 and 17 may be one line: two requests would fight over it. */
@@ -125,67 +191,54 @@ static int check_clash(const struct gpio_config *c, const struct gpio_wire *w, i
 {
 	for (int i = 0; i < n; i++)
 		for (int j = i + 1; j < n; j++)
-			if (gpiod_line_offset(w[i].line) == gpiod_line_offset(w[j].line) &&
-			    !strcmp(gpiod_chip_name(w[i].chip), gpiod_chip_name(w[j].chip))) {
+			if (w[i].offset == w[j].offset &&
+			    !strcmp(gpio_chip_name(w[i].chip), gpio_chip_name(w[j].chip))) {
 				log_err("[buttons] %s = %s and %s = %s are the same line (%s "
 					"offset %u); each button needs its own line",
 					gpio_button_names[w[i].slot], c->buttons[w[i].slot].line,
 					gpio_button_names[w[j].slot], c->buttons[w[j].slot].line,
-					gpiod_chip_name(w[i].chip), gpiod_line_offset(w[i].line));
+					gpio_chip_name(w[i].chip), w[i].offset);
 				return -EEXIST;
 			}
 	return 0;
 }
 
-static int request_flags(const struct gpio_config *c)
-{
-	static const int bias[] = {
-	    [BUTTON_BIAS_PULL_UP] = GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_UP,
-	    [BUTTON_BIAS_PULL_DOWN] = GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_DOWN,
-	    [BUTTON_BIAS_DISABLE] = GPIOD_LINE_REQUEST_FLAG_BIAS_DISABLE,
-	    [BUTTON_BIAS_AS_IS] = 0,
-	};
-
-	return bias[c->bias] |
-	       (c->active == BUTTON_ACTIVE_LOW ? GPIOD_LINE_REQUEST_FLAG_ACTIVE_LOW : 0);
-}
-
 /* Both edges, with the bias and polarity asked for; a kernel or chip that
  * cannot set the bias still gives the button, as the line is wired. */
-static int line_request(struct gpiod_line *line, int flags, const char *name)
+static struct gpio_request *line_request(const struct gpio_config *c, const struct gpio_wire *w,
+					 const char *name)
 {
-	const int bias = GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_UP |
-			 GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_DOWN |
-			 GPIOD_LINE_REQUEST_FLAG_BIAS_DISABLE;
-	const char *user;
+	struct gpio_line_settings s = {.bias = c->bias,
+				       .active_low = c->active == BUTTON_ACTIVE_LOW};
+	struct gpio_request *req = gpio_request_new(w->chip, w->offset, &s, CONSUMER);
+	char user[64];
 
-	if (gpiod_line_request_both_edges_events_flags(line, CONSUMER, flags) == 0)
-		return 0;
-	if ((errno == EINVAL || errno == EOPNOTSUPP) && (flags & bias) &&
-	    gpiod_line_request_both_edges_events_flags(line, CONSUMER, flags & ~bias) == 0) {
-		log_warn("%s: the chip cannot set the line's bias; add a pull resistor if the "
-			 "button reads wrong",
-			 name);
-		return 0;
+	if (!req && (errno == EINVAL || errno == EOPNOTSUPP) && s.bias != BUTTON_BIAS_AS_IS) {
+		s.bias = BUTTON_BIAS_AS_IS;
+		req = gpio_request_new(w->chip, w->offset, &s, CONSUMER);
+		if (req)
+			log_warn("%s: the chip cannot set the line's bias; add a pull resistor if "
+				 "the button reads wrong",
+				 name);
 	}
-	if (errno == EBUSY) {
-		gpiod_line_update(line);
-		user = gpiod_line_consumer(line);
+	if (!req && errno == EBUSY)
 		log_err("%s: the line is used by another program (%s); running without this "
 			"button",
-			name, user ? user : "unnamed");
-		return -EBUSY;
-	}
-	log_err("%s: cannot watch the line: %s; running without this button", name,
-		strerror(errno));
-	return -errno;
+			name,
+			gpio_chip_line_consumer(w->chip, w->offset, user, sizeof(user))
+			    ? user
+			    : "unnamed");
+	else if (!req)
+		log_err("%s: cannot watch the line: %s; running without this button", name,
+			strerror(errno));
+	return req;
 }
 
 /* The line's level once its queue is empty: a burst that overflowed the
  * kernel's queue must not leave the button down (or up). */
 static int catch_up(struct gpio_source *g, uint64_t now, struct app_event *out)
 {
-	int v = gpiod_line_get_value(g->line);
+	int v = gpio_request_get_value(g->req);
 
 	if (v < 0 || (v == 1) == g->button.raw)
 		return 0;
@@ -202,10 +255,9 @@ static int gpio_lose(struct gpio_source *g, uint64_t now, struct app_event *out,
 static int gpio_read(struct input_source *s, uint64_t now, struct app_event *out, int max)
 {
 	struct gpio_source *g = source_of(s);
-	struct gpiod_line_event ev;
+	struct gpio_edge ev;
 	int n = 0, edges = 0;
 	uint64_t t;
-	bool down;
 
 	if (g->lost)
 		return -ENODEV;
@@ -214,7 +266,7 @@ static int gpio_read(struct input_source *s, uint64_t now, struct app_event *out
 	 * read only when its events fit: the rest stays queued and wakes
 	 * poll again. */
 	while (max - n >= 2 * BUTTON_MAX_EVENTS) {
-		if (gpiod_line_event_read_fd(s->fd, &ev) < 0) {
+		if (gpio_request_read_edge(g->req, &ev) < 0) {
 			if (errno != EAGAIN)
 				return n + gpio_lose(g, now, out + n, errno);
 			if (edges)
@@ -222,12 +274,11 @@ static int gpio_read(struct input_source *s, uint64_t now, struct app_event *out
 			break;
 		}
 		edges++;
-		t = event_ns(&ev.ts);
-		down = ev.event_type == GPIOD_LINE_EVENT_RISING_EDGE;
+		t = event_ns(ev.ns);
 		log_debug("%s: %s at %.3f s, read %.2f ms later", g->name,
-			  down ? "pressed" : "released", (double)t / 1e9,
+			  ev.rising ? "pressed" : "released", (double)t / 1e9,
 			  now > t ? (double)(now - t) / 1e6 : 0.0);
-		n += button_edge(&g->button, t, down, out + n);
+		n += button_edge(&g->button, t, ev.rising, out + n);
 	}
 	if (max - n < BUTTON_MAX_EVENTS)
 		return n;
@@ -243,8 +294,8 @@ static void gpio_destroy(struct input_source *s)
 {
 	struct gpio_source *g = source_of(s);
 
-	gpiod_line_release(g->line);
-	gpiod_chip_close(g->chip);
+	gpio_request_free(g->req);
+	gpio_chip_free(g->chip);
 	free(g);
 }
 
@@ -259,7 +310,7 @@ static void button_config_from(const struct gpio_config *c, int slot, struct but
 	};
 }
 
-/* Takes the wire's chip and line: on success the source owns them. */
+/* Takes the wire's chip: on success the source owns it. */
 static struct input_source *source_new(const struct gpio_config *c, struct gpio_wire *w)
 {
 	struct gpio_source *g = calloc(1, sizeof(*g));
@@ -269,23 +320,22 @@ static struct input_source *source_new(const struct gpio_config *c, struct gpio_
 	if (!g)
 		goto fail;
 	snprintf(g->name, sizeof(g->name), "button %s (%s on %s)", gpio_button_names[w->slot],
-		 c->buttons[w->slot].line, gpiod_chip_name(w->chip));
-	if (line_request(w->line, request_flags(c), g->name))
+		 c->buttons[w->slot].line, gpio_chip_name(w->chip));
+	g->req = line_request(c, w, g->name);
+	if (!g->req)
 		goto fail;
-	fd = gpiod_line_event_get_fd(w->line);
+	fd = gpio_request_fd(g->req);
 	/* Read also when only a deadline passed: it must not block. */
 	if (fd < 0 || fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) | O_NONBLOCK) < 0) {
 		log_err("%s: no event descriptor: %s", g->name, strerror(errno));
-		gpiod_line_release(w->line);
 		goto fail;
 	}
-	level = gpiod_line_get_value(w->line);
+	level = gpio_request_get_value(g->req);
 	button_config_from(c, w->slot, &cfg);
 	button_init(&g->button, &cfg, level == 1);
 	if (level == 1)
 		log_warn("%s: pressed at start-up; it counts once released", g->name);
 	g->chip = w->chip;
-	g->line = w->line;
 	g->base = (struct input_source){.name = g->name,
 					.fd = fd,
 					.read = gpio_read,
@@ -295,8 +345,10 @@ static struct input_source *source_new(const struct gpio_config *c, struct gpio_
 		 app_action_names[cfg.long_press]);
 	return &g->base;
 fail:
+	if (g)
+		gpio_request_free(g->req);
 	free(g);
-	gpiod_chip_close(w->chip);
+	gpio_chip_free(w->chip);
 	return NULL;
 }
 
@@ -318,7 +370,7 @@ int gpio_open_buttons(const struct gpio_config *c, struct input_source **out, in
 		if (!ret && count < max)
 			s = source_new(c, &w[i]);
 		else
-			gpiod_chip_close(w[i].chip);
+			gpio_chip_free(w[i].chip);
 		if (s)
 			out[count++] = s;
 	}

@@ -5,18 +5,11 @@
 #define MK_GPIO_H
 
 #include "input/input.h"
+#include "input/wiring.h"
 
 /* The buttons a board has: left, right, select (gpio_button_names). */
 #define GPIO_BUTTONS 3
 extern const char *const gpio_button_names[GPIO_BUTTONS];
-
-enum button_active { BUTTON_ACTIVE_LOW, BUTTON_ACTIVE_HIGH };
-enum button_bias {
-	BUTTON_BIAS_PULL_UP,
-	BUTTON_BIAS_PULL_DOWN,
-	BUTTON_BIAS_DISABLE,
-	BUTTON_BIAS_AS_IS
-};
 
 struct gpio_button {
 	const char *line; /* GPIO17, 17...; NULL, "" or "none": not wired */

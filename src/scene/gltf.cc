@@ -14,6 +14,7 @@
 #include <cstring>
 #include <fstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace
@@ -105,6 +106,47 @@ bool fs_write(std::string *err, const std::string &, const std::vector<unsigned 
 {
 	*err = "writing is not allowed";
 	return false;
+}
+
+// tinygltf 2.9 (Debian 13) asks for a file's size before reading it, and
+// takes no callbacks at all unless this one is given too; 2.7 has no such
+// member.
+[[maybe_unused]] bool fs_size(size_t *size, std::string *err, const std::string &path, void *user)
+{
+	Context *c = static_cast<Context *>(user);
+	if (!path_allowed(*c, path)) {
+		*err = "URI leaves the model's folder: " + path;
+		return false;
+	}
+	std::ifstream f(path, std::ios::binary | std::ios::ate);
+	std::streamoff n = f ? std::streamoff(f.tellg()) : std::streamoff(-1);
+	if (n < 0) {
+		*err = "cannot open " + path + ": " + std::strerror(errno);
+		return false;
+	}
+	*size = (size_t)n;
+	return true;
+}
+
+template <typename T, typename = void> struct HasFileSize : std::false_type {
+};
+template <typename T>
+struct HasFileSize<T, std::void_t<decltype(&T::GetFileSizeInBytes)>> : std::true_type {
+};
+
+// Members by name: 2.9 added one before user_data, so a brace list that
+// fits one version does not fit the other.
+template <typename T> T fs_callbacks(Context *ctx)
+{
+	T fs{};
+	fs.FileExists = fs_exists;
+	fs.ExpandFilePath = fs_expand;
+	fs.ReadWholeFile = fs_read;
+	fs.WriteWholeFile = fs_write;
+	if constexpr (HasFileSize<T>::value)
+		fs.GetFileSizeInBytes = fs_size;
+	fs.user_data = ctx;
+	return fs;
 }
 
 // One primitive's vertices and indices, as appended to the builder.
@@ -618,7 +660,7 @@ int load_memory(const char *name, const uint8_t *data, size_t size, const char *
 		log_err("%s: file is %zu bytes, expected at most %u", name, size, GLTF_MAX_FILE);
 		return -EFBIG;
 	}
-	loader.SetFsCallbacks({fs_exists, fs_expand, fs_read, fs_write, &ctx});
+	loader.SetFsCallbacks(fs_callbacks<tinygltf::FsCallbacks>(&ctx));
 	// Images are decoded by our own libpng/libjpeg path, and only those a
 	// feature asked for; never by the stb copy inside the library.
 	loader.SetImageLoader(gltf_keep_image, &images);

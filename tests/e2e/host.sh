@@ -15,11 +15,14 @@
 # PATH), VM_TIMEOUT (seconds per script, default 240) and VM_RUN_FLAGS
 # (extra tests/vm/run.sh options) are passed on.
 set -u
+# The offscreen backend: osmesa, or egl-headless where Mesa has no OSMesa
+# (the Makefile sets OFFSCREEN_BACKEND from what the build has).
+offscreen=${OFFSCREEN_BACKEND:-osmesa}
 out=$1
 shift
 # The display first, then the buttons and the camera on it.
 [ $# -gt 0 ] || set -- tests/e2e/kms.sh tests/e2e/kms-hotplug.sh tests/e2e/kms-busy.sh \
-	tests/vm/gpio-test.sh tests/e2e/reload-devices.sh tests/e2e/camera.sh tests/e2e/cec.sh
+	tests/vm/gpio-test.sh tests/e2e/reload-devices.sh tests/e2e/camera.sh tests/e2e/cec.sh tests/e2e/power.sh
 kiosk=${KIOSK:-./matcap-kiosk}
 imgdiff=${IMGDIFF:-build/tools/imgdiff}
 mkdir -p "$out/ref"
@@ -28,7 +31,7 @@ mkdir -p "$out/ref"
 ref() { # NAME SIZE [ARGS]...
 	name=$1 size=$2
 	shift 2
-	$kiosk -q --backend osmesa --size "$size" --matcap matcaps/gold.png --lod-pixels 0 "$@" \
+	$kiosk -q --backend $offscreen --size "$size" --matcap matcaps/gold.png --lod-pixels 0 "$@" \
 		--output "$out/ref/$name.png" || echo "not ok reference $name rendered"
 }
 ref knot-1024x768 1024x768
@@ -44,9 +47,9 @@ for script in "$@"; do
 	cp -r "$out/ref" "$share/ref"
 	bins="--bin $kiosk --bin $imgdiff"
 	# hues counts the camera's colour bars in a screenshot; cec_power
-	# sends the kiosk's CEC messages.
+	# sends the kiosk's CEC messages; clock_set sets the board's clock.
 	tools=$(dirname "$imgdiff")
-	for b in ${E2E_BINS:-$tools/hues $tools/cec_power}; do bins="$bins --bin $b"; done
+	for b in ${E2E_BINS:-$tools/hues $tools/cec_power $tools/clock_set}; do bins="$bins --bin $b"; done
 	# shellcheck disable=SC2086
 	tests/vm/run.sh --quiet --timeout "${VM_TIMEOUT:-240}" $bins --share "$share" \
 		${VM_RUN_FLAGS:-} -- "$script" >"$share/run.log" 2>&1

@@ -6,6 +6,7 @@
 # Prints one "ok NAME" or "not ok NAME" line per step; the last line is
 # "ok every step ran" when the scenario got to its end.
 set -u
+offscreen=${OFFSCREEN_BACKEND:-osmesa} # egl-headless where Mesa has no OSMesa
 kiosk=$1
 listen=$2
 model=$3
@@ -46,7 +47,7 @@ done
 # valgrind in the soak test (tests/soak/soak.sh), which keeps the library loaded.
 ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 \
 NOTIFY_SOCKET=$dir/notify WATCHDOG_USEC=400000 sh -c 'export WATCHDOG_PID=$$; exec "$0" "$@"' \
-	"$kiosk" --backend osmesa --size 64x64 --config "$dir/kiosk.ini" --matcap "$dir/mc" -v \
+	"$kiosk" --backend $offscreen --size 64x64 --config "$dir/kiosk.ini" --matcap "$dir/mc" -v \
 	2>"$dir/stderr" &
 kiosk_pid=$!
 

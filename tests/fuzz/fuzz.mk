@@ -8,8 +8,9 @@
 #   make fuzz-long   FUZZ_SECONDS=1800 with FUZZ_JOBS=2 workers each
 #   make fuzz-seeds  write the glTF and image seeds again (tests/fuzz/mkseeds.c)
 
-FUZZ_CC      ?= clang-14
-FUZZ_CXX     ?= clang++-14
+# clang 14 on Debian 12, 19 on Debian 13 (CLANG_VERSION: the Makefile reads the release).
+FUZZ_CC      ?= clang-$(CLANG_VERSION)
+FUZZ_CXX     ?= clang++-$(CLANG_VERSION)
 FUZZ_BUILD   := $(BUILD)/fuzz
 FUZZ_SECONDS ?= 20
 FUZZ_JOBS    ?= 1
@@ -27,8 +28,10 @@ fuzzers:
 		OPT="$(FUZZ_SANITIZE) -fsanitize=fuzzer-no-link" WARN="-Wall -Wextra" \
 		$(FUZZERS:%=$(FUZZ_BUILD)/fuzz_%)
 
+# Its stubs follow the header's signatures, which 2.9 (Debian 13) changed.
+TINYGLTF_MINOR := $(word 2,$(subst ., ,$(shell $(PKG_CONFIG) --modversion tinygltf)))
 $(BUILD)/tinygltf_impl.o: tests/fuzz/tinygltf_impl.cc | $(BUILD)
-	$(CXX) $(ALL_CXXFLAGS) -w -c -o $@ $<
+	$(CXX) $(ALL_CXXFLAGS) -DMK_TINYGLTF_MINOR=$(TINYGLTF_MINOR) -w -c -o $@ $<
 
 # -MMD: rebuilt when a header it reads changes (struct options grows).
 $(BUILD)/fuzz_%.o: tests/fuzz/fuzz_%.c | $(BUILD)

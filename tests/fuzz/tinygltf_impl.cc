@@ -21,9 +21,18 @@ bool LoadImageData(Image *, const int, std::string *err, std::string *, int, int
 	return false;
 }
 
+#if MK_TINYGLTF_MINOR >= 9
+// 2.9 hands the writer the file system and URI callbacks too.
+bool WriteImageData(const std::string *, const std::string *, const Image *, bool,
+		    const FsCallbacks *, const URICallbacks *, std::string *, void *)
+{
+	return false;
+}
+#else
 bool WriteImageData(const std::string *, const std::string *, const Image *, bool, std::string *,
 		    void *)
 {
 	return false;
 }
+#endif
 } // namespace tinygltf

@@ -6,6 +6,9 @@
 #   golden.sh DIR [SCENE]...       (every scene when none is named)
 # Environment: KIOSK, TOOLS (mkmodels), MODELS (where the models go).
 set -eu
+# The offscreen backend: osmesa, or egl-headless where Mesa has no OSMesa
+# (the Makefile sets OFFSCREEN_BACKEND from what the build has).
+offscreen=${OFFSCREEN_BACKEND:-osmesa}
 out=$1
 shift
 models=${MODELS:-tests/out/models}
@@ -18,7 +21,7 @@ mkdir -p "$out" "$models"
 
 # render SCENE: one scene into DIR/SCENE.png.
 render() {
-	k="$KIOSK -q --backend osmesa --size 320x240"
+	k="$KIOSK -q --backend $offscreen --size 320x240"
 	m=$models
 	o=$out/$1.png
 	case $1 in

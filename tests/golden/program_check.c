@@ -183,7 +183,11 @@ int main(void)
 	int bad = 0;
 
 	log_set_level(LOG_WARN);
+#ifdef MK_HAVE_OSMESA
 	d = display_osmesa_new(&cfg);
+#else /* Mesa without OSMesa: the same renders through EGL */
+	d = display_egl_new(&cfg);
+#endif
 	if (!d || mesh_uv_sphere(&mesh, 16, 8) || tangent_generate(&mesh))
 		return 1;
 	fill(&matcap, 8, 8);

@@ -361,7 +361,11 @@ int main(void)
 	int bad = 0;
 
 	log_set_level(LOG_WARN);
+#ifdef MK_HAVE_OSMESA
 	d = display_osmesa_new(&cfg);
+#else /* Mesa without OSMesa: the same renders through EGL */
+	d = display_egl_new(&cfg);
+#endif
 	if (!d || mesh_uv_sphere(&sphere, SLICES, STACKS) || bake_matcap(BAKE_GOLD, 256, &matcap))
 		return 1;
 	printf("%dx%d: share of the disk's pixels (less a 1-pixel rim) within %d/255 per "

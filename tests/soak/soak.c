@@ -311,7 +311,11 @@ static int run(const struct soak_opts *so, char **kiosk_argv, int kiosk_argc, st
 	if (ret)
 		goto out_opts;
 	s->base_matcaps = matcap_set_count(scene.set);
+#ifdef MK_HAVE_OSMESA
 	d = display_osmesa_new(&cfg);
+#else /* Mesa without OSMesa: the same renders through EGL */
+	d = display_egl_new(&cfg);
+#endif
 	r = d ? renderer_new(&d->gl, NULL) : NULL;
 	ret = r ? content_prepare(&scene, &o.content, d->width, d->height) : -ENODEV;
 	if (!ret)

@@ -1,5 +1,5 @@
 #include "app/options.h"
-#include "app/options_table.h"
+#include "app/settings.h"
 #include "app/reload.h"
 
 #include <math.h>
@@ -116,16 +116,18 @@ static void config_file_then_command_line(void **state)
 static void config_errors(void **state)
 {
 	static const char *texts[] = {
-	    "[scene]\nfoo = 1\n",		     /* unknown key */
-	    "[screen]\nsize = 10x10\n",		     /* unknown section */
-	    "[scene]\nmode = phong\n",		     /* bad choice */
-	    "[display]\nrotation = 45\n",	     /* bad step */
-	    "[display]\nsize = 100000x2\n",	     /* out of range */
-	    "[scene]\northo = maybe\n",		     /* bad flag */
-	    "[scene]\nmode = view\nmode = normal\n", /* duplicate */
-	    "[scene]\nmode = phong\nmode = view\n",  /* duplicate after a bad value */
-	    "[scene\nmode = view\n",		     /* syntax */
-	    "[display]\nbackend\n",		     /* no value */
+	    "[scene]\nfoo = 1\n",			 /* unknown key */
+	    "[screen]\nsize = 10x10\n",			 /* unknown section */
+	    "[scene]\nmode = phong\n",			 /* bad choice */
+	    "[display]\nrotation = 45\n",		 /* bad step */
+	    "[display]\nsize = 100000x2\n",		 /* out of range */
+	    "[scene]\northo = maybe\n",			 /* bad flag */
+	    "[scene]\nmode = view\nmode = normal\n",	 /* duplicate */
+	    "[scene]\nmode = phong\nmode = view\n",	 /* duplicate after a bad value */
+	    "[scene\nmode = view\n",			 /* syntax */
+	    "[display]\nbackend\n",			 /* no value */
+	    "[power]\nschedule = Mon-Fir 08:00-20:00\n", /* a schedule that does not parse */
+	    "[power]\nblank_after = -1\n",		 /* out of range */
 	};
 	struct options o;
 
@@ -141,6 +143,26 @@ static void config_errors(void **state)
 	}
 	const char *argv[] = {"mk", "--config", "/nonexistent/kiosk.ini"};
 	assert_int_equal(parse(&o, 3, argv), OPTIONS_CONFIG);
+	options_release(&o);
+}
+
+/* [power]: a good schedule is kept as written; --schedule is checked too. */
+static void power_settings(void **state)
+{
+	const char *path = write_ini("[power]\nschedule = Mon-Fri 08:00-20:00, Sat 10:00-16:00\n"
+				     "blank_after = 30\ncec = true\n");
+	const char *argv[] = {"mk", "--config", path};
+	const char *bad[] = {"mk", "--schedule", "Mon 8-20"};
+	struct options o;
+
+	(void)state;
+	assert_int_equal(parse(&o, 3, argv), OPTIONS_OK);
+	assert_string_equal(o.power.schedule, "Mon-Fri 08:00-20:00, Sat 10:00-16:00");
+	assert_true(o.power.blank_after == 30.0);
+	assert_true(o.power.cec);
+	options_release(&o);
+	unlink(path);
+	assert_int_equal(parse(&o, 3, bad), OPTIONS_USAGE);
 	options_release(&o);
 }
 
@@ -335,19 +357,13 @@ static void reload_reopens_what_changed(void **state)
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
-	    cmocka_unit_test(defaults),
-	    cmocka_unit_test(full_line),
-	    cmocka_unit_test(rejects_bad_values),
-	    cmocka_unit_test(config_file_then_command_line),
-	    cmocka_unit_test(config_errors),
-	    cmocka_unit_test(indented_lines),
-	    cmocka_unit_test(shipped_example_parses),
-	    cmocka_unit_test(table_is_full),
-	    cmocka_unit_test(sections_into_module_configs),
-	    cmocka_unit_test(module_defaults),
-	    cmocka_unit_test(copy_is_deep),
-	    cmocka_unit_test(reload_table),
-	    cmocka_unit_test(reload_reopens_what_changed),
+	    cmocka_unit_test(defaults),		  cmocka_unit_test(full_line),
+	    cmocka_unit_test(rejects_bad_values), cmocka_unit_test(config_file_then_command_line),
+	    cmocka_unit_test(config_errors),	  cmocka_unit_test(power_settings),
+	    cmocka_unit_test(indented_lines),	  cmocka_unit_test(shipped_example_parses),
+	    cmocka_unit_test(table_is_full),	  cmocka_unit_test(sections_into_module_configs),
+	    cmocka_unit_test(module_defaults),	  cmocka_unit_test(copy_is_deep),
+	    cmocka_unit_test(reload_table),	  cmocka_unit_test(reload_reopens_what_changed),
 	};
 	return cmocka_run_group_tests_name("options", tests, NULL, NULL);
 }

@@ -3,6 +3,10 @@
 # lacks (vkms, vimc, gpio-sim, gpio-mockup, irq_sim) built as external modules
 # from linux-source-6.1, and an lz4 initramfs with busybox, udev, Mesa,
 # libcamera, gpiod tools, kmscube and the board's own helpers (tools/).
+# The userspace is this machine's: on Debian 13 (tests/trixie/chroot.sh)
+# the board is Debian 12's kernel under Debian 13's libraries and tools
+# (libgpiod 2, libcamera 0.4, Mesa 25), the kernel folder taken ready-made
+# from VM_KERNEL_DIR or from the one kernel-* folder in the cache.
 #
 #   tests/vm/build.sh [--bin PATH]...
 #
@@ -20,6 +24,7 @@ HERE=$(cd "$(dirname "$0")" && pwd)
 CACHE=${VM_CACHE:-$HERE/cache}
 ARCHDIR=x86_64-linux-gnu
 JOBS=${VM_JOBS:-$(nproc)}
+CODENAME=$(. /etc/os-release && echo "${VERSION_CODENAME:-}")
 
 say() { printf '[vm-build] %s\n' "$*" >&2; }
 die() { printf '[vm-build] error: %s\n' "$*" >&2; exit 1; }
@@ -51,9 +56,14 @@ apt_update() {
 # Host packages the board is made of (userspace is copied from this host,
 # which is Debian 12 like the guest) and the tools to build it.
 PKGS="qemu-system-x86 kmod busybox-static lz4 cpio udev kmscube libdrm-tests
-libcamera-tools libcamera-ipa libcamera0.0.3 gpiod libgpiod2 libgl1-mesa-dri
-libegl1 libegl-mesa0 libgbm1 libgles2 libosmesa6 libglapi-mesa libdrm2
+libcamera-tools libcamera-ipa gpiod libgl1-mesa-dri
+libegl1 libegl-mesa0 libgbm1 libgles2 libdrm2
 libdrm-dev libgbm-dev zlib1g-dev gcc-12 gcc make pkg-config xz-utils util-linux v4l-utils"
+case $CODENAME in
+bookworm) PKGS="$PKGS libcamera0.0.3 libgpiod2 libosmesa6 libglapi-mesa" ;;
+trixie) PKGS="$PKGS libcamera0.4 libgpiod3 libosmesa6" ;;
+*) die "the board is built on Debian 12 or 13, not '$CODENAME'" ;;
+esac
 
 missing=""
 for p in $PKGS; do
@@ -79,10 +89,25 @@ resolve_kernel() {
 	[ -n "$KPKG" ] && KDEB=$(apt-cache show --no-all-versions "$KPKG" 2>/dev/null | awk '/^Version:/{print $2; exit}')
 	[ -n "$KDEB" ]
 }
-resolve_kernel || { apt_update && resolve_kernel; } ||
-	die "cannot tell which kernel linux-image-amd64 depends on (run apt-get update as root)"
-KVER=${KPKG#linux-image-}
-KDIR=$CACHE/kernel-$KVER-$KDEB
+# Elsewhere than Debian 12, a kernel folder built there (and its modules).
+given_kernel() {
+	KDIR=${VM_KERNEL_DIR:-}
+	[ -n "$KDIR" ] || [ "$CODENAME" = bookworm ] || KDIR=$(ls -d "$CACHE"/kernel-* 2>/dev/null | head -1)
+	[ -n "$KDIR" ] || return 1
+	[ -e "$KDIR/.extracted" ] && ls -d "$KDIR"/mods-*/.built >/dev/null 2>&1 ||
+		die "$KDIR: not a kernel folder that a Debian 12 build.sh completed"
+	KVER=$(basename "$KDIR" | sed -n 's/^kernel-\(.*-amd64\)-.*/\1/p')
+	KDEB=$(basename "$KDIR" | sed -n 's/^kernel-.*-amd64-//p')
+	KPKG=linux-image-$KVER
+}
+if ! given_kernel; then
+	[ "$CODENAME" = bookworm ] ||
+		die "on $CODENAME the board takes Debian 12's kernel folder: run tests/vm/build.sh on Debian 12 and give its cache's kernel-* as VM_KERNEL_DIR"
+	resolve_kernel || { apt_update && resolve_kernel; } ||
+		die "cannot tell which kernel linux-image-amd64 depends on (run apt-get update as root)"
+	KVER=${KPKG#linux-image-}
+	KDIR=$CACHE/kernel-$KVER-$KDEB
+fi
 KROOT=$KDIR/root
 KSRC=$KDIR/src
 
@@ -119,6 +144,8 @@ VMLINUZ=$KROOT/boot/vmlinuz-$KVER
 # ---------------------------------------------------------------- modules
 MODS_KEY=$( { echo "$KVER $KDEB"; gcc-12 --version | head -1; sed -n '/^# >>> modules recipe/,/^# <<< modules recipe/p' "$0"; } | sha256sum | cut -c1-16)
 MODDIR=$KDIR/mods-$MODS_KEY
+# A given folder's modules are taken as built (another compiler, same code).
+[ "$CODENAME" = bookworm ] || MODDIR=$(dirname "$(ls -d "$KDIR"/mods-*/.built | head -1)")
 if [ ! -e "$MODDIR/.built" ]; then
 	say "building vkms vimc gpio-sim gpio-mockup irq_sim against $KVER"
 	t0=$(date +%s)
@@ -159,11 +186,13 @@ BASE_BINS="/usr/bin/busybox /usr/bin/kmod /usr/bin/udevadm /usr/bin/kmscube /usr
 /usr/bin/modeprint /usr/bin/proptest /usr/bin/cam /usr/bin/gpiodetect /usr/bin/gpioinfo
 /usr/bin/gpioget /usr/bin/gpioset /usr/bin/gpiomon /usr/bin/gpiofind /usr/bin/v4l2-ctl
 /usr/bin/media-ctl /usr/bin/cec-ctl"
+# Not on both releases: libglapi (gone in Mesa 25), gbm/dri_gbm.so (GBM's
+# backend since Mesa 24.3), the versioned libcamera and libgpiod.
 BASE_LIBS="/usr/lib/$ARCHDIR/dri/kms_swrast_dri.so /usr/lib/$ARCHDIR/dri/swrast_dri.so
 /usr/lib/$ARCHDIR/libEGL.so.1 /usr/lib/$ARCHDIR/libEGL_mesa.so.0 /usr/lib/$ARCHDIR/libgbm.so.1
-/usr/lib/$ARCHDIR/libGLESv2.so.2 /usr/lib/$ARCHDIR/libGLESv1_CM.so.1 /usr/lib/$ARCHDIR/libOSMesa.so.8
-/usr/lib/$ARCHDIR/libglapi.so.0 /usr/lib/$ARCHDIR/libcamera.so.0.0.3
-/usr/lib/$ARCHDIR/libcamera-base.so.0.0.3 /usr/lib/$ARCHDIR/libgpiod.so.2 /usr/lib/$ARCHDIR/libudev.so.1"
+/usr/lib/$ARCHDIR/libGLESv2.so.2 /usr/lib/$ARCHDIR/libGLESv1_CM.so.1 /usr/lib/$ARCHDIR/libudev.so.1
+$( { ls /usr/lib/$ARCHDIR/libOSMesa.so.8 /usr/lib/$ARCHDIR/libglapi.so.0 /usr/lib/$ARCHDIR/gbm/dri_gbm.so /usr/lib/$ARCHDIR/libcamera.so.0.* \
+	/usr/lib/$ARCHDIR/libcamera-base.so.0.* /usr/lib/$ARCHDIR/libgpiod.so.[0-9] 2>/dev/null || true; } | sort -u)"
 BASE_DATA="/usr/share/glvnd/egl_vendor.d /usr/share/drirc.d /usr/share/libcamera
 /usr/lib/$ARCHDIR/libcamera /usr/lib/udev/rules.d"
 

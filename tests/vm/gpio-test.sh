@@ -191,9 +191,12 @@ vkbd_stop
 # ---- faults: a missing line, a busy line, a line that goes away
 gpiosim_make spare 1 GPIO23 >/dev/null
 spare=$(gpiosim_sysfs spare)
-gpiomon "$chip" 3 >/dev/null 2>&1 &
+# libgpiod 2's tools (Debian 13) take the chip with -c.
+c=
+gpiomon --version 2>/dev/null | grep -q ' v1\.' || c=-c
+gpiomon $c "$chip" 3 >/dev/null 2>&1 &
 mon=$!
-wait_until 10 sh -c "gpioinfo $chip | grep -q '\"gpiomon\"'"
+wait_until 10 sh -c "gpioinfo $c $chip | grep -q gpiomon"
 matcap-kiosk --config gpio.ini -v --button-left GPIO99 --button-right GPIO5 \
 	--button-select GPIO23 >faults.log 2>&1 &
 kpid=$!

@@ -2,7 +2,7 @@
  * where it is kept in struct options, and what is done with one setting
  * (parse, copy, compare, release). The reload rules are the second
  * table here. */
-#include "app/options_table.h"
+#include "app/settings.h"
 
 #include <errno.h>
 #include <math.h>
@@ -21,6 +21,8 @@ const struct options_section_rule options_sections[OPTIONS_SECTIONS] = {
     [OPTIONS_MATERIAL] = {"material", OPTIONS_LIVE, NULL, "at once"},
     [OPTIONS_CAMERA] = {"camera", OPTIONS_REOPEN, NULL,
 			"at once; the camera is started again if this section changed"},
+    [OPTIONS_POWER] = {"power", OPTIONS_REOPEN, NULL,
+		       "at once; the screen's power is decided again if this section changed"},
 };
 
 static const char *const backend_names[] = {"auto", "kms", "osmesa", "egl-headless", NULL};
@@ -190,6 +192,14 @@ const struct option_def option_defs[OPTION_DEFS] = {
     {"camera-import", 0, OPTIONS_CAMERA, "import", K_CHOICE, AT(camera.import), 0, 0, 0,
      import_names, "HOW",
      "auto: frames as EGLImages where the driver takes them; off: always upload"},
+    {"schedule", 0, OPTIONS_POWER, "schedule", K_STRING, AT(power.schedule), 0, 0, 0, NULL, "WHEN",
+     "when the screen is on, e.g. 'Mon-Fri 08:00-20:00, Sat 10:00-16:00' (default: always)"},
+    {"blank-after", 0, OPTIONS_POWER, "blank_after", K_DOUBLE, AT(power.blank_after), 0, 10080, 0,
+     NULL, "MIN", "the screen sleeps after this many minutes without input; 0: never"},
+    {"cec", 0, OPTIONS_POWER, "cec", K_FLAG, AT(power.cec), 0, 0, 0, NULL, NULL,
+     "also put an HDMI-CEC TV to standby and wake it"},
+    {"cec-device", 0, OPTIONS_POWER, "cec_device", K_STRING, AT(power.cec_device), 0, 0, 0, NULL,
+     "DEV", "the CEC adapter (default /dev/cec0)"},
     {"config", 'C', OPTION_CLI, NULL, K_STRING, AT(config), 0, 0, 0, NULL, "FILE",
      "read settings from an INI file first (see config/kiosk.ini)"},
     {"output", 'o', OPTION_CLI, NULL, K_STRING, AT(output), 0, 0, 0, NULL, "FILE",

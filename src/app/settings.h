@@ -1,0 +1,120 @@
+/* Every setting, and what is done with one: struct options (the config
+ * structs of the modules that use the settings, plus the command line's
+ * own), the one table that names each setting's option, its [section]
+ * key, its type, range and help, and the reload rules of each section.
+ * src/app/options.c reads the command line and kiosk.ini through it, so
+ * the two sources cannot drift apart. */
+#ifndef MK_SETTINGS_H
+#define MK_SETTINGS_H
+
+#include "app/app.h"
+#include "app/content.h"
+#include "app/screen.h"
+#include "camera/camera_feed.h"
+#include "display/display.h"
+#include "input/gpio.h"
+#include "input/keyboard.h"
+#include "util/log.h"
+
+#include <stdbool.h>
+#include <stddef.h>
+
+enum backend_kind { BACKEND_AUTO, BACKEND_KMS, BACKEND_OSMESA, BACKEND_EGL_HEADLESS };
+
+/* The config file's sections, in the order kiosk.ini has them. */
+enum options_section {
+	OPTIONS_DISPLAY,
+	OPTIONS_SCENE,
+	OPTIONS_KIOSK,
+	OPTIONS_BUTTONS,
+	OPTIONS_KEYBOARD,
+	OPTIONS_MATERIAL,
+	OPTIONS_CAMERA,
+	OPTIONS_POWER,
+	OPTIONS_SECTIONS
+};
+
+/* What a reload does with a section's settings. */
+enum options_reload {
+	OPTIONS_AT_START, /* read once (the display is opened once): a restart applies them */
+	OPTIONS_LIVE,	  /* applied with the new scene and a fresh app state */
+	OPTIONS_REOPEN,	  /* applied live: its devices are opened again when they changed */
+};
+
+struct options_section_rule {
+	const char *name;
+	enum options_reload reload;
+	const char *live_key; /* a key applied live in an at-start section, or NULL */
+	const char *says;     /* what --help and kiosk.ini say a reload does */
+};
+
+/* The reload rules, by enum options_section. */
+extern const struct options_section_rule options_sections[OPTIONS_SECTIONS];
+
+struct options {
+	/* [display] */
+	enum backend_kind backend;
+	struct display_config display; /* size, device, connector, mode, on_busy, kms_api */
+	/* [scene], [display] rotation and [material] */
+	struct content_config content;
+	/* [kiosk] */
+	enum log_level log_level;
+	struct app_config app; /* turning and attract mode; the kiosk adds the rest */
+	/* [buttons] */
+	struct gpio_config buttons;
+	/* [keyboard] */
+	struct keyboard_config keyboard;
+	/* [camera] */
+	struct camera_feed_config camera;
+	/* [power] */
+	struct screen_config power;
+	/* the command line only */
+	char *config;
+	char *output;
+	char *shader_dir;
+	int frames;
+	bool stats;
+	bool help, version;
+};
+
+/* K_DEGREES: read in degrees, kept in radians. K_LEVEL: a log level by
+ * its name. K_CHOICE: an index into choices, kept as an enum (or a bool
+ * for a choice of two). */
+enum option_kind { K_FLAG, K_STRING, K_INT, K_DOUBLE, K_DEGREES, K_SIZE, K_CHOICE, K_LEVEL };
+
+/* The command line only: no [section] key. */
+#define OPTION_CLI OPTIONS_SECTIONS
+
+struct option_def {
+	const char *name; /* --name */
+	char short_name;
+	enum options_section section; /* in kiosk.ini; OPTION_CLI: the command line only */
+	const char *key;
+	enum option_kind kind;
+	size_t offset, size;
+	double lo, hi, step; /* numbers: the accepted range (and step) */
+	const char *const *choices;
+	const char *arg;
+	const char *help;
+};
+
+/* The table's length: the compiler refuses an entry more, and
+ * tests/unit/test_options.c one less. */
+#define OPTION_DEFS 72
+extern const struct option_def option_defs[OPTION_DEFS];
+
+void option_defaults(struct options *o);
+/* What a setting accepts, for error messages and --help. */
+void option_accepted(const struct option_def *d, char *buf, size_t n);
+/* Store value; false when it is not one the setting accepts. */
+bool option_set_value(struct options *o, const struct option_def *d, const char *value);
+
+/* A deep copy; 0 or -ENOMEM (dst then holds nothing to release). */
+int options_copy(struct options *dst, const struct options *src);
+void options_release(struct options *opts);
+/* Bit (1u << enum options_section) for each section whose settings
+ * differ; an at-start section's live_key is not counted. */
+unsigned options_changed(const struct options *a, const struct options *b);
+const char *backend_name(enum backend_kind kind);
+
+#endif

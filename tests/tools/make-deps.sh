@@ -1,0 +1,14 @@
+#!/bin/sh
+# The README's first command: make itself, then `make deps`, on a fresh
+# Debian 12 or 13, as root (an image without sudo) or as a user with sudo.
+#   sh tests/tools/make-deps.sh
+set -eu
+cd "$(dirname "$0")/../.."
+sudo=
+[ "$(id -u)" = 0 ] || sudo=sudo
+if ! command -v make >/dev/null; then
+	# A fresh image may have no package lists yet.
+	$sudo apt-get update -qq
+	$sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends make
+fi
+make deps
