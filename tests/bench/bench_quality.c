@@ -394,6 +394,7 @@ static int run_look(struct bench *b, int l)
 		/* frames[0] is the reference's */
 		image_error(&frames[from], &frames[0], bg, &s[i].psnr, &s[i].off);
 		s[i].ms = s[from].ms, s[i].p90 = s[from].p90;
+		s[i].vertex_bytes = s[from].vertex_bytes;
 		fprintf(stderr, "  %s / %s: %.1f ms, %.1f dB\n", lk->name, s[i].label, s[i].ms,
 			s[i].psnr);
 	}
