@@ -33,12 +33,10 @@ static int load_model(const struct content_config *o, bool strict, struct mesh *
 }
 
 /* The prepared-mesh cache (scene/mesh_cache.h). */
-/* The shell says what the entry holds (vertex and index counts), with no
- * array: the renderer is given the entry. */
-static void shell_counts(struct content *s)
+/* A shell says what the prepared mesh holds (vertex and index counts),
+ * with no array: the renderer is given the packed mesh or the entry. */
+static void shell_counts(struct content *s, const struct mesh_packed *m)
 {
-	const struct mesh_packed *m = mesh_cache_entry_mesh(s->cached);
-
 	s->mesh.vertex_count = m->vertex_count;
 	s->mesh.index_count = m->index_count;
 }
@@ -58,9 +56,9 @@ static int content_cache_lookup(struct content *s, const struct content_config *
 	/* An entry is written only for a model whose material decodes no
 	 * texture: its factors are all material_load needs. */
 	s->mesh.material = *mesh_cache_entry_material(s->cached);
-	shell_counts(s);
+	shell_counts(s, mesh_cache_entry_mesh(s->cached));
 	log_info("%s: the prepared mesh from the cache (%u triangles)", c->model,
-		 mesh_cache_entry_mesh(s->cached)->index_count / 3);
+		 s->mesh.index_count / 3);
 	return 0;
 }
 
@@ -76,38 +74,53 @@ static bool decoded_images(const struct mesh_material *m)
 	return m->normal_map.width || m->occlusion_map.width || m->thickness_map.width;
 }
 
-/* The material stays: material_load and a reload read it. It holds no
- * image here (decoded_images). */
-static void drop_arrays(struct mesh *m)
+/* The prepared mesh packed as the GPU and the cache take it; the mesh's
+ * own arrays are given back (the material stays: material_load and a
+ * reload read it; it holds no image here). */
+static void content_cache_pack(struct content *s, int width, int height)
 {
-	struct mesh_material material = m->material;
+	struct mesh_material material = s->mesh.material;
 
-	mesh_material_default(&m->material);
-	mesh_release(m);
-	m->material = material;
-}
-
-static void content_cache_store(struct content *s, const struct content_config *c, int width,
-				int height)
-{
-	struct mesh_packed packed;
-	char dir[PATH_MAX];
-
-	if (!s->cacheable || decoded_images(&s->mesh.material) || mesh_cache_dir(dir, sizeof(dir)))
+	if (!s->cacheable || decoded_images(&material) ||
+	    mesh_pack(&s->mesh, VERTEX_COMPACT, &s->packed))
 		return;
 	s->cache_key.width = (uint32_t)width;
 	s->cache_key.height = (uint32_t)height;
-	if (mesh_pack(&s->mesh, VERTEX_COMPACT, &packed))
+	mesh_material_default(&s->mesh.material);
+	mesh_release(&s->mesh);
+	s->mesh.material = material;
+	shell_counts(s, &s->packed);
+}
+
+/* Once uploaded, the packed mesh goes to the cache on a thread of its
+ * own (the first frame does not wait for the disk), which frees it. */
+static void content_cache_store(struct content *s)
+{
+	char dir[PATH_MAX];
+
+	if (!s->packed.vertex_count || mesh_cache_dir(dir, sizeof(dir)))
 		return;
-	if (!mesh_cache_write(dir, &s->cache_key, &packed, &s->mesh.material, MESH_CACHE_MAX_BYTES))
-		log_info("%s: the prepared mesh cached in %s", c->model, dir);
-	mesh_packed_release(&packed);
-	/* Uploaded from the entry, as the next start will be: the mesh's own
-	 * arrays are given back now, before the first frame. */
-	if (!mesh_cache_open(dir, &s->cache_key, &s->cached)) {
-		drop_arrays(&s->mesh);
-		shell_counts(s);
-	}
+	s->writer = mesh_cache_write_async(dir, &s->cache_key, &s->packed, &s->mesh.material,
+					   MESH_CACHE_MAX_BYTES);
+}
+
+/* A shell whose packed mesh went to the cache: uploaded again (a reload
+ * that failed), it is read back from the entry. */
+static int content_cache_reopen(struct content *s)
+{
+	char dir[PATH_MAX];
+	int ret;
+
+	if (s->cached || s->packed.vertex_count || s->mesh.positions || !s->mesh.index_count)
+		return 0;
+	mesh_cache_writer_join(s->writer);
+	s->writer = NULL;
+	ret = mesh_cache_dir(dir, sizeof(dir));
+	if (!ret)
+		ret = mesh_cache_open(dir, &s->cache_key, &s->cached);
+	if (ret)
+		log_err("the prepared mesh is neither in memory nor in the cache");
+	return ret;
 }
 
 static const char *default_matcaps(void)
@@ -156,6 +169,8 @@ int content_load(struct content *s, const struct content_config *o, bool strict)
 
 void content_release(struct content *s)
 {
+	mesh_cache_writer_join(s->writer);
+	mesh_packed_release(&s->packed);
 	mesh_cache_entry_free(s->cached);
 	mesh_release(&s->mesh);
 	material_release(&s->material);
@@ -185,23 +200,29 @@ int content_prepare(struct content *s, const struct content_config *o, int width
 		ret = lod_prepare_mesh(&s->mesh, displaced ? 0.0 : o->lod_pixels, width, height,
 				       NULL);
 	if (!ret)
-		content_cache_store(s, o, width, height);
+		content_cache_pack(s, width, height);
 	return ret;
 }
 
-int content_upload(const struct content *s, struct renderer *r)
+int content_upload(struct content *s, struct renderer *r)
 {
 	/* The material first: it decides which attributes the mesh uploads. */
 	int ret = renderer_set_material(r, &s->material);
 
+	if (!ret)
+		ret = content_cache_reopen(s);
 	if (!ret && s->cached)
 		ret = renderer_set_packed(r, mesh_cache_entry_mesh(s->cached));
+	else if (!ret && s->packed.vertex_count)
+		ret = renderer_set_packed(r, &s->packed);
 	else if (!ret)
 		ret = renderer_set_mesh(r, &s->mesh);
-	/* On the GPU now: the entry's pages leave the process (a reload that
-	 * fails uploads this scene again, from the file). */
+	/* On the GPU now: the entry's pages leave the process, the packed
+	 * mesh goes to the cache. */
 	if (!ret && s->cached)
 		mesh_cache_entry_evict(s->cached);
+	if (!ret)
+		content_cache_store(s);
 	/* The parse, the preparation and the upload freed far more than the
 	 * scene keeps; malloc holds freed heap for reuse, and a kiosk reuses
 	 * little: back to the system before the first frame. */

@@ -5,6 +5,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -438,4 +439,53 @@ out:
 			 "model again",
 			 dir, strerror(-ret));
 	return ret;
+}
+
+struct mesh_cache_writer {
+	pthread_t thread;
+	char dir[PATH_MAX];
+	struct mesh_cache_key key;
+	struct mesh_packed mesh;
+	struct mesh_material material;
+	uint64_t max_bytes;
+};
+
+static void *write_entry(void *arg)
+{
+	struct mesh_cache_writer *w = arg;
+
+	mesh_cache_write(w->dir, &w->key, &w->mesh, &w->material, w->max_bytes);
+	mesh_packed_release(&w->mesh);
+	return NULL;
+}
+
+struct mesh_cache_writer *mesh_cache_write_async(const char *dir, const struct mesh_cache_key *key,
+						 struct mesh_packed *m,
+						 const struct mesh_material *material,
+						 uint64_t max_bytes)
+{
+	struct mesh_cache_writer *w = calloc(1, sizeof(*w));
+
+	if (w && snprintf(w->dir, sizeof(w->dir), "%s", dir) < (int)sizeof(w->dir)) {
+		w->key = *key;
+		w->mesh = *m;
+		w->material = *material;
+		w->max_bytes = max_bytes;
+		memset(m, 0, sizeof(*m));
+		if (!pthread_create(&w->thread, NULL, write_entry, w))
+			return w;
+		*m = w->mesh;
+	}
+	free(w);
+	mesh_cache_write(dir, key, m, material, max_bytes);
+	mesh_packed_release(m);
+	return NULL;
+}
+
+void mesh_cache_writer_join(struct mesh_cache_writer *w)
+{
+	if (!w)
+		return;
+	pthread_join(w->thread, NULL);
+	free(w);
 }

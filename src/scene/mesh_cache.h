@@ -85,4 +85,16 @@ void mesh_cache_reseal(void *data, size_t size);
 int mesh_cache_write(const char *dir, const struct mesh_cache_key *key, const struct mesh_packed *m,
 		     const struct mesh_material *material, uint64_t max_bytes);
 
+/* mesh_cache_write on a thread of its own, so that the first frame does
+ * not wait for the disk: m's arrays are taken over (m is left empty) and
+ * freed once written. When no thread can start, the entry is written
+ * before this returns. Returns NULL then, or the writer to join. */
+struct mesh_cache_writer;
+struct mesh_cache_writer *mesh_cache_write_async(const char *dir, const struct mesh_cache_key *key,
+						 struct mesh_packed *m,
+						 const struct mesh_material *material,
+						 uint64_t max_bytes);
+/* Waits for the entry to be written, and frees w (NULL: nothing). */
+void mesh_cache_writer_join(struct mesh_cache_writer *w);
+
 #endif

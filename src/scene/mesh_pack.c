@@ -68,10 +68,13 @@ int mesh_pack(const struct mesh *m, enum vertex_format f, struct mesh_packed *ou
 		if (src[a])
 			total += m->vertex_count * mesh_array_stride(f, (enum mesh_array)a);
 	}
-	block = malloc(total + 1);
+	/* The indices too: the packed mesh outlives the mesh. */
+	block = malloc(total + (size_t)m->index_count * 4 + 1);
 	if (!block)
 		return -ENOMEM;
 	out->owned = block;
+	memcpy(block + total, m->indices, (size_t)m->index_count * 4);
+	out->indices = (const uint32_t *)(const void *)(block + total);
 	out->position_scale = position_scale(m);
 	for (int a = 0; a < MESH_ARRAYS; a++) {
 		size_t values = (size_t)m->vertex_count * (size_t)components[a];

@@ -35,7 +35,8 @@ size_t mesh_array_stride(enum vertex_format f, enum mesh_array a);
 bool mesh_array_int16(enum vertex_format f, enum mesh_array a);
 
 /* m in format f. float32 borrows m's arrays (m must outlive out); compact
- * converts into one allocation. Returns 0 or -ENOMEM. */
+ * converts them, and copies the indices, into one allocation of its own.
+ * Returns 0 or -ENOMEM. */
 int mesh_pack(const struct mesh *m, enum vertex_format f, struct mesh_packed *out);
 void mesh_packed_release(struct mesh_packed *p);
 
