@@ -36,27 +36,31 @@ run() {
 	echo "$(((t1 - t0) / 1000000)) $first $rss $(awk -v f="$first" -v d="$frame" 'BEGIN { print f - d }')"
 }
 
-# measure KIOSK cold|warm: for each model, the medians "wall first rss",
-# one line each. The models take turns in each round, so that a change in
-# the machine's load falls on all of them alike. A warm start finds the
-# entry an earlier start of the same model wrote.
+# measure: every variant (in $variants: label:cold|warm:kiosk) and model
+# takes its turn in each round, so that a change in the machine's load
+# falls on all of them alike; then, per variant and model, the medians
+# "wall first rss setup" in $out/med-LABEL-START-MODEL. A warm start
+# finds the entry an earlier start of the same model wrote.
 measure() {
-	rm -f "$out"/runs-*
+	rm -f "$out"/runs-* "$out"/med-*
 	for i in $(seq "$rounds"); do
-		for model in $models; do
-			cache=$out/cache-$model
-			rm -rf "$cache"
-			if [ "$2" = warm ]; then
-				run "$1" "$out/$model.glb" "$cache" >/dev/null
-			fi
-			run "$1" "$out/$model.glb" "$cache" >>"$out/runs-$model"
+		for v in $variants; do
+			label=${v%%:*} rest=${v#*:}
+			start=${rest%%:*} kiosk=${rest#*:}
+			for model in $models; do
+				cache=$out/cache-$model
+				rm -rf "$cache"
+				if [ "$start" = warm ]; then
+					run "$kiosk" "$out/$model.glb" "$cache" >/dev/null
+				fi
+				run "$kiosk" "$out/$model.glb" "$cache" >>"$out/runs-$label-$start-$model"
+			done
 		done
 	done
-	for model in $models; do
-		echo "$(cut -d' ' -f1 "$out/runs-$model" | median)" \
-			"$(cut -d' ' -f2 "$out/runs-$model" | median)" \
-			"$(cut -d' ' -f3 "$out/runs-$model" | median)" \
-			"$(cut -d' ' -f4 "$out/runs-$model" | median)"
+	for f in "$out"/runs-*; do
+		echo "$(cut -d' ' -f1 "$f" | median)" "$(cut -d' ' -f2 "$f" | median)" \
+			"$(cut -d' ' -f3 "$f" | median)" "$(cut -d' ' -f4 "$f" | median)" \
+			>"$out/med-${f##*/runs-}"
 	done
 }
 
@@ -65,22 +69,24 @@ echo
 echo "| kiosk | model | start | first_frame_ms | setup ms | process wall ms | peak RSS MiB | x 10k: first frame | x 10k: setup | x 10k: RSS |"
 echo "|---|---|---|---|---|---|---|---|---|---|"
 report() {
-	label=$1 warm=$2
-	measure "$3" "$warm" | {
+	for v in $variants; do
+		label=${v%%:*} rest=${v#*:}
+		start=${rest%%:*}
 		base=""
 		for model in $models; do
-			read -r wall first rss setup
+			read -r wall first rss setup <"$out/med-$label-$start-$model"
 			[ -n "$base" ] || base="$first $rss $setup"
-			awk -v l="$label" -v m="$model" -v w="$warm" -v wall="$wall" -v f="$first" \
+			awk -v l="$label" -v m="$model" -v w="$start" -v wall="$wall" -v f="$first" \
 				-v rss="$rss" -v s="$setup" -v b="$base" 'BEGIN { split(b, z, " ");
 				printf "| %s | %s | %s | %.0f | %.0f | %d | %.0f | %.2f | %.2f | %.2f |\n",
 					l, m, w, f, s, wall, rss / 1024, f / z[1], s / z[3], rss / z[2] }'
 		done
-	}
+	done
 }
-report this cold "$KIOSK"
-report this warm "$KIOSK"
+variants="this:cold:$KIOSK this:warm:$KIOSK"
 if [ -n "${BASELINE:-}" ]; then
-	report baseline cold "$BASELINE"
+	variants="$variants baseline:cold:$BASELINE"
 fi
-rm -rf "$out"/cache-* "$out"/runs-*
+measure
+report
+rm -rf "$out"/cache-* "$out"/runs-* "$out"/med-*
