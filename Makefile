@@ -29,7 +29,7 @@ BUILD   ?= build
 # call goes through the table in src/render/gl.c (see DESIGN.md). Their headers
 # are still found through pkg-config.
 PKGS_LINK    := egl gbm libdrm libudev libpng libturbojpeg tinygltf inih libsystemd libgpiod libevdev \
-		libcamera
+		libcamera draco
 # Mesa 25.1 and later have no OSMesa: without its headers the osmesa
 # backend is left out (OSMESA=0 leaves it out by hand) and offscreen
 # rendering, the tests' included, goes through egl-headless.
@@ -49,8 +49,10 @@ WARN      := -Wall -Wextra -Werror
 OPT       ?= -O2 -g
 CFLAGS    ?=
 CXXFLAGS  ?=
-ALL_CFLAGS   = -std=c11 -D_GNU_SOURCE $(OPT) $(WARN) -Isrc -I$(BUILD) $(PKG_CFLAGS) \
-	       $(if $(filter 1,$(OSMESA)),-DMK_HAVE_OSMESA) \
+# 64-bit file offsets on 32-bit ARM too: without them readdir() and stat()
+# fail (EOVERFLOW) where a filesystem hands out 64-bit inodes or cookies.
+ALL_CFLAGS   = -std=c11 -D_GNU_SOURCE -D_FILE_OFFSET_BITS=64 $(OPT) $(WARN) -Isrc -I$(BUILD) \
+	       $(PKG_CFLAGS) $(if $(filter 1,$(OSMESA)),-DMK_HAVE_OSMESA) \
 	       -DMK_VERSION='"$(VERSION)"' -DMK_MATCAP_DIR='"$(DATADIR)/matcaps"' $(CFLAGS)
 ALL_CXXFLAGS = -std=c++17 $(OPT) $(WARN) -Isrc $(PKG_CFLAGS) $(CXXFLAGS)
 # meshoptimizer (Debian's 0.18) ships no .pc file; it is C++, and the link
@@ -75,8 +77,9 @@ SRC_SCENE   := scene/lod scene/material scene/mesh scene/mesh_cache scene/mesh_c
 	       scene/texture
 SRC_UTIL    := util/folder_watch util/image util/log util/math3d
 LIB_C  := $(SRC_APP) $(SRC_DISPLAY) $(SRC_INPUT) $(SRC_CAMERA) $(SRC_RENDER) $(SRC_SCENE) $(SRC_UTIL)
-# The two C++ shims, each behind a C header.
-LIB_CC := scene/gltf scene/gltf_material camera/camera
+# The C++ shims, each behind a C header (gltf_ext.h is internal to the glTF one).
+LIB_CC := scene/gltf scene/gltf_fs scene/gltf_material scene/gltf_ext scene/gltf_files scene/gltf_pose \
+	  scene/gltf_draco camera/camera
 SHADERS := shaders/mapping.glsl shaders/matcap.vert shaders/matcap.frag shaders/material.glsl
 SHADERS += shaders/camera.vert shaders/camera.frag
 
@@ -120,6 +123,7 @@ run: matcap-kiosk
 
 include tests/tests.mk
 -include tests/vm/vm.mk
+-include tests/cross/cross.mk
 
 # Package names differ between releases: clang (and its runtime for the
 # fuzzers) is 14 on Debian 12 and 19 on Debian 13; OSMesa only while Mesa
@@ -137,6 +141,8 @@ DEBIAN_PACKAGES := make gcc g++ pkg-config libegl-dev libgles-dev \
 	libmeshoptimizer-dev gnuplot-nox \
 	qemu-system-x86 busybox-static lz4 cpio kmod udev xz-utils kmscube libdrm-tests \
 	libcamera-tools gpiod v4l-utils
+# glTF: Draco meshes, and the tools and sample files of the model corpus test.
+DEBIAN_PACKAGES += libdraco-dev draco gltfpack assimp-testmodels
 
 deps:
 	$(APT_GET) update -qq

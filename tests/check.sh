@@ -10,7 +10,7 @@
 # on stderr, and exit status 2.
 set -u
 
-groups="layers unit golden egl program_check mirror_check ortho loaders bad-input cli"
+groups="layers unit golden egl program_check mirror_check ortho loaders bad-input corpus cli"
 groups="$groups config_doc baker live install systemd fuzz soak no-camera board"
 
 unit_names() { (cd tests/unit && ls test_*.c) | sed 's/^test_//; s/\.c$//'; }
@@ -89,11 +89,12 @@ needs() {
 	cli) echo "all asan-kiosk" ;;
 	config_doc | install | systemd | no-camera) echo all ;;
 	bad-input) echo "asan-kiosk $TOOLS/mkmodels" ;;
+	corpus) echo "asan-kiosk fuzzers $TOOLS/mkmodels $TOOLS/silhouette $TOOLS/imgdiff" ;;
 	baker) echo "$BAKE" ;;
 	live) echo "asan-kiosk $TOOLS/mkmodels $TOOLS/notify_listen" ;;
 	fuzz) echo fuzzers ;;
 	soak) echo "$TOOLS/soak" ;;
-	board) echo "all $TOOLS/imgdiff $TOOLS/hues" ;;
+	board) echo "all $TOOLS/imgdiff $TOOLS/hues $TOOLS/cec_power $TOOLS/clock_set" ;;
 	esac
 }
 

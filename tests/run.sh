@@ -30,6 +30,9 @@ test_loaders
 # 7. Malformed input, through the ASan binary: exit status 1, one error
 #    line that names the file, and no sanitizer report.
 test_bad_input
+# 7b. The glTF corpus: files nobody on the project wrote, and files that
+#     gltfpack and Draco's tools make, through the ASan build.
+test_corpus
 # 8. The command line itself; every config key documented in the example.
 test_cli
 test_config_doc

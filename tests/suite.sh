@@ -228,6 +228,17 @@ test_bad_input() {
 }
 
 # The command line itself, and config errors that stop the program.
+# The glTF corpus: files nobody on the project wrote (Debian's
+# assimp-testmodels, Khronos samples) and files gltfpack and Draco's tools
+# make here, through the ASan build: each shows, or is refused with the
+# reason's words.
+test_corpus() {
+	need_models
+	FUZZ_GLTF=${FUZZ_DIR:-build/fuzz}/fuzz_gltf sh tests/corpus/run.sh "$ASAN_KIOSK" "$TOOLS" \
+		"$out/models" "$out/corpus" >"$out/corpus.log" 2>&1
+	results corpus "$out/corpus.log"
+}
+
 test_cli() {
 	check "--help" sh -c "$KIOSK --help | grep -q '^Usage: matcap-kiosk'"
 	check "--version" sh -c "$KIOSK --version | grep -q '^matcap-kiosk [0-9]'"

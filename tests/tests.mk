@@ -6,7 +6,7 @@
 #   make golden        regenerate tests/golden/*.png on purpose (then look at them)
 #   make bench         speed figures (printed, never asserted); make report
 
-UNIT_TESTS  := options mesh image gltf shading app button content service
+UNIT_TESTS  := options mesh image gltf gltf_ext shading app button content service
 UNIT_TESTS  += tangent subdivide material mesh_cache
 UNIT_TESTS  += camera_math camera_proto camera_texture
 UNIT_TESTS  += stability fp16 lod
@@ -59,6 +59,12 @@ $(TOOLS_DIR)/clock_set: tests/tools/clock_set.c
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -o $@ $^
 test-tools: $(TOOLS_DIR)/clock_set
+
+# Whether a model with no reference image shows (tests/corpus/run.sh).
+$(TOOLS_DIR)/silhouette: tests/corpus/silhouette.c $(BUILD)/util/image.o $(BUILD)/util/log.o
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -o $@ $^ $(PKG_LIBS) -lm
+test-tools: $(TOOLS_DIR)/silhouette
 
 # Stands in for systemd's notify socket in tests/e2e/live.sh.
 $(TOOLS_DIR)/notify_listen: tests/tools/notify_listen.c

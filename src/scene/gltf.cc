@@ -3,6 +3,8 @@
 // trusted: indices into arrays, offsets, strides and index values are all
 // checked here before a byte is read.
 #include "scene/gltf.h"
+#include "scene/gltf_ext.h"
+#include "scene/gltf_fs.h"
 #include "scene/gltf_material.h"
 #include "util/log.h"
 
@@ -12,142 +14,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 namespace
 {
-
-struct Context {
-	std::string dir; // the model's folder; external files must stay in it
-	std::string refused;
-	std::string missing;
-};
-
-// A buffer URI may name a file beside the model or below it, never an
-// absolute path or one that climbs out with "..".
-bool path_allowed(const Context &c, const std::string &path)
-{
-	std::string prefix = c.dir.empty() ? "" : c.dir + "/";
-	if (path.compare(0, prefix.size(), prefix) != 0)
-		return false;
-	std::string rel = path.substr(prefix.size());
-	if (rel.empty() || rel[0] == '/')
-		return false;
-	size_t start = 0;
-	while (start <= rel.size()) {
-		size_t end = rel.find('/', start);
-		if (end == std::string::npos)
-			end = rel.size();
-		if (rel.compare(start, end - start, "..") == 0 && end - start == 2)
-			return false;
-		start = end + 1;
-	}
-	return true;
-}
-
-// tinygltf looks for a buffer in more than one folder; remember the first
-// refused path and any allowed one that was missing, to say which it was.
-bool fs_exists(const std::string &path, void *user)
-{
-	Context *c = static_cast<Context *>(user);
-	size_t skip = c->dir.empty() ? 0 : c->dir.size() + 1;
-	std::string shown = path.size() > skip ? path.substr(skip) : path;
-	if (!path_allowed(*c, path)) {
-		if (c->refused.empty())
-			c->refused = shown;
-		return false;
-	}
-	std::ifstream f(path, std::ios::binary);
-	if (!f.good() && c->missing.empty())
-		c->missing = shown;
-	return f.good();
-}
-
-std::string fs_expand(const std::string &path, void *)
-{
-	return path; // no "~" or variables: a URI means what it says
-}
-
-bool read_file(const std::string &path, std::vector<unsigned char> *out, std::string *err)
-{
-	std::ifstream f(path, std::ios::binary | std::ios::ate);
-	if (!f) {
-		*err = "cannot open " + path + ": " + std::strerror(errno);
-		return false;
-	}
-	std::streamoff size = f.tellg();
-	if (size < 0 || (unsigned long long)size > GLTF_MAX_FILE) {
-		*err = path + " is larger than the limit";
-		return false;
-	}
-	out->resize((size_t)size);
-	f.seekg(0);
-	if (size > 0 && !f.read(reinterpret_cast<char *>(out->data()), size)) {
-		*err = "read error in " + path;
-		return false;
-	}
-	return true;
-}
-
-bool fs_read(std::vector<unsigned char> *out, std::string *err, const std::string &path, void *user)
-{
-	Context *c = static_cast<Context *>(user);
-	if (!path_allowed(*c, path)) {
-		*err = "URI leaves the model's folder: " + path;
-		return false;
-	}
-	return read_file(path, out, err);
-}
-
-bool fs_write(std::string *err, const std::string &, const std::vector<unsigned char> &, void *)
-{
-	*err = "writing is not allowed";
-	return false;
-}
-
-// tinygltf 2.9 (Debian 13) asks for a file's size before reading it, and
-// takes no callbacks at all unless this one is given too; 2.7 has no such
-// member.
-[[maybe_unused]] bool fs_size(size_t *size, std::string *err, const std::string &path, void *user)
-{
-	Context *c = static_cast<Context *>(user);
-	if (!path_allowed(*c, path)) {
-		*err = "URI leaves the model's folder: " + path;
-		return false;
-	}
-	std::ifstream f(path, std::ios::binary | std::ios::ate);
-	std::streamoff n = f ? std::streamoff(f.tellg()) : std::streamoff(-1);
-	if (n < 0) {
-		*err = "cannot open " + path + ": " + std::strerror(errno);
-		return false;
-	}
-	*size = (size_t)n;
-	return true;
-}
-
-template <typename T, typename = void> struct HasFileSize : std::false_type {
-};
-template <typename T>
-struct HasFileSize<T, std::void_t<decltype(&T::GetFileSizeInBytes)>> : std::true_type {
-};
-
-// Members by name: 2.9 added one before user_data, so a brace list that
-// fits one version does not fit the other.
-template <typename T> T fs_callbacks(Context *ctx)
-{
-	T fs{};
-	fs.FileExists = fs_exists;
-	fs.ExpandFilePath = fs_expand;
-	fs.ReadWholeFile = fs_read;
-	fs.WriteWholeFile = fs_write;
-	if constexpr (HasFileSize<T>::value)
-		fs.GetFileSizeInBytes = fs_size;
-	fs.user_data = ctx;
-	return fs;
-}
 
 // One primitive's vertices and indices, as appended to the builder.
 struct Range {
@@ -167,51 +38,10 @@ struct Builder {
 	bool any_uvs = false;
 	int material = -1; // the first primitive's with one: the model's
 	bool other_materials = false;
+	size_t not_triangles = 0; // primitives of points or lines, left out
 };
 
 typedef double Mat4[16]; // column-major, as glTF stores it
-
-void mat_mul(const Mat4 a, const Mat4 b, Mat4 out)
-{
-	Mat4 r;
-	for (int c = 0; c < 4; c++)
-		for (int row = 0; row < 4; row++) {
-			double s = 0;
-			for (int k = 0; k < 4; k++)
-				s += a[k * 4 + row] * b[c * 4 + k];
-			r[c * 4 + row] = s;
-		}
-	std::memcpy(out, r, sizeof(r));
-}
-
-void node_matrix(const tinygltf::Node &n, Mat4 out)
-{
-	if (n.matrix.size() == 16) {
-		for (int i = 0; i < 16; i++)
-			out[i] = n.matrix[i];
-		return;
-	}
-	double t[3] = {0, 0, 0}, s[3] = {1, 1, 1}, q[4] = {0, 0, 0, 1};
-	for (size_t i = 0; i < 3 && n.translation.size() == 3; i++)
-		t[i] = n.translation[i];
-	for (size_t i = 0; i < 3 && n.scale.size() == 3; i++)
-		s[i] = n.scale[i];
-	for (size_t i = 0; i < 4 && n.rotation.size() == 4; i++)
-		q[i] = n.rotation[i];
-	double x = q[0], y = q[1], z = q[2], w = q[3];
-	double r[9] = {1 - 2 * (y * y + z * z), 2 * (x * y + w * z),	 2 * (x * z - w * y),
-		       2 * (x * y - w * z),	1 - 2 * (x * x + z * z), 2 * (y * z + w * x),
-		       2 * (x * z + w * y),	2 * (y * z - w * x),	 1 - 2 * (x * x + y * y)};
-	for (int c = 0; c < 3; c++) {
-		for (int row = 0; row < 3; row++)
-			out[c * 4 + row] = r[c * 3 + row] * s[c];
-		out[c * 4 + 3] = 0;
-	}
-	out[12] = t[0];
-	out[13] = t[1];
-	out[14] = t[2];
-	out[15] = 1;
-}
 
 // The normal matrix is the inverse transpose of the upper 3x3, which is
 // its cofactor matrix over the determinant. Directions are normalised
@@ -242,20 +72,21 @@ struct View {
 	bool normalized = false;
 };
 
-size_t component_size(int type)
+using gltf_ext::component_size;
+
+std::string type_name(int type)
 {
 	switch (type) {
-	case TINYGLTF_COMPONENT_TYPE_BYTE:
-	case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-		return 1;
-	case TINYGLTF_COMPONENT_TYPE_SHORT:
-	case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-		return 2;
-	case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-	case TINYGLTF_COMPONENT_TYPE_FLOAT:
-		return 4;
+	case TINYGLTF_TYPE_SCALAR:
+		return "SCALAR";
+	case TINYGLTF_TYPE_VEC2:
+		return "VEC2";
+	case TINYGLTF_TYPE_VEC3:
+		return "VEC3";
+	case TINYGLTF_TYPE_VEC4:
+		return "VEC4";
 	default:
-		return 0;
+		return std::to_string(type);
 	}
 }
 
@@ -269,17 +100,26 @@ bool fail(Builder &b, const std::string &what, const std::string &msg)
 bool check_accessor(Builder &b, const tinygltf::Model &m, int index, int type, const int *types,
 		    const std::string &what, View *v)
 {
-	std::string w = what + " (accessor " + std::to_string(index) + ")";
+	std::string w = what + " (accessors[" + std::to_string(index) + "])";
 	if (index < 0 || (size_t)index >= m.accessors.size())
 		return fail(b, what, "accessor " + std::to_string(index) + " does not exist");
 	const tinygltf::Accessor &a = m.accessors[(size_t)index];
 	bool type_ok = false;
-	for (const int *t = types; *t; t++)
+	std::string expected;
+	for (const int *t = types; *t; t++) {
 		type_ok |= a.componentType == *t;
-	if (a.type != type || !type_ok)
-		return fail(b, w, "unexpected element type");
-	if (a.sparse.isSparse)
-		return fail(b, w, "sparse accessors are not supported");
+		expected +=
+		    std::string(expected.empty() ? "" : ", ") + gltf_ext::component_name(*t);
+	}
+	if (a.type != type)
+		return fail(b, w, "type " + type_name(a.type) + ", expected " + type_name(type));
+	if (!type_ok)
+		return fail(b, w,
+			    std::string("componentType ") +
+				gltf_ext::component_name(a.componentType) + ", expected " +
+				expected);
+	// Sparse accessors and those without a bufferView were made plain
+	// before the builder runs (gltf_ext::make_dense).
 	if (a.bufferView < 0 || (size_t)a.bufferView >= m.bufferViews.size())
 		return fail(b, w, "bufferView " + std::to_string(a.bufferView) + " does not exist");
 	const tinygltf::BufferView &bv = m.bufferViews[(size_t)a.bufferView];
@@ -320,34 +160,19 @@ bool check_accessor(Builder &b, const tinygltf::Model &m, int index, int type, c
 
 double read_component(const View &v, size_t i, int c)
 {
-	const unsigned char *p =
-	    v.base + i * v.stride + (size_t)c * component_size(v.component_type);
-	switch (v.component_type) {
-	case TINYGLTF_COMPONENT_TYPE_FLOAT: {
-		float f;
-		std::memcpy(&f, p, 4);
-		return f;
-	}
-	case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
-		uint32_t u;
-		std::memcpy(&u, p, 4);
-		return u;
-	}
-	case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-		uint16_t u;
-		std::memcpy(&u, p, 2);
-		return v.normalized ? u / 65535.0 : u;
-	}
-	case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-		return v.normalized ? *p / 255.0 : *p;
-	default:
-		return 0.0;
-	}
+	return gltf_ext::component_value(v.base + i * v.stride +
+					     (size_t)c * component_size(v.component_type),
+					 v.component_type, v.normalized);
 }
 
-const int float_only[] = {TINYGLTF_COMPONENT_TYPE_FLOAT, 0};
-const int uv_types[] = {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-			TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, 0};
+// KHR_mesh_quantization widens what an attribute may be stored as:
+// positions and texture coordinates in any 8 or 16-bit integer
+// (normalized or not), normals and tangents in normalized signed ones.
+const int position_types[] = {TINYGLTF_COMPONENT_TYPE_FLOAT,	      TINYGLTF_COMPONENT_TYPE_BYTE,
+			      TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,  TINYGLTF_COMPONENT_TYPE_SHORT,
+			      TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, 0};
+const int direction_types[] = {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE,
+			       TINYGLTF_COMPONENT_TYPE_SHORT, 0};
 const int index_types[] = {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
 			   TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
 			   TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, 0};
@@ -386,18 +211,18 @@ bool read_indices(Builder &b, const tinygltf::Model &m, const tinygltf::Primitiv
 		return true;
 	}
 	View v;
-	if (!check_accessor(b, m, p.indices, TINYGLTF_TYPE_SCALAR, index_types, what + " indices",
+	if (!check_accessor(b, m, p.indices, TINYGLTF_TYPE_SCALAR, index_types, what + ".indices",
 			    &v))
 		return false;
 	out->reserve(v.count);
 	for (size_t i = 0; i < v.count; i++) {
 		double idx = read_component(v, i, 0);
 		if (idx >= (double)vertex_count)
-			return fail(b,
-				    what + " indices (accessor " + std::to_string(p.indices) + ")",
-				    "index " + std::to_string((uint64_t)idx) + " at position " +
-					std::to_string(i) + " is not below the vertex count " +
-					std::to_string(vertex_count));
+			return fail(
+			    b, what + ".indices (accessors[" + std::to_string(p.indices) + "])",
+			    "index " + std::to_string((uint64_t)idx) + " at position " +
+				std::to_string(i) + " is not below the vertex count " +
+				std::to_string(vertex_count));
 		out->push_back((uint32_t)idx);
 	}
 	return true;
@@ -448,14 +273,16 @@ bool check_attributes(Builder &b, const tinygltf::Model &m, const tinygltf::Prim
 	int ipos = find_attribute(p, "POSITION"), inrm = find_attribute(p, "NORMAL"),
 	    iuv = find_attribute(p, "TEXCOORD_0"), itan = find_attribute(p, "TANGENT");
 	if (ipos < 0)
-		return fail(b, what, "has no POSITION attribute");
-	if (!check_accessor(b, m, ipos, TINYGLTF_TYPE_VEC3, float_only, what + " POSITION",
+		return fail(b, what + ".attributes", "has no POSITION, expected one");
+	std::string at = what + ".attributes.";
+	if (!check_accessor(b, m, ipos, TINYGLTF_TYPE_VEC3, position_types, at + "POSITION",
 			    &a->pos) ||
-	    !check_optional(b, m, inrm, TINYGLTF_TYPE_VEC3, float_only, what + " NORMAL",
+	    !check_optional(b, m, inrm, TINYGLTF_TYPE_VEC3, direction_types, at + "NORMAL",
 			    &a->nrm) ||
-	    !check_optional(b, m, iuv, TINYGLTF_TYPE_VEC2, uv_types, what + " TEXCOORD_0",
+	    !check_optional(b, m, iuv, TINYGLTF_TYPE_VEC2, position_types, at + "TEXCOORD_0",
 			    &a->uv) ||
-	    !check_optional(b, m, itan, TINYGLTF_TYPE_VEC4, float_only, what + " TANGENT", &a->tan))
+	    !check_optional(b, m, itan, TINYGLTF_TYPE_VEC4, direction_types, at + "TANGENT",
+			    &a->tan))
 		return false;
 	size_t n = a->pos.count;
 	if (!same_count(a->nrm, n) || !same_count(a->uv, n) || !same_count(a->tan, n))
@@ -470,7 +297,7 @@ bool push_position(Builder &b, const View &pos, size_t i, const Mat4 world, cons
 	double x = read_component(pos, i, 0), y = read_component(pos, i, 1),
 	       z = read_component(pos, i, 2);
 	if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
-		return fail(b, what + " POSITION",
+		return fail(b, what + ".attributes.POSITION",
 			    "vertex " + std::to_string(i) + " is not a finite number");
 	for (int k = 0; k < 3; k++)
 		b.positions.push_back(world[k] * x + world[4 + k] * y + world[8 + k] * z +
@@ -524,7 +351,7 @@ bool add_primitive(Builder &b, const tinygltf::Model &m, const tinygltf::Primiti
 {
 	if (p.mode != TINYGLTF_MODE_TRIANGLES && p.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
 	    p.mode != TINYGLTF_MODE_TRIANGLE_FAN && p.mode != -1) {
-		log_debug("%s: %s is not made of triangles, skipped", b.name.c_str(), what.c_str());
+		b.not_triangles++;
 		return true;
 	}
 	Range r = {};
@@ -547,41 +374,85 @@ bool add_primitive(Builder &b, const tinygltf::Model &m, const tinygltf::Primiti
 	return true;
 }
 
-bool add_node(Builder &b, const tinygltf::Model &m, int index, const Mat4 parent,
-	      std::vector<char> &visiting)
+// What the passes before the builder found: every node's world matrix
+// and parent, and for each mesh the file's index it came from (a skinned
+// node shows a posed copy).
+struct Pose {
+	std::vector<gltf_ext::Mat4> worlds;
+	std::vector<int> parent;
+	std::vector<int> mesh_source;
+};
+
+bool add_mesh(Builder &b, const tinygltf::Model &m, size_t node, const Mat4 world, const Pose &pose)
 {
-	if (index < 0 || (size_t)index >= m.nodes.size())
-		return fail(b, "scene", "node " + std::to_string(index) + " does not exist");
-	if (visiting[(size_t)index])
-		return fail(b, "node " + std::to_string(index), "is its own ancestor (a cycle)");
-	const tinygltf::Node &n = m.nodes[(size_t)index];
-	Mat4 local, world;
-	node_matrix(n, local);
-	mat_mul(parent, local, world);
-	if (n.mesh >= 0) {
-		if ((size_t)n.mesh >= m.meshes.size())
-			return fail(b, "node " + std::to_string(index),
-				    "mesh " + std::to_string(n.mesh) + " does not exist");
-		const tinygltf::Mesh &mesh = m.meshes[(size_t)n.mesh];
-		for (size_t i = 0; i < mesh.primitives.size(); i++)
-			if (!add_primitive(b, m, mesh.primitives[i], world,
-					   "mesh " + std::to_string(n.mesh) + " primitive " +
-					       std::to_string(i)))
-				return false;
-	}
-	visiting[(size_t)index] = 1;
-	for (int child : n.children)
-		if (!add_node(b, m, child, world, visiting))
+	const tinygltf::Node &n = m.nodes[node];
+	if ((size_t)n.mesh >= m.meshes.size())
+		return fail(b, "nodes[" + std::to_string(node) + "].mesh",
+			    "mesh " + std::to_string(n.mesh) + " does not exist");
+	const tinygltf::Mesh &mesh = m.meshes[(size_t)n.mesh];
+	// A skinned mesh's copy holds world positions already (the node's
+	// own transform does not apply to it, as the spec says); name the
+	// mesh as the file does.
+	int shown = pose.mesh_source[(size_t)n.mesh];
+	for (size_t i = 0; i < mesh.primitives.size(); i++)
+		if (!add_primitive(b, m, mesh.primitives[i], world,
+				   "meshes[" + std::to_string(shown) + "].primitives[" +
+				       std::to_string(i) + "]"))
 			return false;
-	visiting[(size_t)index] = 0;
 	return true;
+}
+
+// Depth first and in the file's order, as the recursion before it was,
+// over an explicit stack: the hierarchy's depth costs memory, not stack.
+bool add_scene(Builder &b, const tinygltf::Model &m, const std::vector<int> &roots,
+	       const std::string &what, const Pose &pose)
+{
+	static const Mat4 identity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+	std::vector<size_t> stack;
+	for (size_t k = roots.size(); k-- > 0;) {
+		int r = roots[k];
+		std::string w = what + ".nodes[" + std::to_string(k) + "]";
+		if (r < 0 || (size_t)r >= m.nodes.size())
+			return fail(b, w, "node " + std::to_string(r) + " does not exist");
+		if (pose.parent[(size_t)r] >= 0)
+			return fail(b, w,
+				    "nodes[" + std::to_string(r) + "] is a child of nodes[" +
+					std::to_string(pose.parent[(size_t)r]) +
+					"], expected a root");
+		stack.push_back((size_t)r);
+	}
+	while (!stack.empty()) {
+		size_t i = stack.back();
+		stack.pop_back();
+		const tinygltf::Node &n = m.nodes[i];
+		if (n.mesh >= 0 &&
+		    !add_mesh(b, m, i, n.skin >= 0 ? identity : pose.worlds[i].m, pose))
+			return false;
+		for (size_t k = n.children.size(); k-- > 0;)
+			stack.push_back((size_t)n.children[k]);
+	}
+	return true;
+}
+
+bool has_extent(const std::vector<double> &p)
+{
+	for (size_t i = 3; i < p.size(); i++)
+		if (p[i] != p[i % 3])
+			return true;
+	return false;
 }
 
 int finish_mesh(Builder &b, struct mesh *out)
 {
 	uint32_t nv = (uint32_t)(b.positions.size() / 3);
 	if (b.indices.empty()) {
-		b.error = "the default scene has no triangles to draw";
+		b.error = b.not_triangles
+			      ? "the scene has only points or lines, expected triangles"
+			      : "the scene has no triangles to draw, expected at least one";
+		return -EINVAL;
+	}
+	if (!has_extent(b.positions)) {
+		b.error = "every POSITION is the same point, expected a model with an extent";
 		return -EINVAL;
 	}
 	if (mesh_alloc(out, nv, (uint32_t)b.indices.size(), b.any_uvs))
@@ -612,93 +483,132 @@ int finish_mesh(Builder &b, struct mesh *out)
 	return 0;
 }
 
-int build_mesh(const char *name, const tinygltf::Model &m, unsigned textures,
+bool prepare(tinygltf::Model &m, const char *name, Pose *pose, std::string *err)
+{
+	std::string unused = gltf_ext::unsupported(m.extensionsUsed);
+	if (!unused.empty() && gltf_ext::unsupported(m.extensionsRequired).empty())
+		log_info("%s: ignoring extensions it uses but does not need: %s",
+			 gltf_ext::escape(name).c_str(), gltf_ext::escape(unused).c_str());
+	if (!gltf_ext::decode_meshopt(m, err) || !gltf_ext::decode_draco(m, err) ||
+	    !gltf_ext::make_dense(m, err) ||
+	    !gltf_ext::node_worlds(m, &pose->worlds, &pose->parent, err) ||
+	    !gltf_ext::apply_morphs(m, err))
+		return false;
+	return gltf_ext::apply_skins(m, pose->worlds, &pose->mesh_source, err);
+}
+
+int build_mesh(const char *name, tinygltf::Model &m, const struct gltf_options *o,
 	       const GltfImages &images, struct mesh *out)
 {
 	Builder b;
+	Pose pose;
+	int scene, ret;
 	b.name = name;
-	Mat4 identity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-	std::vector<char> visiting(m.nodes.size(), 0);
-	int scene = m.defaultScene >= 0 ? m.defaultScene : 0;
-	int ret;
-
-	if (m.scenes.empty()) {
-		b.error = "has no scene to show";
-	} else if ((size_t)scene >= m.scenes.size()) {
-		b.error = "default scene " + std::to_string(scene) + " does not exist";
-	} else {
-		for (int root : m.scenes[(size_t)scene].nodes)
-			if (!add_node(b, m, root, identity, visiting))
-				break;
+	if (prepare(m, name, &pose, &b.error) &&
+	    gltf_ext::choose_scene(m, o->scene, &scene, &b.error)) {
+		std::vector<int> roots;
+		if (scene >= 0)
+			roots = m.scenes[(size_t)scene].nodes;
+		else // no scene at all: every tree of nodes
+			for (size_t i = 0; i < m.nodes.size(); i++)
+				if (pose.parent[i] < 0)
+					roots.push_back((int)i);
+		add_scene(b, m, roots, "scenes[" + std::to_string(scene) + "]", pose);
 	}
 	ret = b.error.empty() ? finish_mesh(b, out) : -EINVAL;
+	std::string shown = gltf_ext::escape(name);
 	if (ret == -EINVAL && !b.error.empty())
-		log_err("%s: %s", name, b.error.c_str());
+		log_err("%s: %s", shown.c_str(), gltf_ext::escape(b.error).c_str());
 	else if (ret == 0)
-		log_info("%s: %u vertices, %u triangles", name, out->vertex_count,
+		log_info("%s: %u vertices, %u triangles", shown.c_str(), out->vertex_count,
 			 out->index_count / 3);
+	if (ret == 0 && b.not_triangles)
+		log_info("%s: %zu primitives of points or lines left out (only triangles show)",
+			 shown.c_str(), b.not_triangles);
 	if (ret == 0 && b.other_materials)
-		log_info("%s: primitives differ in material; the first one's is shown", name);
+		log_info("%s: primitives differ in material; the first one's is shown",
+			 shown.c_str());
 	if (ret == 0)
-		gltf_read_material(m, b.material, textures, images, name, &out->material);
+		gltf_read_material(m, b.material, o->textures, images, name, &out->material);
 	return ret;
 }
 
+bool parse(tinygltf::TinyGLTF &loader, tinygltf::Model *model, const uint8_t *data, size_t size,
+	   const GltfFiles &ctx, bool all, std::string *err)
+{
+	std::string warn;
+	std::vector<unsigned char> fixed = gltf_ext::tinygltf_compatible(data, size, all);
+	if (!fixed.empty() && fixed.size() <= 0xffffffffu) {
+		data = fixed.data();
+		size = fixed.size();
+	}
+	err->clear();
+	bool glb = size >= 4 && std::memcmp(data, "glTF", 4) == 0;
+	return glb ? loader.LoadBinaryFromMemory(model, err, &warn, data, (unsigned)size, ctx.dir)
+		   : loader.LoadASCIIFromString(model, err, &warn,
+						reinterpret_cast<const char *>(data),
+						(unsigned)size, ctx.dir);
+}
+
 int load_memory(const char *name, const uint8_t *data, size_t size, const char *dir,
-		unsigned textures, struct mesh *out)
+		const struct gltf_options *o, struct mesh *out)
 {
 	tinygltf::TinyGLTF loader;
 	tinygltf::Model model;
-	std::string err, warn;
-	Context ctx;
+	std::string err;
+	GltfFiles ctx;
 	GltfImages images;
 	ctx.dir = dir ? dir : "";
-	images.keep = textures != 0;
+	ctx.max_size = GLTF_MAX_FILE;
+	images.keep = o->textures != 0;
 	std::memset(out, 0, sizeof(*out));
 
 	if (size > GLTF_MAX_FILE || size > 0xffffffffu) {
-		log_err("%s: file is %zu bytes, expected at most %u", name, size, GLTF_MAX_FILE);
+		log_err("%s: file is %zu bytes, expected at most %u",
+			gltf_ext::escape(name).c_str(), size, GLTF_MAX_FILE);
 		return -EFBIG;
 	}
-	loader.SetFsCallbacks(fs_callbacks<tinygltf::FsCallbacks>(&ctx));
+	loader.SetFsCallbacks(gltf_fs_callbacks(&ctx));
 	// Images are decoded by our own libpng/libjpeg path, and only those a
 	// feature asked for; never by the stb copy inside the library.
 	loader.SetImageLoader(gltf_keep_image, &images);
-	bool glb = size >= 4 && std::memcmp(data, "glTF", 4) == 0;
-	bool ok =
-	    glb ? loader.LoadBinaryFromMemory(&model, &err, &warn, data, (unsigned)size, ctx.dir)
-		: loader.LoadASCIIFromString(&model, &err, &warn,
-					     reinterpret_cast<const char *>(data), (unsigned)size,
-					     ctx.dir);
+	bool ok = parse(loader, &model, data, size, ctx, false, &err);
+	// tinygltf refuses indices without a bufferView, which the spec
+	// allows: look for them only in a file it refused.
+	if (!ok && err.find("invalid bufferView") != std::string::npos)
+		ok = parse(loader, &model, data, size, ctx, true, &err);
+	std::string required = gltf_ext::unsupported(model.extensionsRequired);
+	const std::string &version = model.asset.version;
+	if (ok && !version.empty() && version.compare(0, 2, "2.") != 0) {
+		ok = false;
+		err = "asset.version \"" + version +
+		      "\", expected 2.0 (convert glTF 1.0 files first)";
+	} else if (!ok || !required.empty()) {
+		err = ok ? "extensionsRequired: " + required + " not supported"
+			 : gltf_ext::parse_fault({ctx.dir, ctx.missing, ctx.refused,
+						  [&ctx](const std::string &path) {
+							  return gltf_path_allowed(ctx, path);
+						  }},
+						 model, data, size, err);
+		ok = false;
+	}
 	if (!ok) {
-		if (!ctx.missing.empty())
-			err = "buffer file \"" + ctx.missing + "\" does not exist beside the model";
-		else if (!ctx.refused.empty())
-			err = "buffer URI \"" + ctx.refused +
-			      "\" is not a file beside the model (absolute paths and \"..\" "
-			      "are refused)";
-		else if (err.empty())
-			err = "not a glTF 2.0 file";
-		for (char &ch : err)
-			if (ch == '\n')
-				ch = ' ';
-		while (!err.empty() && err.back() == ' ')
-			err.pop_back();
-		log_err("%s: %s", name, err.c_str());
+		log_err("%s: %s", gltf_ext::escape(name).c_str(), gltf_ext::escape(err).c_str());
 		return -EINVAL;
 	}
-	return build_mesh(name, model, textures, images, out);
+	return build_mesh(name, model, o, images, out);
 }
 
 } // namespace
 
-extern "C" int gltf_load_memory_textures(const char *name, const uint8_t *data, size_t size,
-					 const char *dir, unsigned textures, struct mesh *out)
+extern "C" int gltf_load_memory_options(const char *name, const uint8_t *data, size_t size,
+					const char *dir, const struct gltf_options *o,
+					struct mesh *out)
 {
 	// No exception may cross into C: a model too large for memory, or a
 	// fault inside the parser, is one more error line.
 	try {
-		return load_memory(name, data, size, dir, textures, out);
+		return load_memory(name, data, size, dir, o, out);
 	} catch (const std::exception &e) {
 		log_err("%s: cannot load: %s", name, e.what());
 	} catch (...) {
@@ -708,13 +618,20 @@ extern "C" int gltf_load_memory_textures(const char *name, const uint8_t *data, 
 	return -EINVAL;
 }
 
+extern "C" int gltf_load_memory_textures(const char *name, const uint8_t *data, size_t size,
+					 const char *dir, unsigned textures, struct mesh *out)
+{
+	struct gltf_options o = {textures, nullptr};
+	return gltf_load_memory_options(name, data, size, dir, &o, out);
+}
+
 extern "C" int gltf_load_memory(const char *name, const uint8_t *data, size_t size, const char *dir,
 				struct mesh *out)
 {
 	return gltf_load_memory_textures(name, data, size, dir, 0, out);
 }
 
-extern "C" int gltf_load_textures(const char *path, unsigned textures, struct mesh *out)
+extern "C" int gltf_load_options(const char *path, const struct gltf_options *o, struct mesh *out)
 {
 	std::vector<unsigned char> bytes;
 	std::string err;
@@ -723,12 +640,17 @@ extern "C" int gltf_load_textures(const char *path, unsigned textures, struct me
 	dir = slash == std::string::npos ? "" : dir.substr(0, slash);
 
 	std::memset(out, 0, sizeof(*out));
-	if (!read_file(path, &bytes, &err)) {
-		log_err("%s: %s", path, err.c_str());
+	if (!gltf_read_file(path, GLTF_MAX_FILE, &bytes, &err)) {
+		log_err("%s: %s", gltf_ext::escape(path).c_str(), gltf_ext::escape(err).c_str());
 		return -ENOENT;
 	}
-	return gltf_load_memory_textures(path, bytes.data(), bytes.size(), dir.c_str(), textures,
-					 out);
+	return gltf_load_memory_options(path, bytes.data(), bytes.size(), dir.c_str(), o, out);
+}
+
+extern "C" int gltf_load_textures(const char *path, unsigned textures, struct mesh *out)
+{
+	struct gltf_options o = {textures, nullptr};
+	return gltf_load_options(path, &o, out);
 }
 
 extern "C" int gltf_load(const char *path, struct mesh *out)

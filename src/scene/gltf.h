@@ -3,6 +3,7 @@
 #ifndef MK_GLTF_H
 #define MK_GLTF_H
 
+#include "scene/gltf_texture.h"
 #include "scene/mesh.h"
 
 #include <stddef.h>
@@ -15,11 +16,13 @@ extern "C" {
 /* Models larger than this are refused before parsing. */
 #define GLTF_MAX_FILE (512u << 20)
 
-/* The material textures a caller may ask to have decoded. */
-enum gltf_texture {
-	GLTF_TEXTURE_NORMAL = 1u << 0,	  /* normalTexture */
-	GLTF_TEXTURE_OCCLUSION = 1u << 1, /* occlusionTexture */
-	GLTF_TEXTURE_THICKNESS = 1u << 2, /* KHR_materials_iridescence thickness */
+/* What to load beyond the geometry. */
+struct gltf_options {
+	unsigned textures; /* enum gltf_texture bits */
+	/* The scene to show: an index ("1") or a scene's name; NULL or "" for
+	 * the file's `scene`, else the first. A file without scenes shows
+	 * every tree of nodes. */
+	const char *scene;
 };
 
 /* Load every triangle primitive of the default scene, each with its node
@@ -35,11 +38,16 @@ int gltf_load(const char *path, struct mesh *out);
  * warning and stays empty; the model still loads. */
 int gltf_load_textures(const char *path, unsigned textures, struct mesh *out);
 
+/* The same with every option. */
+int gltf_load_options(const char *path, const struct gltf_options *o, struct mesh *out);
+
 /* The same from memory (for the fuzzer); external buffers resolve in dir. */
 int gltf_load_memory(const char *name, const uint8_t *data, size_t size, const char *dir,
 		     struct mesh *out);
 int gltf_load_memory_textures(const char *name, const uint8_t *data, size_t size, const char *dir,
 			      unsigned textures, struct mesh *out);
+int gltf_load_memory_options(const char *name, const uint8_t *data, size_t size, const char *dir,
+			     const struct gltf_options *o, struct mesh *out);
 
 #ifdef __cplusplus
 }

@@ -3,7 +3,6 @@
 // buffers, nothing tinygltf hands back is trusted: every index, offset and
 // length is checked here before a byte is read.
 #include "scene/gltf_material.h"
-#include "scene/gltf.h"
 #include "util/log.h"
 
 #include <cmath>

@@ -4,6 +4,7 @@
 #ifndef MK_GLTF_MATERIAL_H
 #define MK_GLTF_MATERIAL_H
 
+#include "scene/gltf_texture.h"
 #include "scene/mesh.h"
 
 #include <tiny_gltf.h>

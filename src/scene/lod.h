@@ -36,11 +36,12 @@ struct lod_result {
  * every triangle) and order it for drawing: vertices equal in every
  * attribute merged, then meshopt_simplify down to lod_triangles_wanted
  * unless the error would reach `pixels` first (positions only; seams
- * kept), then ordered for the vertex cache, for overdraw and for vertex
- * fetch, without the vertices no triangle uses. Every vertex left keeps
- * its own attributes. The error is meshoptimizer's estimate: the farthest
- * original vertex lies up to 1.7 times as far (tests/unit/test_lod.c).
- * result may be NULL. Returns 0, or -ENOMEM (m is then unchanged). */
+ * kept, or, where seams stop it short, over the positions welded and
+ * each corner given back its own side's wedge), then ordered for the vertex cache, for overdraw and
+ * for vertex fetch, without the vertices no triangle uses. Every vertex left keeps its own
+ * attributes. The error is meshoptimizer's estimate: the farthest original vertex lies up to 1.7
+ * times as far (tests/unit/test_lod.c). result may be NULL. Returns 0, or -ENOMEM (m is then
+ * unchanged). */
 int lod_prepare_mesh(struct mesh *m, double pixels, int width, int height,
 		     struct lod_result *result);
 

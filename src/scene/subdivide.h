@@ -1,4 +1,4 @@
-/* Displacement (seed 004) made to show: GLES2 has no tessellation stage, so
+/* Displacement along the normal made to show: GLES2 has no tessellation stage, so
  * the mesh is subdivided on the CPU at load time to the density the display
  * needs, displaced there, and given the normals of the displaced surface.
  *

@@ -15,7 +15,7 @@ extern "C" {
  * channel is returned in [0, 1]. A non-finite coordinate reads texel 0. */
 void texture_sample(const struct image *img, double u, double v, double out[4]);
 
-/* Height as seed 004 reads it: 0.30 R + 0.59 G + 0.11 B, in [0, 1]. */
+/* Height as the luma of the map: 0.30 R + 0.59 G + 0.11 B, in [0, 1]. */
 double texture_height(const struct image *img, double u, double v);
 
 /* Resample src into a new w x h image (bilinear at texel centres,

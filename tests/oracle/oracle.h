@@ -50,7 +50,7 @@ void shading_safe_normalize(const double v[3], double out[3]);
 void shading_uv_normal(const double n[3], double uv[2]);
 void shading_uv_view(const double n[3], const double e[3], double uv[2]);
 void shading_uv_sem(const double n[3], const double e[3], double uv[2]);
-/* Seed 002: hue = (1 - (n.e)^2) range + average - shift (1 - map_a), in
+/* Iridescence: hue = (1 - (n.e)^2) range + average - shift (1 - map_a), in
  * turns of the colour circle; the same for n.e and -n.e. */
 double shading_iridescence_hue(double n_dot_e, double range, double average, double shift,
 			       double map_a);

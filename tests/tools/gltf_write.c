@@ -175,14 +175,15 @@ static void write_json(FILE *f, const struct mesh *m, const struct gltf_write_op
 	if (o->byte_stride)
 		fprintf(f, ",\"byteStride\":%d", o->byte_stride);
 	fprintf(f, "},");
-	fprintf(f, "{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu},", l->nrm,
-		o->with_normals ? (size_t)m->vertex_count * 12 : 4);
+	/* An absent attribute's view is 4 bytes at the start, inside the buffer. */
+	fprintf(f, "{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu},",
+		o->with_normals ? l->nrm : 0, o->with_normals ? (size_t)m->vertex_count * 12 : 4);
 	fprintf(f, "{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu},", l->idx,
 		(size_t)m->index_count * (size_t)(o->index_bytes ? o->index_bytes : 1));
-	fprintf(f, "{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu},", l->uv,
+	fprintf(f, "{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu},", o->with_uvs ? l->uv : 0,
 		o->with_uvs ? (size_t)m->vertex_count * 8 : 4);
-	fprintf(f, "{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu}", l->tan,
-		o->with_tangents ? (size_t)m->vertex_count * 16 : 4);
+	fprintf(f, "{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu}",
+		o->with_tangents ? l->tan : 0, o->with_tangents ? (size_t)m->vertex_count * 16 : 4);
 	for (int i = 0; i < 3; i++)
 		if (l->img_path[i] && o->embed_images)
 			fprintf(f, ",{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu}",
@@ -192,14 +193,16 @@ static void write_json(FILE *f, const struct mesh *m, const struct gltf_write_op
 		"\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":%ld,"
 		"\"type\":\"VEC3\",\"min\":[-1,-1,-1],\"max\":[1,1,1]},",
 		count);
-	fprintf(f, "{\"bufferView\":1,\"componentType\":5126,\"count\":%u,\"type\":\"VEC3\"},",
-		m->vertex_count);
+	/* An attribute left out keeps its accessor number, as one element of
+	 * the positions: valid for validators such as cgltf (gltfpack). */
+	fprintf(f, "{\"bufferView\":%d,\"componentType\":5126,\"count\":%u,\"type\":\"VEC3\"},",
+		o->with_normals ? 1 : 0, o->with_normals ? m->vertex_count : 1);
 	fprintf(f, "{\"bufferView\":2,\"componentType\":%d,\"count\":%u,\"type\":\"SCALAR\"},",
 		ctype[o->index_bytes > 0 ? o->index_bytes : 1], m->index_count);
-	fprintf(f, "{\"bufferView\":3,\"componentType\":5126,\"count\":%u,\"type\":\"VEC2\"},",
-		m->vertex_count);
-	fprintf(f, "{\"bufferView\":4,\"componentType\":5126,\"count\":%u,\"type\":\"VEC4\"}]}",
-		m->vertex_count);
+	fprintf(f, "{\"bufferView\":%d,\"componentType\":5126,\"count\":%u,\"type\":\"VEC2\"},",
+		o->with_uvs ? 3 : 0, o->with_uvs ? m->vertex_count : 1);
+	fprintf(f, "{\"bufferView\":%d,\"componentType\":5126,\"count\":%u,\"type\":\"VEC4\"}]}",
+		o->with_tangents ? 4 : 0, o->with_tangents ? m->vertex_count : 1);
 }
 
 static int write_glb(FILE *f, const char *json, size_t jlen, const unsigned char *bin, size_t blen)

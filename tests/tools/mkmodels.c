@@ -1,12 +1,14 @@
 /* Writes the test and bench models into a folder:
- *   mkmodels DIR          sphere, loader variants, the malformed set, and
- *                         the material maps and models
+ *   mkmodels DIR          sphere, loader variants, the malformed set, the
+ *                         corpus test's torus knots, and the material maps
+ *                         and models
  *   mkmodels DIR --bench  also torus knots of about 10k, 100k and 1M triangles */
 #include "gltf_write.h"
 #include "maps.h"
 #include "scene/mesh.h"
 #include "scene/tangent.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -69,6 +71,55 @@ static int write_material_models(const char *dir)
 	bad |= put(dir, "sphere-coarse.glb", &coarse, base);
 	mesh_release(&s);
 	mesh_release(&coarse);
+	return bad;
+}
+
+/* Every triangle with vertices of its own and its face's normal: split
+ * normals everywhere, as a flat-shaded export has them. */
+static int split_flat(const struct mesh *src, struct mesh *out)
+{
+	if (mesh_alloc(out, src->index_count, src->index_count, src->uvs != NULL))
+		return -1;
+	for (uint32_t i = 0; i < src->index_count; i++) {
+		uint32_t v = src->indices[i], t = i - i % 3;
+		const float *a = src->positions + src->indices[t] * 3;
+		const float *b = src->positions + src->indices[t + 1] * 3;
+		const float *c = src->positions + src->indices[t + 2] * 3;
+		double e1[3], e2[3], n[3], len;
+
+		for (int k = 0; k < 3; k++)
+			e1[k] = b[k] - a[k], e2[k] = c[k] - a[k];
+		n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+		n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+		n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+		len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+		for (int k = 0; k < 3; k++) {
+			out->positions[i * 3 + k] = src->positions[v * 3 + k];
+			out->normals[i * 3 + k] = len > 0 ? (float)(n[k] / len) : (float)(k == 2);
+		}
+		if (src->uvs)
+			memcpy(out->uvs + i * 2, src->uvs + v * 2, 8);
+		out->indices[i] = i;
+	}
+	return 0;
+}
+
+/* The corpus test's sources (tests/corpus/run.sh turns them into
+ * gltfpack and Draco files): a torus knot, smooth with a UV seam, and the
+ * same flat-shaded, every edge a crease. */
+static int write_corpus(const char *dir)
+{
+	struct mesh k, flat;
+	struct gltf_write_opts o = {
+	    .index_bytes = 4, .with_normals = 1, .bad_index = -1, .with_uvs = 1};
+	int bad = 0;
+
+	if (mesh_torus_knot(&k, 256, 16) || split_flat(&k, &flat))
+		return 1;
+	bad |= put(dir, "knot.glb", &k, o);
+	bad |= put(dir, "knot-flat.glb", &flat, o);
+	mesh_release(&k);
+	mesh_release(&flat);
 	return bad;
 }
 
@@ -137,6 +188,7 @@ int main(int argc, char **argv)
 	bad |= put(argv[1], "bad-dotdot-uri.gltf", &s, o);
 	mesh_release(&s);
 	bad |= write_material_models(argv[1]);
+	bad |= write_corpus(argv[1]);
 	if (argc > 2 && strcmp(argv[2], "--bench") == 0)
 		bad |= write_bench(argv[1]);
 	return bad;

@@ -9,7 +9,7 @@
 # COMMAND runs in the copy instead of the tests (e.g. -- bash for a shell).
 # Knobs: TRIXIE_ROOT, DEBIAN_MIRROR, MAKE_TEST (the make arguments for the
 # tests, default "test"), JOBS (make -j, default 2), VM_E2E=0 (no virtual
-# board). The board boots Debian 12's kernel (tests/vm/build.sh makes it on
+# board), TRIXIE_DEB=0 (no package built and installed after the tests). The board boots Debian 12's kernel (tests/vm/build.sh makes it on
 # this host, which must then be Debian 12) with Debian 13's libgpiod 2,
 # libcamera 0.4 and Mesa 25 inside: the GPIO and camera tests on those.
 # /proc, /sys and /dev are mounted inside only while this runs; every exit
@@ -122,4 +122,18 @@ step build
 rc=0
 in_root sh -c "cd $SRC && make -j$JOBS $MAKE_TEST" || rc=$?
 step tests
+# The package as Debian 13 builds it (its own library versions), installed
+# with apt into a fresh Debian 13 root and run from the installed files.
+if [ "${TRIXIE_DEB:-1}" != 0 ]; then
+	if in_root sh -c "cd $SRC && make deps-deb && make deb" >"$ROOT.deb.log" 2>&1; then
+		sh "$TOP/tests/cross/deb-install.sh" \
+			"$ROOT$SRC"/build/deb/matcap-kiosk_*_"$(dpkg --print-architecture)".deb \
+			"$TOP/build/deb-root-trixie" trixie || rc=1
+	else
+		tail -20 "$ROOT.deb.log"
+		echo "0 passed, 1 failed (make deb in the chroot, see $ROOT.deb.log)"
+		rc=1
+	fi
+	step package
+fi
 exit $rc

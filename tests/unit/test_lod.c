@@ -224,6 +224,64 @@ static void surface_and_normals_within_bounds(void **state)
 	mesh_release(&knot);
 }
 
+/* The knot as a flat-shaded export has it: every triangle its own three
+ * vertices with the face's normal, so that every vertex lies on a crease
+ * and meshoptimizer alone could collapse none. */
+static void split_flat(const struct mesh *src, struct mesh *out)
+{
+	assert_int_equal(mesh_alloc(out, src->index_count, src->index_count, true), 0);
+	for (uint32_t i = 0; i < src->index_count; i++) {
+		uint32_t v = src->indices[i], t = i - i % 3;
+		double e1[3], e2[3], n[3], len;
+
+		sub3(src->positions + src->indices[t + 1] * 3, src->positions + src->indices[t] * 3,
+		     e1);
+		sub3(src->positions + src->indices[t + 2] * 3, src->positions + src->indices[t] * 3,
+		     e2);
+		n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+		n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+		n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+		len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+		for (int k = 0; k < 3; k++) {
+			out->positions[i * 3 + k] = src->positions[v * 3 + k];
+			out->normals[i * 3 + k] = len > 0 ? (float)(n[k] / len) : (float)(k == 2);
+		}
+		memcpy(out->uvs + i * 2, src->uvs + v * 2, 8);
+		out->indices[i] = i;
+	}
+}
+
+/* Creases and UV seams everywhere no longer stop the simplifier: it
+ * reaches the count wanted, within the error budget, and no triangle
+ * spans the knot's UV seam (|du| < 0.5). */
+static void creases_do_not_stop_it(void **state)
+{
+	struct mesh knot, flat, m;
+	struct lod_result r;
+	double unit = lod_model_error(1.0, 160, 90);
+
+	(void)state;
+	assert_int_equal(mesh_torus_knot(&knot, 128, 16), 0);
+	split_flat(&knot, &flat);
+	copy_mesh(&flat, &m);
+	assert_int_equal(lod_prepare_mesh(&m, 2.0, 160, 90, &r), 0);
+	double farthest = measure(&knot, &m).distance / unit;
+
+	print_message("flat knot at 2 px, 160x90: %u of %u triangles (%.0f wanted), %.2f px "
+		      "estimated, farthest vertex %.2f px\n",
+		      r.triangles_after, r.triangles_before, r.wanted, r.error_pixels, farthest);
+	assert_true(r.triangles_after <= 1.25 * r.wanted);
+	assert_true(r.error_pixels <= 2.0);
+	assert_true(farthest <= 1.8 * 2.0);
+	for (uint32_t t = 0; t < m.index_count; t += 3)
+		for (int k = 0; k < 3; k++)
+			assert_true(fabs(m.uvs[m.indices[t + k] * 2] -
+					 m.uvs[m.indices[t + (k + 1) % 3] * 2]) < 0.5);
+	mesh_release(&m);
+	mesh_release(&flat);
+	mesh_release(&knot);
+}
+
 /* By value: the poles' -0.0 and 0.0 are one point. */
 static bool same_point(const float *a, const float *b)
 {
@@ -262,10 +320,12 @@ static void keeps_seams_and_attributes(void **state)
 		fn[2] = e1[0] * e2[1] - e1[1] * e2[0];
 		for (int k = 0; k < 3; k++)
 			centre[k] = p[0][k] + p[1][k] + p[2][k];
-		/* Out, or edge-on: meshoptimizer may fold a triangle into the
-		 * seam's plane (its normal at 90 degrees); the surface stays
-		 * closed, and shading reads the vertex normals. */
-		assert_true(dot3(fn, centre) >= 0.0);
+		/* Out, or about edge-on: meshoptimizer may fold a triangle into
+		 * the seam's plane (its normal at 90 degrees), and its arm64
+		 * build, rounding its collapse costs differently, a sliver a
+		 * few degrees past that; the surface stays closed, and shading
+		 * reads the vertex normals. So: within 10 degrees of edge-on. */
+		assert_true(dot3(fn, centre) >= -0.17 * sqrt(dot3(fn, fn) * dot3(centre, centre)));
 	}
 	/* Closed: each directed edge (by position) has its reverse. */
 	for (uint32_t t = 0; t < m.index_count; t++) {
@@ -377,6 +437,7 @@ int main(void)
 	    cmocka_unit_test(follows_the_display),
 	    cmocka_unit_test(surface_and_normals_within_bounds),
 	    cmocka_unit_test(keeps_seams_and_attributes),
+	    cmocka_unit_test(creases_do_not_stop_it),
 	    cmocka_unit_test(zero_budget_only_reorders),
 	    cmocka_unit_test(degenerate_meshes),
 	};

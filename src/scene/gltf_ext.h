@@ -1,0 +1,96 @@
+// The loader's passes over a parsed model, between tinygltf and the mesh
+// builder in gltf.cc: extensions, compressed and sparse data made plain,
+// and the pose (node matrices, morph weights, skins). Internal to the glTF
+// shim (C++ only; nothing outside src/scene/gltf*.cc includes it). Each
+// pass returns false with the reason in *err as "json.path: what was
+// expected", and leaves the model readable by the plain accessor checks.
+#ifndef MK_GLTF_EXT_H
+#define MK_GLTF_EXT_H
+
+#include <tiny_gltf.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace gltf_ext
+{
+
+struct Mat4 {
+	double m[16]; // column-major, as glTF stores it
+};
+
+// The bytes tinygltf can parse, where it refuses what the spec allows: a
+// copy with EXT_meshopt_compression's fallback buffers (which hold
+// nothing) replaced by one zero byte, and primitive indices without a
+// bufferView moved aside (Draco's, or all zeros: see make_dense); empty
+// when the file needs no change. `all`: look even when the file names
+// neither compression.
+std::vector<unsigned char> tinygltf_compatible(const unsigned char *data, size_t size, bool all);
+
+// Where tinygltf_compatible moves such indices: the primitive's extras.
+extern const char *const moved_indices;
+
+// Each buffer's URI as written (empty: none), for naming a missing one
+// after tinygltf refused the file; false when the JSON cannot be read.
+bool buffer_uris(const unsigned char *data, size_t size, std::vector<std::string> *uris, bool *glb);
+
+// What the file callbacks saw while tinygltf read the file: the model's
+// folder, the first path refused and the first missing, and the rule.
+struct FileFault {
+	std::string dir, missing, refused;
+	std::function<bool(const std::string &)> allowed; // a path inside dir?
+};
+
+// After tinygltf refused the file, the reason in one line: an unsupported
+// required extension, a missing buffer by its URI as written, a GLB of
+// another version, else tinygltf's own words.
+std::string parse_fault(const FileFault &f, const tinygltf::Model &m, const unsigned char *data,
+			size_t size, std::string err);
+
+// Names of the extensions in `names` that the loader does not support,
+// joined by ", "; empty when it supports them all.
+std::string unsupported(const std::vector<std::string> &names);
+
+// Bytes from the file made safe for one journal line: control characters
+// and bytes that are not UTF-8 become \xNN.
+std::string escape(const std::string &s);
+
+// One component as a number, normalized integers mapped to [0,1] or
+// [-1,1] as the spec says.
+double component_value(const unsigned char *p, int component_type, bool normalized);
+size_t component_size(int component_type);
+const char *component_name(int component_type);
+
+// Accessor `index` as count x components numbers: strided, sparse or
+// without a bufferView (zeros), every offset checked.
+bool read_accessor(const tinygltf::Model &m, int index, std::vector<double> *out, int *components,
+		   std::string *err);
+
+// Appends a buffer, bufferView and accessor holding `values`; returns the
+// accessor's index.
+int add_float_accessor(tinygltf::Model &m, const std::vector<double> &values, int type,
+		       size_t count);
+
+// The passes, in the order the loader runs them.
+bool decode_meshopt(tinygltf::Model &m, std::string *err);
+bool decode_draco(tinygltf::Model &m, std::string *err);
+bool make_dense(tinygltf::Model &m, std::string *err);
+// World matrices of every node; refuses a cycle, a node with two parents
+// and a child index out of range, without recursion.
+bool node_worlds(const tinygltf::Model &m, std::vector<Mat4> *worlds, std::vector<int> *parent,
+		 std::string *err);
+// The scene to show: `want` (an index or a scene's name), else the
+// file's default, else the first; -1 when the file has none.
+bool choose_scene(const tinygltf::Model &m, const char *want, int *scene, std::string *err);
+bool apply_morphs(tinygltf::Model &m, std::string *err);
+// Each skinned node gets a posed copy of its mesh; mesh_source[i] is the
+// file's index of mesh i.
+bool apply_skins(tinygltf::Model &m, const std::vector<Mat4> &worlds, std::vector<int> *mesh_source,
+		 std::string *err);
+
+} // namespace gltf_ext
+
+#endif

@@ -1,0 +1,144 @@
+// tinygltf's file callbacks for the glTF loader: a model's external files
+// are read only from its own folder (or below), and what was refused or
+// missing is kept, to name it when tinygltf gives up.
+#include "scene/gltf_fs.h"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+bool gltf_path_allowed(const GltfFiles &c, const std::string &path)
+{
+	std::string prefix = c.dir.empty() ? "" : c.dir + "/";
+	if (path.compare(0, prefix.size(), prefix) != 0)
+		return false;
+	std::string rel = path.substr(prefix.size());
+	if (rel.empty() || rel[0] == '/')
+		return false;
+	size_t start = 0;
+	while (start <= rel.size()) {
+		size_t end = rel.find('/', start);
+		if (end == std::string::npos)
+			end = rel.size();
+		if (rel.compare(start, end - start, "..") == 0 && end - start == 2)
+			return false;
+		start = end + 1;
+	}
+	return true;
+}
+
+// The whole file, refused when larger than max.
+bool gltf_read_file(const std::string &path, size_t max, std::vector<unsigned char> *out,
+		    std::string *err)
+{
+	std::ifstream f(path, std::ios::binary | std::ios::ate);
+	if (!f) {
+		*err = "cannot open " + path + ": " + std::strerror(errno);
+		return false;
+	}
+	std::streamoff size = f.tellg();
+	if (size < 0 || (unsigned long long)size > max) {
+		*err = path + " is larger than the limit";
+		return false;
+	}
+	out->resize((size_t)size);
+	f.seekg(0);
+	if (size > 0 && !f.read(reinterpret_cast<char *>(out->data()), size)) {
+		*err = "read error in " + path;
+		return false;
+	}
+	return true;
+}
+
+namespace
+{
+
+// tinygltf looks for a buffer in more than one folder; remember the first
+// refused path and any allowed one that was missing, to say which it was.
+bool fs_exists(const std::string &path, void *user)
+{
+	GltfFiles *c = static_cast<GltfFiles *>(user);
+	size_t skip = c->dir.empty() ? 0 : c->dir.size() + 1;
+	std::string shown = path.size() > skip ? path.substr(skip) : path;
+	if (!gltf_path_allowed(*c, path)) {
+		if (c->refused.empty())
+			c->refused = shown;
+		return false;
+	}
+	std::ifstream f(path, std::ios::binary);
+	if (!f.good() && c->missing.empty())
+		c->missing = shown;
+	return f.good();
+}
+
+std::string fs_expand(const std::string &path, void *)
+{
+	return path; // no "~" or variables: a URI means what it says
+}
+
+bool fs_read(std::vector<unsigned char> *out, std::string *err, const std::string &path, void *user)
+{
+	GltfFiles *c = static_cast<GltfFiles *>(user);
+	if (!gltf_path_allowed(*c, path)) {
+		*err = "URI leaves the model's folder: " + path;
+		return false;
+	}
+	return gltf_read_file(path, c->max_size, out, err);
+}
+
+bool fs_write(std::string *err, const std::string &, const std::vector<unsigned char> &, void *)
+{
+	*err = "writing is not allowed";
+	return false;
+}
+
+// tinygltf 2.9 (Debian 13) asks for a file's size before reading it, and
+// takes no callbacks at all unless this one is given too; 2.7 has no such
+// member.
+[[maybe_unused]] bool fs_size(size_t *size, std::string *err, const std::string &path, void *user)
+{
+	GltfFiles *c = static_cast<GltfFiles *>(user);
+	if (!gltf_path_allowed(*c, path)) {
+		*err = "URI leaves the model's folder: " + path;
+		return false;
+	}
+	std::ifstream f(path, std::ios::binary | std::ios::ate);
+	std::streamoff n = f ? std::streamoff(f.tellg()) : std::streamoff(-1);
+	if (n < 0) {
+		*err = "cannot open " + path + ": " + std::strerror(errno);
+		return false;
+	}
+	*size = (size_t)n;
+	return true;
+}
+
+template <typename T, typename = void> struct HasFileSize : std::false_type {
+};
+template <typename T>
+struct HasFileSize<T, std::void_t<decltype(&T::GetFileSizeInBytes)>> : std::true_type {
+};
+
+// Members by name: 2.9 added one before user_data, so a brace list that
+// fits one version does not fit the other.
+template <typename T> T fs_callbacks(GltfFiles *ctx)
+{
+	T fs{};
+	fs.FileExists = fs_exists;
+	fs.ExpandFilePath = fs_expand;
+	fs.ReadWholeFile = fs_read;
+	fs.WriteWholeFile = fs_write;
+	if constexpr (HasFileSize<T>::value)
+		fs.GetFileSizeInBytes = fs_size;
+	fs.user_data = ctx;
+	return fs;
+}
+
+} // namespace
+
+tinygltf::FsCallbacks gltf_fs_callbacks(GltfFiles *files)
+{
+	return fs_callbacks<tinygltf::FsCallbacks>(files);
+}
