@@ -10,6 +10,18 @@ varying SHADE_P vec3 v_eye;
 #endif
 
 uniform sampler2D u_matcap;
+// Where the matcap is mipmapped (src/render/render.c), a model small on
+// screen reads its disk averaged, not aliased. GL picks the level from the
+// larger of a pixel's two derivatives, which across a thin part (a knot's
+// tube) blurs the disk along the tube as well; the SEM modes map the
+// reflection, which sweeps the disk twice as fast, fastest at the rim,
+// where that blur would bleed the rim inwards. One level finer measured
+// best in every mode (tests/bench/report: at two finer, SEM aliases again).
+#if defined(MODE_SEM_VERTEX) || defined(MODE_SEM_FRAGMENT)
+#define MATCAP_LOD_BIAS -1.0
+#else
+#define MATCAP_LOD_BIAS -1.0
+#endif
 
 #ifdef DETAIL_MAP
 // highp where the GPU has it: at mediump (10-bit mantissa) a UV in
@@ -45,7 +57,7 @@ void main()
 	vec4 detail = texture2D(u_detail, v_uv);
 #endif
 #if defined(MODE_SEM_VERTEX)
-	vec3 color = texture2D(u_matcap, v_matcap_uv).rgb;
+	vec3 color = texture2D(u_matcap, v_matcap_uv, MATCAP_LOD_BIAS).rgb;
 #else
 	SHADE_P vec3 n = safe_normalize(v_normal);
 	SHADE_P vec3 e = safe_normalize(v_eye);
@@ -62,7 +74,7 @@ void main()
 #else
 	vec2 uv = matcap_sem(n, e);
 #endif
-	vec3 color = texture2D(u_matcap, uv).rgb;
+	vec3 color = texture2D(u_matcap, uv, MATCAP_LOD_BIAS).rgb;
 #endif
 #ifdef IRIDESCENCE
 #ifdef DETAIL_MAP

@@ -23,6 +23,11 @@ rm -rf "$out"
 mkdir -p "$out/models" "$out/render" "$out/bad"
 MODELS=$out/models
 export MODELS
+# The kiosks under test keep their prepared-mesh cache here, emptied with
+# the rest, never in the user's ~/.cache.
+XDG_CACHE_HOME=$(pwd)/$out/cache
+export XDG_CACHE_HOME
+unset CACHE_DIRECTORY
 passed=0
 failed=0
 failures=""

@@ -7,7 +7,7 @@
 #   make bench         speed figures (printed, never asserted); make report
 
 UNIT_TESTS  := options mesh image gltf gltf_ext shading app button content service
-UNIT_TESTS  += tangent subdivide material
+UNIT_TESTS  += tangent subdivide material mesh_cache
 UNIT_TESTS  += camera_math camera_proto camera_texture
 UNIT_TESTS  += stability fp16 lod
 UNIT_TESTS  += drm gesture touch_decode schedule power cec backlight
@@ -139,6 +139,7 @@ include tests/soak/soak.mk
 
 bench: $(KIOSK) test-tools
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench.sh
+	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_startup.sh
 	KIOSK=./$(KIOSK) sh tests/bench/bench_camera.sh
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_materials.sh
 	KIOSK=./$(KIOSK) sh tests/bench/bench_input.sh

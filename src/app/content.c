@@ -4,6 +4,9 @@
 #include "scene/lod.h"
 #include "util/log.h"
 
+#include <limits.h>
+#include <malloc.h>
+
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
@@ -27,6 +30,97 @@ static int load_model(const struct content_config *o, bool strict, struct mesh *
 		log_warn("showing the built-in torus knot instead of %s", o->model);
 	}
 	return mesh_torus_knot(mesh, KNOT_TUBULAR, KNOT_RADIAL);
+}
+
+/* The prepared-mesh cache (scene/mesh_cache.h). */
+/* A shell says what the prepared mesh holds (vertex and index counts),
+ * with no array: the renderer is given the packed mesh or the entry. */
+static void shell_counts(struct content *s, const struct mesh_packed *m)
+{
+	s->mesh.vertex_count = m->vertex_count;
+	s->mesh.index_count = m->index_count;
+}
+
+static int content_cache_lookup(struct content *s, const struct content_config *c)
+{
+	char dir[PATH_MAX];
+	int ret = mesh_cache_scene_key(c->model, c->lod_pixels, &c->material, &s->cache_key);
+
+	if (!ret)
+		ret = mesh_cache_dir(dir, sizeof(dir));
+	s->cacheable = !ret;
+	if (!ret)
+		ret = mesh_cache_open(dir, &s->cache_key, &s->cached);
+	if (ret)
+		return ret;
+	/* An entry is written only for a model whose material decodes no
+	 * texture: its factors are all material_load needs. */
+	s->mesh.material = *mesh_cache_entry_material(s->cached);
+	shell_counts(s, mesh_cache_entry_mesh(s->cached));
+	log_info("%s: the prepared mesh from the cache (%u triangles)", c->model,
+		 s->mesh.index_count / 3);
+	return 0;
+}
+
+static bool content_cache_fits(const struct content *s, int width, int height)
+{
+	const struct mesh_cache_key *k = s->cached ? mesh_cache_entry_key(s->cached) : NULL;
+
+	return k && k->width == (uint32_t)width && k->height == (uint32_t)height;
+}
+
+static bool decoded_images(const struct mesh_material *m)
+{
+	return m->normal_map.width || m->occlusion_map.width || m->thickness_map.width;
+}
+
+/* The prepared mesh packed as the GPU and the cache take it; the mesh's
+ * own arrays are given back (the material stays: material_load and a
+ * reload read it; it holds no image here). */
+static void content_cache_pack(struct content *s, int width, int height)
+{
+	struct mesh_material material = s->mesh.material;
+
+	if (!s->cacheable || decoded_images(&material) ||
+	    mesh_pack(&s->mesh, VERTEX_COMPACT, &s->packed))
+		return;
+	s->cache_key.width = (uint32_t)width;
+	s->cache_key.height = (uint32_t)height;
+	mesh_material_default(&s->mesh.material);
+	mesh_release(&s->mesh);
+	s->mesh.material = material;
+	shell_counts(s, &s->packed);
+}
+
+/* Once uploaded, the packed mesh goes to the cache on a thread of its
+ * own (the first frame does not wait for the disk), which frees it. */
+static void content_cache_store(struct content *s)
+{
+	char dir[PATH_MAX];
+
+	if (!s->packed.vertex_count || mesh_cache_dir(dir, sizeof(dir)))
+		return;
+	s->writer = mesh_cache_write_async(dir, &s->cache_key, &s->packed, &s->mesh.material,
+					   MESH_CACHE_MAX_BYTES);
+}
+
+/* A shell whose packed mesh went to the cache: uploaded again (a reload
+ * that failed), it is read back from the entry. */
+static int content_cache_reopen(struct content *s)
+{
+	char dir[PATH_MAX];
+	int ret;
+
+	if (s->cached || s->packed.vertex_count || s->mesh.positions || !s->mesh.index_count)
+		return 0;
+	mesh_cache_writer_join(s->writer);
+	s->writer = NULL;
+	ret = mesh_cache_dir(dir, sizeof(dir));
+	if (!ret)
+		ret = mesh_cache_open(dir, &s->cache_key, &s->cached);
+	if (ret)
+		log_err("the prepared mesh is neither in memory nor in the cache");
+	return ret;
 }
 
 static const char *default_matcaps(void)
@@ -62,7 +156,8 @@ int content_load(struct content *s, const struct content_config *o, bool strict)
 	int ret;
 
 	memset(s, 0, sizeof(*s));
-	ret = load_model(o, strict, &s->mesh);
+	/* A model prepared before is mapped from the cache, not parsed. */
+	ret = content_cache_lookup(s, o) ? load_model(o, strict, &s->mesh) : 0;
 	if (!ret)
 		ret = load_matcap(o, strict, s);
 	if (!ret)
@@ -74,6 +169,9 @@ int content_load(struct content *s, const struct content_config *o, bool strict)
 
 void content_release(struct content *s)
 {
+	mesh_cache_writer_join(s->writer);
+	mesh_packed_release(&s->packed);
+	mesh_cache_entry_free(s->cached);
 	mesh_release(&s->mesh);
 	material_release(&s->material);
 	image_release(&s->matcap);
@@ -84,21 +182,51 @@ void content_release(struct content *s)
 
 int content_prepare(struct content *s, const struct content_config *o, int width, int height)
 {
-	int ret = material_prepare_mesh(&s->material, &s->mesh, width, height);
 	bool displaced = s->material.features & MATERIAL_DISPLACEMENT;
+	int ret = 0;
 
-	return ret ? ret
-		   : lod_prepare_mesh(&s->mesh, displaced ? 0.0 : o->lod_pixels, width, height,
-				      NULL);
+	if (content_cache_fits(s, width, height))
+		return 0;
+	if (s->cached) {
+		/* Cached for another display: its level of detail is another. */
+		mesh_cache_entry_free(s->cached);
+		s->cached = NULL;
+		mesh_release(&s->mesh);
+		ret = load_model(o, true, &s->mesh);
+	}
+	if (!ret)
+		ret = material_prepare_mesh(&s->material, &s->mesh, width, height);
+	if (!ret)
+		ret = lod_prepare_mesh(&s->mesh, displaced ? 0.0 : o->lod_pixels, width, height,
+				       NULL);
+	if (!ret)
+		content_cache_pack(s, width, height);
+	return ret;
 }
 
-int content_upload(const struct content *s, struct renderer *r)
+int content_upload(struct content *s, struct renderer *r)
 {
 	/* The material first: it decides which attributes the mesh uploads. */
 	int ret = renderer_set_material(r, &s->material);
 
 	if (!ret)
+		ret = content_cache_reopen(s);
+	if (!ret && s->cached)
+		ret = renderer_set_packed(r, mesh_cache_entry_mesh(s->cached));
+	else if (!ret && s->packed.vertex_count)
+		ret = renderer_set_packed(r, &s->packed);
+	else if (!ret)
 		ret = renderer_set_mesh(r, &s->mesh);
+	/* On the GPU now: the entry's pages leave the process, the packed
+	 * mesh goes to the cache. */
+	if (!ret && s->cached)
+		mesh_cache_entry_evict(s->cached);
+	if (!ret)
+		content_cache_store(s);
+	/* The parse, the preparation and the upload freed far more than the
+	 * scene keeps; malloc holds freed heap for reuse, and a kiosk reuses
+	 * little: back to the system before the first frame. */
+	malloc_trim(0);
 
 	return ret ? ret : renderer_set_matcap(r, &s->matcap);
 }

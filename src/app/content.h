@@ -9,6 +9,7 @@
 #include "render/matcap_set.h"
 #include "scene/material.h"
 #include "scene/mesh.h"
+#include "scene/mesh_cache.h"
 #include "render/render.h"
 #include "render/shading.h"
 
@@ -28,7 +29,14 @@ struct content_config {
 };
 
 struct content {
+	/* The mesh as loaded and prepared; once prepared for the cache
+	 * (packed, then cached), a shell: its counts and material, no array. */
 	struct mesh mesh;
+	struct mesh_cache_entry *cached;  /* the prepared mesh, mapped; or NULL */
+	struct mesh_packed packed;	  /* the prepared mesh, packed, until stored */
+	struct mesh_cache_writer *writer; /* storing it; NULL: none */
+	struct mesh_cache_key cache_key;
+	bool cacheable;		  /* the key is known and the cache directory named */
 	struct image matcap;	  /* the first one shown */
 	struct matcap_set *set;	  /* NULL: the built-in clay only */
 	char *matcap_path;	  /* the file or folder set came from; NULL with set */
@@ -48,7 +56,7 @@ void content_release(struct content *s);
  * would. */
 int content_prepare(struct content *s, const struct content_config *c, int width, int height);
 /* Hand the mesh and the first matcap to the renderer. */
-int content_upload(const struct content *s, struct renderer *r);
+int content_upload(struct content *s, struct renderer *r);
 /* The camera and panel the settings ask for, at the resting orientation. */
 struct view content_view(const struct content_config *c);
 /* The matcap folder was changed: open the set again. Returns 0 and

@@ -1,6 +1,7 @@
 #include "render/render.h"
 #include "util/log.h"
 #include "render/shader.h"
+#include "scene/texture.h"
 
 #include <errno.h>
 #include <math.h>
@@ -36,6 +37,10 @@ struct renderer {
 	GLenum index_type;
 	GLsizei draw_count;
 	bool indexed;
+	enum vertex_format format; /* for the next renderer_set_mesh */
+	enum vertex_format drawn;  /* of the arrays uploaded */
+	float position_scale;	   /* int16 positions: the model units of 1.0 */
+	bool matcap_mipmaps;	   /* for the next renderer_set_matcap */
 };
 
 struct renderer *renderer_new(const struct gl *gl, const char *shader_dir)
@@ -51,6 +56,13 @@ struct renderer *renderer_new(const struct gl *gl, const char *shader_dir)
 	 * tests/bench/report/speed-error.md: about twice as slow). A GPU runs
 	 * mediump natively. */
 	r->highp = gl->caps.software;
+	r->format = r->drawn = VERTEX_COMPACT;
+	r->position_scale = 1.0f;
+	/* Unfiltered, as the golden images were drawn: mipmaps average a
+	 * thin part's shading, which changes those pictures far beyond their
+	 * tolerance (tests/bench/report measures both against a supersampled
+	 * reference). */
+	r->matcap_mipmaps = false;
 	gl->GenBuffers(SHADER_ATTR_COUNT, r->vbo);
 	gl->GenBuffers(1, &r->ibo);
 	gl->GenTextures(1, &r->matcap);
@@ -90,7 +102,7 @@ void renderer_free(struct renderer *r)
 
 /* Core GLES2 indexes with 16 bits; 32-bit indices need an extension that
  * some SBC GPUs lack, and then the mesh is drawn unindexed. */
-static int upload_indices(struct renderer *r, const struct mesh *m)
+static int upload_indices(struct renderer *r, const struct mesh_packed *m)
 {
 	const struct gl *gl = r->gl;
 
@@ -120,42 +132,49 @@ static int upload_indices(struct renderer *r, const struct mesh *m)
 	return 0;
 }
 
-static const int attr_size[SHADER_ATTR_COUNT] = {3, 3, 2, 4};
-
 /* One attribute array: as it is when indexed, else one entry per index. */
-static int upload_attribute(struct renderer *r, const struct mesh *m, int a, const float *src)
+static int upload_attribute(struct renderer *r, const struct mesh_packed *m, int a)
 {
 	const struct gl *gl = r->gl;
-	size_t n = (size_t)attr_size[a], count = r->indexed ? m->vertex_count : m->index_count;
-	float *flat = NULL;
+	size_t stride = mesh_array_stride(m->format, (enum mesh_array)a);
+	size_t count = r->indexed ? m->vertex_count : m->index_count;
+	const char *src = m->arrays[a];
+	char *flat = NULL;
 
 	if (!r->indexed) {
-		flat = malloc(count * n * sizeof(float) + 1);
+		flat = malloc(count * stride + 1);
 		if (!flat)
 			return -ENOMEM;
 		for (uint32_t i = 0; i < m->index_count; i++)
-			memcpy(flat + i * n, src + (size_t)m->indices[i] * n, n * sizeof(float));
+			memcpy(flat + i * stride, src + (size_t)m->indices[i] * stride, stride);
 	}
-	r->attr_bytes[a] = (long)(count * n * sizeof(float));
+	r->attr_bytes[a] = (long)(count * stride);
 	gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo[a]);
-	gl->BufferData(GL_ARRAY_BUFFER, r->attr_bytes[a], flat ? flat : src, GL_STATIC_DRAW);
+	gl->BufferData(GL_ARRAY_BUFFER, r->attr_bytes[a], flat ? (const void *)flat : src,
+		       GL_STATIC_DRAW);
 	free(flat);
 	return 0;
 }
 
-int renderer_set_mesh(struct renderer *r, const struct mesh *m)
+void renderer_set_vertex_format(struct renderer *r, enum vertex_format format)
+{
+	r->format = format;
+}
+
+int renderer_set_packed(struct renderer *r, const struct mesh_packed *m)
 {
 	bool uvs = material_needs_uvs(r->mat.features);
 	bool tangents = material_needs_tangents(r->mat.features);
-	const float *src[SHADER_ATTR_COUNT] = {m->positions, m->normals, uvs ? m->uvs : NULL,
-					       tangents ? m->tangents : NULL};
+	bool used[SHADER_ATTR_COUNT] = {true, true, uvs, tangents};
 	int ret = upload_indices(r, m);
 
-	if ((uvs && !m->uvs) || (tangents && !m->tangents))
+	r->drawn = m->format;
+	r->position_scale = m->position_scale;
+	if ((uvs && !m->arrays[MESH_UVS]) || (tangents && !m->arrays[MESH_TANGENTS]))
 		log_warn("render: the mesh lacks the UVs or tangents its material needs");
 	for (int a = 0; a < SHADER_ATTR_COUNT && !ret; a++) {
-		if (src[a]) {
-			ret = upload_attribute(r, m, a, src[a]);
+		if (used[a] && m->arrays[a]) {
+			ret = upload_attribute(r, m, a);
 		} else if (r->attr_bytes[a]) {
 			/* A feature no longer used gives its memory back. */
 			r->gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo[a]);
@@ -170,12 +189,26 @@ int renderer_set_mesh(struct renderer *r, const struct mesh *m)
 	return ret;
 }
 
+int renderer_set_mesh(struct renderer *r, const struct mesh *m)
+{
+	struct mesh_packed packed;
+	int ret = mesh_pack(m, r->format, &packed);
+
+	if (!ret)
+		ret = renderer_set_packed(r, &packed);
+	mesh_packed_release(&packed);
+	return ret;
+}
+
 /* repeat: the detail map tiles (glTF's default) and is mipmapped, so a
  * far, dense map does not shimmer; it has power-of-two sides for that.
- * The matcap and the ramp are read by direction and angle: clamped, no
- * mipmaps (the derivatives at a silhouette would blur the sharpest part),
- * so any size is legal in GLES2. */
-static int upload_texture(const struct gl *gl, GLuint *tex, const struct image *img, bool repeat)
+ * The ramp is read by angle: clamped, no mipmaps, so any size is legal in
+ * GLES2. The matcap is clamped, and mipmapped when asked
+ * (renderer_set_matcap_mipmaps): a model small on screen reads its whole
+ * disk in a few pixels; the shader reads one level finer than GL picks
+ * (shaders/matcap.frag). */
+static int upload_texture(const struct gl *gl, GLuint *tex, const struct image *img, bool repeat,
+			  bool mipmaps)
 {
 	if (!*tex)
 		gl->GenTextures(1, tex);
@@ -183,19 +216,41 @@ static int upload_texture(const struct gl *gl, GLuint *tex, const struct image *
 	gl->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
 	gl->TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, img->width, img->height, 0, GL_RGBA,
 		       GL_UNSIGNED_BYTE, img->rgba);
-	if (repeat)
+	if (mipmaps)
 		gl->GenerateMipmap(GL_TEXTURE_2D);
 	gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER,
-			  repeat ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
+			  mipmaps ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
 	gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
 	gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE);
 	gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE);
 	return gl->GetError() == GL_NO_ERROR ? 0 : -EIO;
 }
 
+static bool is_pot(int n)
+{
+	return n > 0 && !(n & (n - 1));
+}
+
+/* GLES2 mipmaps only power-of-two textures: another size is resampled to
+ * the nearest one first (the shipped matcaps are 256 x 256 already). */
 int renderer_set_matcap(struct renderer *r, const struct image *img)
 {
-	return upload_texture(r->gl, &r->matcap, img, false);
+	struct image pot = {0};
+	int ret;
+
+	if (!r->matcap_mipmaps || (is_pot(img->width) && is_pot(img->height)))
+		return upload_texture(r->gl, &r->matcap, img, false, r->matcap_mipmaps);
+	ret = texture_resample(img, texture_pot(img->width, 4096), texture_pot(img->height, 4096),
+			       &pot);
+	if (!ret)
+		ret = upload_texture(r->gl, &r->matcap, &pot, false, true);
+	image_release(&pot);
+	return ret;
+}
+
+void renderer_set_matcap_mipmaps(struct renderer *r, bool mipmaps)
+{
+	r->matcap_mipmaps = mipmaps;
 }
 
 void renderer_use_matcap_texture(struct renderer *r, GLuint tex)
@@ -222,11 +277,11 @@ int renderer_set_material(struct renderer *r, const struct material *m)
 	memset(&r->mat.ramp, 0, sizeof(r->mat.ramp));
 	memset(&r->mat.height, 0, sizeof(r->mat.height));
 	if (m->features & MATERIAL_DETAIL)
-		ret = upload_texture(r->gl, &r->detail, &m->detail, true);
+		ret = upload_texture(r->gl, &r->detail, &m->detail, true, true);
 	else
 		drop_texture(r->gl, &r->detail);
 	if (!ret && (m->features & MATERIAL_RAMP))
-		ret = upload_texture(r->gl, &r->ramp, &m->ramp, false);
+		ret = upload_texture(r->gl, &r->ramp, &m->ramp, false, false);
 	else if (!ret)
 		drop_texture(r->gl, &r->ramp);
 	if (ret)
@@ -357,18 +412,26 @@ static void draw_with(struct renderer *r, const struct program *p, const struct 
 	 * already the inverse transpose. Scales and mirrors were baked into
 	 * the mesh in double precision at load time. */
 	mat3_from_mat4(nm, mv);
+	/* int16 positions are in units of the mesh's largest coordinate:
+	 * the model-view scales them back (the normals' matrix stays). */
+	for (int i = 0; i < 12; i++)
+		mv[i] *= r->position_scale;
 	gl->UseProgram(p->id);
 	gl->UniformMatrix4fv(p->modelview, 1, GL_FALSE, mv);
 	gl->UniformMatrix4fv(p->projection, 1, GL_FALSE, proj);
 	gl->UniformMatrix3fv(p->normal_matrix, 1, GL_FALSE, nm);
 	set_uniforms(r, p);
 	for (int a = 0; a < SHADER_ATTR_COUNT; a++) {
+		bool int16 = mesh_array_int16(r->drawn, (enum mesh_array)a);
+
 		if (!r->attr_bytes[a]) {
 			gl->DisableVertexAttribArray((GLuint)a);
 			continue;
 		}
 		gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo[a]);
-		gl->VertexAttribPointer((GLuint)a, attr_size[a], GL_FLOAT, GL_FALSE, 0, NULL);
+		gl->VertexAttribPointer((GLuint)a, mesh_array_components((enum mesh_array)a),
+					int16 ? GL_SHORT : GL_FLOAT, int16 ? GL_TRUE : GL_FALSE, 0,
+					NULL);
 		gl->EnableVertexAttribArray((GLuint)a);
 	}
 	if (r->indexed) {
@@ -439,4 +502,6 @@ void renderer_get_stats(const struct renderer *r, struct renderer_stats *out)
 	out->program = p[0] ? p[0]->id : 0;
 	out->lit_program = p[1] ? p[1]->id : 0;
 	out->highp = r->highp;
+	out->matcap_mipmaps = r->matcap_mipmaps;
+	out->format = r->drawn;
 }

@@ -7,6 +7,7 @@
 #include "scene/material.h"
 #include "util/math3d.h"
 #include "scene/mesh.h"
+#include "scene/mesh_pack.h"
 #include "render/shading.h"
 
 #include <stdbool.h>
@@ -29,6 +30,16 @@ void renderer_free(struct renderer *r);
  * read. Without it the renderer draws the plain matcap. */
 int renderer_set_material(struct renderer *r, const struct material *m);
 int renderer_set_mesh(struct renderer *r, const struct mesh *m);
+/* The same from arrays already in the GPU's format (a mapped cache entry),
+ * uploaded as they are; m may be unmapped once it returns. */
+int renderer_set_packed(struct renderer *r, const struct mesh_packed *m);
+
+/* How renderer_set_mesh stores the vertices (scene/mesh_pack.h); the
+ * default: compact. */
+void renderer_set_vertex_format(struct renderer *r, enum vertex_format format);
+/* Whether renderer_set_matcap mipmaps the matcap (a size that is not a
+ * power of two is resampled to the nearest one first); the default: no. */
+void renderer_set_matcap_mipmaps(struct renderer *r, bool mipmaps);
 int renderer_set_matcap(struct renderer *r, const struct image *img);
 /* Draw with tex (owned by the caller, e.g. the live camera's) as the
  * matcap; 0: back to the renderer's own image texture. */
@@ -44,12 +55,14 @@ void renderer_draw(struct renderer *r, const struct view *v, int width, int heig
 
 /* What the renderer holds now, for tests and the bench. */
 struct renderer_stats {
-	int attributes;	    /* vertex arrays uploaded and enabled when drawing */
-	long vertex_bytes;  /* their size in GPU memory */
-	int textures;	    /* bound when drawing: the matcap, detail map, ramp */
-	GLuint program;	    /* the matcap program (0: none), or the lit one alone */
-	GLuint lit_program; /* when lit = beside, the second one; else 0 */
-	bool highp;	    /* every float highp (renderer_set_precision) */
+	int attributes;		   /* vertex arrays uploaded and enabled when drawing */
+	long vertex_bytes;	   /* their size in GPU memory */
+	int textures;		   /* bound when drawing: the matcap, detail map, ramp */
+	GLuint program;		   /* the matcap program (0: none), or the lit one alone */
+	GLuint lit_program;	   /* when lit = beside, the second one; else 0 */
+	bool highp;		   /* every float highp (renderer_set_precision) */
+	bool matcap_mipmaps;	   /* renderer_set_matcap_mipmaps */
+	enum vertex_format format; /* of the arrays uploaded */
 };
 void renderer_get_stats(const struct renderer *r, struct renderer_stats *out);
 

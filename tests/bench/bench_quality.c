@@ -10,7 +10,7 @@
  * Figures are printed, never asserted.
  *
  * usage: bench_quality OUTDIR SCRATCH [--frames N] [--size WxH]
- *                      [--backend osmesa|egl-headless]
+ *                      [--backend osmesa|egl-headless] [--only TEXT]
  * (SCRATCH gets the detail map it draws with). */
 #include "render/bake.h"
 #include "bench_quality.h"
@@ -36,13 +36,18 @@ static const int matcap_sizes[] = {64, 128, 256, 512, 1024};
 static const int ss_factors[] = {1, 2, 4};
 
 const struct look looks[LOOKS] = {
-    {"built-in knot (16k), view", KNOT_16K, SHADING_VIEW, SHADING_NORMAL, false, false, false},
-    {"knot 100k, view", KNOT_100K, SHADING_VIEW, SHADING_NORMAL, false, false, false},
-    {"knot 1M, view", KNOT_1M, SHADING_VIEW, SHADING_NORMAL, false, false, false},
-    {"knot 100k, sem", KNOT_100K, SHADING_SEM_FRAGMENT, SHADING_SEM_VERTEX, false, false, false},
-    {"knot 100k, iridescence", KNOT_100K, SHADING_VIEW, SHADING_NORMAL, true, false, false},
-    {"knot 100k, detail map", KNOT_100K, SHADING_VIEW, SHADING_NORMAL, false, true, false},
-    {"knot 100k, lit", KNOT_100K, SHADING_VIEW, SHADING_VIEW, false, false, true},
+    {"built-in knot (16k), view", KNOT_16K, SHADING_VIEW, SHADING_NORMAL, false, false, false, 0},
+    {"knot 100k, view", KNOT_100K, SHADING_VIEW, SHADING_NORMAL, false, false, false, 0},
+    {"knot 1M, view", KNOT_1M, SHADING_VIEW, SHADING_NORMAL, false, false, false, 0},
+    {"knot 100k, sem", KNOT_100K, SHADING_SEM_FRAGMENT, SHADING_SEM_VERTEX, false, false, false, 0},
+    {"knot 100k, iridescence", KNOT_100K, SHADING_VIEW, SHADING_NORMAL, true, false, false, 0},
+    {"knot 100k, detail map", KNOT_100K, SHADING_VIEW, SHADING_NORMAL, false, true, false, 0},
+    {"knot 100k, lit", KNOT_100K, SHADING_VIEW, SHADING_VIEW, false, false, true, 0},
+    /* Small on screen: the whole matcap disk in a few pixels, where an
+     * unfiltered matcap aliases. */
+    {"knot 100k, view, 128 px", KNOT_100K, SHADING_VIEW, SHADING_NORMAL, false, false, false, 128},
+    {"knot 100k, sem, 128 px", KNOT_100K, SHADING_SEM_FRAGMENT, SHADING_SEM_VERTEX, false, false,
+     false, 128},
 };
 
 static void read_load(char *out, size_t size)
@@ -93,6 +98,8 @@ static struct setting *add(struct bench *b, int l, const char *label)
 			      .highp = b->highp_default,
 			      .lod = b->lod_default,
 			      .matcap = DEFAULT_MATCAP,
+			      .mipmaps = b->mipmaps_default,
+			      .format = b->format_default,
 			      .ss = 1};
 	snprintf(s->label, sizeof(s->label), "%s", label);
 	return s;
@@ -107,7 +114,13 @@ static void plan(struct bench *b, int l)
 	char label[40];
 
 	s->is_reference = true, s->highp = true, s->lod = 0, s->matcap = 1024, s->ss = 4;
+	s->mipmaps = true, s->format = VERTEX_FLOAT32;
 	add(b, l, "defaults")->is_default = true;
+	add(b, l, b->format_default == VERTEX_COMPACT ? "float32 vertices" : "int16 vertices")
+	    ->format = b->format_default == VERTEX_COMPACT ? VERTEX_FLOAT32 : VERTEX_COMPACT;
+	if (!lk->lit)
+		add(b, l, b->mipmaps_default ? "matcap unfiltered" : "matcap mipmapped")->mipmaps =
+		    !b->mipmaps_default;
 	if (lk->cheaper != lk->mode) {
 		snprintf(label, sizeof(label), "mode %s", shading_mode_name(lk->cheaper));
 		add(b, l, label)->mode = lk->cheaper;
@@ -220,19 +233,25 @@ static void image_error(const struct image *a, const struct image *ref, const ui
 /* Draw one setting WARMUP + n times (the first compile the shaders and
  * settle the caches; not counted), adding the n times to s->times; with
  * frame set, read the last frame back at the display's size. */
-static int measure(struct bench *b, const struct material *mat, const struct mesh *mesh,
-		   struct setting *s, int n, struct image *frame)
+static int measure(struct bench *b, const struct look *lk, const struct material *mat,
+		   const struct mesh *mesh, struct setting *s, int n, struct image *frame)
 {
 	int k = ss_index(s->ss);
 	struct display *d = b->display[k];
 	struct renderer *r = b->renderer[k];
 	struct view v = resting_view();
+	struct renderer_stats stats;
 	struct image big = {0};
 	/* After another display (another context and frame size), llvmpipe
 	 * takes a few frames to settle: more of them are not counted. */
 	int warmup = k == b->last_display ? WARMUP : WARMUP_SWITCH;
+
+	int w = lk->small ? lk->small * s->ss : d->width;
+	int h = lk->small ? lk->small * s->ss : d->height;
 	int ret;
 
+	renderer_set_vertex_format(r, s->format);
+	renderer_set_matcap_mipmaps(r, s->mipmaps);
 	ret = d->begin_frame(d);
 	if (!ret)
 		ret = renderer_set_material(r, mat);
@@ -244,12 +263,16 @@ static int measure(struct bench *b, const struct material *mat, const struct mes
 		ret = renderer_set_precision(r, s->highp);
 	if (!ret)
 		ret = renderer_set_mode(r, s->mode, false);
+	renderer_get_stats(r, &stats);
+	s->vertex_bytes = stats.vertex_bytes;
 	b->last_display = k;
 	for (int i = -warmup; i < n && !ret; i++) {
 		double t = now_ms();
 
 		ret = d->begin_frame(d);
-		renderer_draw(r, &v, d->width, d->height);
+		/* A small scene is drawn in the frame's corner (the viewport):
+		 * the rest is background, which the error leaves out. */
+		renderer_draw(r, &v, w, h);
 		if (!ret)
 			ret = d->present(d);
 		if (i >= 0 && s->timed < MAX_FRAMES)
@@ -293,7 +316,8 @@ static int load_material(struct bench *b, const struct look *lk, const struct me
 static bool same_drawing(const struct look *lk, const struct setting *a, const struct setting *b)
 {
 	return a->triangles == b->triangles && a->mode == b->mode && a->highp == b->highp &&
-	       (lk->lit || a->matcap == b->matcap) && a->ss == b->ss;
+	       (lk->lit || (a->matcap == b->matcap && a->mipmaps == b->mipmaps)) &&
+	       a->ss == b->ss && a->format == b->format;
 }
 
 int bench_rounds_frames(const struct bench *b)
@@ -359,7 +383,7 @@ static int run_look(struct bench *b, int l)
 		for (int k = 0; k < 3; k++)
 			for (int i = 0; i < n && !ret; i++)
 				if (s[i].same_as < 0 && s[i].ss == ss_factors[k])
-					ret = measure(b, &mat, &m[mesh_of[i]], &s[i],
+					ret = measure(b, lk, &mat, &m[mesh_of[i]], &s[i],
 						      bench_rounds_frames(b),
 						      round ? NULL : &frames[i]);
 	for (int i = 0; i < n && !ret; i++) {
@@ -370,6 +394,7 @@ static int run_look(struct bench *b, int l)
 		/* frames[0] is the reference's */
 		image_error(&frames[from], &frames[0], bg, &s[i].psnr, &s[i].off);
 		s[i].ms = s[from].ms, s[i].p90 = s[from].p90;
+		s[i].vertex_bytes = s[from].vertex_bytes;
 		fprintf(stderr, "  %s / %s: %.1f ms, %.1f dB\n", lk->name, s[i].label, s[i].ms,
 			s[i].psnr);
 	}
@@ -421,6 +446,8 @@ static int parse_args(struct bench *b, int argc, char **argv)
 		else if (!strcmp(argv[i], "--size") &&
 			 sscanf(argv[i + 1], "%dx%d", &b->width, &b->height) == 2)
 			continue;
+		else if (!strcmp(argv[i], "--only"))
+			b->only = argv[i + 1];
 		else if (!strcmp(argv[i], "--backend"))
 			b->egl = !strcmp(argv[i + 1], "egl-headless");
 		else
@@ -447,6 +474,9 @@ static int open_displays(struct bench *b)
 	}
 	renderer_get_stats(b->renderer[0], &stats);
 	b->highp_default = stats.highp;
+	/* The renderer's own defaults, as the kiosk draws. */
+	b->mipmaps_default = stats.matcap_mipmaps;
+	b->format_default = stats.format;
 	return 0;
 }
 
@@ -458,7 +488,7 @@ int main(int argc, char **argv)
 	log_set_level(LOG_WARN);
 	if (parse_args(&b, argc, argv)) {
 		fprintf(stderr, "usage: bench_quality OUTDIR SCRATCH [--frames N] [--size WxH] "
-				"[--backend osmesa|egl-headless]\n");
+				"[--backend osmesa|egl-headless] [--only TEXT]\n");
 		return 2;
 	}
 	snprintf(b.detail_path, sizeof(b.detail_path), "%s/detail.png", b.scratch);
@@ -467,6 +497,8 @@ int main(int argc, char **argv)
 		ret = bake_matcap(BAKE_GOLD, matcap_sizes[i], &b.matcap[i]);
 	read_load(b.load[0], sizeof(b.load[0]));
 	for (size_t l = 0; l < LOOKS && !ret; l++) {
+		if (b.only && !strstr(looks[l].name, b.only))
+			continue;
 		plan(&b, (int)l);
 		ret = run_look(&b, (int)l);
 		mark_front(b.settings[l], b.count[l]);

@@ -32,16 +32,20 @@ struct look {
 	enum model model;
 	enum shading_mode mode, cheaper; /* the default, and the cheaper variant */
 	bool iridescence, detail, lit;
+	int small; /* drawn in small x small pixels of the frame; 0: all of it */
 };
 
 /* The scenes, in the report's order. */
-#define LOOKS 7
+#define LOOKS 9
 extern const struct look looks[LOOKS];
 
 struct setting {
 	char label[40];
 	enum shading_mode mode;
 	bool highp, is_default, is_reference;
+	bool mipmaps;		   /* the matcap's (renderer_set_matcap_mipmaps) */
+	enum vertex_format format; /* renderer_set_vertex_format */
+	long vertex_bytes;	   /* measured: renderer_get_stats */
 	double lod;
 	int matcap, ss;
 	/* measured */
@@ -65,8 +69,11 @@ struct bench {
 	int count[LOOKS];
 	double lod_default;
 	bool highp_default; /* the renderer's own choice for this GL */
-	char load[2][64];   /* /proc/loadavg at the start and the end */
-	int last_display;   /* the one measure() drew with last */
+	bool mipmaps_default;
+	enum vertex_format format_default;
+	const char *only; /* run only the scenes whose name has this; NULL: all */
+	char load[2][64]; /* /proc/loadavg at the start and the end */
+	int last_display; /* the one measure() drew with last */
 };
 
 /* Frames per round for b->frames in all. */

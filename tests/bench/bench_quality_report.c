@@ -63,7 +63,11 @@ static void describe_method(FILE *f, const struct bench *b)
 		"and the share of pixels off by more than %d/255 in a\nchannel. "
 		"Supersampling is drawn at 2x or 4x the size and box-filtered on the CPU "
 		"(OSMesa\nand GLES2 FBOs have no multisampling); the time leaves the filter "
-		"out. The matcap is the gold\none, baked at each size.\n\n"
+		"out. The matcap is the gold\none, baked at each size. The reference's matcap is "
+		"mipmapped: at 4x a 1024 matcap is still\nminified several texels a sample on a "
+		"thin part, and unfiltered it aliases too; its vertices are\nfloat32. A scene "
+		"named \"128 px\" draws the model in a 128x128 corner of the frame: small on\n"
+		"screen. \"vertex MB\": the vertex arrays uploaded (renderer_get_stats).\n\n"
 		"Front: a setting is on it when no other is as accurate (within %.2f dB) and "
 		"%d%% faster, or\nmore accurate and as fast (within %d%%): differences "
 		"inside the noise decide nothing.\n\n",
@@ -75,8 +79,8 @@ static void describe_method(FILE *f, const struct bench *b)
 static void write_table(FILE *f, const struct look *lk, const struct setting *s, int n)
 {
 	fprintf(f,
-		"### %s\n\n| setting | triangles | median ms | p90 ms | PSNR dB | "
-		"off > %d/255 | front |\n|---|---|---|---|---|---|---|\n",
+		"### %s\n\n| setting | triangles | vertex MB | median ms | p90 ms | PSNR dB | "
+		"off > %d/255 | front |\n|---|---|---|---|---|---|---|---|\n",
 		lk->name, OFF_TOL);
 	for (int i = 0; i < n; i++) {
 		const char *bold = s[i].is_default ? "**" : "";
@@ -87,13 +91,14 @@ static void write_table(FILE *f, const struct look *lk, const struct setting *s,
 		else
 			snprintf(psnr, sizeof(psnr), "%.1f", s[i].psnr);
 		if (s[i].same_as >= 0) {
-			fprintf(f, "| %s%s%s | %u | as %s | | | | %s |\n", bold, s[i].label, bold,
-				s[i].triangles, s[s[i].same_as].label, s[i].front ? "yes" : "");
+			fprintf(f, "| %s%s%s | %u | %.2f | as %s | | | | %s |\n", bold, s[i].label,
+				bold, s[i].triangles, s[i].vertex_bytes / 1e6,
+				s[s[i].same_as].label, s[i].front ? "yes" : "");
 			continue;
 		}
-		fprintf(f, "| %s%s%s | %u | %.1f | %.1f | %s | %.2f%% | %s |\n", bold, s[i].label,
-			bold, s[i].triangles, s[i].ms, s[i].p90, psnr, 100.0 * s[i].off,
-			s[i].front ? "yes" : "");
+		fprintf(f, "| %s%s%s | %u | %.2f | %.1f | %.1f | %s | %.2f%% | %s |\n", bold,
+			s[i].label, bold, s[i].triangles, s[i].vertex_bytes / 1e6, s[i].ms,
+			s[i].p90, psnr, 100.0 * s[i].off, s[i].front ? "yes" : "");
 	}
 	fprintf(f, "\n");
 }
@@ -243,6 +248,8 @@ int bench_write_report(struct bench *b)
 						b->settings[l][i].front ? "yes" : "NO");
 		fprintf(md, ".\n\n");
 		for (size_t l = 0; l < LOOKS; l++) {
+			if (!b->count[l])
+				continue; /* left out (--only) */
 			write_table(md, &looks[l], b->settings[l], b->count[l]);
 			write_data(dat, front, b->settings[l], b->count[l]);
 			fprintf(dat, "# %s\n", looks[l].name);

@@ -98,7 +98,9 @@ static int check_case(struct display *d, const struct scene_case *c, const struc
 	struct renderer_stats st;
 	struct view v = {.orientation = quat_identity()};
 	bool uvs = c->features & MATERIAL_DETAIL, tangents = c->features & MATERIAL_DETAIL_NORMAL;
-	long bytes = (long)mesh->vertex_count * (24 + (uvs ? 8 : 0) + (tangents ? 16 : 0));
+	/* The default vertex format: int16 positions and normals, float UVs,
+	 * int16 tangents (src/render/render.c). */
+	long bytes = (long)mesh->vertex_count * (12 + (uvs ? 8 : 0) + (tangents ? 8 : 0));
 	int textures = (c->lit != LIT_ON) + uvs + ((c->features & MATERIAL_RAMP) != 0);
 	int bad = 0;
 
@@ -161,7 +163,7 @@ static int check_lod(struct display *d, const struct image *matcap)
 	printf("  %u of %u vertices, %ld bytes uploaded\n", lod.vertices_after, lod.vertices_before,
 	       st.vertex_bytes);
 	bad = !(lod.vertices_after < lod.vertices_before && st.attributes == 2 &&
-		st.vertex_bytes == (long)lod.vertices_after * 24);
+		st.vertex_bytes == (long)lod.vertices_after * 12);
 	if (bad)
 		fprintf(stderr, "level of detail: %d arrays of %ld bytes for %u vertices\n",
 			st.attributes, st.vertex_bytes, lod.vertices_after);

@@ -2,7 +2,7 @@
  *   mkmodels DIR          sphere, loader variants, the malformed set, the
  *                         corpus test's torus knots, and the material maps
  *                         and models
- *   mkmodels DIR --bench  also torus knots of about 100k and 1M triangles */
+ *   mkmodels DIR --bench  also torus knots of about 10k, 100k and 1M triangles */
 #include "gltf_write.h"
 #include "maps.h"
 #include "scene/mesh.h"
@@ -125,19 +125,22 @@ static int write_corpus(const char *dir)
 
 static int write_bench(const char *dir)
 {
-	struct mesh k100, k1m;
+	struct mesh k10, k100, k1m;
 	/* With UVs, for the material features' figures (a scene that does
 	 * not use them never uploads them). */
 	struct gltf_write_opts o = {
 	    .index_bytes = 4, .with_normals = 1, .bad_index = -1, .with_uvs = 1};
 	int bad = 0;
 
-	if (mesh_torus_knot(&k100, 1024, 49) || mesh_torus_knot(&k1m, 4096, 122))
+	if (mesh_torus_knot(&k10, 256, 20) || mesh_torus_knot(&k100, 1024, 49) ||
+	    mesh_torus_knot(&k1m, 4096, 122))
 		return 1;
+	bad |= put(dir, "knot-10k.glb", &k10, o);
 	bad |= put(dir, "knot-100k.glb", &k100, o);
 	bad |= put(dir, "knot-1m.glb", &k1m, o);
 	printf("knot-100k.glb %u triangles, knot-1m.glb %u triangles\n", k100.index_count / 3,
 	       k1m.index_count / 3);
+	mesh_release(&k10);
 	mesh_release(&k100);
 	mesh_release(&k1m);
 	return bad;

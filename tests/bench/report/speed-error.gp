@@ -6,9 +6,9 @@ dat = dir."/speed-error.dat"
 front = dir."/speed-error-front.dat"
 scenes = int(system("grep -c '^# ' ".dat))
 
-set terminal pngcairo size 1600,880 font ",9"
+set terminal pngcairo size 1600,1320 font ",9"
 set output dir."/speed-error.png"
-set multiplot layout 2,4 title "Median ms per frame (log) against PSNR (dB) to the highest quality: the front joined, the defaults circled (tests/bench/report/speed-error.md)"
+set multiplot layout 3,3 title "Median ms per frame (log) against PSNR (dB) to the highest quality: the front joined, the defaults circled (tests/bench/report/speed-error.md)"
 set logscale x
 set xlabel "ms per frame"
 set ylabel "PSNR dB"

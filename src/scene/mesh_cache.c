@@ -1,0 +1,491 @@
+#include "scene/mesh_cache.h"
+#include "util/log.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+/* Changed whenever the layout or the preparation changes: an entry of
+ * another version is stale. */
+#define CACHE_VERSION  1
+#define CACHE_SUFFIX   ".mkmesh"
+#define MATERIAL_WORDS 16
+
+static const char cache_magic[8] = {'M', 'K', 'M', 'E', 'S', 'H', '\r', '\n'};
+
+/* On disk, in the host's byte order (an entry is never moved between
+ * machines; one of another order fails the header's checksum). */
+struct cache_header {
+	char magic[8];
+	uint32_t version, header_size;
+	uint64_t content, settings;
+	uint32_t vertex_count, index_count;
+	uint32_t format; /* enum vertex_format */
+	uint32_t arrays; /* bit a: array a is present */
+	float position_scale;
+	float material[MATERIAL_WORDS];
+	uint32_t width, height, reserved;
+	uint64_t payload_size, payload_hash;
+	uint64_t header_hash; /* of every byte before it */
+};
+
+/* The payload starts 8-aligned, so its arrays can be read in place. */
+_Static_assert(sizeof(struct cache_header) % 8 == 0, "the header keeps the payload aligned");
+
+struct mesh_cache_entry {
+	void *map;
+	size_t size;
+	struct mesh_packed mesh;
+	struct mesh_material material;
+	struct mesh_cache_key key;
+};
+
+static void material_to_words(const struct mesh_material *m, float w[MATERIAL_WORDS])
+{
+	const float v[MATERIAL_WORDS] = {m->present,
+					 m->base_color[0],
+					 m->base_color[1],
+					 m->base_color[2],
+					 m->iridescence,
+					 m->iridescence_factor,
+					 m->iridescence_ior,
+					 m->thickness_min,
+					 m->thickness_max,
+					 m->has_normal_map,
+					 m->has_occlusion_map,
+					 m->has_thickness_map,
+					 m->normal_scale,
+					 m->occlusion_strength,
+					 0,
+					 0};
+
+	memcpy(w, v, sizeof(v));
+}
+
+static void material_from_words(const float w[MATERIAL_WORDS], struct mesh_material *m)
+{
+	mesh_material_default(m);
+	m->present = w[0] != 0;
+	memcpy(m->base_color, w + 1, sizeof(m->base_color));
+	m->iridescence = w[4] != 0;
+	m->iridescence_factor = w[5], m->iridescence_ior = w[6];
+	m->thickness_min = w[7], m->thickness_max = w[8];
+	m->has_normal_map = w[9] != 0, m->has_occlusion_map = w[10] != 0;
+	m->has_thickness_map = w[11] != 0;
+	m->normal_scale = w[12], m->occlusion_strength = w[13];
+}
+
+static size_t padded(size_t n)
+{
+	return (n + 7) & ~(size_t)7;
+}
+
+/* The payload's layout: each present array, then the indices, each
+ * starting on 8 bytes. Returns its size, 0 when it would overflow. */
+static uint64_t payload_layout(const struct cache_header *h, uint64_t offset[MESH_ARRAYS + 1])
+{
+	uint64_t total = 0;
+
+	for (int a = 0; a < MESH_ARRAYS; a++) {
+		offset[a] = total;
+		if (h->arrays & (1u << a))
+			total += padded(
+			    (uint64_t)h->vertex_count *
+			    mesh_array_stride((enum vertex_format)h->format, (enum mesh_array)a));
+	}
+	offset[MESH_ARRAYS] = total;
+	return total + padded((uint64_t)h->index_count * 4);
+}
+
+static bool header_sane(const struct cache_header *h, size_t size)
+{
+	return size >= sizeof(*h) && !memcmp(h->magic, cache_magic, 8) &&
+	       h->version == CACHE_VERSION && h->header_size == sizeof(*h) &&
+	       h->header_hash ==
+		   mesh_cache_hash(h, offsetof(struct cache_header, header_hash), 0) &&
+	       h->format <= VERTEX_COMPACT && (h->arrays & 3u) == 3u &&
+	       !(h->arrays >> MESH_ARRAYS) && h->index_count % 3 == 0 && h->index_count &&
+	       h->vertex_count && h->position_scale > 0.0f && h->position_scale <= 1e30f;
+}
+
+int mesh_cache_parse(const void *data, size_t size, const struct mesh_cache_key *key,
+		     struct mesh_packed *out, struct mesh_material *material,
+		     struct mesh_cache_key *found)
+{
+	struct cache_header h;
+	uint64_t offset[MESH_ARRAYS + 1];
+	const char *payload = (const char *)data + sizeof(h);
+	const uint32_t *idx;
+
+	memset(out, 0, sizeof(*out));
+	if (size < sizeof(h))
+		return -EBADMSG;
+	memcpy(&h, data, sizeof(h));
+	if (!header_sane(&h, size) ||
+	    (key && (h.content != key->content || h.settings != key->settings)))
+		return -EBADMSG;
+	if (payload_layout(&h, offset) != h.payload_size || h.payload_size != size - sizeof(h) ||
+	    mesh_cache_hash(payload, (size_t)h.payload_size, h.content) != h.payload_hash)
+		return -EBADMSG;
+	/* The checksum finds damage; the index range is what keeps the GPU
+	 * inside the arrays, so it is checked as well. */
+	idx = (const uint32_t *)(const void *)(payload + offset[MESH_ARRAYS]);
+	for (uint32_t i = 0; i < h.index_count; i++)
+		if (idx[i] >= h.vertex_count)
+			return -EBADMSG;
+	out->format = (enum vertex_format)h.format;
+	out->vertex_count = h.vertex_count;
+	out->index_count = h.index_count;
+	out->position_scale = h.position_scale;
+	for (int a = 0; a < MESH_ARRAYS; a++)
+		out->arrays[a] = h.arrays & (1u << a) ? payload + offset[a] : NULL;
+	out->indices = idx;
+	if (material)
+		material_from_words(h.material, material);
+	if (found)
+		*found = (struct mesh_cache_key){h.content, h.settings, h.width, h.height};
+	return 0;
+}
+
+void mesh_cache_reseal(void *data, size_t size)
+{
+	struct cache_header h;
+
+	if (size < sizeof(h))
+		return;
+	memcpy(&h, data, sizeof(h));
+	h.payload_hash =
+	    mesh_cache_hash((const char *)data + sizeof(h), size - sizeof(h), h.content);
+	h.header_hash = mesh_cache_hash(&h, offsetof(struct cache_header, header_hash), 0);
+	memcpy(data, &h, sizeof(h));
+}
+
+static int entry_path(const char *dir, const struct mesh_cache_key *key, char *buf, size_t size)
+{
+	int n = snprintf(buf, size, "%s/%016llx-%016llx" CACHE_SUFFIX, dir,
+			 (unsigned long long)key->content, (unsigned long long)key->settings);
+
+	return n < 0 || (size_t)n >= size ? -ENAMETOOLONG : 0;
+}
+
+static int map_entry(const char *path, struct mesh_cache_entry *e)
+{
+	struct stat st;
+	int fd = open(path, O_RDONLY | O_CLOEXEC), ret = 0;
+
+	if (fd < 0)
+		return errno == ENOENT ? -ENOENT : -errno;
+	if (fstat(fd, &st) || !S_ISREG(st.st_mode) ||
+	    st.st_size < (off_t)sizeof(struct cache_header)) {
+		ret = -EBADMSG;
+		goto out;
+	}
+	e->size = (size_t)st.st_size;
+	e->map = mmap(NULL, e->size, PROT_READ, MAP_PRIVATE, fd, 0);
+	if (e->map == MAP_FAILED) {
+		e->map = NULL;
+		ret = -errno;
+		goto out;
+	}
+	/* Read once, front to back: ask for it all now. */
+	madvise(e->map, e->size, MADV_WILLNEED);
+	/* Used now: the trimming removes the entries used least lately. */
+	futimens(fd, NULL);
+out:
+	close(fd);
+	return ret;
+}
+
+int mesh_cache_open(const char *dir, const struct mesh_cache_key *key,
+		    struct mesh_cache_entry **out)
+{
+	struct mesh_cache_entry *e = calloc(1, sizeof(*e));
+	char path[PATH_MAX];
+	int ret = e ? entry_path(dir, key, path, sizeof(path)) : -ENOMEM;
+
+	*out = NULL;
+	if (!ret)
+		ret = map_entry(path, e);
+	if (!ret)
+		ret = mesh_cache_parse(e->map, e->size, key, &e->mesh, &e->material, &e->key);
+	if (ret == -EBADMSG) {
+		log_warn("%s: a damaged or stale cache entry, removed; the model is prepared again",
+			 path);
+		unlink(path);
+	}
+	if (ret) {
+		mesh_cache_entry_free(e);
+		return ret;
+	}
+	*out = e;
+	return 0;
+}
+
+const struct mesh_packed *mesh_cache_entry_mesh(const struct mesh_cache_entry *e)
+{
+	return &e->mesh;
+}
+
+const struct mesh_material *mesh_cache_entry_material(const struct mesh_cache_entry *e)
+{
+	return &e->material;
+}
+
+void mesh_cache_entry_evict(const struct mesh_cache_entry *e)
+{
+	/* A private mapping never written: dropping its pages loses nothing. */
+	madvise(e->map, e->size, MADV_DONTNEED);
+}
+
+const struct mesh_cache_key *mesh_cache_entry_key(const struct mesh_cache_entry *e)
+{
+	return &e->key;
+}
+
+void mesh_cache_entry_free(struct mesh_cache_entry *e)
+{
+	if (!e)
+		return;
+	if (e->map)
+		munmap(e->map, e->size);
+	free(e);
+}
+
+static int write_all(int fd, const void *data, size_t size)
+{
+	const char *p = data;
+
+	while (size) {
+		ssize_t n = write(fd, p, size);
+
+		if (n < 0 && errno == EINTR)
+			continue;
+		if (n <= 0)
+			return n < 0 ? -errno : -EIO;
+		p += n;
+		size -= (size_t)n;
+	}
+	return 0;
+}
+
+/* The payload in layout order, hashed as it goes. */
+static int write_payload(int fd, const struct cache_header *h, const struct mesh_packed *m,
+			 uint64_t *hash_out)
+{
+	uint64_t offset[MESH_ARRAYS + 1];
+	size_t size = (size_t)payload_layout(h, offset);
+	char *buf = malloc(size + 1);
+	int ret;
+
+	if (!buf)
+		return -ENOMEM;
+	memset(buf, 0, size);
+	for (int a = 0; a < MESH_ARRAYS; a++)
+		if (m->arrays[a])
+			memcpy(buf + offset[a], m->arrays[a],
+			       (size_t)m->vertex_count *
+				   mesh_array_stride(m->format, (enum mesh_array)a));
+	memcpy(buf + offset[MESH_ARRAYS], m->indices, (size_t)m->index_count * 4);
+	*hash_out = mesh_cache_hash(buf, size, h->content);
+	ret = write_all(fd, buf, size);
+	free(buf);
+	return ret;
+}
+
+static void fill_header(struct cache_header *h, const struct mesh_cache_key *key,
+			const struct mesh_packed *m, const struct mesh_material *material)
+{
+	uint64_t offset[MESH_ARRAYS + 1];
+
+	memset(h, 0, sizeof(*h));
+	memcpy(h->magic, cache_magic, 8);
+	h->version = CACHE_VERSION;
+	h->header_size = sizeof(*h);
+	h->content = key->content;
+	h->settings = key->settings;
+	h->width = key->width;
+	h->height = key->height;
+	h->vertex_count = m->vertex_count;
+	h->index_count = m->index_count;
+	h->format = m->format;
+	for (int a = 0; a < MESH_ARRAYS; a++)
+		h->arrays |= m->arrays[a] ? 1u << a : 0;
+	h->position_scale = m->position_scale;
+	material_to_words(material, h->material);
+	h->payload_size = payload_layout(h, offset);
+}
+
+static int make_dirs(const char *dir)
+{
+	char path[PATH_MAX];
+	size_t len = strlen(dir);
+
+	if (len >= sizeof(path))
+		return -ENAMETOOLONG;
+	memcpy(path, dir, len + 1);
+	for (char *p = path + 1; *p; p++) {
+		if (*p != '/')
+			continue;
+		*p = '\0';
+		if (mkdir(path, 0700) && errno != EEXIST)
+			return -errno;
+		*p = '/';
+	}
+	return mkdir(path, 0700) && errno != EEXIST ? -errno : 0;
+}
+
+struct cache_file {
+	char name[NAME_MAX + 1];
+	off_t size;
+	struct timespec used;
+};
+
+static int oldest_first(const void *a, const void *b)
+{
+	const struct timespec *x = &((const struct cache_file *)a)->used;
+	const struct timespec *y = &((const struct cache_file *)b)->used;
+
+	return x->tv_sec != y->tv_sec ? (x->tv_sec > y->tv_sec) - (x->tv_sec < y->tv_sec)
+				      : (x->tv_nsec > y->tv_nsec) - (x->tv_nsec < y->tv_nsec);
+}
+
+/* Only the cache's own entries count and go; anything else in the
+ * directory is left alone. */
+static void trim(const char *dir, uint64_t max_bytes)
+{
+	DIR *d = opendir(dir);
+	struct cache_file *files = NULL;
+	size_t count = 0, cap = 0;
+	uint64_t total = 0;
+	struct dirent *de;
+
+	while (d && (de = readdir(d))) {
+		size_t len = strlen(de->d_name);
+		struct stat st;
+		struct cache_file *grown;
+
+		if (len <= strlen(CACHE_SUFFIX) ||
+		    strcmp(de->d_name + len - strlen(CACHE_SUFFIX), CACHE_SUFFIX) ||
+		    fstatat(dirfd(d), de->d_name, &st, AT_SYMLINK_NOFOLLOW) || !S_ISREG(st.st_mode))
+			continue;
+		if (count == cap) {
+			cap = cap ? cap * 2 : 16;
+			grown = realloc(files, cap * sizeof(*files));
+			if (!grown)
+				break;
+			files = grown;
+		}
+		snprintf(files[count].name, sizeof(files[count].name), "%s", de->d_name);
+		files[count].size = st.st_size;
+		files[count].used = st.st_mtim;
+		total += (uint64_t)st.st_size;
+		count++;
+	}
+	if (files)
+		qsort(files, count, sizeof(*files), oldest_first);
+	for (size_t i = 0; d && i < count && total > max_bytes; i++)
+		if (!unlinkat(dirfd(d), files[i].name, 0))
+			total -= (uint64_t)files[i].size;
+	free(files);
+	if (d)
+		closedir(d);
+}
+
+int mesh_cache_write(const char *dir, const struct mesh_cache_key *key, const struct mesh_packed *m,
+		     const struct mesh_material *material, uint64_t max_bytes)
+{
+	char tmp[PATH_MAX], path[PATH_MAX];
+	struct cache_header h;
+	int fd = -1, ret = make_dirs(dir);
+
+	if (!ret)
+		ret = entry_path(dir, key, path, sizeof(path));
+	if (!ret && snprintf(tmp, sizeof(tmp), "%s/.entry-XXXXXX", dir) >= (int)sizeof(tmp))
+		ret = -ENAMETOOLONG;
+	if (!ret && (fd = mkostemp(tmp, O_CLOEXEC)) < 0)
+		ret = -errno;
+	if (ret)
+		goto out;
+	fill_header(&h, key, m, material);
+	/* The header last, once the payload's checksum is known. */
+	ret = lseek(fd, (off_t)sizeof(h), SEEK_SET) < 0 ? -errno : 0;
+	if (!ret)
+		ret = write_payload(fd, &h, m, &h.payload_hash);
+	h.header_hash = mesh_cache_hash(&h, offsetof(struct cache_header, header_hash), 0);
+	if (!ret)
+		ret = pwrite(fd, &h, sizeof(h), 0) == (ssize_t)sizeof(h) ? 0 : -EIO;
+	if (!ret && fsync(fd))
+		ret = -errno;
+	if (close(fd) && !ret)
+		ret = -errno;
+	fd = -1;
+	if (!ret && rename(tmp, path))
+		ret = -errno;
+	if (ret)
+		unlink(tmp);
+	else
+		trim(dir, max_bytes);
+out:
+	if (ret)
+		log_warn("%s: cannot write the mesh cache (%s); the next start prepares the "
+			 "model again",
+			 dir, strerror(-ret));
+	return ret;
+}
+
+struct mesh_cache_writer {
+	pthread_t thread;
+	char dir[PATH_MAX];
+	struct mesh_cache_key key;
+	struct mesh_packed mesh;
+	struct mesh_material material;
+	uint64_t max_bytes;
+};
+
+static void *write_entry(void *arg)
+{
+	struct mesh_cache_writer *w = arg;
+
+	mesh_cache_write(w->dir, &w->key, &w->mesh, &w->material, w->max_bytes);
+	mesh_packed_release(&w->mesh);
+	return NULL;
+}
+
+struct mesh_cache_writer *mesh_cache_write_async(const char *dir, const struct mesh_cache_key *key,
+						 struct mesh_packed *m,
+						 const struct mesh_material *material,
+						 uint64_t max_bytes)
+{
+	struct mesh_cache_writer *w = calloc(1, sizeof(*w));
+
+	if (w && snprintf(w->dir, sizeof(w->dir), "%s", dir) < (int)sizeof(w->dir)) {
+		w->key = *key;
+		w->mesh = *m;
+		w->material = *material;
+		w->max_bytes = max_bytes;
+		memset(m, 0, sizeof(*m));
+		if (!pthread_create(&w->thread, NULL, write_entry, w))
+			return w;
+		*m = w->mesh;
+	}
+	free(w);
+	mesh_cache_write(dir, key, m, material, max_bytes);
+	mesh_packed_release(m);
+	return NULL;
+}
+
+void mesh_cache_writer_join(struct mesh_cache_writer *w)
+{
+	if (!w)
+		return;
+	pthread_join(w->thread, NULL);
+	free(w);
+}

@@ -1,0 +1,100 @@
+/* The prepared-mesh cache: a mesh loaded, given its normals, tangents and
+ * level of detail, fitted, and packed in the GPU's vertex format, kept on
+ * disk so that the next start maps it and uploads it as it is, with no
+ * parse and no preparation. An entry is keyed by the model's content and
+ * by every setting that changes the result, written atomically, and
+ * checked (header, sizes, checksums, index range) before it is used: a
+ * truncated, stale or corrupt entry is a miss, removed and rebuilt. */
+#ifndef MK_MESH_CACHE_H
+#define MK_MESH_CACHE_H
+
+#include "scene/material.h"
+#include "scene/mesh.h"
+#include "scene/mesh_pack.h"
+
+#include <stddef.h>
+#include <stdint.h>
+
+/* Entries beyond this, oldest first, are removed after each write. */
+#define MESH_CACHE_MAX_BYTES (256ull << 20)
+
+struct mesh_cache_key {
+	uint64_t content;  /* mesh_cache_hash_model */
+	uint64_t settings; /* the caller's settings, through mesh_cache_hash */
+	/* The display the mesh was prepared for (its level of detail). Not
+	 * in the entry's name: a model has one entry per settings, replaced
+	 * when the display changes. 0 x 0 in a lookup: any display
+	 * (mesh_cache_entry_key says which). */
+	uint32_t width, height;
+};
+
+/* A fast 64-bit hash (not a cryptographic one: the cache trusts its own
+ * directory, and checks what it reads for damage, not for malice). */
+uint64_t mesh_cache_hash(const void *data, size_t size, uint64_t seed);
+
+/* The model file's bytes and, for a .gltf, those of every file its "uri"s
+ * name beside it (buffers, images). Returns 0 or a negative errno code. */
+int mesh_cache_hash_model(const char *path, uint64_t *out);
+
+/* The key of a scene showing model with these settings, for any display
+ * (width, height 0). Returns 0, -ENOENT for a scene the cache does not
+ * keep (one its settings reshape beyond the model: src/scene/mesh_cache_key.c),
+ * or another negative errno code when the model cannot be read. */
+int mesh_cache_scene_key(const char *model, double lod_pixels, const struct material_config *m,
+			 struct mesh_cache_key *out);
+
+/* $CACHE_DIRECTORY (systemd's CacheDirectory=, the first when it lists
+ * several), else $XDG_CACHE_HOME/matcap-kiosk, else ~/.cache/matcap-kiosk.
+ * Returns 0, or -ENOENT when none can be named, -ENAMETOOLONG. */
+int mesh_cache_dir(char *buf, size_t size);
+
+struct mesh_cache_entry;
+
+/* Map dir's entry for key and check it. Returns 0, -ENOENT when there is
+ * none, or -EBADMSG when it is damaged or stale (it is then removed). */
+int mesh_cache_open(const char *dir, const struct mesh_cache_key *key,
+		    struct mesh_cache_entry **out);
+/* The entry's mesh, its arrays pointing into the mapping. */
+const struct mesh_packed *mesh_cache_entry_mesh(const struct mesh_cache_entry *e);
+/* The model's material factors (no images: an entry is written only
+ * for a scene that decodes none). */
+const struct mesh_material *mesh_cache_entry_material(const struct mesh_cache_entry *e);
+/* Once its mesh is on the GPU: the mapping's pages leave the process
+ * (the file keeps them; a later read maps them in again). */
+void mesh_cache_entry_evict(const struct mesh_cache_entry *e);
+/* The key the entry was written with (its display's size included). */
+const struct mesh_cache_key *mesh_cache_entry_key(const struct mesh_cache_entry *e);
+void mesh_cache_entry_free(struct mesh_cache_entry *e);
+
+/* Check an entry's bytes (what mesh_cache_open does once mapped): 0 and
+ * out's arrays pointing into data, or -EBADMSG. key may be NULL (any);
+ * found (may be NULL) gets the entry's own key. */
+int mesh_cache_parse(const void *data, size_t size, const struct mesh_cache_key *key,
+		     struct mesh_packed *out, struct mesh_material *material,
+		     struct mesh_cache_key *found);
+
+/* For the fuzzer: recompute an entry's checksums in place (what a
+ * deliberate forgery would do), so that the fields behind them are what
+ * mesh_cache_parse then checks. Does nothing to fewer bytes than a header. */
+void mesh_cache_reseal(void *data, size_t size);
+
+/* Write m and material's factors as key's entry: a temporary file,
+ * fsync, rename, so that a reader sees the whole entry or none; then the
+ * directory is trimmed to max_bytes, oldest entries first. The directory
+ * is made when missing. Returns 0 or a negative errno code. */
+int mesh_cache_write(const char *dir, const struct mesh_cache_key *key, const struct mesh_packed *m,
+		     const struct mesh_material *material, uint64_t max_bytes);
+
+/* mesh_cache_write on a thread of its own, so that the first frame does
+ * not wait for the disk: m's arrays are taken over (m is left empty) and
+ * freed once written. When no thread can start, the entry is written
+ * before this returns. Returns NULL then, or the writer to join. */
+struct mesh_cache_writer;
+struct mesh_cache_writer *mesh_cache_write_async(const char *dir, const struct mesh_cache_key *key,
+						 struct mesh_packed *m,
+						 const struct mesh_material *material,
+						 uint64_t max_bytes);
+/* Waits for the entry to be written, and frees w (NULL: nothing). */
+void mesh_cache_writer_join(struct mesh_cache_writer *w);
+
+#endif

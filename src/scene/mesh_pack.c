@@ -1,0 +1,98 @@
+#include "scene/mesh_pack.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const int components[MESH_ARRAYS] = {3, 3, 2, 4};
+
+int mesh_array_components(enum mesh_array a)
+{
+	return components[a];
+}
+
+bool mesh_array_int16(enum vertex_format f, enum mesh_array a)
+{
+	return f == VERTEX_COMPACT && a != MESH_UVS;
+}
+
+size_t mesh_array_stride(enum vertex_format f, enum mesh_array a)
+{
+	return (size_t)components[a] * (mesh_array_int16(f, a) ? sizeof(int16_t) : sizeof(float));
+}
+
+static int16_t snorm16(float v)
+{
+	float c = v < -1.0f ? -1.0f : v > 1.0f ? 1.0f : v;
+
+	return (int16_t)lrintf(c * 32767.0f);
+}
+
+/* The fitted mesh is inside the unit sphere, so 1/32767 of its largest
+ * coordinate is far below a pixel. */
+static float position_scale(const struct mesh *m)
+{
+	float scale = 0.0f;
+
+	for (size_t i = 0; i < (size_t)m->vertex_count * 3; i++)
+		scale = fmaxf(scale, fabsf(m->positions[i]));
+	return scale > 0.0f && isfinite(scale) ? scale : 1.0f;
+}
+
+static void to_int16(const float *src, size_t values, float scale, int16_t *out)
+{
+	for (size_t i = 0; i < values; i++)
+		out[i] = snorm16(src[i] * scale);
+}
+
+int mesh_pack(const struct mesh *m, enum vertex_format f, struct mesh_packed *out)
+{
+	const float *src[MESH_ARRAYS] = {m->positions, m->normals, m->uvs, m->tangents};
+	size_t offset[MESH_ARRAYS], total = 0;
+	char *block;
+
+	memset(out, 0, sizeof(*out));
+	out->format = f;
+	out->vertex_count = m->vertex_count;
+	out->index_count = m->index_count;
+	out->indices = m->indices;
+	out->position_scale = 1.0f;
+	if (f == VERTEX_FLOAT32) {
+		for (int a = 0; a < MESH_ARRAYS; a++)
+			out->arrays[a] = src[a];
+		return 0;
+	}
+	for (int a = 0; a < MESH_ARRAYS; a++) {
+		offset[a] = total;
+		if (src[a])
+			total += m->vertex_count * mesh_array_stride(f, (enum mesh_array)a);
+	}
+	/* The indices too: the packed mesh outlives the mesh. */
+	block = malloc(total + (size_t)m->index_count * 4 + 1);
+	if (!block)
+		return -ENOMEM;
+	out->owned = block;
+	memcpy(block + total, m->indices, (size_t)m->index_count * 4);
+	out->indices = (const uint32_t *)(const void *)(block + total);
+	out->position_scale = position_scale(m);
+	for (int a = 0; a < MESH_ARRAYS; a++) {
+		size_t values = (size_t)m->vertex_count * (size_t)components[a];
+
+		if (!src[a])
+			continue;
+		out->arrays[a] = block + offset[a];
+		if (a == MESH_UVS)
+			memcpy(block + offset[a], src[a], values * sizeof(float));
+		else
+			to_int16(src[a], values, a ? 1.0f : 1.0f / out->position_scale,
+				 (int16_t *)(void *)(block + offset[a]));
+	}
+	return 0;
+}
+
+void mesh_packed_release(struct mesh_packed *p)
+{
+	free(p->owned);
+	memset(p, 0, sizeof(*p));
+}

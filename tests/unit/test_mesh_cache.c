@@ -1,0 +1,354 @@
+/* The prepared-mesh cache: what is written reads back the same, and an
+ * entry that is truncated, flipped, stale or of another key is never
+ * trusted. Also the compact vertex format it stores. */
+#include "app/content.h"
+#include "display/display.h"
+#include "gltf_write.h"
+#include "scene/mesh.h"
+#include "scene/mesh_cache.h"
+#include "scene/mesh_pack.h"
+#include "util/log.h"
+
+#include <errno.h>
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <cmocka.h>
+
+/* OSMesa leaks a fixed few hundred bytes per process; see
+ * tests/unit/test_camera_texture.c. */
+const char *__lsan_default_suppressions(void);
+const char *__lsan_default_suppressions(void)
+{
+	return "leak:libOSMesa\nleak:libLLVM\nleak:display_osmesa_new\n";
+}
+
+struct fixture {
+	char dir[64];
+	struct mesh mesh;
+	struct mesh_packed packed;
+	struct mesh_material material;
+	struct mesh_cache_key key;
+};
+
+static int setup(void **state)
+{
+	struct fixture *f = calloc(1, sizeof(*f));
+
+	assert_non_null(f);
+	snprintf(f->dir, sizeof(f->dir), "/tmp/mk-cache-XXXXXX");
+	assert_non_null(mkdtemp(f->dir));
+	assert_int_equal(mesh_uv_sphere(&f->mesh, 24, 12), 0);
+	assert_int_equal(mesh_pack(&f->mesh, VERTEX_COMPACT, &f->packed), 0);
+	mesh_material_default(&f->material);
+	f->material.present = true;
+	f->material.base_color[1] = 0.25f;
+	f->key = (struct mesh_cache_key){.content = 0x1234, .settings = 0x5678};
+	log_set_level(LOG_ERR);
+	*state = f;
+	return 0;
+}
+
+static int teardown(void **state)
+{
+	struct fixture *f = *state;
+	char cmd[128];
+
+	snprintf(cmd, sizeof(cmd), "rm -rf %s", f->dir);
+	assert_int_equal(system(cmd), 0);
+	mesh_packed_release(&f->packed);
+	mesh_release(&f->mesh);
+	free(f);
+	return 0;
+}
+
+static void *read_entry(const struct fixture *f, size_t *size)
+{
+	char path[128];
+	FILE *file;
+	void *data;
+	long n;
+
+	snprintf(path, sizeof(path), "%s/%016llx-%016llx.mkmesh", f->dir,
+		 (unsigned long long)f->key.content, (unsigned long long)f->key.settings);
+	file = fopen(path, "rb");
+	assert_non_null(file);
+	fseek(file, 0, SEEK_END);
+	n = ftell(file);
+	rewind(file);
+	data = malloc((size_t)n);
+	assert_int_equal(fread(data, 1, (size_t)n, file), (size_t)n);
+	fclose(file);
+	*size = (size_t)n;
+	return data;
+}
+
+static void compact_vertices_are_within_a_step(void **state)
+{
+	struct fixture *f = *state;
+	const int16_t *p = f->packed.arrays[MESH_POSITIONS], *n = f->packed.arrays[MESH_NORMALS];
+	float s = f->packed.position_scale;
+
+	assert_true(s > 0.9f && s <= 1.0f);
+	assert_int_equal(mesh_array_stride(VERTEX_COMPACT, MESH_POSITIONS), 6);
+	assert_int_equal(mesh_array_stride(VERTEX_FLOAT32, MESH_POSITIONS), 12);
+	for (uint32_t i = 0; i < f->mesh.vertex_count * 3; i++) {
+		assert_true(fabsf(p[i] / 32767.0f * s - f->mesh.positions[i]) <= s / 32767.0f);
+		assert_true(fabsf(n[i] / 32767.0f - f->mesh.normals[i]) <= 1.0f / 32767.0f);
+	}
+}
+
+static void an_entry_reads_back_as_written(void **state)
+{
+	struct fixture *f = *state;
+	struct mesh_cache_entry *e;
+	const struct mesh_packed *m;
+	size_t bytes = f->mesh.vertex_count * mesh_array_stride(VERTEX_COMPACT, MESH_POSITIONS);
+
+	assert_int_equal(mesh_cache_open(f->dir, &f->key, &e), -ENOENT);
+	assert_int_equal(
+	    mesh_cache_write(f->dir, &f->key, &f->packed, &f->material, MESH_CACHE_MAX_BYTES), 0);
+	assert_int_equal(mesh_cache_open(f->dir, &f->key, &e), 0);
+	m = mesh_cache_entry_mesh(e);
+	assert_int_equal(m->vertex_count, f->packed.vertex_count);
+	assert_int_equal(m->index_count, f->packed.index_count);
+	assert_true(m->position_scale == f->packed.position_scale);
+	assert_memory_equal(m->arrays[MESH_POSITIONS], f->packed.arrays[MESH_POSITIONS], bytes);
+	assert_memory_equal(m->indices, f->packed.indices, f->packed.index_count * 4);
+	assert_null(m->arrays[MESH_TANGENTS]);
+	assert_true(mesh_cache_entry_material(e)->base_color[1] == 0.25f);
+	mesh_cache_entry_free(e);
+}
+
+/* Every truncation and every single-bit flip of the header, and flips
+ * spread over the payload: each is refused, none crashes. */
+static void a_damaged_entry_is_refused(void **state)
+{
+	struct fixture *f = *state;
+	struct mesh_packed out;
+	struct mesh_material mat;
+	size_t size;
+	unsigned char *data;
+
+	assert_int_equal(
+	    mesh_cache_write(f->dir, &f->key, &f->packed, &f->material, MESH_CACHE_MAX_BYTES), 0);
+	data = read_entry(f, &size);
+	assert_int_equal(mesh_cache_parse(data, size, &f->key, &out, &mat, NULL), 0);
+	for (size_t n = 0; n < size; n += n < 512 ? 1 : 97)
+		assert_int_equal(mesh_cache_parse(data, n, &f->key, &out, &mat, NULL), -EBADMSG);
+	for (size_t i = 0; i < size; i += i < 256 ? 1 : 13)
+		for (int bit = 0; bit < 8; bit++) {
+			data[i] ^= (unsigned char)(1u << bit);
+			assert_int_equal(mesh_cache_parse(data, size, &f->key, &out, &mat, NULL),
+					 -EBADMSG);
+			data[i] ^= (unsigned char)(1u << bit);
+		}
+	free(data);
+}
+
+/* Checksums made right over a wrong field (a forgery, or a bug in the
+ * writer): the index range and the layout are still checked. */
+static void a_resealed_entry_is_still_checked(void **state)
+{
+	struct fixture *f = *state;
+	struct mesh_packed out;
+	size_t size;
+	unsigned char *data;
+	uint32_t bad;
+
+	assert_int_equal(
+	    mesh_cache_write(f->dir, &f->key, &f->packed, &f->material, MESH_CACHE_MAX_BYTES), 0);
+	data = read_entry(f, &size);
+	bad = f->packed.vertex_count;
+	memcpy(data + size - 4 - (f->packed.index_count % 2 ? 4 : 0), &bad, 4);
+	mesh_cache_reseal(data, size);
+	assert_int_equal(mesh_cache_parse(data, size, NULL, &out, NULL, NULL), -EBADMSG);
+	/* A size that does not match the layout, resealed. */
+	mesh_cache_reseal(data, size - 8);
+	assert_int_equal(mesh_cache_parse(data, size - 8, NULL, &out, NULL, NULL), -EBADMSG);
+	free(data);
+}
+
+static void another_key_or_version_is_a_miss(void **state)
+{
+	struct fixture *f = *state;
+	struct mesh_cache_key other = {.content = f->key.content, .settings = 1};
+	struct mesh_cache_entry *e;
+	struct mesh_packed out;
+	size_t size;
+	unsigned char *data;
+
+	assert_int_equal(
+	    mesh_cache_write(f->dir, &f->key, &f->packed, &f->material, MESH_CACHE_MAX_BYTES), 0);
+	data = read_entry(f, &size);
+	assert_int_equal(mesh_cache_parse(data, size, &other, &out, NULL, NULL), -EBADMSG);
+	assert_int_equal(mesh_cache_open(f->dir, &other, &e), -ENOENT);
+	/* An entry renamed under another key is stale: refused and removed. */
+	{
+		char from[128], to[128];
+
+		snprintf(from, sizeof(from), "%s/%016llx-%016llx.mkmesh", f->dir, 0x1234ull,
+			 0x5678ull);
+		snprintf(to, sizeof(to), "%s/%016llx-%016llx.mkmesh", f->dir, 0x1234ull, 1ull);
+		assert_int_equal(rename(from, to), 0);
+		assert_int_equal(mesh_cache_open(f->dir, &other, &e), -EBADMSG);
+		assert_int_equal(access(to, F_OK), -1);
+	}
+	free(data);
+}
+
+static void the_directory_stays_under_its_bound(void **state)
+{
+	struct fixture *f = *state;
+	struct mesh_cache_entry *e;
+	size_t size;
+	void *data;
+
+	assert_int_equal(
+	    mesh_cache_write(f->dir, &f->key, &f->packed, &f->material, MESH_CACHE_MAX_BYTES), 0);
+	data = read_entry(f, &size);
+	free(data);
+	/* Room for two: the third write removes the oldest. */
+	for (uint64_t k = 1; k <= 3; k++) {
+		struct mesh_cache_key key = {.content = k, .settings = 0};
+
+		assert_int_equal(
+		    mesh_cache_write(f->dir, &key, &f->packed, &f->material, 2 * size + size / 2),
+		    0);
+		usleep(20000); /* distinct times, coarse file systems too */
+	}
+	{
+		struct mesh_cache_key first = {.content = 1}, last = {.content = 3};
+
+		assert_int_equal(mesh_cache_open(f->dir, &first, &e), -ENOENT);
+		assert_int_equal(mesh_cache_open(f->dir, &last, &e), 0);
+		mesh_cache_entry_free(e);
+	}
+}
+
+static void the_key_follows_the_bytes(void **state)
+{
+	struct fixture *f = *state;
+	char model[128], buffer[128];
+	uint64_t a, b, c;
+	FILE *file;
+
+	assert_int_not_equal(mesh_cache_hash("abc", 3, 0), mesh_cache_hash("abd", 3, 0));
+	assert_int_not_equal(mesh_cache_hash("abc", 3, 0), mesh_cache_hash("abc", 3, 1));
+	snprintf(model, sizeof(model), "%s/m.gltf", f->dir);
+	snprintf(buffer, sizeof(buffer), "%s/m.bin", f->dir);
+	file = fopen(model, "w");
+	fputs("{\"buffers\": [{\"uri\" : \"m.bin\", \"byteLength\": 4}]}", file);
+	fclose(file);
+	file = fopen(buffer, "w");
+	fputs("abcd", file);
+	fclose(file);
+	assert_int_equal(mesh_cache_hash_model(model, &a), 0);
+	file = fopen(buffer, "w");
+	fputs("abce", file);
+	fclose(file);
+	assert_int_equal(mesh_cache_hash_model(model, &b), 0);
+	assert_int_equal(mesh_cache_hash_model(model, &c), 0);
+	assert_int_not_equal(a, b); /* the buffer beside it counts */
+	assert_int_equal(b, c);
+	assert_int_equal(mesh_cache_hash_model("/nonexistent/m.glb", &a), -ENOENT);
+}
+
+static void the_directory_is_named_as_systemd_and_xdg_say(void **state)
+{
+	char dir[256];
+
+	(void)state;
+	setenv("CACHE_DIRECTORY", "/var/cache/matcap-kiosk:/var/cache/other", 1);
+	assert_int_equal(mesh_cache_dir(dir, sizeof(dir)), 0);
+	assert_string_equal(dir, "/var/cache/matcap-kiosk");
+	unsetenv("CACHE_DIRECTORY");
+	setenv("XDG_CACHE_HOME", "/x/cache", 1);
+	assert_int_equal(mesh_cache_dir(dir, sizeof(dir)), 0);
+	assert_string_equal(dir, "/x/cache/matcap-kiosk");
+	unsetenv("XDG_CACHE_HOME");
+	setenv("HOME", "/home/k", 1);
+	assert_int_equal(mesh_cache_dir(dir, sizeof(dir)), 0);
+	assert_string_equal(dir, "/home/k/.cache/matcap-kiosk");
+}
+
+/* The kiosk's content: the first start prepares the model and writes its
+ * entry, the next maps it (no parse) with the same counts, and another
+ * display prepares it again from the file. */
+static void content_maps_a_model_prepared_before(void **state)
+{
+	struct fixture *f = *state;
+	struct gltf_write_opts o = {.index_bytes = 4, .with_normals = 1, .bad_index = -1};
+	struct content_config c = {.lod_pixels = 4.0};
+	struct display_config dc = {.width = 16, .height = 16};
+	struct display *d = display_osmesa_new(&dc);
+	struct renderer *r;
+	struct renderer_stats st;
+	struct content s;
+	char model[128];
+	uint32_t triangles;
+
+	assert_non_null(d);
+	d->begin_frame(d);
+	r = renderer_new(&d->gl, NULL);
+	assert_non_null(r);
+	snprintf(model, sizeof(model), "%s/sphere.glb", f->dir);
+	assert_int_equal(gltf_write(model, &f->mesh, &o), 0);
+	setenv("XDG_CACHE_HOME", f->dir, 1);
+	material_config_defaults(&c.material);
+	c.model = model;
+	assert_int_equal(content_load(&s, &c, true), 0);
+	assert_null(s.cached);
+	assert_non_null(s.mesh.positions);
+	assert_int_equal(content_prepare(&s, &c, 64, 64), 0);
+	assert_null(s.mesh.positions); /* packed, the mesh's arrays given back */
+	triangles = s.mesh.index_count / 3;
+	assert_int_equal(s.packed.index_count / 3, triangles);
+	assert_int_equal(content_upload(&s, r), 0);
+	assert_int_equal(s.packed.vertex_count, 0); /* to the cache's writer */
+	/* A failed reload uploads it again: from the entry. */
+	assert_int_equal(content_upload(&s, r), 0);
+	assert_non_null(s.cached);
+	renderer_get_stats(r, &st);
+	assert_int_equal(st.vertex_bytes, (long)s.mesh.vertex_count * 12);
+	content_release(&s);
+
+	assert_int_equal(content_load(&s, &c, true), 0);
+	assert_non_null(s.cached);
+	assert_null(s.mesh.positions);
+	assert_int_equal(s.mesh.index_count / 3, triangles);
+	assert_int_equal(content_prepare(&s, &c, 64, 64), 0);
+	assert_int_equal(mesh_cache_entry_key(s.cached)->width, 64);
+	assert_int_equal(content_upload(&s, r), 0);
+	/* Another display: prepared again from the file. */
+	assert_int_equal(content_prepare(&s, &c, 640, 480), 0);
+	assert_null(s.cached);
+	assert_int_equal(s.cache_key.width, 640);
+	content_release(&s);
+	unsetenv("XDG_CACHE_HOME");
+	renderer_free(r);
+	/* The display is left open: see __lsan_default_suppressions. */
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+	    cmocka_unit_test_setup_teardown(compact_vertices_are_within_a_step, setup, teardown),
+	    cmocka_unit_test_setup_teardown(an_entry_reads_back_as_written, setup, teardown),
+	    cmocka_unit_test_setup_teardown(a_damaged_entry_is_refused, setup, teardown),
+	    cmocka_unit_test_setup_teardown(a_resealed_entry_is_still_checked, setup, teardown),
+	    cmocka_unit_test_setup_teardown(another_key_or_version_is_a_miss, setup, teardown),
+	    cmocka_unit_test_setup_teardown(the_directory_stays_under_its_bound, setup, teardown),
+	    cmocka_unit_test_setup_teardown(the_key_follows_the_bytes, setup, teardown),
+	    cmocka_unit_test_setup_teardown(content_maps_a_model_prepared_before, setup, teardown),
+	    cmocka_unit_test(the_directory_is_named_as_systemd_and_xdg_say),
+	};
+
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
