@@ -68,8 +68,7 @@ struct screen *screen_new(const struct screen_config *cfg, struct display *d, ui
 	s->display = d;
 	s->scheduled = pc.schedule.count > 0;
 	if (s->scheduled || cfg->blank_after > 0)
-		s->backlight =
-		    backlight_new(cfg->backlight_dir ? cfg->backlight_dir : "/sys/class/backlight");
+		s->backlight = backlight_new("/sys/class/backlight");
 	if (cfg->cec)
 		s->cec = cec_new(cfg->cec_device ? cfg->cec_device : "/dev/cec0");
 	power_init(&s->power, &pc, &c);

@@ -13,11 +13,10 @@
 
 /* [power] in kiosk.ini. */
 struct screen_config {
-	char *schedule;	     /* "Mon-Fri 08:00-20:00, ..."; NULL or "": always on */
-	double blank_after;  /* minutes without input; 0: never */
-	bool cec;	     /* also tell an HDMI-CEC TV */
-	char *cec_device;    /* NULL: /dev/cec0 */
-	char *backlight_dir; /* NULL: /sys/class/backlight */
+	char *schedule;	    /* "Mon-Fri 08:00-20:00, ..."; NULL or "": always on */
+	double blank_after; /* minutes without input; 0: never */
+	bool cec;	    /* also tell an HDMI-CEC TV */
+	char *cec_device;   /* NULL: /dev/cec0 */
 };
 
 struct screen;
