@@ -40,7 +40,10 @@ struct renderer {
 	enum vertex_format format; /* for the next renderer_set_mesh */
 	enum vertex_format drawn;  /* of the arrays uploaded */
 	float position_scale;	   /* int16 positions: the model units of 1.0 */
-	bool matcap_mipmaps;	   /* for the next renderer_set_matcap */
+	enum matcap_filter matcap_filter;
+	bool matcap_has_mips;  /* the image texture has its mipmap chain */
+	int matcap_side;       /* its shorter side, texels */
+	bool matcap_mipmapped; /* its minifying filter now reads the chain */
 };
 
 struct renderer *renderer_new(const struct gl *gl, const char *shader_dir)
@@ -58,11 +61,9 @@ struct renderer *renderer_new(const struct gl *gl, const char *shader_dir)
 	r->highp = gl->caps.software;
 	r->format = r->drawn = VERTEX_COMPACT;
 	r->position_scale = 1.0f;
-	/* Unfiltered, as the golden images were drawn: mipmaps average a
-	 * thin part's shading, which changes those pictures far beyond their
-	 * tolerance (tests/bench/report measures both against a supersampled
-	 * reference). */
-	r->matcap_mipmaps = false;
+	/* tests/bench/report/speed-error.md measures the three filters
+	 * against a supersampled reference, large and small on screen. */
+	r->matcap_filter = MATCAP_FILTER_AUTO;
 	gl->GenBuffers(SHADER_ATTR_COUNT, r->vbo);
 	gl->GenBuffers(1, &r->ibo);
 	gl->GenTextures(1, &r->matcap);
@@ -203,10 +204,9 @@ int renderer_set_mesh(struct renderer *r, const struct mesh *m)
 /* repeat: the detail map tiles (glTF's default) and is mipmapped, so a
  * far, dense map does not shimmer; it has power-of-two sides for that.
  * The ramp is read by angle: clamped, no mipmaps, so any size is legal in
- * GLES2. The matcap is clamped, and mipmapped when asked
- * (renderer_set_matcap_mipmaps): a model small on screen reads its whole
- * disk in a few pixels; the shader reads one level finer than GL picks
- * (shaders/matcap.frag). */
+ * GLES2. The matcap is clamped and gets its mipmap chain unless the
+ * filter is LINEAR; which minifying filter reads it is chosen per draw
+ * (matcap_choose_filter). */
 static int upload_texture(const struct gl *gl, GLuint *tex, const struct image *img, bool repeat,
 			  bool mipmaps)
 {
@@ -235,22 +235,51 @@ static bool is_pot(int n)
  * the nearest one first (the shipped matcaps are 256 x 256 already). */
 int renderer_set_matcap(struct renderer *r, const struct image *img)
 {
+	bool pot_size = is_pot(img->width) && is_pot(img->height);
+	bool mips = r->matcap_filter == MATCAP_FILTER_MIPMAP ||
+		    (r->matcap_filter == MATCAP_FILTER_AUTO && pot_size);
 	struct image pot = {0};
 	int ret;
 
-	if (!r->matcap_mipmaps || (is_pot(img->width) && is_pot(img->height)))
-		return upload_texture(r->gl, &r->matcap, img, false, r->matcap_mipmaps);
-	ret = texture_resample(img, texture_pot(img->width, 4096), texture_pot(img->height, 4096),
-			       &pot);
-	if (!ret)
-		ret = upload_texture(r->gl, &r->matcap, &pot, false, true);
+	if (!mips || pot_size) {
+		ret = upload_texture(r->gl, &r->matcap, img, false, mips);
+	} else {
+		ret = texture_resample(img, texture_pot(img->width, 4096),
+				       texture_pot(img->height, 4096), &pot);
+		if (!ret)
+			ret = upload_texture(r->gl, &r->matcap, &pot, false, true);
+	}
+	r->matcap_has_mips = !ret && mips;
+	r->matcap_mipmapped = r->matcap_has_mips;
+	r->matcap_side = pot.width ? (pot.width < pot.height ? pot.width : pot.height)
+				   : (img->width < img->height ? img->width : img->height);
 	image_release(&pot);
 	return ret;
 }
 
-void renderer_set_matcap_mipmaps(struct renderer *r, bool mipmaps)
+void renderer_set_matcap_filter(struct renderer *r, enum matcap_filter filter)
 {
-	r->matcap_mipmaps = mipmaps;
+	r->matcap_filter = filter;
+}
+
+/* The unit sphere the model is fitted to spans at most twice the pixels
+ * per unit at its front; the matcap's side maps onto that disc. Switching
+ * the filter is one texture parameter, set only when it changes. Measured
+ * in tests/bench/report/speed-error.md: at 1280x720 (disc 847 px, matcap
+ * 256) linear is 2 dB closer to the reference, at 128 px (disc 151 px)
+ * the mipmaps are 1-1.4 dB closer. */
+static void matcap_choose_filter(struct renderer *r, const int vp[4])
+{
+	double disc = 2.0 * sphere_fit_pixels_per_unit(vp[2], vp[3]);
+	bool mip = r->matcap_has_mips &&
+		   (r->matcap_filter == MATCAP_FILTER_MIPMAP || disc <= (double)r->matcap_side);
+
+	if (mip == r->matcap_mipmapped || r->matcap_override)
+		return;
+	r->gl->BindTexture(GL_TEXTURE_2D, r->matcap);
+	r->gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER,
+			     mip ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
+	r->matcap_mipmapped = mip;
 }
 
 void renderer_use_matcap_texture(struct renderer *r, GLuint tex)
@@ -407,6 +436,7 @@ static void draw_with(struct renderer *r, const struct program *p, const struct 
 	float mv[16], proj[16], nm[9];
 
 	gl->Viewport(vp[0], vp[1], vp[2], vp[3]);
+	matcap_choose_filter(r, vp);
 	render_matrices(v, vp[2], vp[3], mv, proj);
 	/* The model-view is a rotation and a translation: its upper 3x3 is
 	 * already the inverse transpose. Scales and mirrors were baked into
@@ -502,6 +532,7 @@ void renderer_get_stats(const struct renderer *r, struct renderer_stats *out)
 	out->program = p[0] ? p[0]->id : 0;
 	out->lit_program = p[1] ? p[1]->id : 0;
 	out->highp = r->highp;
-	out->matcap_mipmaps = r->matcap_mipmaps;
+	out->matcap_filter = r->matcap_filter;
+	out->matcap_mipmapped = r->matcap_mipmapped;
 	out->format = r->drawn;
 }

@@ -37,9 +37,15 @@ int renderer_set_packed(struct renderer *r, const struct mesh_packed *m);
 /* How renderer_set_mesh stores the vertices (scene/mesh_pack.h); the
  * default: compact. */
 void renderer_set_vertex_format(struct renderer *r, enum vertex_format format);
-/* Whether renderer_set_matcap mipmaps the matcap (a size that is not a
- * power of two is resampled to the nearest one first); the default: no. */
-void renderer_set_matcap_mipmaps(struct renderer *r, bool mipmaps);
+/* How the matcap is sampled where it is minified. AUTO, the default:
+ * mipmapped while the model's disc on screen is no wider than the matcap,
+ * where a pixel reads a texel or more and a thin part shimmers; linear
+ * when the model is larger, where a mipmap would only blur the silhouette
+ * (the normal turns fast there) and bleed SEM's rim. MIPMAP and LINEAR
+ * force one, for the bench. Mipmaps need a power-of-two size in GLES2:
+ * MIPMAP resamples another size to one, AUTO leaves it linear. */
+enum matcap_filter { MATCAP_FILTER_AUTO, MATCAP_FILTER_MIPMAP, MATCAP_FILTER_LINEAR };
+void renderer_set_matcap_filter(struct renderer *r, enum matcap_filter filter);
 int renderer_set_matcap(struct renderer *r, const struct image *img);
 /* Draw with tex (owned by the caller, e.g. the live camera's) as the
  * matcap; 0: back to the renderer's own image texture. */
@@ -55,14 +61,15 @@ void renderer_draw(struct renderer *r, const struct view *v, int width, int heig
 
 /* What the renderer holds now, for tests and the bench. */
 struct renderer_stats {
-	int attributes;		   /* vertex arrays uploaded and enabled when drawing */
-	long vertex_bytes;	   /* their size in GPU memory */
-	int textures;		   /* bound when drawing: the matcap, detail map, ramp */
-	GLuint program;		   /* the matcap program (0: none), or the lit one alone */
-	GLuint lit_program;	   /* when lit = beside, the second one; else 0 */
-	bool highp;		   /* every float highp (renderer_set_precision) */
-	bool matcap_mipmaps;	   /* renderer_set_matcap_mipmaps */
-	enum vertex_format format; /* of the arrays uploaded */
+	int attributes;			  /* vertex arrays uploaded and enabled when drawing */
+	long vertex_bytes;		  /* their size in GPU memory */
+	int textures;			  /* bound when drawing: the matcap, detail map, ramp */
+	GLuint program;			  /* the matcap program (0: none), or the lit one alone */
+	GLuint lit_program;		  /* when lit = beside, the second one; else 0 */
+	bool highp;			  /* every float highp (renderer_set_precision) */
+	enum matcap_filter matcap_filter; /* renderer_set_matcap_filter */
+	bool matcap_mipmapped;		  /* the last frame read the matcap's mipmaps */
+	enum vertex_format format;	  /* of the arrays uploaded */
 };
 void renderer_get_stats(const struct renderer *r, struct renderer_stats *out);
 

@@ -98,7 +98,7 @@ static struct setting *add(struct bench *b, int l, const char *label)
 			      .highp = b->highp_default,
 			      .lod = b->lod_default,
 			      .matcap = DEFAULT_MATCAP,
-			      .mipmaps = b->mipmaps_default,
+			      .filter = b->filter_default,
 			      .format = b->format_default,
 			      .ss = 1};
 	snprintf(s->label, sizeof(s->label), "%s", label);
@@ -114,13 +114,14 @@ static void plan(struct bench *b, int l)
 	char label[40];
 
 	s->is_reference = true, s->highp = true, s->lod = 0, s->matcap = 1024, s->ss = 4;
-	s->mipmaps = true, s->format = VERTEX_FLOAT32;
+	s->filter = MATCAP_FILTER_MIPMAP, s->format = VERTEX_FLOAT32;
 	add(b, l, "defaults")->is_default = true;
 	add(b, l, b->format_default == VERTEX_COMPACT ? "float32 vertices" : "int16 vertices")
 	    ->format = b->format_default == VERTEX_COMPACT ? VERTEX_FLOAT32 : VERTEX_COMPACT;
-	if (!lk->lit)
-		add(b, l, b->mipmaps_default ? "matcap unfiltered" : "matcap mipmapped")->mipmaps =
-		    !b->mipmaps_default;
+	if (!lk->lit && b->filter_default != MATCAP_FILTER_MIPMAP)
+		add(b, l, "matcap mipmapped")->filter = MATCAP_FILTER_MIPMAP;
+	if (!lk->lit && b->filter_default != MATCAP_FILTER_LINEAR)
+		add(b, l, "matcap unfiltered")->filter = MATCAP_FILTER_LINEAR;
 	if (lk->cheaper != lk->mode) {
 		snprintf(label, sizeof(label), "mode %s", shading_mode_name(lk->cheaper));
 		add(b, l, label)->mode = lk->cheaper;
@@ -251,7 +252,7 @@ static int measure(struct bench *b, const struct look *lk, const struct material
 	int ret;
 
 	renderer_set_vertex_format(r, s->format);
-	renderer_set_matcap_mipmaps(r, s->mipmaps);
+	renderer_set_matcap_filter(r, s->filter);
 	ret = d->begin_frame(d);
 	if (!ret)
 		ret = renderer_set_material(r, mat);
@@ -316,8 +317,8 @@ static int load_material(struct bench *b, const struct look *lk, const struct me
 static bool same_drawing(const struct look *lk, const struct setting *a, const struct setting *b)
 {
 	return a->triangles == b->triangles && a->mode == b->mode && a->highp == b->highp &&
-	       (lk->lit || (a->matcap == b->matcap && a->mipmaps == b->mipmaps)) &&
-	       a->ss == b->ss && a->format == b->format;
+	       (lk->lit || (a->matcap == b->matcap && a->filter == b->filter)) && a->ss == b->ss &&
+	       a->format == b->format;
 }
 
 int bench_rounds_frames(const struct bench *b)
@@ -475,7 +476,7 @@ static int open_displays(struct bench *b)
 	renderer_get_stats(b->renderer[0], &stats);
 	b->highp_default = stats.highp;
 	/* The renderer's own defaults, as the kiosk draws. */
-	b->mipmaps_default = stats.matcap_mipmaps;
+	b->filter_default = stats.matcap_filter;
 	b->format_default = stats.format;
 	return 0;
 }

@@ -43,7 +43,7 @@ struct setting {
 	char label[40];
 	enum shading_mode mode;
 	bool highp, is_default, is_reference;
-	bool mipmaps;		   /* the matcap's (renderer_set_matcap_mipmaps) */
+	enum matcap_filter filter; /* the matcap's (renderer_set_matcap_filter) */
 	enum vertex_format format; /* renderer_set_vertex_format */
 	long vertex_bytes;	   /* measured: renderer_get_stats */
 	double lod;
@@ -69,7 +69,7 @@ struct bench {
 	int count[LOOKS];
 	double lod_default;
 	bool highp_default; /* the renderer's own choice for this GL */
-	bool mipmaps_default;
+	enum matcap_filter filter_default;
 	enum vertex_format format_default;
 	const char *only; /* run only the scenes whose name has this; NULL: all */
 	char load[2][64]; /* /proc/loadavg at the start and the end */

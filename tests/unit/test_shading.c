@@ -350,6 +350,56 @@ static void renderer_keeps_its_program_when_a_build_fails(void **state)
 	assert_int_equal(f->gl.GetError(), GL_NO_ERROR);
 }
 
+/* Whether the last draw read the matcap's mipmaps, drawing a w x h frame
+ * with a side x side matcap under the given filter. */
+static bool draws_mipmapped(struct builder_fixture *f, enum matcap_filter filter, int side, int w,
+			    int h)
+{
+	struct renderer *r = renderer_new(&f->gl, f->dir);
+	struct material mat = {0};
+	struct renderer_stats st;
+	struct image img = {0};
+	struct mesh m;
+
+	assert_non_null(r);
+	assert_int_equal(image_alloc(&img, side, side), 0);
+	assert_int_equal(mesh_uv_sphere(&m, 8, 4), 0);
+	renderer_set_matcap_filter(r, filter);
+	assert_int_equal(renderer_set_material(r, &mat), 0);
+	assert_int_equal(renderer_set_mesh(r, &m), 0);
+	assert_int_equal(renderer_set_matcap(r, &img), 0);
+	copy_builtin(f->dir, "matcap.frag");
+	assert_int_equal(renderer_set_mode(r, SHADING_VIEW, false), 0);
+	f->d->begin_frame(f->d);
+	renderer_draw(r, &(struct view){.orientation = quat_identity()}, w, h);
+	assert_int_equal(f->gl.GetError(), GL_NO_ERROR);
+	renderer_get_stats(r, &st);
+	assert_int_equal(st.matcap_filter, filter);
+	renderer_free(r);
+	mesh_release(&m);
+	image_release(&img);
+	return st.matcap_mipmapped;
+}
+
+/* auto: mipmaps only where the model's disc (at most 2 x the pixels per
+ * unit: 151 px in 128x128, 282 px in 320x240, 847 px in 1280x720) is no
+ * wider than the matcap; the forced filters whatever the size; a matcap
+ * whose size GLES2 cannot mipmap stays linear under auto. */
+static void matcap_filter_follows_the_size_on_screen(void **state)
+{
+	struct builder_fixture *f = *state;
+
+	assert_true(draws_mipmapped(f, MATCAP_FILTER_AUTO, 256, 64, 64));
+	assert_true(draws_mipmapped(f, MATCAP_FILTER_AUTO, 256, 128, 128));
+	assert_false(draws_mipmapped(f, MATCAP_FILTER_AUTO, 256, 320, 240));
+	assert_false(draws_mipmapped(f, MATCAP_FILTER_AUTO, 256, 1280, 720));
+	assert_true(draws_mipmapped(f, MATCAP_FILTER_AUTO, 1024, 1280, 720));
+	assert_false(draws_mipmapped(f, MATCAP_FILTER_AUTO, 201, 64, 64));
+	assert_true(draws_mipmapped(f, MATCAP_FILTER_MIPMAP, 256, 1280, 720));
+	assert_true(draws_mipmapped(f, MATCAP_FILTER_MIPMAP, 201, 1280, 720));
+	assert_false(draws_mipmapped(f, MATCAP_FILTER_LINEAR, 256, 64, 64));
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -363,6 +413,7 @@ int main(void)
 	    cmocka_unit_test(builder_makes_a_program),
 	    cmocka_unit_test(builder_frees_a_failed_build_once),
 	    cmocka_unit_test(renderer_keeps_its_program_when_a_build_fails),
+	    cmocka_unit_test(matcap_filter_follows_the_size_on_screen),
 	};
 	int failed = cmocka_run_group_tests_name("shading", tests, NULL, NULL);
 
