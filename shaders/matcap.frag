@@ -10,18 +10,15 @@ varying SHADE_P vec3 v_eye;
 #endif
 
 uniform sampler2D u_matcap;
-// Where the matcap is mipmapped (src/render/render.c), a model small on
-// screen reads its disk averaged, not aliased. GL picks the level from the
+// Where the matcap is mipmapped (src/render/render.c does for a model no
+// wider on screen than the matcap), a model small on screen reads its disk
+// averaged, not aliased. GL picks the level from the
 // larger of a pixel's two derivatives, which across a thin part (a knot's
 // tube) blurs the disk along the tube as well; the SEM modes map the
 // reflection, which sweeps the disk twice as fast, fastest at the rim,
 // where that blur would bleed the rim inwards. One level finer measured
 // best in every mode (tests/bench/report: at two finer, SEM aliases again).
-#if defined(MODE_SEM_VERTEX) || defined(MODE_SEM_FRAGMENT)
 #define MATCAP_LOD_BIAS -1.0
-#else
-#define MATCAP_LOD_BIAS -1.0
-#endif
 
 #ifdef DETAIL_MAP
 // highp where the GPU has it: at mediump (10-bit mantissa) a UV in

@@ -41,7 +41,8 @@ struct renderer {
 	enum vertex_format drawn;  /* of the arrays uploaded */
 	float position_scale;	   /* int16 positions: the model units of 1.0 */
 	enum matcap_filter matcap_filter;
-	bool matcap_has_mips;  /* the image texture has its mipmap chain */
+	bool matcap_mippable;  /* the image texture's size can have a chain */
+	bool matcap_has_mips;  /* it has its mipmap chain */
 	int matcap_side;       /* its shorter side, texels */
 	bool matcap_mipmapped; /* its minifying filter now reads the chain */
 };
@@ -236,20 +237,25 @@ static bool is_pot(int n)
 int renderer_set_matcap(struct renderer *r, const struct image *img)
 {
 	bool pot_size = is_pot(img->width) && is_pot(img->height);
-	bool mips = r->matcap_filter == MATCAP_FILTER_MIPMAP ||
-		    (r->matcap_filter == MATCAP_FILTER_AUTO && pot_size);
+	bool forced = r->matcap_filter == MATCAP_FILTER_MIPMAP;
 	struct image pot = {0};
 	int ret;
 
-	if (!mips || pot_size) {
-		ret = upload_texture(r->gl, &r->matcap, img, false, mips);
+	/* Under AUTO the chain is built on the first draw that reads it
+	 * (matcap_choose_filter): llvmpipe compiles a blit shader for
+	 * glGenerateMipmap, 40 ms of a start that a full-screen kiosk, which
+	 * never reads the chain, should not pay. */
+	if (!forced || pot_size) {
+		ret = upload_texture(r->gl, &r->matcap, img, false, forced);
 	} else {
 		ret = texture_resample(img, texture_pot(img->width, 4096),
 				       texture_pot(img->height, 4096), &pot);
 		if (!ret)
 			ret = upload_texture(r->gl, &r->matcap, &pot, false, true);
 	}
-	r->matcap_has_mips = !ret && mips;
+	r->matcap_mippable =
+	    !ret && r->matcap_filter != MATCAP_FILTER_LINEAR && (forced || pot_size);
+	r->matcap_has_mips = !ret && forced;
 	r->matcap_mipmapped = r->matcap_has_mips;
 	r->matcap_side = pot.width ? (pot.width < pot.height ? pot.width : pot.height)
 				   : (img->width < img->height ? img->width : img->height);
@@ -271,12 +277,16 @@ void renderer_set_matcap_filter(struct renderer *r, enum matcap_filter filter)
 static void matcap_choose_filter(struct renderer *r, const int vp[4])
 {
 	double disc = 2.0 * sphere_fit_pixels_per_unit(vp[2], vp[3]);
-	bool mip = r->matcap_has_mips &&
+	bool mip = r->matcap_mippable &&
 		   (r->matcap_filter == MATCAP_FILTER_MIPMAP || disc <= (double)r->matcap_side);
 
 	if (mip == r->matcap_mipmapped || r->matcap_override)
 		return;
 	r->gl->BindTexture(GL_TEXTURE_2D, r->matcap);
+	if (mip && !r->matcap_has_mips) {
+		r->gl->GenerateMipmap(GL_TEXTURE_2D);
+		r->matcap_has_mips = true;
+	}
 	r->gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER,
 			     mip ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
 	r->matcap_mipmapped = mip;
