@@ -25,7 +25,9 @@ click() {
 	echo pull-up >"$sys/sim_gpio$1/pull"
 	sleep 0.5
 }
-held_by_kiosk() { gpioinfo "$chip" | grep "\"$1\"" | grep -q '"matcap-kiosk"'; }
+# gpioinfo prints the consumer as "matcap-kiosk" (libgpiod 1) or
+# consumer="matcap-kiosk" (libgpiod 2).
+held_by_kiosk() { gpioinfo "$chip" | grep "\"$1\"" | grep -q 'matcap-kiosk'; }
 reloads_done() { [ "$(grep -c 'reload: done' kiosk.log)" -ge "$1" ]; }
 
 vkbd_start

@@ -29,7 +29,7 @@ vm_check "gpioget reads a pull-down as 0" test "$(gpioget "$chip" 1)" = 0
 gpiosim_pull smoke 2 up
 gpiomon --num-events=1 --falling-edge "$chip" 2 >/tmp/gpiomon.txt 2>&1 &
 mon=$!
-wait_until 10 sh -c "gpioinfo $chip | grep -q '\"gpiomon\"'"
+wait_until 10 sh -c "gpioinfo $chip | grep -q gpiomon"
 gpiosim_pull smoke 2 down
 ( sleep 10; kill $mon 2>/dev/null ) &
 watchdog=$!
