@@ -25,9 +25,12 @@ click() {
 	echo pull-up >"$sys/sim_gpio$1/pull"
 	sleep 0.5
 }
-# gpioinfo prints the consumer as "matcap-kiosk" (libgpiod 1) or
-# consumer="matcap-kiosk" (libgpiod 2).
-held_by_kiosk() { gpioinfo "$chip" | grep "\"$1\"" | grep -q 'matcap-kiosk'; }
+# libgpiod 2's gpioinfo takes the chip with -c (a bare word is a line's
+# name) and prints the consumer as consumer="matcap-kiosk"; libgpiod 1's
+# takes the chip alone and prints "matcap-kiosk".
+c=
+gpioinfo --version 2>/dev/null | grep -q ' v1\.' || c=-c
+held_by_kiosk() { gpioinfo $c "$chip" | grep "\"$1\"" | grep -q 'matcap-kiosk'; }
 reloads_done() { [ "$(grep -c 'reload: done' kiosk.log)" -ge "$1" ]; }
 
 vkbd_start
@@ -44,7 +47,8 @@ vm_check "... it says it opens the buttons again" \
 	grep -q "reload: \[buttons\] changed: opening the buttons again" kiosk.log
 vm_check "... and the keyboards" \
 	grep -q "reload: \[keyboard\] changed: opening the keyboards again" kiosk.log
-vm_check "GPIO17 is given back" sh -c "! gpioinfo $chip | grep '\"GPIO17\"' | grep -q matcap-kiosk"
+vm_check "GPIO17 is given back" sh -c "gpioinfo $c $chip | grep -q '\"GPIO17\"' &&
+	! gpioinfo $c $chip | grep '\"GPIO17\"' | grep -q matcap-kiosk"
 vm_check "GPIO5 is the left button now" held_by_kiosk GPIO5
 click $GPIO17
 click $GPIO5
