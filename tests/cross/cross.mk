@@ -90,7 +90,7 @@ test-cross: cross-build $(KIOSK) $(TOOLS_DIR)/mkmodels $(TOOLS_DIR)/imgdiff
 
 # The Debian package, from config/debian (debhelper), built in a copy of the
 # tree under build/deb: `make deb` for this machine's architecture.
-#   make deps-deb   debhelper and lintian
+#   make deps-deb   build-essential, debhelper and lintian
 #   make deb        build/deb/matcap-kiosk_VERSION_ARCH.deb, then lintian (no error allowed)
 #   make test-deb   that package installed into a fresh Debian root, and run there
 DEB_BUILD := build/deb
@@ -100,7 +100,7 @@ DEB_TREE  := Makefile README.md LICENSE src shaders matcaps config systemd tests
 deps-deb:
 	$(CROSS_SUDO) apt-get update -qq
 	$(CROSS_SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
-		--no-install-recommends debhelper lintian dpkg-dev mmdebstrap file
+		--no-install-recommends build-essential debhelper lintian dpkg-dev mmdebstrap file
 
 # A package for another architecture (dpkg-buildpackage -a) would need
 # that architecture's libraries installed with dpkg, for dpkg-shlibdeps to
