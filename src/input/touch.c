@@ -157,7 +157,9 @@ static void add_device(struct touch *t, const char *node, bool is_touch)
 	struct epoll_event ev = {.events = EPOLLIN};
 	struct stat st;
 
-	if ((node != t->device && !wanted(t, node)) ||
+	/* The named device is tried at the start whatever its path; udev's
+	 * news are of input devices too, with no node. */
+	if (!node || (node != t->device && !wanted(t, node)) ||
 	    (stat(node, &st) == 0 && find_devnum(t, st.st_rdev) >= 0))
 		return;
 	/* Nodes udev does not call touchscreens need not be readable: only
