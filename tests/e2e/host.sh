@@ -39,6 +39,7 @@ ref knot-1024x768 1024x768
 ref knot-1024x768-rot90 1024x768 --rotate 90
 ref knot-800x600 800x600
 ref knot-800x600-pitch65 800x600 --pitch 65
+ref knot-800x600-rot90-pitch65 800x600 --rotate 90 --pitch 65
 
 complete=1
 for script in "$@"; do

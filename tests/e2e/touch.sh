@@ -7,7 +7,8 @@
 # zooms; a double tap returns to the start view (the reference again); a
 # long press cycles the matcap; a single tap and no touch at all draw
 # nothing (no page flip); the panel unplugged is said and a single-touch
-# one plugged in works; a device named that is no touchscreen is said. Prints the touch-to-frame latency (the kernel's
+# one plugged in works; a device named that is no touchscreen is said;
+# on a panel turned by [display] rotation a drag turns as the picture. Prints the touch-to-frame latency (the kernel's
 # event time to the frame handed to the display), never asserted: under
 # TCG it says more about the emulator than the kiosk. Ends with
 # "vm: N passed, N failed".
@@ -153,4 +154,19 @@ vm_check "and says it is no touchscreen, once" \
 	test "$(grep -c "$VKBD_DEV (vm-key keyboard): no touchscreen, ignored" notouch.log)" = 1
 kiosk_stop TERM
 vkbd_stop
+
+# ---- a panel turned 90 degrees: touches turn with the picture. The
+# panel's x runs down the picture, so a drag to the panel's right is the
+# same 45 degrees of pitch.
+vm_check "a multitouch panel again" inject_start
+kiosk_start rot90.log --display-mode 800x600 --log-level debug --rotate 90
+wait_log 90 rot90.log "ready: the first frame is on the screen"
+wait_log 20 rot90.log "touchscreen touch-inject"
+LOG=rot90.log
+touch_do drag 1000 2000 2000 2000 4 150
+still r1.png
+vm_check "rotation 90: a drag to the panel's right turns the model down (reference)" \
+	matches "$REF/knot-800x600-rot90-pitch65.png" r1.png
+kiosk_stop TERM
+inject_stop
 vm_summary
