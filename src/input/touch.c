@@ -240,20 +240,19 @@ static bool named(const struct touch_config *c)
 
 struct touch *touch_new(const struct touch_config *c, int rotation)
 {
-	struct touch *t;
+	struct touch *t = NULL;
 
 	if (c->device && (!strcmp(c->device, "off") || !strcmp(c->device, "none")))
-		return NULL;
+		goto out;
 	t = calloc(1, sizeof(*t));
-	if (!t)
-		goto oom;
-	t->rotation = rotation;
-	t->epoll_fd = epoll_create1(EPOLL_CLOEXEC);
-	t->device = named(c) ? strdup(c->device) : NULL;
-	if (t->epoll_fd < 0 || (named(c) && !t->device)) {
+	if (!t || (t->epoll_fd = epoll_create1(EPOLL_CLOEXEC)) < 0 ||
+	    (named(c) && !(t->device = strdup(c->device)))) {
+		log_err("touch: out of resources; running without touch");
 		touch_free(t);
-		goto oom;
+		t = NULL;
+		goto out;
 	}
+	t->rotation = rotation;
 	watch(t);
 	if (t->device)
 		add_device(t, t->device, true);
@@ -261,10 +260,8 @@ struct touch *touch_new(const struct touch_config *c, int rotation)
 		scan(t);
 	if (!t->count)
 		log_info("touch: no touchscreen yet; taking one when it comes");
+out:
 	return t;
-oom:
-	log_err("touch: out of resources; running without touch");
-	return NULL;
 }
 
 void touch_free(struct touch *t)
