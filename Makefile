@@ -69,7 +69,7 @@ SRC_DISPLAY := display/backlight display/cec display/display display/display_egl
 	       display/drm display/drm_atomic display/drm_legacy display/egl_util display/hotplug \
 	       display/kms_fb
 SRC_INPUT   := input/action input/button input/gesture input/touch_decode input/gpio \
-	       input/gpio_$(GPIOD_API) input/keyboard
+	       input/gpio_$(GPIOD_API) input/keyboard input/touch
 SRC_CAMERA  := camera/camera_feed camera/camera_link camera/camera_math camera/camera_proto \
 	       camera/camera_texture
 SRC_RENDER  := render/bake render/gl render/matcap_set render/render render/shader render/shading

@@ -11,6 +11,7 @@ UNIT_TESTS  += tangent subdivide material mesh_cache
 UNIT_TESTS  += camera_math camera_proto camera_texture
 UNIT_TESTS  += stability fp16 lod
 UNIT_TESTS  += drm gesture touch_decode schedule power cec backlight
+UNIT_TESTS  += touch_device app_touch
 TOOLS_DIR   := $(BUILD)/tools
 ASAN_BUILD  := $(BUILD)/asan
 SANITIZE    := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all \
@@ -59,6 +60,12 @@ $(TOOLS_DIR)/clock_set: tests/tools/clock_set.c
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -o $@ $^
 test-tools: $(TOOLS_DIR)/clock_set
+
+# A uinput touchscreen that drags, pinches and taps (tests/e2e/touch.sh).
+$(TOOLS_DIR)/touch_inject: tests/tools/touch_inject.c
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -o $@ $^
+test-tools: $(TOOLS_DIR)/touch_inject
 
 # Whether a model with no reference image shows (tests/corpus/run.sh).
 $(TOOLS_DIR)/silhouette: tests/corpus/silhouette.c $(BUILD)/util/image.o $(BUILD)/util/log.o

@@ -33,6 +33,7 @@ static void init(struct app *a, const struct app_config *cfg, int matcap_count, 
 	a->matcap_count = matcap_count;
 	a->state.orientation = quat_normalize(cfg->rest);
 	a->state.mode = cfg->mode;
+	a->state.zoom = 1.0;
 	a->state.last_input_ns = now_ns;
 	a->state.dirty = true;
 	a->now_ns = now_ns;
@@ -167,6 +168,7 @@ static void press(struct app *a, enum app_action action, uint64_t t)
 	case ACTION_RESET:
 		st->orientation = quat_normalize(a->cfg.rest);
 		st->mode = a->cfg.mode;
+		st->zoom = 1.0;
 		for (int i = 0; i < 4; i++)
 			a->turns[i].until_ns = 0; /* a tap's remainder would undo it */
 		st->dirty = true;
@@ -176,20 +178,72 @@ static void press(struct app *a, enum app_action action, uint64_t t)
 	}
 }
 
-static void input(struct app *a, const struct app_event *ev)
+/* Any input, at its time (or the state's, if it came late): the clock
+ * runs to it, and attract mode stops where it is. Returns that time. */
+static uint64_t input_at(struct app *a, uint64_t time_ns)
 {
-	uint64_t t = ev->time_ns > a->now_ns ? ev->time_ns : a->now_ns;
+	uint64_t t = time_ns > a->now_ns ? time_ns : a->now_ns;
 
 	app_advance(a, t);
 	if (t > a->state.last_input_ns)
 		a->state.last_input_ns = t;
-	a->attract = false; /* any press or release stops it, where it is */
+	a->attract = false;
+	return t;
+}
+
+static void input(struct app *a, const struct app_event *ev)
+{
+	uint64_t t = input_at(a, ev->time_ns);
+
 	if (ev->action <= ACTION_NONE || ev->action >= ACTION_COUNT)
 		return;
 	if (ev->pressed)
 		press(a, ev->action, t);
 	else if (app_action_is_turn(ev->action) && a->turns[ev->action - ACTION_TURN_LEFT].held)
 		a->turns[ev->action - ACTION_TURN_LEFT].held--;
+}
+
+static void zoom(struct app *a, double scale)
+{
+	double z = a->state.zoom * scale;
+
+	z = z < APP_ZOOM_MIN ? APP_ZOOM_MIN : z > APP_ZOOM_MAX ? APP_ZOOM_MAX : z;
+	/* At a bound a pinch changes nothing, and nothing is drawn. */
+	if (!(scale > 0) || z == a->state.zoom)
+		return;
+	a->state.zoom = z;
+	a->state.dirty = true;
+}
+
+/* A drag turns about the viewer's axes as the arrows do: right is right
+ * and down is down on the screen, whatever the model's orientation. */
+static void touch(struct app *a, const struct gesture *g)
+{
+	uint64_t t = input_at(a, g->time_ns);
+	enum app_action act = a->cfg.long_press;
+
+	switch (g->kind) {
+	case GESTURE_DRAG:
+		if (g->dx != 0.0 || g->dy != 0.0)
+			turn(a, g->dx * a->cfg.drag_speed, g->dy * a->cfg.drag_speed);
+		break;
+	case GESTURE_PINCH:
+		zoom(a, g->scale);
+		break;
+	case GESTURE_DOUBLE_TAP:
+		press(a, ACTION_RESET, t);
+		break;
+	case GESTURE_LONG_PRESS:
+		if (act <= ACTION_NONE || act >= ACTION_COUNT)
+			break;
+		/* A turn is a tap of it: turn_step. */
+		press(a, act, t);
+		if (app_action_is_turn(act))
+			a->turns[act - ACTION_TURN_LEFT].held--;
+		break;
+	default:
+		break;
+	}
 }
 
 static uint64_t next_change(const struct app *a)
@@ -291,6 +345,9 @@ void app_apply(struct app *a, const struct app_msg *m)
 		break;
 	case APP_FRAME_SHOWN:
 		a->state.dirty = false;
+		break;
+	case APP_TOUCH:
+		touch(a, &m->touch);
 		break;
 	}
 }

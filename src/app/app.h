@@ -8,6 +8,7 @@
 #define MK_APP_H
 
 #include "input/action.h"
+#include "input/gesture.h"
 #include "util/clock.h"
 #include "util/math3d.h"
 #include "render/shading.h"
@@ -24,7 +25,13 @@ struct app_config {
 	double attract_speed;	/* radians per second in attract mode */
 	struct quat rest;	/* orientation at start and after a reset */
 	enum shading_mode mode;
+	double drag_speed;	    /* radians a drag across the whole screen turns */
+	enum app_action long_press; /* what a long touch does */
 };
+
+/* A pinch zooms within these: the model stays whole and big enough to see. */
+#define APP_ZOOM_MIN 0.5
+#define APP_ZOOM_MAX 4.0
 
 /* What a frame shows: read-only outside src/app/app.c. */
 struct app_state {
@@ -32,7 +39,8 @@ struct app_state {
 	int matcap;	/* index into the image matcaps */
 	bool camera_on; /* the live camera frame is the matcap */
 	enum shading_mode mode;
-	bool dirty; /* something changed since the last frame drawn */
+	double zoom; /* the picture's scale about its centre: 1 at rest */
+	bool dirty;  /* something changed since the last frame drawn */
 	uint64_t last_input_ns;
 };
 
@@ -43,12 +51,14 @@ enum app_msg_kind {
 	APP_RELOADED,	  /* .reload: the settings were read again */
 	APP_DISPLAY_BACK, /* a display came (back): everything is drawn again */
 	APP_FRAME_SHOWN,  /* the state was drawn and handed to the display */
+	APP_TOUCH,	  /* .touch: a touchscreen gesture */
 };
 
 struct app_msg {
 	enum app_msg_kind kind;
 	union {
 		struct app_event input;
+		struct gesture touch;
 		struct {
 			bool available; /* a camera is there and can be drawn */
 			bool frame;	/* it sent a new frame */

@@ -6,6 +6,7 @@
 #include "camera/camera_feed.h"
 #include "input/gpio.h"
 #include "input/keyboard.h"
+#include "input/touch.h"
 #include "util/clock.h"
 #include "util/folder_watch.h"
 #include "util/log.h"
@@ -25,7 +26,7 @@
  * this long, so a burst of files is one rescan. */
 #define MATCAP_SETTLE_NS 500000000ull
 
-enum { FD_SIGNAL, FD_DISPLAY, FD_WATCH, FD_CAMERA, FD_INPUTS };
+enum { FD_SIGNAL, FD_DISPLAY, FD_WATCH, FD_CAMERA, FD_TOUCH, FD_INPUTS };
 
 /* Where an input source came from: a reload opens the buttons or the
  * keyboards again, and leaves the others alone. */
@@ -60,6 +61,7 @@ struct kiosk {
 	struct service service;
 	struct camera_feed *camera; /* the live camera; NULL: none */
 	struct screen *screen;	    /* its power; NULL: always on */
+	struct touch *touch;	    /* the touchscreens; NULL: off */
 };
 
 static void tell_app(struct kiosk *k, enum app_msg_kind kind)
@@ -150,6 +152,12 @@ static void open_keyboards(struct kiosk *k)
 		add_input(k, in[i], INPUT_KEYBOARD);
 }
 
+static void open_touch(struct kiosk *k)
+{
+	touch_free(k->touch);
+	k->touch = touch_new(&k->applied.touch, k->applied.content.rotation);
+}
+
 static void start_camera(struct kiosk *k)
 {
 	camera_feed_free(k->camera);
@@ -164,6 +172,7 @@ int kiosk_open_devices(struct kiosk *k)
 	if (ret)
 		return ret;
 	open_keyboards(k);
+	open_touch(k);
 	start_camera(k);
 	return 0;
 }
@@ -215,6 +224,7 @@ static int draw(struct kiosk *k, uint64_t now)
 	sync_mode(k, st->mode);
 	sync_matcap(k, st->matcap);
 	k->view.orientation = st->orientation;
+	k->view.zoom = (float)st->zoom;
 	/* Not connected, or waiting for the display: stay dirty, the display
 	 * asks for a redraw through dispatch() when it is back. */
 	k->display_absent = true;
@@ -325,6 +335,10 @@ static void reopen_devices(struct kiosk *k, unsigned sections)
 		log_info("reload: [power] changed: deciding the screen's power again");
 		start_screen(k, monotonic_ns());
 	}
+	if (sections & 1u << OPTIONS_TOUCH) {
+		log_info("reload: [touch] changed: opening the touchscreens again");
+		open_touch(k);
+	}
 }
 
 /* SIGHUP: the settings, model and matcaps again, swapped in only when all
@@ -348,6 +362,8 @@ static void reload(struct kiosk *k, uint64_t now_ns)
 	k->applied = fresh;
 	memset(&fresh, 0, sizeof(fresh)); /* k->applied owns its strings now */
 	configure(k, now_ns);
+	if (k->touch)
+		touch_set_rotation(k->touch, k->applied.content.rotation);
 	reopen_devices(k, reopen);
 	log_info("reload: done");
 out:
@@ -399,6 +415,24 @@ static void read_input(struct kiosk *k, int i, uint64_t now)
 	}
 }
 
+/* Gestures are inputs: they wake a sleeping screen and do what they do. */
+static void service_touch(struct kiosk *k, const struct pollfd *fds, uint64_t now)
+{
+	struct app_msg m = {.kind = APP_TOUCH};
+	struct gesture g[MAX_EVENTS];
+	int n;
+
+	if (!k->touch || (!(fds[FD_TOUCH].revents & POLLIN) && touch_deadline(k->touch) > now))
+		return;
+	n = touch_dispatch(k->touch, now, g, MAX_EVENTS);
+	for (int i = 0; i < n; i++) {
+		if (k->screen && screen_input(k->screen, now))
+			tell_app(k, APP_DISPLAY_BACK);
+		m.touch = g[i];
+		app_apply(k->app, &m);
+	}
+}
+
 static int poll_timeout_ms(struct kiosk *k, uint64_t deadline, uint64_t now)
 {
 	for (int i = 0; i < k->input_count; i++) {
@@ -406,6 +440,8 @@ static int poll_timeout_ms(struct kiosk *k, uint64_t deadline, uint64_t now)
 
 		deadline = d < deadline ? d : deadline;
 	}
+	if (k->touch && touch_deadline(k->touch) < deadline)
+		deadline = touch_deadline(k->touch);
 	if (deadline == CLOCK_NEVER)
 		return -1;
 	return deadline <= now ? 0 : (int)((deadline - now + 999999) / 1000000);
@@ -419,6 +455,7 @@ static int fill_fds(struct kiosk *k, struct pollfd *fds, int sig_fd)
 	    (struct pollfd){.fd = k->watch ? folder_watch_fd(k->watch) : -1, .events = POLLIN};
 	fds[FD_CAMERA] =
 	    (struct pollfd){.fd = k->camera ? camera_feed_fd(k->camera) : -1, .events = POLLIN};
+	fds[FD_TOUCH] = (struct pollfd){.fd = k->touch ? touch_fd(k->touch) : -1, .events = POLLIN};
 	for (int i = 0; i < k->input_count; i++)
 		fds[FD_INPUTS + i] = (struct pollfd){.fd = k->inputs[i]->fd, .events = POLLIN};
 	return FD_INPUTS + k->input_count;
@@ -557,6 +594,7 @@ static int loop_once(struct kiosk *k, int sig_fd)
 	service_camera(k, fds[FD_CAMERA].revents);
 	service_matcaps(k, fds, monotonic_ns());
 	service_inputs(k, fds, monotonic_ns());
+	service_touch(k, fds, monotonic_ns());
 	return 0;
 }
 
@@ -610,6 +648,7 @@ void kiosk_free(struct kiosk *k)
 	close_inputs(k, INPUT_BUTTON);
 	close_inputs(k, INPUT_KEYBOARD);
 	camera_feed_free(k->camera);
+	touch_free(k->touch);
 	screen_free(k->screen);
 	folder_watch_free(k->watch);
 	app_free(k->app);

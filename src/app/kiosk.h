@@ -43,8 +43,8 @@ struct kiosk *kiosk_new(const struct kiosk_parts *parts, uint64_t now_ns);
 void kiosk_free(struct kiosk *k);
 /* An input source of the caller's; the kiosk destroys it when it drops it. */
 int kiosk_add_input(struct kiosk *k, struct input_source *s);
-/* The buttons and keyboards of the settings, and the camera. A button or
- * camera that cannot be had is logged and left out. Returns 0, or -EEXIST
+/* The buttons, keyboards and touchscreens of the settings, and the
+ * camera. A button or camera that cannot be had is logged and left out. Returns 0, or -EEXIST
  * when two buttons are one line (a config error). */
 int kiosk_open_devices(struct kiosk *k);
 /* Runs until SIGTERM or SIGINT; returns 0, or a negative errno when the

@@ -23,6 +23,8 @@ const struct options_section_rule options_sections[OPTIONS_SECTIONS] = {
 			"at once; the camera is started again if this section changed"},
     [OPTIONS_POWER] = {"power", OPTIONS_REOPEN, NULL,
 		       "at once; the screen's power is decided again if this section changed"},
+    [OPTIONS_TOUCH] = {"touch", OPTIONS_REOPEN, NULL,
+		       "at once; the touchscreens are opened again if this section changed"},
 };
 
 static const char *const backend_names[] = {"auto", "kms", "osmesa", "egl-headless", NULL};
@@ -200,6 +202,12 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "also put an HDMI-CEC TV to standby and wake it"},
     {"cec-device", 0, OPTIONS_POWER, "cec_device", K_STRING, AT(power.cec_device), 0, 0, 0, NULL,
      "DEV", "the CEC adapter (default /dev/cec0)"},
+    {"touch", 0, OPTIONS_TOUCH, "device", K_STRING, AT(touch.device), 0, 0, 0, NULL, "DEV",
+     "auto (every touchscreen, also those plugged in later), off, or one /dev/input/eventN"},
+    {"drag-speed", 0, OPTIONS_TOUCH, "drag_speed", K_DEGREES, AT(app.drag_speed), 10, 1440, 0, NULL,
+     "DEG", "how far a one-finger drag across the whole screen turns the model"},
+    {"touch-long-press", 0, OPTIONS_TOUCH, "long_press", K_CHOICE, AT(app.long_press), 0, 0, 0,
+     app_action_names, "ACT", "what a long touch does (none: nothing)"},
     {"config", 'C', OPTION_CLI, NULL, K_STRING, AT(config), 0, 0, 0, NULL, "FILE",
      "read settings from an INI file first (see config/kiosk.ini)"},
     {"output", 'o', OPTION_CLI, NULL, K_STRING, AT(output), 0, 0, 0, NULL, "FILE",
@@ -245,6 +253,8 @@ void option_defaults(struct options *o)
 	o->app.attract_speed = radians(15);
 	o->app.turn_speed = radians(90);
 	o->app.turn_step = radians(5);
+	o->app.drag_speed = radians(180);
+	o->app.long_press = ACTION_NEXT_MATCAP;
 	o->buttons.debounce_ms = 10;
 	o->buttons.long_press_ms = 800;
 	memcpy(o->buttons.buttons, buttons, sizeof(buttons));

@@ -14,6 +14,7 @@
 #include "display/display.h"
 #include "input/gpio.h"
 #include "input/keyboard.h"
+#include "input/touch.h"
 #include "util/log.h"
 
 #include <stdbool.h>
@@ -31,6 +32,7 @@ enum options_section {
 	OPTIONS_MATERIAL,
 	OPTIONS_CAMERA,
 	OPTIONS_POWER,
+	OPTIONS_TOUCH,
 	OPTIONS_SECTIONS
 };
 
@@ -68,6 +70,8 @@ struct options {
 	struct camera_feed_config camera;
 	/* [power] */
 	struct screen_config power;
+	/* [touch]; its gestures' settings are in app */
+	struct touch_config touch;
 	/* the command line only */
 	char *config;
 	char *output;
@@ -100,7 +104,7 @@ struct option_def {
 
 /* The table's length: the compiler refuses an entry more, and
  * tests/unit/test_options.c one less. */
-#define OPTION_DEFS 72
+#define OPTION_DEFS 75
 extern const struct option_def option_defs[OPTION_DEFS];
 
 void option_defaults(struct options *o);

@@ -402,6 +402,13 @@ void render_matrices(const struct view *v, int width, int height, float modelvie
 	mat4_translate(move, 0, 0, -fit.distance);
 	mat4_multiply(modelview, move, rot);
 	sphere_fit_projection(&fit, v->ortho, proj);
+	/* Zoom scales the picture in clip space, so perspective, depth and
+	 * the fit stay as they are. */
+	if (v->zoom > 0 && v->zoom != 1)
+		for (int i = 0; i < 4; i++) {
+			proj[4 * i] *= v->zoom;
+			proj[4 * i + 1] *= v->zoom;
+		}
 	/* A portrait panel turns the picture, not the scanout, so it works
 	 * with every driver and plane. */
 	mat4_rotate_z(panel, v->rotation);

@@ -16,6 +16,7 @@ struct view {
 	struct quat orientation; /* of the model */
 	bool ortho;		 /* orthographic: the unit sphere fills the short side */
 	int rotation;		 /* of the panel: 0, 90, 180 or 270 degrees */
+	float zoom;		 /* the picture's scale about its centre; 0 or 1: as fitted */
 	float background[3];
 };
 

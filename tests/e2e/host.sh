@@ -22,7 +22,8 @@ out=$1
 shift
 # The display first, then the buttons and the camera on it.
 [ $# -gt 0 ] || set -- tests/e2e/kms.sh tests/e2e/kms-hotplug.sh tests/e2e/kms-busy.sh \
-	tests/vm/gpio-test.sh tests/e2e/reload-devices.sh tests/e2e/camera.sh tests/e2e/cec.sh tests/e2e/power.sh
+	tests/vm/gpio-test.sh tests/e2e/reload-devices.sh tests/e2e/camera.sh tests/e2e/cec.sh tests/e2e/power.sh \
+	tests/e2e/touch.sh
 kiosk=${KIOSK:-./matcap-kiosk}
 imgdiff=${IMGDIFF:-build/tools/imgdiff}
 mkdir -p "$out/ref"
@@ -37,6 +38,8 @@ ref() { # NAME SIZE [ARGS]...
 ref knot-1024x768 1024x768
 ref knot-1024x768-rot90 1024x768 --rotate 90
 ref knot-800x600 800x600
+ref knot-800x600-pitch65 800x600 --pitch 65
+ref knot-800x600-rot90-pitch65 800x600 --rotate 90 --pitch 65
 
 complete=1
 for script in "$@"; do
@@ -47,9 +50,10 @@ for script in "$@"; do
 	cp -r "$out/ref" "$share/ref"
 	bins="--bin $kiosk --bin $imgdiff"
 	# hues counts the camera's colour bars in a screenshot; cec_power
-	# sends the kiosk's CEC messages; clock_set sets the board's clock.
+	# sends the kiosk's CEC messages; clock_set sets the board's clock;
+	# touch_inject is a uinput touchscreen.
 	tools=$(dirname "$imgdiff")
-	for b in ${E2E_BINS:-$tools/hues $tools/cec_power $tools/clock_set}; do bins="$bins --bin $b"; done
+	for b in ${E2E_BINS:-$tools/hues $tools/cec_power $tools/clock_set $tools/touch_inject}; do bins="$bins --bin $b"; done
 	# shellcheck disable=SC2086
 	tests/vm/run.sh --quiet --timeout "${VM_TIMEOUT:-240}" $bins --share "$share" \
 		${VM_RUN_FLAGS:-} -- "$script" >"$share/run.log" 2>&1
