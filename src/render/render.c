@@ -274,11 +274,17 @@ void renderer_set_matcap_filter(struct renderer *r, enum matcap_filter filter)
  * in tests/bench/report/speed-error.md: at 1280x720 (disc 847 px, matcap
  * 256) linear is 2 dB closer to the reference, at 128 px (disc 151 px)
  * the mipmaps are 1-1.4 dB closer. */
+bool matcap_filter_mipmaps(enum matcap_filter filter, int side, int width, int height)
+{
+	if (filter != MATCAP_FILTER_AUTO)
+		return filter == MATCAP_FILTER_MIPMAP;
+	return 2.0 * sphere_fit_pixels_per_unit(width, height) <= (double)side;
+}
+
 static void matcap_choose_filter(struct renderer *r, const int vp[4])
 {
-	double disc = 2.0 * sphere_fit_pixels_per_unit(vp[2], vp[3]);
 	bool mip = r->matcap_mippable &&
-		   (r->matcap_filter == MATCAP_FILTER_MIPMAP || disc <= (double)r->matcap_side);
+		   matcap_filter_mipmaps(r->matcap_filter, r->matcap_side, vp[2], vp[3]);
 
 	if (mip == r->matcap_mipmapped || r->matcap_override)
 		return;

@@ -47,6 +47,9 @@ void renderer_set_vertex_format(struct renderer *r, enum vertex_format format);
  * MIPMAP resamples another size to one, AUTO leaves it linear. */
 enum matcap_filter { MATCAP_FILTER_AUTO, MATCAP_FILTER_MIPMAP, MATCAP_FILTER_LINEAR };
 void renderer_set_matcap_filter(struct renderer *r, enum matcap_filter filter);
+/* Whether filter reads the mipmaps of a matcap side texels wide (a power
+ * of two) drawn in a width x height viewport: the renderer's choice. */
+bool matcap_filter_mipmaps(enum matcap_filter filter, int side, int width, int height);
 int renderer_set_matcap(struct renderer *r, const struct image *img);
 /* Draw with tex (owned by the caller, e.g. the live camera's) as the
  * matcap; 0: back to the renderer's own image texture. */

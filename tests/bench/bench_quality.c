@@ -317,8 +317,8 @@ static int load_material(struct bench *b, const struct look *lk, const struct me
 static bool same_drawing(const struct look *lk, const struct setting *a, const struct setting *b)
 {
 	return a->triangles == b->triangles && a->mode == b->mode && a->highp == b->highp &&
-	       (lk->lit || (a->matcap == b->matcap && a->filter == b->filter)) && a->ss == b->ss &&
-	       a->format == b->format;
+	       (lk->lit || (a->matcap == b->matcap && a->mipmapped == b->mipmapped)) &&
+	       a->ss == b->ss && a->format == b->format;
 }
 
 int bench_rounds_frames(const struct bench *b)
@@ -374,7 +374,12 @@ static int run_look(struct bench *b, int l)
 	if (!ret)
 		ret = prepare_meshes(b, l, &base, &mat, m, mesh_of);
 	for (int i = 0; i < n && !ret; i++) {
+		int w = (lk->small ? lk->small : b->width) * s[i].ss;
+		int h = (lk->small ? lk->small : b->height) * s[i].ss;
+
 		s[i].triangles = m[mesh_of[i]].index_count / 3;
+		/* auto draws exactly as one of the forced filters */
+		s[i].mipmapped = matcap_filter_mipmaps(s[i].filter, s[i].matcap, w, h);
 		for (int k = 0; k < i && s[i].same_as < 0; k++)
 			if (s[k].same_as < 0 && same_drawing(lk, &s[k], &s[i]))
 				s[i].same_as = k;

@@ -44,6 +44,7 @@ struct setting {
 	enum shading_mode mode;
 	bool highp, is_default, is_reference;
 	enum matcap_filter filter; /* the matcap's (renderer_set_matcap_filter) */
+	bool mipmapped;		   /* what the filter reads here (matcap_filter_mipmaps) */
 	enum vertex_format format; /* renderer_set_vertex_format */
 	long vertex_bytes;	   /* measured: renderer_get_stats */
 	double lod;
