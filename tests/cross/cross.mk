@@ -97,10 +97,13 @@ DEB_BUILD := build/deb
 DEB_SRC   := $(DEB_BUILD)/matcap-kiosk-$(VERSION)
 DEB_TREE  := Makefile README.md LICENSE src shaders matcaps config systemd tests
 
+# systemd.pc and udev.pc (where units and rules go) are in systemd-dev from
+# Debian 13 on, in systemd and udev before.
 deps-deb:
 	$(CROSS_SUDO) apt-get update -qq
+	sd=$$(apt-cache show systemd-dev >/dev/null 2>&1 && echo systemd-dev || echo systemd udev); \
 	$(CROSS_SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
-		--no-install-recommends build-essential debhelper lintian dpkg-dev mmdebstrap file
+		--no-install-recommends build-essential debhelper lintian dpkg-dev mmdebstrap file $$sd
 
 # A package for another architecture (dpkg-buildpackage -a) would need
 # that architecture's libraries installed with dpkg, for dpkg-shlibdeps to
