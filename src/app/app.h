@@ -22,6 +22,8 @@ struct app_config {
 	double turn_step;	/* radians a tap turns, however short the tap */
 	double attract_after_s; /* idle time before turning by itself; 0: never */
 	double attract_speed;	/* radians per second in attract mode */
+	double attract_fps;	/* frames per second at most in attract mode; 0: the display's */
+	double attract_model_s; /* the next model this often in attract mode; 0: never */
 	struct quat rest;	/* orientation at start and after a reset */
 	enum shading_mode mode;
 };
@@ -34,6 +36,8 @@ struct app_state {
 	enum shading_mode mode;
 	bool dirty; /* something changed since the last frame drawn */
 	uint64_t last_input_ns;
+	int model;	/* the model wanted, an index into the model list */
+	int model_step; /* +1 or -1: the way the last step went, for passing over */
 };
 
 enum app_msg_kind {
@@ -43,6 +47,7 @@ enum app_msg_kind {
 	APP_RELOADED,	  /* .reload: the settings were read again */
 	APP_DISPLAY_BACK, /* a display came (back): everything is drawn again */
 	APP_FRAME_SHOWN,  /* the state was drawn and handed to the display */
+	APP_MODELS,	  /* .models: a model was shown, or the list read again */
 };
 
 struct app_msg {
@@ -57,6 +62,10 @@ struct app_msg {
 			int count; /* image matcaps that next/prev cycle through */
 			int shown; /* where the image shown before is now; -1: gone */
 		} matcaps;
+		struct {
+			int count; /* models that next/prev-model cycle through */
+			int shown; /* the one on screen now; -1: none of them */
+		} models;
 		struct {
 			const struct app_config *config;
 			int matcap_count;
