@@ -9,6 +9,7 @@
 set -u
 . /repo/tests/e2e/lib.sh
 
+mkdir -p all
 mkmodels all >/dev/null
 mkdir -p m
 cp all/knot.glb m/a-knot.glb
