@@ -44,14 +44,15 @@ echo "| on, attract_fps 30 (default) | $(cpu_per_s --attract-after 0.1 --attract
 echo "| on, attract_fps 0 (uncapped) | $(cpu_per_s --attract-after 0.1 --attract-fps 0) |"
 
 # switches CACHE: the folder in turns every 4 s for 30 s; the swap times
-# logged, and the peak RSS.
+# logged, and the peak RSS (VmHWM, read before it stops).
 switches() {
 	rm -f "$out/switch.log"
-	XDG_CACHE_HOME=$1 /usr/bin/time -f "rss %M" -o "$out/rss" "$KIOSK" -b osmesa \
-		--size 1280x720 --keyboard none --camera off --log-level debug --model "$out/folder" \
-		--attract-after 0.1 --attract-model-seconds 4 >"$out/switch.log" 2>&1 &
+	XDG_CACHE_HOME=$1 "$KIOSK" -b osmesa --size 1280x720 --keyboard none --camera off \
+		--log-level debug --model "$out/folder" --attract-after 0.1 \
+		--attract-model-seconds 4 >"$out/switch.log" 2>&1 &
 	pid=$!
 	sleep 30
+	sed -n 's/^VmHWM:[[:space:]]*\([0-9]*\) kB/\1/p' "/proc/$pid/status" >"$out/rss"
 	kill -TERM "$pid" 2>/dev/null || true
 	wait "$pid" || true
 }
@@ -65,7 +66,7 @@ switches "$out/cache"
 awk '/model [0-9] of 2/ { m = $0 ~ /knot-1m/ ? "1m" : "10k" }
 	/swapped in/ { sub(/.*swapped in /, ""); sub(/ ms.*/, ""); print m, $0 }' \
 	"$out/switch.log" >"$out/swaps"
-rss=$(sed -n 's/^rss //p' "$out/rss")
+rss=$(cat "$out/rss")
 alone=$(XDG_CACHE_HOME=$out/cache-alone /usr/bin/time -f "%M" "$KIOSK" -q -b osmesa \
 	--size 1280x720 --frames 3 --model "$out/knot-1m.glb" 2>&1 >/dev/null | tail -1)
 rm -rf "$out/cache-alone"
