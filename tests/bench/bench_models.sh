@@ -20,11 +20,11 @@ cp "$out/knot-10k.glb" "$out/folder/a-knot-10k.glb"
 cp "$out/knot-1m.glb" "$out/folder/b-knot-1m.glb"
 hz=$(getconf CLK_TCK)
 
-# cpu_per_s ARGS...: the live kiosk for run_s seconds; its CPU seconds
-# (user + system, /proc/PID/stat) per second, from 2 s in (the start and
-# the first frame left out).
+# cpu_per_s ARGS...: the live kiosk for run_s seconds; "CPU | frames",
+# its CPU seconds (user + system, /proc/PID/stat) and frames drawn per
+# second, from 2 s in (the start and the first frame left out).
 cpu_per_s() {
-	"$KIOSK" -q -b osmesa --size 1280x720 --keyboard none --camera off "$@" &
+	"$KIOSK" -b osmesa --size 1280x720 --keyboard none --camera off "$@" 2>"$out/cpu.log" &
 	pid=$!
 	sleep 2
 	t0=$(awk '{ print $14 + $15 }' "/proc/$pid/stat")
@@ -32,13 +32,15 @@ cpu_per_s() {
 	t1=$(awk '{ print $14 + $15 }' "/proc/$pid/stat")
 	kill -TERM "$pid"
 	wait "$pid" || true
-	awk -v a="$t0" -v b="$t1" -v hz="$hz" -v s="$run_s" 'BEGIN { printf "%.3f", (b - a) / hz / s }'
+	n=$(sed -n 's/.* \([0-9]*\) frames drawn.*/\1/p' "$out/cpu.log")
+	awk -v a="$t0" -v b="$t1" -v hz="$hz" -v s="$run_s" -v n="${n:-0}" \
+		'BEGIN { printf "%.3f | %.1f", (b - a) / hz / s, n / (s + 2) }'
 }
 
 echo "## attract mode and several models ($(uname -m), $(nproc) cores, 1280x720 offscreen)"
 echo
-echo "| attract mode | CPU s per s |"
-echo "|---|---|"
+echo "| attract mode | CPU s per s | frames per s (whole run) |"
+echo "|---|---|---|"
 echo "| off (attract_after 0): idle | $(cpu_per_s --attract-after 0) |"
 echo "| on, attract_fps 30 (default) | $(cpu_per_s --attract-after 0.1 --attract-fps 30) |"
 echo "| on, attract_fps 0 (uncapped) | $(cpu_per_s --attract-after 0.1 --attract-fps 0) |"
