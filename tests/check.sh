@@ -94,7 +94,7 @@ needs() {
 	live) echo "asan-kiosk $TOOLS/mkmodels $TOOLS/notify_listen" ;;
 	fuzz) echo fuzzers ;;
 	soak) echo "$TOOLS/soak" ;;
-	board) echo "all $TOOLS/imgdiff $TOOLS/hues $TOOLS/cec_power $TOOLS/clock_set $TOOLS/touch_inject" ;;
+	board) echo "all $TOOLS/imgdiff $TOOLS/hues $TOOLS/cec_power $TOOLS/clock_set $TOOLS/touch_inject $TOOLS/mkmodels" ;;
 	esac
 }
 

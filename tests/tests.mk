@@ -12,6 +12,7 @@ UNIT_TESTS  += camera_math camera_proto camera_texture
 UNIT_TESTS  += stability fp16 lod
 UNIT_TESTS  += drm gesture touch_decode schedule power cec backlight
 UNIT_TESTS  += touch_device app_touch
+UNIT_TESTS  += model_list
 TOOLS_DIR   := $(BUILD)/tools
 ASAN_BUILD  := $(BUILD)/asan
 SANITIZE    := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all \
@@ -151,6 +152,7 @@ bench: $(KIOSK) test-tools
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_materials.sh
 	KIOSK=./$(KIOSK) sh tests/bench/bench_input.sh
 	KIOSK=./$(KIOSK) sh tests/bench/bench_kms.sh
+	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_models.sh
 	TOOLS=$(TOOLS_DIR) sh tests/bench/bench_quality.sh tests/out/report --frames 7
 
 # Speed against error, regenerated into tests/bench/report (checked in, with

@@ -22,6 +22,9 @@ struct app {
 	bool camera_available;	  /* found by the camera feed, not by the settings */
 	bool camera_resume;	  /* show the camera when it is (back) there */
 	bool attract;		  /* turning by itself */
+	uint64_t attract_ns;	  /* its turn is drawn up to then */
+	uint64_t model_at;	  /* attract mode steps to the next model then */
+	int model_count;	  /* models that next/prev-model cycle through */
 	uint64_t now_ns;	  /* the last time the state was advanced to */
 	struct app_turn turns[4]; /* left, right, up, down */
 };
@@ -36,6 +39,8 @@ static void init(struct app *a, const struct app_config *cfg, int matcap_count, 
 	a->state.zoom = 1.0;
 	a->state.last_input_ns = now_ns;
 	a->state.dirty = true;
+	a->state.model_step = 1;
+	a->model_count = 1;
 	a->now_ns = now_ns;
 	/* The first time a camera is found, it is shown. */
 	a->camera_resume = true;
@@ -92,14 +97,17 @@ static bool any_held(const struct app *a)
 	return false;
 }
 
-bool app_moving(const struct app *a)
+static bool turning(const struct app *a)
 {
-	if (a->attract)
-		return true;
 	for (int i = 0; i < 4; i++)
 		if (a->turns[i].held || a->turns[i].until_ns > a->now_ns)
 			return true;
 	return false;
+}
+
+bool app_moving(const struct app *a)
+{
+	return a->attract || turning(a);
 }
 
 static uint64_t attract_at(const struct app *a)
@@ -142,6 +150,16 @@ static void cycle(struct app *a, int step)
 	st->dirty = true;
 }
 
+static void step_model(struct app *a, int step)
+{
+	int n = a->model_count;
+
+	if (n < 2)
+		return;
+	a->state.model = ((a->state.model + step) % n + n) % n;
+	a->state.model_step = step;
+}
+
 static void press(struct app *a, enum app_action action, uint64_t t)
 {
 	struct app_state *st = &a->state;
@@ -164,6 +182,10 @@ static void press(struct app *a, enum app_action action, uint64_t t)
 	case ACTION_NEXT_MODE:
 		st->mode = (enum shading_mode)((st->mode + 1) % SHADING_MODE_COUNT);
 		st->dirty = true;
+		break;
+	case ACTION_NEXT_MODEL:
+	case ACTION_PREV_MODEL:
+		step_model(a, action == ACTION_NEXT_MODEL ? 1 : -1);
 		break;
 	case ACTION_RESET:
 		st->orientation = quat_normalize(a->cfg.rest);
@@ -246,16 +268,57 @@ static void touch(struct app *a, const struct gesture *g)
 	}
 }
 
+/* Attract mode alone draws at attract_fps; a held turn at the display's
+ * rate. */
+static uint64_t attract_period(const struct app *a)
+{
+	return a->cfg.attract_fps > 0 ? (uint64_t)(1e9 / a->cfg.attract_fps) : 0;
+}
+
 static uint64_t next_change(const struct app *a)
 {
-	if (app_moving(a))
+	uint64_t period = attract_period(a), at;
+
+	if (turning(a) || (a->attract && !period))
 		return a->now_ns + FRAME_NS;
-	return attract_at(a);
+	if (!a->attract)
+		return attract_at(a);
+	at = a->attract_ns + period;
+	if (a->cfg.attract_model_s > 0 && a->model_count > 1 && a->model_at < at)
+		at = a->model_at;
+	return at > a->now_ns ? at : a->now_ns;
+}
+
+/* Attract mode's turn since it was last drawn, at most attract_fps times
+ * a second: the display's every vblank would cost a kiosk nobody watches
+ * its CPU for nothing. */
+static double attract_yaw(struct app *a, uint64_t now_ns)
+{
+	double yaw;
+
+	if (now_ns < a->attract_ns + attract_period(a))
+		return 0.0;
+	yaw = a->cfg.attract_speed * (double)(now_ns - a->attract_ns) * 1e-9;
+	a->attract_ns = now_ns;
+	return yaw;
+}
+
+/* Attract mode shows every model in turn, one each attract_model_s. */
+static void attract_models(struct app *a, uint64_t now_ns)
+{
+	uint64_t every = (uint64_t)(a->cfg.attract_model_s * 1e9);
+
+	if (!every || a->model_count < 2 || now_ns < a->model_at)
+		return;
+	step_model(a, 1);
+	a->model_at += every;
+	if (a->model_at <= now_ns) /* asleep meanwhile: no catching up */
+		a->model_at = now_ns + every;
 }
 
 uint64_t app_advance(struct app *a, uint64_t now_ns)
 {
-	uint64_t prev = a->now_ns, from = prev, at;
+	uint64_t prev = a->now_ns, at;
 	const struct app_turn *t = a->turns;
 	double yaw, pitch, speed = a->cfg.turn_speed;
 
@@ -267,10 +330,13 @@ uint64_t app_advance(struct app *a, uint64_t now_ns)
 	at = attract_at(a);
 	if (!a->attract && !any_held(a) && at <= now_ns) {
 		a->attract = true;
-		from = at > prev ? at : prev;
+		a->attract_ns = at > prev ? at : prev;
+		a->model_at = a->attract_ns + (uint64_t)(a->cfg.attract_model_s * 1e9);
 	}
-	if (a->attract)
-		yaw += a->cfg.attract_speed * (double)(now_ns - from) * 1e-9;
+	if (a->attract) {
+		yaw += attract_yaw(a, now_ns);
+		attract_models(a, now_ns);
+	}
 	if (yaw != 0.0 || pitch != 0.0)
 		turn(a, yaw, pitch);
 	return next_change(a);
@@ -314,6 +380,18 @@ static void matcaps(struct app *a, int count, int shown)
 	a->state.dirty = true; /* it may be the very file that was rewritten */
 }
 
+/* The model on screen now (a model that failed was passed over, or the
+ * list changed): the wanted one follows it. */
+static void models(struct app *a, int count, int shown)
+{
+	a->model_count = count > 0 ? count : 1;
+	if (shown >= 0 && shown < a->model_count)
+		a->state.model = shown;
+	else if (a->state.model >= a->model_count)
+		a->state.model = 0;
+	a->state.dirty = true;
+}
+
 static void reload(struct app *a, const struct app_config *cfg, int matcap_count, uint64_t now_ns)
 {
 	bool camera_on = a->state.camera_on, available = a->camera_available;
@@ -348,6 +426,9 @@ void app_apply(struct app *a, const struct app_msg *m)
 		break;
 	case APP_TOUCH:
 		touch(a, &m->touch);
+		break;
+	case APP_MODELS:
+		models(a, m->models.count, m->models.shown);
 		break;
 	}
 }

@@ -23,6 +23,8 @@ struct app_config {
 	double turn_step;	/* radians a tap turns, however short the tap */
 	double attract_after_s; /* idle time before turning by itself; 0: never */
 	double attract_speed;	/* radians per second in attract mode */
+	double attract_fps;	/* frames per second at most in attract mode; 0: the display's */
+	double attract_model_s; /* the next model this often in attract mode; 0: never */
 	struct quat rest;	/* orientation at start and after a reset */
 	enum shading_mode mode;
 	double drag_speed;	    /* radians a drag across the whole screen turns */
@@ -42,6 +44,8 @@ struct app_state {
 	double zoom; /* the picture's scale about its centre: 1 at rest */
 	bool dirty;  /* something changed since the last frame drawn */
 	uint64_t last_input_ns;
+	int model;	/* the model wanted, an index into the model list */
+	int model_step; /* +1 or -1: the way the last step went, for passing over */
 };
 
 enum app_msg_kind {
@@ -52,6 +56,7 @@ enum app_msg_kind {
 	APP_DISPLAY_BACK, /* a display came (back): everything is drawn again */
 	APP_FRAME_SHOWN,  /* the state was drawn and handed to the display */
 	APP_TOUCH,	  /* .touch: a touchscreen gesture */
+	APP_MODELS,	  /* .models: a model was shown, or the list read again */
 };
 
 struct app_msg {
@@ -67,6 +72,10 @@ struct app_msg {
 			int count; /* image matcaps that next/prev cycle through */
 			int shown; /* where the image shown before is now; -1: gone */
 		} matcaps;
+		struct {
+			int count; /* models that next/prev-model cycle through */
+			int shown; /* the one on screen now; -1: none of them */
+		} models;
 		struct {
 			const struct app_config *config;
 			int matcap_count;

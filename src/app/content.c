@@ -1,4 +1,5 @@
 #include "app/content.h"
+#include "app/model_list.h"
 #include "render/bake.h"
 #include "scene/gltf.h"
 #include "scene/lod.h"
@@ -20,15 +21,11 @@
 #define KNOT_TUBULAR 256
 #define KNOT_RADIAL  32
 
-static int load_model(const struct content_config *o, bool strict, struct mesh *mesh)
+/* path NULL: the built-in knot. */
+static int load_model(const char *path, const struct content_config *o, struct mesh *mesh)
 {
-	if (o->model) {
-		int ret = gltf_load_textures(o->model, material_gltf_textures(&o->material), mesh);
-
-		if (!ret || strict)
-			return ret;
-		log_warn("showing the built-in torus knot instead of %s", o->model);
-	}
+	if (path)
+		return gltf_load_textures(path, material_gltf_textures(&o->material), mesh);
 	return mesh_torus_knot(mesh, KNOT_TUBULAR, KNOT_RADIAL);
 }
 
@@ -41,10 +38,10 @@ static void shell_counts(struct content *s, const struct mesh_packed *m)
 	s->mesh.index_count = m->index_count;
 }
 
-static int content_cache_lookup(struct content *s, const struct content_config *c)
+static int content_cache_lookup(struct content *s, const struct content_config *c, const char *path)
 {
 	char dir[PATH_MAX];
-	int ret = mesh_cache_scene_key(c->model, c->lod_pixels, &c->material, &s->cache_key);
+	int ret = mesh_cache_scene_key(path, c->lod_pixels, &c->material, &s->cache_key);
 
 	if (!ret)
 		ret = mesh_cache_dir(dir, sizeof(dir));
@@ -57,7 +54,7 @@ static int content_cache_lookup(struct content *s, const struct content_config *
 	 * texture: its factors are all material_load needs. */
 	s->mesh.material = *mesh_cache_entry_material(s->cached);
 	shell_counts(s, mesh_cache_entry_mesh(s->cached));
-	log_info("%s: the prepared mesh from the cache (%u triangles)", c->model,
+	log_info("%s: the prepared mesh from the cache (%u triangles)", path,
 		 s->mesh.index_count / 3);
 	return 0;
 }
@@ -151,13 +148,69 @@ static int load_matcap(const struct content_config *o, bool strict, struct conte
 	return s->matcap_path ? 0 : -ENOMEM;
 }
 
+/* The model of one file, from the cache or parsed; strict: no knot. */
+static int load_mesh(struct content *s, const struct content_config *o, const char *path)
+{
+	return content_cache_lookup(s, o, path) ? load_model(path, o, &s->mesh) : 0;
+}
+
+struct try_ctx {
+	struct content *s;
+	const struct content_config *o;
+};
+
+static int try_mesh(void *ctx, const char *path)
+{
+	struct try_ctx *t = ctx;
+
+	memset(&t->s->mesh, 0, sizeof(t->s->mesh));
+	return load_mesh(t->s, t->o, path);
+}
+
+/* A folder or a list: the first model in it that loads; the others that
+ * fail say so, one line each. */
+static int load_first_model(struct content *s, const struct content_config *o, bool strict)
+{
+	struct try_ctx t = {s, o};
+	struct model_list *l = model_list_new(o->model);
+	int i = l ? model_list_pick(l, 0, 1, -1, try_mesh, &t) : -1;
+
+	if (i >= 0)
+		s->model_path = strdup(model_list_path(l, i));
+	model_list_free(l);
+	if (i >= 0)
+		return s->model_path ? 0 : -ENOMEM;
+	if (strict)
+		return -ENOENT;
+	log_warn("%s: showing the built-in torus knot: no model there loads", o->model);
+	return mesh_torus_knot(&s->mesh, KNOT_TUBULAR, KNOT_RADIAL);
+}
+
+static int load_the_model(struct content *s, const struct content_config *o, bool strict)
+{
+	int ret;
+
+	if (model_spec_is_many(o->model))
+		return load_first_model(s, o, strict);
+	if (o->model && !(s->model_path = strdup(o->model)))
+		return -ENOMEM;
+	/* A model prepared before is mapped from the cache, not parsed. */
+	ret = load_mesh(s, o, s->model_path);
+	if (ret && !strict) {
+		log_warn("showing the built-in torus knot instead of %s", o->model);
+		free(s->model_path);
+		s->model_path = NULL;
+		ret = mesh_torus_knot(&s->mesh, KNOT_TUBULAR, KNOT_RADIAL);
+	}
+	return ret;
+}
+
 int content_load(struct content *s, const struct content_config *o, bool strict)
 {
 	int ret;
 
 	memset(s, 0, sizeof(*s));
-	/* A model prepared before is mapped from the cache, not parsed. */
-	ret = content_cache_lookup(s, o) ? load_model(o, strict, &s->mesh) : 0;
+	ret = load_the_model(s, o, strict);
 	if (!ret)
 		ret = load_matcap(o, strict, s);
 	if (!ret)
@@ -167,13 +220,50 @@ int content_load(struct content *s, const struct content_config *o, bool strict)
 	return ret;
 }
 
-void content_release(struct content *s)
+int content_load_model(struct content *s, const struct content_config *o, const char *path,
+		       int width, int height)
+{
+	int ret;
+
+	memset(s, 0, sizeof(*s));
+	s->model_path = strdup(path);
+	ret = s->model_path ? load_mesh(s, o, path) : -ENOMEM;
+	if (!ret)
+		ret = material_load(&s->material, &o->material, &s->mesh, true);
+	if (!ret)
+		ret = content_prepare(s, o, width, height);
+	if (ret)
+		content_release(s);
+	return ret;
+}
+
+/* The model's parts of a content, as content_release gives them back. */
+static void release_model(struct content *s)
 {
 	mesh_cache_writer_join(s->writer);
 	mesh_packed_release(&s->packed);
 	mesh_cache_entry_free(s->cached);
 	mesh_release(&s->mesh);
 	material_release(&s->material);
+	free(s->model_path);
+}
+
+void content_take_model(struct content *shown, struct content *fresh)
+{
+	struct content kept = *shown;
+
+	release_model(shown);
+	*shown = *fresh;
+	shown->matcap = kept.matcap;
+	shown->set = kept.set;
+	shown->matcap_path = kept.matcap_path;
+	/* fresh had no matcaps of its own: nothing of it is left to free. */
+	memset(fresh, 0, sizeof(*fresh));
+}
+
+void content_release(struct content *s)
+{
+	release_model(s);
 	image_release(&s->matcap);
 	matcap_set_free(s->set);
 	free(s->matcap_path);
@@ -192,7 +282,7 @@ int content_prepare(struct content *s, const struct content_config *o, int width
 		mesh_cache_entry_free(s->cached);
 		s->cached = NULL;
 		mesh_release(&s->mesh);
-		ret = load_model(o, true, &s->mesh);
+		ret = load_model(s->model_path, o, &s->mesh);
 	}
 	if (!ret)
 		ret = material_prepare_mesh(&s->material, &s->mesh, width, height);
@@ -204,7 +294,7 @@ int content_prepare(struct content *s, const struct content_config *o, int width
 	return ret;
 }
 
-int content_upload(struct content *s, struct renderer *r)
+int content_upload_model(struct content *s, struct renderer *r)
 {
 	/* The material first: it decides which attributes the mesh uploads. */
 	int ret = renderer_set_material(r, &s->material);
@@ -227,6 +317,12 @@ int content_upload(struct content *s, struct renderer *r)
 	 * scene keeps; malloc holds freed heap for reuse, and a kiosk reuses
 	 * little: back to the system before the first frame. */
 	malloc_trim(0);
+	return ret;
+}
+
+int content_upload(struct content *s, struct renderer *r)
+{
+	int ret = content_upload_model(s, r);
 
 	return ret ? ret : renderer_set_matcap(r, &s->matcap);
 }

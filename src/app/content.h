@@ -18,7 +18,7 @@
 /* [scene] in kiosk.ini, with [display] rotation and [material]: what is
  * shown, and how it is seen. */
 struct content_config {
-	char *model;  /* NULL: the built-in torus knot */
+	char *model;  /* a file, folder or list (model_list.h); NULL: the built-in knot */
 	char *matcap; /* a file or a folder; NULL: the shipped folder */
 	enum shading_mode mode;
 	bool ortho;
@@ -29,6 +29,7 @@ struct content_config {
 };
 
 struct content {
+	char *model_path; /* the file the mesh came from; NULL: the built-in knot */
 	/* The mesh as loaded and prepared; once prepared for the cache
 	 * (packed, then cached), a shell: its counts and material, no array. */
 	struct mesh mesh;
@@ -57,6 +58,16 @@ void content_release(struct content *s);
 int content_prepare(struct content *s, const struct content_config *c, int width, int height);
 /* Hand the mesh and the first matcap to the renderer. */
 int content_upload(struct content *s, struct renderer *r);
+/* Another model of a folder or list, for a worker thread: the model of
+ * path alone (no matcaps), loaded strictly and prepared for a width x
+ * height display, with no GL call. On failure s is left empty. */
+int content_load_model(struct content *s, const struct content_config *c, const char *path,
+		       int width, int height);
+/* The model of fresh (from content_load_model) into shown, whose own
+ * model is given back; shown keeps its matcaps. fresh is left empty. */
+void content_take_model(struct content *shown, struct content *fresh);
+/* Hand the mesh alone (and its material) to the renderer. */
+int content_upload_model(struct content *s, struct renderer *r);
 /* The camera and panel the settings ask for, at the resting orientation. */
 struct view content_view(const struct content_config *c);
 /* The matcap folder was changed: open the set again. Returns 0 and

@@ -1,5 +1,6 @@
 #include "app/kiosk.h"
 #include "app/app.h"
+#include "app/kiosk_models.h"
 #include "app/reload.h"
 #include "app/screen.h"
 #include "app/service.h"
@@ -26,7 +27,7 @@
  * this long, so a burst of files is one rescan. */
 #define MATCAP_SETTLE_NS 500000000ull
 
-enum { FD_SIGNAL, FD_DISPLAY, FD_WATCH, FD_CAMERA, FD_TOUCH, FD_INPUTS };
+enum { FD_SIGNAL, FD_DISPLAY, FD_WATCH, FD_CAMERA, FD_TOUCH, FD_MODELS, FD_MODEL_WATCH, FD_INPUTS };
 
 /* Where an input source came from: a reload opens the buttons or the
  * keyboards again, and leaves the others alone. */
@@ -59,9 +60,10 @@ struct kiosk {
 	uint64_t waiting_since;	    /* when the pending page flip was queued */
 	bool display_absent;	    /* the last draw found no display to show it on */
 	struct service service;
-	struct camera_feed *camera; /* the live camera; NULL: none */
-	struct screen *screen;	    /* its power; NULL: always on */
-	struct touch *touch;	    /* the touchscreens; NULL: off */
+	struct camera_feed *camera;  /* the live camera; NULL: none */
+	struct screen *screen;	     /* its power; NULL: always on */
+	struct touch *touch;	     /* the touchscreens; NULL: off */
+	struct kiosk_models *models; /* a folder or list of models; NULL: one, unwatched */
 };
 
 static void tell_app(struct kiosk *k, enum app_msg_kind kind)
@@ -291,6 +293,14 @@ static void watch_matcaps(struct kiosk *k)
 	k->rescan_at = CLOCK_NEVER;
 }
 
+static void start_models(struct kiosk *k, uint64_t now_ns)
+{
+	struct kiosk_models_parts parts = {k->app, k->scene, k->renderer, k->display, &k->applied};
+
+	kiosk_models_free(k->models);
+	k->models = kiosk_models_new(&parts, now_ns);
+}
+
 /* The app state, the view and the matcap watch from k->applied and
  * k->scene (at the start, and after a reload). */
 static int configure(struct kiosk *k, uint64_t now_ns)
@@ -311,7 +321,10 @@ static int configure(struct kiosk *k, uint64_t now_ns)
 	/* content_upload gave the renderer the set's first image. */
 	k->shown_matcap = 0;
 	watch_matcaps(k);
-	return k->app ? 0 : -ENOMEM;
+	if (!k->app)
+		return -ENOMEM;
+	start_models(k, now_ns);
+	return 0;
 }
 
 static void reopen_devices(struct kiosk *k, unsigned sections)
@@ -456,6 +469,7 @@ static int fill_fds(struct kiosk *k, struct pollfd *fds, int sig_fd)
 	fds[FD_CAMERA] =
 	    (struct pollfd){.fd = k->camera ? camera_feed_fd(k->camera) : -1, .events = POLLIN};
 	fds[FD_TOUCH] = (struct pollfd){.fd = k->touch ? touch_fd(k->touch) : -1, .events = POLLIN};
+	kiosk_models_fill_fds(k->models, &fds[FD_MODELS]);
 	for (int i = 0; i < k->input_count; i++)
 		fds[FD_INPUTS + i] = (struct pollfd){.fd = k->inputs[i]->fd, .events = POLLIN};
 	return FD_INPUTS + k->input_count;
@@ -580,6 +594,7 @@ static int loop_once(struct kiosk *k, int sig_fd)
 	if (k->screen)
 		next = earliest(next, screen_deadline(k->screen, now), CLOCK_NEVER);
 	next = earliest(next, k->rescan_at, service_deadline(&k->service));
+	next = earliest(next, kiosk_models_deadline(k->models), CLOCK_NEVER);
 	n = fill_fds(k, fds, sig_fd);
 	if (poll(fds, (nfds_t)n, poll_timeout_ms(k, next, now)) < 0 && errno != EINTR)
 		return -errno;
@@ -595,6 +610,8 @@ static int loop_once(struct kiosk *k, int sig_fd)
 	service_matcaps(k, fds, monotonic_ns());
 	service_inputs(k, fds, monotonic_ns());
 	service_touch(k, fds, monotonic_ns());
+	/* After the inputs: a step to another model starts at once. */
+	kiosk_models_service(k->models, &fds[FD_MODELS], monotonic_ns());
 	return 0;
 }
 
@@ -651,6 +668,7 @@ void kiosk_free(struct kiosk *k)
 	touch_free(k->touch);
 	screen_free(k->screen);
 	folder_watch_free(k->watch);
+	kiosk_models_free(k->models);
 	app_free(k->app);
 	options_release(&k->started);
 	options_release(&k->applied);

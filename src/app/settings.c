@@ -77,8 +77,9 @@ const struct option_def option_defs[OPTION_DEFS] = {
     {"kms-api", 0, OPTIONS_DISPLAY, "kms_api", K_CHOICE, AT(display.kms_api), 0, 0, 0,
      kms_api_names, "API",
      "KMS: auto (atomic where the driver has it), atomic or legacy; for testing"},
-    {"model", 'm', OPTIONS_SCENE, "model", K_STRING, AT(content.model), 0, 0, 0, NULL, "FILE",
-     "a .gltf or .glb model (default: a built-in torus knot)"},
+    {"model", 'm', OPTIONS_SCENE, "model", K_STRING, AT(content.model), 0, 0, 0, NULL, "PATH",
+     "a .gltf or .glb model, or a folder or list (a,b) of them that take turns (default: a "
+     "built-in torus knot)"},
     {"matcap", 'c', OPTIONS_SCENE, "matcap", K_STRING, AT(content.matcap), 0, 0, 0, NULL, "PATH",
      "a PNG/JPEG matcap, or a folder of them (cycled in name order)"},
     {"mode", 0, OPTIONS_SCENE, "mode", K_CHOICE, AT(content.mode), 0, 0, 0, mode_names, "MODE",
@@ -97,6 +98,13 @@ const struct option_def option_defs[OPTION_DEFS] = {
      86400, 0, NULL, "S", "seconds without input before the model turns by itself; 0: never"},
     {"attract-speed", 0, OPTIONS_KIOSK, "attract_speed", K_DEGREES, AT(app.attract_speed), 0, 360,
      0, NULL, "DEG/S", "how fast it turns by itself"},
+    {"idle-seconds", 0, OPTIONS_KIOSK, "idle_seconds", K_DOUBLE, AT(app.attract_after_s), 0, 86400,
+     0, NULL, "S", "another name for attract_after"},
+    {"attract-fps", 0, OPTIONS_KIOSK, "attract_fps", K_DOUBLE, AT(app.attract_fps), 0, 240, 0, NULL,
+     "FPS", "frames per second at most while it turns by itself; 0: the display's rate"},
+    {"attract-model-seconds", 0, OPTIONS_KIOSK, "attract_model_seconds", K_DOUBLE,
+     AT(app.attract_model_s), 0, 86400, 0, NULL, "S",
+     "in attract mode, the next model every S seconds; 0: never"},
     {"turn-speed", 0, OPTIONS_KIOSK, "turn_speed", K_DEGREES, AT(app.turn_speed), 1, 1440, 0, NULL,
      "DEG/S", "how fast a held button or arrow key turns the model"},
     {"turn-step", 0, OPTIONS_KIOSK, "turn_step", K_DEGREES, AT(app.turn_step), 0, 90, 0, NULL,
@@ -251,6 +259,7 @@ void option_defaults(struct options *o)
 	o->log_level = LOG_INFO;
 	o->app.attract_after_s = 60;
 	o->app.attract_speed = radians(15);
+	o->app.attract_fps = 30;
 	o->app.turn_speed = radians(90);
 	o->app.turn_step = radians(5);
 	o->app.drag_speed = radians(180);

@@ -18,11 +18,13 @@ enum app_action {
 	ACTION_PREV_MATCAP,
 	ACTION_TOGGLE_CAMERA,
 	ACTION_NEXT_MODE,
-	ACTION_RESET, /* back to the resting orientation and the configured mode */
+	ACTION_RESET,	   /* back to the resting orientation and the configured mode */
+	ACTION_NEXT_MODEL, /* the next model of a folder or list */
+	ACTION_PREV_MODEL,
 	ACTION_COUNT
 };
 
-/* "none", "turn-left", ... "reset", then NULL: the config file's names. */
+/* "none", "turn-left", ... "prev-model", then NULL: the config file's names. */
 extern const char *const app_action_names[ACTION_COUNT + 1];
 
 struct app_event {

@@ -29,6 +29,10 @@ static const struct {
     {KEY_C, ACTION_TOGGLE_CAMERA},
     {KEY_M, ACTION_NEXT_MODE},
     {KEY_R, ACTION_RESET},
+    {KEY_PAGEDOWN, ACTION_NEXT_MODEL},
+    {KEY_N, ACTION_NEXT_MODEL},
+    {KEY_PAGEUP, ACTION_PREV_MODEL},
+    {KEY_P, ACTION_PREV_MODEL},
 };
 
 #define N_KEYS (sizeof(keys) / sizeof(keys[0]))

@@ -67,12 +67,12 @@ struct folder_watch *folder_watch_new(const char *path)
 	if (!ret && inotify_add_watch(w->fd, w->folder, WATCH_EVENTS) < 0)
 		ret = -errno;
 	if (ret) {
-		log_warn("%s: cannot watch for new matcaps (%s); a change needs a reload", path,
+		log_warn("%s: cannot watch for new files (%s); a change needs a reload", path,
 			 strerror(-ret));
 		folder_watch_free(w);
 		return NULL;
 	}
-	log_debug("watching %s for matcap changes", w->folder);
+	log_debug("watching %s for changes", w->folder);
 	return w;
 }
 
@@ -81,7 +81,14 @@ int folder_watch_fd(const struct folder_watch *w)
 	return w->fd;
 }
 
-bool folder_watch_read(struct folder_watch *w)
+static bool counts(const struct folder_watch *w, const struct inotify_event *ev)
+{
+	/* A lost queue or a gone folder: look at everything. */
+	return (ev->mask & (IN_Q_OVERFLOW | IN_DELETE_SELF | IN_MOVE_SELF)) || !w->name ||
+	       (ev->len && strcmp(ev->name, w->name) == 0);
+}
+
+bool folder_watch_read_names(struct folder_watch *w, folder_watch_arrived_fn arrived, void *ctx)
 {
 	/* Aligned as inotify(7) asks: events are read in place. */
 	char buf[4096] __attribute__((aligned(__alignof__(struct inotify_event))));
@@ -92,12 +99,19 @@ bool folder_watch_read(struct folder_watch *w)
 		for (char *p = buf; p < buf + n;) {
 			const struct inotify_event *ev = (const struct inotify_event *)p;
 
-			/* A lost queue or a gone folder: look at everything. */
-			if ((ev->mask & (IN_Q_OVERFLOW | IN_DELETE_SELF | IN_MOVE_SELF)) ||
-			    !w->name || (ev->len && strcmp(ev->name, w->name) == 0))
+			if (counts(w, ev)) {
 				changed = true;
+				if (arrived && ev->len &&
+				    (ev->mask & (IN_CLOSE_WRITE | IN_MOVED_TO)))
+					arrived(ctx, w->folder, ev->name);
+			}
 			p += sizeof(*ev) + ev->len;
 		}
 	}
 	return changed;
+}
+
+bool folder_watch_read(struct folder_watch *w)
+{
+	return folder_watch_read_names(w, NULL, NULL);
 }

@@ -16,5 +16,9 @@ void folder_watch_free(struct folder_watch *w);
 int folder_watch_fd(const struct folder_watch *w);
 /* Read what is ready; true when something of interest changed. */
 bool folder_watch_read(struct folder_watch *w);
+/* The same, and arrived(ctx, folder, name) for each file of interest that
+ * was closed after writing or moved in: one that is whole now. */
+typedef void (*folder_watch_arrived_fn)(void *ctx, const char *folder, const char *name);
+bool folder_watch_read_names(struct folder_watch *w, folder_watch_arrived_fn arrived, void *ctx);
 
 #endif

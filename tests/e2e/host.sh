@@ -23,7 +23,7 @@ shift
 # The display first, then the buttons and the camera on it.
 [ $# -gt 0 ] || set -- tests/e2e/kms.sh tests/e2e/kms-hotplug.sh tests/e2e/kms-busy.sh \
 	tests/vm/gpio-test.sh tests/e2e/reload-devices.sh tests/e2e/camera.sh tests/e2e/cec.sh tests/e2e/power.sh \
-	tests/e2e/touch.sh
+	tests/e2e/touch.sh tests/e2e/models.sh
 kiosk=${KIOSK:-./matcap-kiosk}
 imgdiff=${IMGDIFF:-build/tools/imgdiff}
 mkdir -p "$out/ref"
@@ -51,9 +51,11 @@ for script in "$@"; do
 	bins="--bin $kiosk --bin $imgdiff"
 	# hues counts the camera's colour bars in a screenshot; cec_power
 	# sends the kiosk's CEC messages; clock_set sets the board's clock;
-	# touch_inject is a uinput touchscreen.
+	# touch_inject is a uinput touchscreen; mkmodels writes the test models.
 	tools=$(dirname "$imgdiff")
-	for b in ${E2E_BINS:-$tools/hues $tools/cec_power $tools/clock_set $tools/touch_inject}; do bins="$bins --bin $b"; done
+	for b in ${E2E_BINS:-$tools/hues $tools/cec_power $tools/clock_set $tools/touch_inject $tools/mkmodels}; do
+		bins="$bins --bin $b"
+	done
 	# shellcheck disable=SC2086
 	tests/vm/run.sh --quiet --timeout "${VM_TIMEOUT:-240}" $bins --share "$share" \
 		${VM_RUN_FLAGS:-} -- "$script" >"$share/run.log" 2>&1

@@ -219,6 +219,104 @@ static void attract_starts_and_stops(void **state)
 	app_free(a);
 }
 
+static void models(struct app *a, int count, int shown)
+{
+	struct app_msg m = {.kind = APP_MODELS, .models = {count, shown}};
+
+	app_apply(a, &m);
+}
+
+/* next/prev-model wrap around the models; with one model they do nothing.
+ * The model shown (one was passed over) is where the next step starts. */
+static void models_cycle(void **state)
+{
+	struct app *a;
+
+	(void)state;
+	a = app_new(&base, MATCAPS, 0);
+	event(a, 1 * SEC, ACTION_NEXT_MODEL, true);
+	assert_int_equal(st(a)->model, 0);
+	models(a, 3, 0);
+	event(a, 2 * SEC, ACTION_NEXT_MODEL, true);
+	assert_int_equal(st(a)->model, 1);
+	assert_int_equal(st(a)->model_step, 1);
+	event(a, 3 * SEC, ACTION_PREV_MODEL, true);
+	event(a, 4 * SEC, ACTION_PREV_MODEL, true);
+	assert_int_equal(st(a)->model, 2);
+	assert_int_equal(st(a)->model_step, -1);
+	/* The second was broken: the loop showed the first instead. */
+	drawn(a);
+	models(a, 3, 0);
+	assert_int_equal(st(a)->model, 0);
+	assert_true(st(a)->dirty);
+	/* A folder that shrank: the wanted one stays in it. */
+	event(a, 5 * SEC, ACTION_PREV_MODEL, true);
+	models(a, 2, -1);
+	assert_int_equal(st(a)->model, 0);
+	app_free(a);
+}
+
+/* Attract mode draws at attract_fps, not at every vblank; the turn is
+ * still as fast, and any input stops it at once. */
+static void attract_frame_rate_capped(void **state)
+{
+	struct app_config cfg = base;
+	struct app *a;
+
+	(void)state;
+	cfg.attract_after_s = 1;
+	cfg.attract_fps = 10;
+	a = app_new(&cfg, MATCAPS, 0);
+	drawn(a);
+	assert_int_equal(app_advance(a, 500 * MS), 1 * SEC);
+	/* Starting at 1 s: the first frame a tenth of a second later. */
+	assert_int_equal(app_advance(a, 1 * SEC), 1 * SEC + 100 * MS);
+	assert_false(st(a)->dirty);
+	/* A vblank 16 ms on: nothing to draw yet. */
+	assert_int_equal(app_advance(a, 1 * SEC + 16 * MS), 1 * SEC + 100 * MS);
+	assert_false(st(a)->dirty);
+	assert_int_equal(app_advance(a, 1 * SEC + 100 * MS), 1 * SEC + 200 * MS);
+	assert_true(st(a)->dirty);
+	assert_float_equal(yaw_of(st(a)->orientation), 1.5 * DEG, 1e-9);
+	drawn(a);
+	app_advance(a, 2 * SEC);
+	assert_float_equal(yaw_of(st(a)->orientation), 15 * DEG, 1e-9);
+	event(a, 2 * SEC + 10 * MS, ACTION_NEXT_MATCAP, true);
+	assert_false(app_moving(a));
+	assert_float_equal(yaw_of(st(a)->orientation), 15 * DEG, 1e-9);
+	app_free(a);
+}
+
+/* attract_model_seconds: attract mode steps through the models; input
+ * stops that too. */
+static void attract_steps_models(void **state)
+{
+	struct app_config cfg = base;
+	struct app *a;
+
+	(void)state;
+	cfg.attract_after_s = 10;
+	cfg.attract_fps = 30;
+	cfg.attract_model_s = 5;
+	a = app_new(&cfg, MATCAPS, 0);
+	models(a, 3, 0);
+	app_advance(a, 12 * SEC);
+	assert_int_equal(st(a)->model, 0);
+	/* Due at 15 s: the deadline says so even between frames. */
+	assert_true(app_advance(a, 14 * SEC + 990 * MS) <= 15 * SEC);
+	app_advance(a, 15 * SEC);
+	assert_int_equal(st(a)->model, 1);
+	app_advance(a, 20 * SEC);
+	assert_int_equal(st(a)->model, 2);
+	app_advance(a, 25 * SEC);
+	assert_int_equal(st(a)->model, 0);
+	event(a, 26 * SEC, ACTION_TURN_UP, true);
+	event(a, 26 * SEC, ACTION_TURN_UP, false);
+	app_advance(a, 34 * SEC);
+	assert_int_equal(st(a)->model, 0);
+	app_free(a);
+}
+
 /* A held button is input: no attract mode while it is down. */
 static void no_attract_while_held(void **state)
 {
@@ -500,6 +598,9 @@ int main(void)
 	    cmocka_unit_test(late_event_counts_now),
 	    cmocka_unit_test(attract_starts_and_stops),
 	    cmocka_unit_test(no_attract_while_held),
+	    cmocka_unit_test(models_cycle),
+	    cmocka_unit_test(attract_frame_rate_capped),
+	    cmocka_unit_test(attract_steps_models),
 	    cmocka_unit_test(matcaps_and_camera),
 	    cmocka_unit_test(camera_is_one_more_entry_in_the_cycle),
 	    cmocka_unit_test(mode_and_reset),

@@ -166,6 +166,35 @@ static void power_settings(void **state)
 	options_release(&o);
 }
 
+/* idle_seconds is another name for attract_after (the one set last wins,
+ * and an option over the file); attract_fps and attract_model_seconds. */
+static void attract_settings(void **state)
+{
+	const char *path = write_ini("[kiosk]\nattract_after = 5\nidle_seconds = 20\n"
+				     "attract_fps = 12.5\nattract_model_seconds = 8\n");
+	const char *argv[] = {"mk", "--config", path};
+	const char *over[] = {"mk", "--config", path, "--attract-after", "3"};
+	const char *alias[] = {"mk", "--idle-seconds=0"};
+	const char *bad[] = {"mk", "--attract-fps", "-1"};
+	struct options o;
+
+	(void)state;
+	assert_int_equal(parse(&o, 3, argv), OPTIONS_OK);
+	assert_float_equal(o.app.attract_after_s, 20, 0);
+	assert_float_equal(o.app.attract_fps, 12.5, 0);
+	assert_float_equal(o.app.attract_model_s, 8, 0);
+	options_release(&o);
+	assert_int_equal(parse(&o, 5, over), OPTIONS_OK);
+	assert_float_equal(o.app.attract_after_s, 3, 0);
+	options_release(&o);
+	unlink(path);
+	assert_int_equal(parse(&o, 2, alias), OPTIONS_OK);
+	assert_float_equal(o.app.attract_after_s, 0, 0);
+	options_release(&o);
+	assert_int_equal(parse(&o, 3, bad), OPTIONS_USAGE);
+	options_release(&o);
+}
+
 /* Indented keys are keys, not continuations of the line above. */
 static void indented_lines(void **state)
 {
@@ -230,6 +259,7 @@ static void sections_into_module_configs(void **state)
 	assert_float_equal(o.app.turn_speed, M_PI, 1e-12);
 	assert_float_equal(o.app.turn_step, M_PI / 2, 1e-12);
 	assert_float_equal(o.app.attract_after_s, 5, 0);
+	assert_float_equal(o.app.attract_fps, 30, 0); /* the default */
 	assert_string_equal(o.buttons.chip, "gpiochip1");
 	assert_int_equal(o.buttons.active, BUTTON_ACTIVE_HIGH);
 	assert_int_equal(o.buttons.bias, BUTTON_BIAS_DISABLE);
@@ -364,6 +394,7 @@ int main(void)
 	    cmocka_unit_test(table_is_full),	  cmocka_unit_test(sections_into_module_configs),
 	    cmocka_unit_test(module_defaults),	  cmocka_unit_test(copy_is_deep),
 	    cmocka_unit_test(reload_table),	  cmocka_unit_test(reload_reopens_what_changed),
+	    cmocka_unit_test(attract_settings),
 	};
 	return cmocka_run_group_tests_name("options", tests, NULL, NULL);
 }

@@ -56,7 +56,7 @@ vm-clean:
 # kiosk on vkms against OSMesa references rendered here, its GPIO buttons
 # and the camera (whose colour bars hues counts); each script's frames and
 # logs in tests/out/check/board/e2e/<script>/. The same as make check T=board.
-vm-e2e: $(KIOSK) $(TOOLS_DIR)/imgdiff $(TOOLS_DIR)/hues
+vm-e2e: $(KIOSK) $(TOOLS_DIR)/imgdiff $(TOOLS_DIR)/hues $(TOOLS_DIR)/mkmodels
 	$(TEST_ENV) sh tests/check.sh board
 
 # The kiosk as a systemd service on the virtual board: a Debian root booted

@@ -1,0 +1,239 @@
+#include "app/kiosk_models.h"
+#include "app/model_list.h"
+#include "app/model_loader.h"
+#include "util/clock.h"
+#include "util/folder_watch.h"
+#include "util/log.h"
+
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* A model copied in: act once the copy has been quiet this long. */
+#define MODEL_SETTLE_NS 500000000ull
+/* Files that arrived whole since the last rescan, at most. */
+#define MAX_ARRIVED 16
+/* The job under way loads a file that arrived, not a model asked for. */
+#define REQUESTED_ARRIVED -2
+
+struct kiosk_models {
+	struct kiosk_models_parts p;
+	struct model_list *list;
+	struct model_loader *loader;
+	struct folder_watch *watch; /* NULL: not watched */
+	int shown;		    /* the list's model on screen; -1: none of them */
+	int asked;		    /* the wanted model last acted on */
+	int requested;		    /* the one the job under way was asked for */
+	int reload;		    /* load this one alone next (it changed); -1: none */
+	uint64_t rescan_at;
+	uint64_t asked_ns; /* when the job under way was started, for the bench */
+	char *arrived[MAX_ARRIVED];
+	int arrived_count;
+};
+
+static void tell_app(struct kiosk_models *m, int shown)
+{
+	struct app_msg msg = {.kind = APP_MODELS, .models = {model_list_count(m->list), shown}};
+
+	app_apply(m->p.app, &msg);
+}
+
+static void watch_models(struct kiosk_models *m)
+{
+	const char *spec = m->p.options->content.model;
+
+	/* A list names several places: each of them is read at a reload. */
+	if (!strchr(spec, ','))
+		m->watch = folder_watch_new(spec);
+}
+
+struct kiosk_models *kiosk_models_new(const struct kiosk_models_parts *parts, uint64_t now_ns)
+{
+	struct kiosk_models *m;
+
+	(void)now_ns;
+	if (!parts->options->content.model || !parts->scene->model_path)
+		return NULL;
+	m = calloc(1, sizeof(*m));
+	if (!m)
+		return NULL;
+	m->p = *parts;
+	m->list = model_list_new(parts->options->content.model);
+	m->loader = m->list ? model_loader_new() : NULL;
+	if (!m->loader) {
+		kiosk_models_free(m);
+		return NULL;
+	}
+	m->shown = model_list_find(m->list, parts->scene->model_path);
+	m->reload = -1;
+	m->rescan_at = CLOCK_NEVER;
+	watch_models(m);
+	tell_app(m, m->shown);
+	m->asked = app_state(m->p.app)->model;
+	log_info("models: %d, showing %s", model_list_count(m->list), parts->scene->model_path);
+	return m;
+}
+
+static void forget_arrived(struct kiosk_models *m)
+{
+	for (int i = 0; i < m->arrived_count; i++)
+		free(m->arrived[i]);
+	m->arrived_count = 0;
+}
+
+void kiosk_models_free(struct kiosk_models *m)
+{
+	if (!m)
+		return;
+	model_loader_free(m->loader);
+	model_list_free(m->list);
+	folder_watch_free(m->watch);
+	forget_arrived(m);
+	free(m);
+}
+
+void kiosk_models_fill_fds(const struct kiosk_models *m, struct pollfd fds[2])
+{
+	fds[0] = (struct pollfd){.fd = m ? model_loader_fd(m->loader) : -1, .events = POLLIN};
+	fds[1] =
+	    (struct pollfd){.fd = m && m->watch ? folder_watch_fd(m->watch) : -1, .events = POLLIN};
+}
+
+uint64_t kiosk_models_deadline(const struct kiosk_models *m)
+{
+	return m && !model_loader_busy(m->loader) ? m->rescan_at : CLOCK_NEVER;
+}
+
+/* On the GPU, in place of the model on screen; on failure that one stays. */
+static int show(struct kiosk_models *m, struct content *fresh, int index)
+{
+	int ret = content_upload_model(fresh, m->p.renderer);
+
+	if (ret) {
+		log_err("%s: does not fit on the GPU; keeping %s", fresh->model_path,
+			m->p.scene->model_path);
+		model_list_set_bad(m->list, index, true);
+		content_release(fresh);
+		if (content_upload_model(m->p.scene, m->p.renderer))
+			log_err("models: the model on screen could not be restored either");
+		return ret;
+	}
+	content_take_model(m->p.scene, fresh);
+	m->shown = index;
+	log_info("model %d of %d: %s", index + 1, model_list_count(m->list),
+		 m->p.scene->model_path);
+	/* The frame that shows it is drawn next: what a switch costs is this
+	 * and one frame (the bench adds them). */
+	log_debug("models: swapped in %.1f ms after it was asked for",
+		  (double)(monotonic_ns() - m->asked_ns) / 1e6);
+	return 0;
+}
+
+static void finish(struct kiosk_models *m)
+{
+	struct content fresh;
+	int picked;
+
+	if (model_loader_finish(m->loader, &fresh, &picked))
+		return;
+	if (picked >= 0 && fresh.model_path)
+		show(m, &fresh, picked);
+	content_release(&fresh);
+	/* The user may have stepped on meanwhile: that step stands, and is
+	 * acted on next. A file that arrived is shown whatever was wanted. */
+	if (m->requested != REQUESTED_ARRIVED && app_state(m->p.app)->model != m->requested) {
+		tell_app(m, -1);
+		return;
+	}
+	tell_app(m, m->shown);
+	m->asked = app_state(m->p.app)->model;
+}
+
+static void start(struct kiosk_models *m, int from, int step)
+{
+	struct display *d = m->p.display;
+
+	m->requested = from;
+	m->asked_ns = monotonic_ns();
+	if (model_loader_start(m->loader, m->list, m->p.options, from, step, m->shown, d->width,
+			       d->height)) {
+		tell_app(m, m->shown);
+		m->asked = app_state(m->p.app)->model;
+	}
+}
+
+static bool arrived_path(void *ctx, const char *path)
+{
+	struct kiosk_models *m = ctx;
+
+	for (int i = 0; i < m->arrived_count; i++)
+		if (strcmp(m->arrived[i], path) == 0)
+			return true;
+	return false;
+}
+
+static void note_arrived(void *ctx, const char *folder, const char *name)
+{
+	struct kiosk_models *m = ctx;
+	char path[PATH_MAX];
+	bool one_file = !model_spec_is_many(m->p.options->content.model);
+
+	if (one_file)
+		snprintf(path, sizeof(path), "%s", m->p.options->content.model);
+	else
+		snprintf(path, sizeof(path), "%s/%s", folder, name);
+	if (m->arrived_count < MAX_ARRIVED && !arrived_path(m, path))
+		m->arrived[m->arrived_count++] = strdup(path);
+	if (m->arrived_count && !m->arrived[m->arrived_count - 1])
+		m->arrived_count--;
+}
+
+/* The folder (or file) changed: the list again, and the model that
+ * arrived or changed last is loaded and shown when ready. */
+static void rescan(struct kiosk_models *m)
+{
+	int fresh;
+	struct model_list *l =
+	    model_list_rescan(m->list, m->p.options->content.model, arrived_path, m, &fresh);
+
+	m->rescan_at = CLOCK_NEVER;
+	forget_arrived(m);
+	if (!l)
+		return;
+	model_list_free(m->list);
+	m->list = l;
+	m->shown = model_list_find(l, m->p.scene->model_path);
+	m->reload = fresh;
+	if (fresh >= 0)
+		log_debug("models: %s arrived or changed: loading it", model_list_path(l, fresh));
+	tell_app(m, m->shown);
+	m->asked = app_state(m->p.app)->model;
+}
+
+void kiosk_models_service(struct kiosk_models *m, const struct pollfd fds[2], uint64_t now_ns)
+{
+	int want;
+
+	if (!m)
+		return;
+	if (fds[0].revents & POLLIN)
+		finish(m);
+	if ((fds[1].revents & POLLIN) && m->watch &&
+	    folder_watch_read_names(m->watch, note_arrived, m))
+		m->rescan_at = now_ns + MODEL_SETTLE_NS;
+	/* The list is the job's while it runs. */
+	if (model_loader_busy(m->loader))
+		return;
+	if (now_ns >= m->rescan_at)
+		rescan(m);
+	want = app_state(m->p.app)->model;
+	if (m->reload >= 0) {
+		start(m, m->reload, 0);
+		m->requested = REQUESTED_ARRIVED;
+		m->reload = -1;
+	} else if (want != m->asked) {
+		m->asked = want;
+		start(m, want, app_state(m->p.app)->model_step);
+	}
+}

@@ -1,0 +1,41 @@
+/* The live loop's side of several models: the list [scene] model names,
+ * the worker that prepares the next one (model_loader.h), and the watch on
+ * the model's file or folder. The app state says which model is wanted
+ * (next/prev-model, attract mode); this swaps it in once it is ready, on
+ * the loop's thread, where GL is. */
+#ifndef MK_KIOSK_MODELS_H
+#define MK_KIOSK_MODELS_H
+
+#include "app/app.h"
+#include "app/content.h"
+#include "app/settings.h"
+#include "display/display.h"
+#include "render/render.h"
+
+#include <poll.h>
+#include <stdint.h>
+
+/* What it works on; none of it is freed here, and each outlives it. */
+struct kiosk_models_parts {
+	struct app *app;
+	struct content *scene; /* on screen: its model is swapped */
+	struct renderer *renderer;
+	struct display *display;
+	const struct options *options; /* [scene] model and how to prepare one */
+};
+
+struct kiosk_models;
+
+/* NULL when there is no model file to switch or watch (the built-in knot),
+ * or after logging. Tells the app how many models there are. */
+struct kiosk_models *kiosk_models_new(const struct kiosk_models_parts *parts, uint64_t now_ns);
+/* Waits for a model being prepared. */
+void kiosk_models_free(struct kiosk_models *m);
+/* Two descriptors for poll (-1 where there is none). */
+void kiosk_models_fill_fds(const struct kiosk_models *m, struct pollfd fds[2]);
+/* When it must be serviced with nothing to read; CLOCK_NEVER: not. */
+uint64_t kiosk_models_deadline(const struct kiosk_models *m);
+/* A model ready, a file changed, or another model wanted. */
+void kiosk_models_service(struct kiosk_models *m, const struct pollfd fds[2], uint64_t now_ns);
+
+#endif
