@@ -23,7 +23,10 @@
 static int load_model(const struct content_config *o, bool strict, struct mesh *mesh)
 {
 	if (o->model) {
-		int ret = gltf_load_textures(o->model, material_gltf_textures(&o->material), mesh);
+		struct gltf_options g = {.textures = material_gltf_textures(&o->material),
+					 .scene = o->model_scene,
+					 .scene_setting = "[scene] model_scene"};
+		int ret = gltf_load_options(o->model, &g, mesh);
 
 		if (!ret || strict)
 			return ret;
@@ -45,6 +48,11 @@ static int content_cache_lookup(struct content *s, const struct content_config *
 {
 	char dir[PATH_MAX];
 	int ret = mesh_cache_scene_key(c->model, c->lod_pixels, &c->material, &s->cache_key);
+
+	/* Another of the file's scenes is another mesh. */
+	if (!ret && c->model_scene)
+		s->cache_key.settings =
+		    mesh_cache_hash(c->model_scene, strlen(c->model_scene), s->cache_key.settings);
 
 	if (!ret)
 		ret = mesh_cache_dir(dir, sizeof(dir));
@@ -71,7 +79,8 @@ static bool content_cache_fits(const struct content *s, int width, int height)
 
 static bool decoded_images(const struct mesh_material *m)
 {
-	return m->normal_map.width || m->occlusion_map.width || m->thickness_map.width;
+	return m->normal_map.width || m->occlusion_map.width || m->thickness_map.width ||
+	       m->base_map.width;
 }
 
 /* The prepared mesh packed as the GPU and the cache take it; the mesh's

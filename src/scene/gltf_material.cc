@@ -122,7 +122,66 @@ void read_iridescence(const tinygltf::Material &mat, struct mesh_material *out, 
 	}
 }
 
+// Element k of a two-number array, kept finite and in a sane range.
+double element(const tinygltf::Value &a, int k, double fallback)
+{
+	if (!a.IsArray() || a.ArrayLen() != 2)
+		return fallback;
+	const tinygltf::Value &v = a.Get(k);
+	double x = v.IsNumber() || v.IsInt() ? v.GetNumberAsDouble() : fallback;
+	return std::isfinite(x) ? std::fmin(std::fmax(x, -1e6), 1e6) : fallback;
+}
+
+// KHR_texture_transform as the affine map of mesh_material.base_transform:
+// translation x rotation x scale, the rotation counter-clockwise on the
+// UVs (so the image turns clockwise), as the extension's example reads.
+// Returns the texCoord it names, else `tex_coord`.
+int texture_transform(const tinygltf::ExtensionMap &ext, int tex_coord, float m[6])
+{
+	auto it = ext.find("KHR_texture_transform");
+	if (it == ext.end() || !it->second.IsObject())
+		return tex_coord;
+	const tinygltf::Value &v = it->second;
+	const tinygltf::Value &off = v.Get("offset"), &scale = v.Get("scale");
+	double r = number(v, "rotation", 0.0, -1e6, 1e6), o[2] = {0, 0}, s[2] = {1, 1};
+	for (int k = 0; k < 2; k++) {
+		o[k] = element(off, k, o[k]);
+		s[k] = element(scale, k, s[k]);
+	}
+	m[0] = (float)(std::cos(r) * s[0]);
+	m[1] = (float)(-std::sin(r) * s[0]);
+	m[2] = (float)(std::sin(r) * s[1]);
+	m[3] = (float)(std::cos(r) * s[1]);
+	m[4] = (float)o[0];
+	m[5] = (float)o[1];
+	return (int)number(v, "texCoord", tex_coord, 0, 1e9);
+}
+
 } // namespace
+
+bool gltf_primitive_base(const tinygltf::Model &m, int material, int model_material, float rgba[4])
+{
+	rgba[0] = rgba[1] = rgba[2] = 1.0f;
+	rgba[3] = 0.0f;
+	if (material < 0 || (size_t)material >= m.materials.size())
+		return false;
+	const tinygltf::PbrMetallicRoughness &pbr =
+	    m.materials[(size_t)material].pbrMetallicRoughness;
+	bool coloured = false;
+	for (size_t k = 0; k < 3 && pbr.baseColorFactor.size() == 4; k++) {
+		double f = pbr.baseColorFactor[k];
+		rgba[k] = std::isfinite(f) ? (float)std::fmin(std::fmax(f, 0.0), 1.0) : 1.0f;
+		coloured |= rgba[k] != 1.0f;
+	}
+	// The one base map shown is the model's material's: a primitive reads
+	// it when its own material names the same texture.
+	if (pbr.baseColorTexture.index >= 0 && model_material >= 0 &&
+	    (size_t)model_material < m.materials.size() &&
+	    m.materials[(size_t)model_material].pbrMetallicRoughness.baseColorTexture.index ==
+		pbr.baseColorTexture.index)
+		rgba[3] = 1.0f;
+	return coloured || pbr.baseColorTexture.index >= 0;
+}
 
 bool gltf_keep_image(tinygltf::Image *image, const int index, std::string *, std::string *, int,
 		     int, const unsigned char *bytes, int size, void *user)
@@ -159,6 +218,13 @@ void gltf_read_material(const tinygltf::Model &m, int index, unsigned textures,
 		out->occlusion_strength =
 		    (float)std::fmin(std::fmax(mat.occlusionTexture.strength, 0.0), 1.0);
 	read_iridescence(mat, out, &thickness, &thickness_coord);
+	const tinygltf::TextureInfo &base_tex = mat.pbrMetallicRoughness.baseColorTexture;
+	out->has_base_map = base_tex.index >= 0;
+	int base_coord =
+	    texture_transform(base_tex.extensions, base_tex.texCoord, out->base_transform);
+	if ((textures & GLTF_TEXTURE_BASE_COLOR) && out->has_base_map)
+		read_texture(m, base_tex.index, base_coord, images, name, "baseColorTexture",
+			     &out->base_map);
 	if ((textures & GLTF_TEXTURE_NORMAL) && out->has_normal_map)
 		read_texture(m, mat.normalTexture.index, mat.normalTexture.texCoord, images, name,
 			     "normalTexture", &out->normal_map);

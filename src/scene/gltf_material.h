@@ -26,6 +26,11 @@ bool gltf_keep_image(tinygltf::Image *image, const int index, std::string *err, 
 		     int req_width, int req_height, const unsigned char *bytes, int size,
 		     void *user);
 
+// A primitive's part of the base colour (struct mesh colors): rgb its
+// material's baseColorFactor, a 1 when it reads model_material's base map.
+// Returns whether the material colours the model at all.
+bool gltf_primitive_base(const tinygltf::Model &m, int material, int model_material, float rgba[4]);
+
 // Fill out from material `index` (-1: none). textures: enum gltf_texture
 // bits to decode. A texture that cannot be used is logged as a warning
 // naming `name` and left empty.

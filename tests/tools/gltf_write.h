@@ -29,6 +29,17 @@ struct gltf_write_opts {
 	const char *image_uri;	   /* override every image's URI */
 	double iridescence_factor; /* > 0: KHR_materials_iridescence */
 	double thickness_range[2]; /* its thickness minimum and maximum, nm */
+	/* Base colour: baseColorTexture from this PNG (as the others), with
+	 * these members in its KHR_texture_transform (NULL: none); the factor
+	 * (NULL: 0.8 0.7 0.6 1); COLOR_0 from the mesh's colors, as 5126
+	 * (float), 5121 or 5123 (normalized), with 3 or 4 components. */
+	const char *base_color_png;
+	const char *texture_transform;
+	const double *base_factor;
+	int color_type, color_components;
+	/* More nodes after the mesh's (JSON members of the array), and the
+	 * scenes in place of the one scene (JSON: the array's members). */
+	const char *extra_nodes, *scenes;
 };
 
 /* Writes path (and, for GLTF_EXTERNAL_BIN, path with .bin for .gltf).
