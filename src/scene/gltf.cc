@@ -565,7 +565,8 @@ int build_mesh(const char *name, tinygltf::Model &m, const struct gltf_options *
 		log_info("%s: primitives differ in material; the first one's is shown",
 			 shown.c_str());
 	if (ret == 0)
-		gltf_read_material(m, b.material, o->textures, images, name, &out->material);
+		gltf_read_material(m, b.material, b.any_uvs ? o->textures : 0, images, name,
+				   &out->material); // without UVs no texture can be placed
 	out->material.has_colors = out->colors != nullptr;
 	return ret;
 }

@@ -85,7 +85,7 @@ bool image_bytes(const tinygltf::Model &m, int index, const GltfImages &images,
 }
 
 void read_texture(const tinygltf::Model &m, int texture, int tex_coord, const GltfImages &images,
-		  const std::string &name, const char *what, struct image *out)
+		  const std::string &name, const char *what, struct image *out, unsigned &decoded)
 {
 	int source = texture_image(m, texture, tex_coord, name, what);
 	const unsigned char *data = nullptr;
@@ -98,6 +98,7 @@ void read_texture(const tinygltf::Model &m, int texture, int tex_coord, const Gl
 		return;
 	}
 	std::string label = name + " " + what + " (image " + std::to_string(source) + ")";
+	decoded++;
 	if (image_decode(label.c_str(), data, size, out))
 		log_warn("%s: %s is not used", name.c_str(), what);
 }
@@ -224,14 +225,15 @@ void gltf_read_material(const tinygltf::Model &m, int index, unsigned textures,
 	    texture_transform(base_tex.extensions, base_tex.texCoord, out->base_transform);
 	if ((textures & GLTF_TEXTURE_BASE_COLOR) && out->has_base_map)
 		read_texture(m, base_tex.index, base_coord, images, name, "baseColorTexture",
-			     &out->base_map);
+			     &out->base_map, out->images_decoded);
 	if ((textures & GLTF_TEXTURE_NORMAL) && out->has_normal_map)
 		read_texture(m, mat.normalTexture.index, mat.normalTexture.texCoord, images, name,
-			     "normalTexture", &out->normal_map);
+			     "normalTexture", &out->normal_map, out->images_decoded);
 	if ((textures & GLTF_TEXTURE_OCCLUSION) && out->has_occlusion_map)
 		read_texture(m, mat.occlusionTexture.index, mat.occlusionTexture.texCoord, images,
-			     name, "occlusionTexture", &out->occlusion_map);
+			     name, "occlusionTexture", &out->occlusion_map, out->images_decoded);
 	if ((textures & GLTF_TEXTURE_THICKNESS) && out->has_thickness_map)
 		read_texture(m, thickness, thickness_coord, images, name,
-			     "iridescenceThicknessTexture", &out->thickness_map);
+			     "iridescenceThicknessTexture", &out->thickness_map,
+			     out->images_decoded);
 }

@@ -36,6 +36,9 @@ struct mesh_material {
 	 * m[3] v + m[5]). Its UVs are the mesh's uvs. */
 	bool has_base_map;
 	bool has_colors; /* the loader gave the mesh colors (kept when they are cached) */
+	/* How many images the loader decoded for it: only those a scene asked
+	 * for and can place (the tests count them). */
+	unsigned images_decoded;
 	struct image base_map;
 	float base_transform[6];
 };

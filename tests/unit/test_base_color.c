@@ -235,6 +235,45 @@ static void packed_and_simplified(void **state)
 	mesh_release(&m);
 }
 
+/* Only the images a scene uses and can place are decoded: counted by the
+ * loader, not timed. */
+static void decodes_only_what_is_used(void **state)
+{
+	struct fixture *f = *state;
+	struct gltf_write_opts o = plain();
+	struct material_config cfg;
+	char path[256];
+	struct mesh m;
+	struct {
+		unsigned textures;
+		unsigned decoded;
+	} cases[] = {
+	    {0, 0}, {GLTF_TEXTURE_BASE_COLOR, 1}, {GLTF_TEXTURE_NORMAL | GLTF_TEXTURE_OCCLUSION, 2},
+	    {0, 3}, /* the defaults: every one */
+	    {0, 0}, /* detail and base colour off */
+	};
+
+	material_config_defaults(&cfg);
+	cases[3].textures = material_gltf_textures(&cfg);
+	cfg.detail = cfg.base_color = MATERIAL_OFF;
+	cases[4].textures = material_gltf_textures(&cfg);
+	o.normal_png = o.occlusion_png = o.base_color_png = f->png;
+	o.embed_images = 1;
+	write_model(f, "maps.glb", o, path, sizeof(path));
+	for (size_t i = 0; i < sizeof(cases) / sizeof(cases[0]); i++) {
+		assert_int_equal(gltf_load_textures(path, cases[i].textures, &m), 0);
+		assert_int_equal(m.material.images_decoded, cases[i].decoded);
+		assert_true(m.material.has_normal_map && m.material.has_base_map);
+		mesh_release(&m);
+	}
+	/* No TEXCOORD_0: no texture can be placed, none is decoded. */
+	o.with_uvs = 0;
+	write_model(f, "maps-nouv.glb", o, path, sizeof(path));
+	assert_int_equal(gltf_load_textures(path, cases[3].textures, &m), 0);
+	assert_int_equal(m.material.images_decoded, 0);
+	mesh_release(&m);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -243,6 +282,7 @@ int main(void)
 	    cmocka_unit_test(no_colour_no_cost),
 	    cmocka_unit_test(other_tex_coord_not_used),
 	    cmocka_unit_test(packed_and_simplified),
+	    cmocka_unit_test(decodes_only_what_is_used),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);
 }
