@@ -74,7 +74,8 @@ vec3 linear_to_srgb(vec3 c)
 // multiplied in linear light and encoded again. rgba: baseColorFactor x
 // COLOR_0, linear, a = 1 where the base map applies; map: its texel, sRGB.
 // The map is filtered as stored, before decoding: GLES2 has no sRGB
-// textures (three.js on WebGL 1 without EXT_sRGB does the same).
+// textures (three.js on WebGL 1 without EXT_sRGB does the same). Not in
+// the mirror: tests/oracle/base_color_check.c is its reference.
 vec3 base_color(vec3 matcap, vec4 rgba, vec3 map)
 {
 	vec3 base = rgba.rgb * mix(vec3(1.0), srgb_to_linear(map), rgba.a);

@@ -363,10 +363,10 @@ bool read_vertices(Builder &b, const tinygltf::Model &m, const tinygltf::Primiti
 			b.uvs.push_back(a.uv.count ? (float)read_component(a.uv, i, k) : 0.0f);
 		if (r->has_tangents)
 			push_tangent(b, a.tan, i, world, det);
-		for (int k = 0; b.want_colors && k < 4; k++)
-			b.colors.push_back(base[k] * (a.col.count && k < 3
-							  ? (float)read_component(a.col, i, k)
-							  : 1.0f));
+		for (int k = 0; b.want_colors && k < 4; k++) { // a float colour may leave [0, 1]
+			double c = a.col.count && k < 3 ? read_component(a.col, i, k) : 1.0;
+			b.colors.push_back(base[k] * (float)(c >= 0.0 ? std::fmin(c, 1.0) : 0.0));
+		}
 	}
 	b.any_uvs |= a.uv.count > 0;
 	b.any_colors |= a.col.count > 0 || coloured;
