@@ -40,6 +40,7 @@ struct Builder {
 	int material = -1; // the first primitive's with one: the model's
 	bool other_materials = false;
 	bool want_colors = false, any_colors = false;
+	unsigned textures = 0;	  // enum gltf_texture: what is asked, for the UV set
 	size_t not_triangles = 0; // primitives of points or lines, left out
 };
 
@@ -287,8 +288,9 @@ bool same_count(const View &v, size_t count)
 bool check_attributes(Builder &b, const tinygltf::Model &m, const tinygltf::Primitive &p,
 		      const std::string &what, Attributes *a)
 {
+	std::string uv = "TEXCOORD_" + std::to_string(gltf_uv_set(m, p.material, b.textures));
 	int ipos = find_attribute(p, "POSITION"), inrm = find_attribute(p, "NORMAL"),
-	    iuv = find_attribute(p, "TEXCOORD_0"), itan = find_attribute(p, "TANGENT");
+	    iuv = find_attribute(p, uv.c_str()), itan = find_attribute(p, "TANGENT");
 	if (ipos < 0)
 		return fail(b, what + ".attributes", "has no POSITION, expected one");
 	std::string at = what + ".attributes.";
@@ -296,8 +298,7 @@ bool check_attributes(Builder &b, const tinygltf::Model &m, const tinygltf::Prim
 			    &a->pos) ||
 	    !check_optional(b, m, inrm, TINYGLTF_TYPE_VEC3, direction_types, at + "NORMAL",
 			    &a->nrm) ||
-	    !check_optional(b, m, iuv, TINYGLTF_TYPE_VEC2, position_types, at + "TEXCOORD_0",
-			    &a->uv) ||
+	    !check_optional(b, m, iuv, TINYGLTF_TYPE_VEC2, position_types, at + uv, &a->uv) ||
 	    !check_optional(b, m, itan, TINYGLTF_TYPE_VEC4, direction_types, at + "TANGENT",
 			    &a->tan))
 		return false;
@@ -540,6 +541,7 @@ int build_mesh(const char *name, tinygltf::Model &m, const struct gltf_options *
 	int scene, ret;
 	b.name = name;
 	b.want_colors = (o->textures & GLTF_TEXTURE_BASE_COLOR) != 0;
+	b.textures = o->textures;
 	if (prepare(m, name, &pose, &b.error) &&
 	    gltf_ext::choose_scene(m, o->scene, o->scene_setting, &scene, &b.error)) {
 		std::vector<int> roots;

@@ -184,6 +184,23 @@ bool gltf_primitive_base(const tinygltf::Model &m, int material, int model_mater
 	return coloured || pbr.baseColorTexture.index >= 0;
 }
 
+int gltf_uv_set(const tinygltf::Model &m, int material, unsigned textures)
+{
+	if (!(textures & GLTF_TEXTURE_BASE_COLOR) || material < 0 ||
+	    (size_t)material >= m.materials.size())
+		return 0;
+	const tinygltf::Material &mat = m.materials[(size_t)material];
+	const tinygltf::TextureInfo &t = mat.pbrMetallicRoughness.baseColorTexture;
+	float unused[6];
+	int set = t.index >= 0 ? texture_transform(t.extensions, t.texCoord, unused) : 0;
+	// The detail map packs the others on the one UV set it reads.
+	bool others = ((textures & GLTF_TEXTURE_NORMAL) && mat.normalTexture.index >= 0) ||
+		      ((textures & GLTF_TEXTURE_OCCLUSION) && mat.occlusionTexture.index >= 0) ||
+		      ((textures & GLTF_TEXTURE_THICKNESS) &&
+		       mat.extensions.count("KHR_materials_iridescence"));
+	return others || set < 0 || set > 7 ? 0 : set;
+}
+
 bool gltf_keep_image(tinygltf::Image *image, const int index, std::string *, std::string *, int,
 		     int, const unsigned char *bytes, int size, void *user)
 {
@@ -223,6 +240,9 @@ void gltf_read_material(const tinygltf::Model &m, int index, unsigned textures,
 	out->has_base_map = base_tex.index >= 0;
 	int base_coord =
 	    texture_transform(base_tex.extensions, base_tex.texCoord, out->base_transform);
+	// The mesh's UVs are this set when it was chosen for the map.
+	if (base_coord == gltf_uv_set(m, index, textures))
+		base_coord = 0;
 	if ((textures & GLTF_TEXTURE_BASE_COLOR) && out->has_base_map)
 		read_texture(m, base_tex.index, base_coord, images, name, "baseColorTexture",
 			     &out->base_map, out->images_decoded);

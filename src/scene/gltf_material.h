@@ -31,6 +31,11 @@ bool gltf_keep_image(tinygltf::Image *image, const int index, std::string *err, 
 // Returns whether the material colours the model at all.
 bool gltf_primitive_base(const tinygltf::Model &m, int material, int model_material, float rgba[4]);
 
+// Which TEXCOORD_n a primitive of this material loads as the mesh's UVs:
+// the base map's (its texCoord, or its KHR_texture_transform's), when it
+// is asked for and no other texture asked for needs TEXCOORD_0; else 0.
+int gltf_uv_set(const tinygltf::Model &m, int material, unsigned textures);
+
 // Fill out from material `index` (-1: none). textures: enum gltf_texture
 // bits to decode. A texture that cannot be used is logged as a warning
 // naming `name` and left empty.

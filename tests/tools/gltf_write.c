@@ -206,7 +206,7 @@ static void write_json(FILE *f, const struct mesh *m, const struct gltf_write_op
 	if (o->with_normals)
 		fprintf(f, ",\"NORMAL\":1");
 	if (o->with_uvs)
-		fprintf(f, ",\"TEXCOORD_0\":3");
+		fprintf(f, ",\"TEXCOORD_%d\":3", o->uv_set);
 	if (o->with_tangents)
 		fprintf(f, ",\"TANGENT\":4");
 	if (o->color_type)

@@ -19,6 +19,7 @@ struct gltf_write_opts {
 	int byte_stride;     /* byteStride of the POSITION view (0: tight) */
 	long truncate_to;    /* > 0: cut the written file to this many bytes */
 	int with_uvs;	     /* TEXCOORD_0 from the mesh's uvs */
+	int uv_set;	     /* ... written as TEXCOORD_<uv_set> */
 	int with_tangents;   /* TANGENT from the mesh's tangents */
 	/* A material, written when one of these is set. The PNG files become
 	 * its normalTexture, occlusionTexture and KHR_materials_iridescence

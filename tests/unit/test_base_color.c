@@ -188,9 +188,9 @@ static void no_colour_no_cost(void **state)
 	}
 }
 
-/* A base map on TEXCOORD_1 (here through the transform's texCoord) is not
- * placed: a warning, the colour stays. */
-static void other_tex_coord_not_used(void **state)
+/* The base map's texCoord (here the transform's, which overrides it)
+ * picks the UV set loaded; a set the model lacks places no map. */
+static void tex_coord_picks_the_uv_set(void **state)
 {
 	struct fixture *f = *state;
 	struct gltf_write_opts o = plain();
@@ -200,9 +200,32 @@ static void other_tex_coord_not_used(void **state)
 	o.base_color_png = f->png;
 	o.embed_images = 1;
 	o.texture_transform = "\"texCoord\":1";
+	o.uv_set = 1;
 	write_model(f, "uv1.glb", o, path, sizeof(path));
 	assert_int_equal(gltf_load_textures(path, GLTF_TEXTURE_BASE_COLOR, &m), 0);
+	assert_non_null(m.uvs);
+	assert_memory_equal(m.uvs, f->sphere.uvs, (size_t)m.vertex_count * 8);
+	assert_int_equal(m.material.base_map.width, 6);
+	mesh_release(&m);
+	/* Without the base colour, TEXCOORD_0 is what is read: none here. */
+	assert_int_equal(gltf_load_textures(path, 0, &m), 0);
+	assert_null(m.uvs);
+	mesh_release(&m);
+	o.uv_set = 0;
+	write_model(f, "uv1-missing.glb", o, path, sizeof(path));
+	assert_int_equal(gltf_load_textures(path, GLTF_TEXTURE_BASE_COLOR, &m), 0);
 	assert_non_null(m.colors); /* the default factor 0.8 0.7 0.6 */
+	assert_null(m.uvs);
+	assert_int_equal(m.material.base_map.width, 0);
+	mesh_release(&m);
+	/* A normal map asked for needs TEXCOORD_0: it wins, the base map on
+	 * TEXCOORD_1 is left out (a warning). */
+	o.normal_png = f->png;
+	write_model(f, "uv1-normal.glb", o, path, sizeof(path));
+	assert_int_equal(
+	    gltf_load_textures(path, GLTF_TEXTURE_BASE_COLOR | GLTF_TEXTURE_NORMAL, &m), 0);
+	assert_non_null(m.uvs);
+	assert_int_equal(m.material.normal_map.width, 6);
 	assert_int_equal(m.material.base_map.width, 0);
 	mesh_release(&m);
 }
@@ -280,7 +303,7 @@ int main(void)
 	    cmocka_unit_test(factor_colour_map_and_transform),
 	    cmocka_unit_test(colour_types),
 	    cmocka_unit_test(no_colour_no_cost),
-	    cmocka_unit_test(other_tex_coord_not_used),
+	    cmocka_unit_test(tex_coord_picks_the_uv_set),
 	    cmocka_unit_test(packed_and_simplified),
 	    cmocka_unit_test(decodes_only_what_is_used),
 	};
