@@ -569,7 +569,7 @@ int build_mesh(const char *name, tinygltf::Model &m, const struct gltf_options *
 	if (ret == 0)
 		gltf_read_material(m, b.material, b.any_uvs ? o->textures : 0, images, name,
 				   &out->material); // without UVs no texture can be placed
-	out->material.has_colors = out->colors != nullptr;
+	gltf_keep_colors(out);
 	return ret;
 }
 

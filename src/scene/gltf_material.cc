@@ -6,6 +6,7 @@
 #include "util/log.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <string>
 
 namespace
@@ -182,6 +183,18 @@ bool gltf_primitive_base(const tinygltf::Model &m, int material, int model_mater
 		pbr.baseColorTexture.index)
 		rgba[3] = 1.0f;
 	return coloured || pbr.baseColorTexture.index >= 0;
+}
+
+void gltf_keep_colors(struct mesh *out)
+{
+	bool plain = !out->material.base_map.width;
+	for (size_t i = 0; plain && out->colors && i < (size_t)out->vertex_count * 4; i++)
+		plain = i % 4 == 3 || out->colors[i] == 1.0f;
+	if (plain) {
+		std::free(out->colors);
+		out->colors = nullptr;
+	}
+	out->material.has_colors = out->colors != nullptr;
 }
 
 int gltf_uv_set(const tinygltf::Model &m, int material, unsigned textures)

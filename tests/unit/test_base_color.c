@@ -186,6 +186,15 @@ static void no_colour_no_cost(void **state)
 		o.base_factor = white;
 		write_model(f, "white.glb", o, path, sizeof(path));
 	}
+	/* Nor is a white base map with no UVs to place it. */
+	o.base_color_png = f->png;
+	o.embed_images = 1;
+	o.with_uvs = 0;
+	write_model(f, "white-nouv.glb", o, path, sizeof(path));
+	assert_int_equal(gltf_load_textures(path, GLTF_TEXTURE_BASE_COLOR, &m), 0);
+	assert_null(m.colors);
+	assert_false(m.material.has_colors);
+	mesh_release(&m);
 }
 
 /* The base map's texCoord (here the transform's, which overrides it)
