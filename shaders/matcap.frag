@@ -34,6 +34,17 @@ uniform sampler2D u_detail;
 #ifdef DETAIL_NORMAL
 varying SHADE_P vec4 v_tangent;
 #endif
+#ifdef BASE_COLOR
+varying vec4 v_color;
+#endif
+#ifdef BASE_MAP
+#ifdef GL_FRAGMENT_PRECISION_HIGH
+varying highp vec2 v_base_uv;
+#else
+varying vec2 v_base_uv;
+#endif
+uniform sampler2D u_base_map;
+#endif
 #ifdef IRIDESCENCE
 uniform SHADE_P vec4 u_iridescence; // hue range, hue average, hue shift, opacity
 #ifdef IRIDESCENCE_RAMP
@@ -88,6 +99,14 @@ void main()
 #endif
 	color = mix(color, film, u_iridescence.w);
 #endif
+#endif
+#ifdef BASE_COLOR
+#ifdef BASE_MAP
+	vec3 base_map = texture2D(u_base_map, v_base_uv).rgb;
+#else
+	vec3 base_map = vec3(1.0);
+#endif
+	color = base_color(color, v_color, base_map);
 #endif
 #ifdef DETAIL_MAP
 	color *= detail.b; // ambient occlusion

@@ -1,13 +1,24 @@
 // One vertex shader for every mode; the program is compiled with exactly
 // one of MODE_NORMAL, MODE_VIEW, MODE_SEM_VERTEX, MODE_SEM_FRAGMENT, and
 // CAMERA_ORTHO when the projection is orthographic. DETAIL_MAP and
-// DETAIL_NORMAL add the UV and the tangent frame, and only then.
+// DETAIL_NORMAL add the UV and the tangent frame, and only then; BASE_COLOR
+// the vertex colour, BASE_MAP the UV through the base map's transform.
 
 attribute vec3 a_position;
 attribute vec3 a_normal;
-#ifdef DETAIL_MAP
+#if defined(DETAIL_MAP) || defined(BASE_MAP)
 attribute vec2 a_uv;
+#endif
+#ifdef DETAIL_MAP
 varying vec2 v_uv;
+#endif
+#ifdef BASE_COLOR
+attribute vec4 a_color;
+varying vec4 v_color;
+#endif
+#ifdef BASE_MAP
+uniform mat3 u_base_transform;
+varying vec2 v_base_uv;
 #endif
 #ifdef DETAIL_NORMAL
 attribute vec4 a_tangent;
@@ -42,6 +53,12 @@ void main()
 #endif
 #ifdef DETAIL_MAP
 	v_uv = a_uv;
+#endif
+#ifdef BASE_COLOR
+	v_color = a_color;
+#endif
+#ifdef BASE_MAP
+	v_base_uv = (u_base_transform * vec3(a_uv, 1.0)).xy;
 #endif
 #ifdef DETAIL_NORMAL
 	// The model-view is a rotation: tangents turn as normals do.

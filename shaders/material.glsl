@@ -55,3 +55,30 @@ SHADE_P vec3 lit_blinn_phong(SHADE_P vec3 n, SHADE_P vec3 e, SHADE_P vec3 l, SHA
 	return base * (LIT_AMBIENT + (1.0 - LIT_AMBIENT) * diffuse) + vec3(LIT_SPECULAR * specular);
 }
 #endif
+
+#ifdef BASE_COLOR
+// sRGB's transfer functions, exact (piecewise), as three.js's
+// sRGBTransferEOTF and sRGBTransferOETF.
+vec3 srgb_to_linear(vec3 c)
+{
+	return mix(pow(c * 0.9478672986 + 0.0521327014, vec3(2.4)), c * 0.0773993808,
+		   step(c, vec3(0.04045)));
+}
+
+vec3 linear_to_srgb(vec3 c)
+{
+	return mix(pow(c, vec3(0.41666)) * 1.055 - 0.055, c * 12.92, step(c, vec3(0.0031308)));
+}
+
+// three.js's MeshMatcapMaterial: the matcap (sRGB) times the base colour,
+// multiplied in linear light and encoded again. rgba: baseColorFactor x
+// COLOR_0, linear, a = 1 where the base map applies; map: its texel, sRGB.
+// The map is filtered as stored, before decoding: GLES2 has no sRGB
+// textures (three.js on WebGL 1 without EXT_sRGB does the same). Not in
+// the mirror: tests/oracle/base_color_check.c is its reference.
+vec3 base_color(vec3 matcap, vec4 rgba, vec3 map)
+{
+	vec3 base = rgba.rgb * mix(vec3(1.0), srgb_to_linear(map), rgba.a);
+	return linear_to_srgb(srgb_to_linear(matcap) * base);
+}
+#endif

@@ -12,6 +12,7 @@ set -u
 
 groups="layers unit golden egl program_check mirror_check ortho loaders bad-input corpus cli"
 groups="$groups config_doc baker live install systemd fuzz soak no-camera board"
+groups="$groups base_color_check"
 
 unit_names() { (cd tests/unit && ls test_*.c) | sed 's/^test_//; s/\.c$//'; }
 golden_names() { (cd tests/golden && ls ./*.png) | sed 's|^\./||; s/\.png$//'; }
@@ -83,7 +84,7 @@ needs() {
 	unit) if [ -n "$2" ]; then echo "asan-test_$2"; else echo asan-unit; fi ;;
 	golden) echo "all $TOOLS/mkmodels $TOOLS/imgdiff" ;;
 	egl) echo "all $TOOLS/mkmodels $TOOLS/imgdiff" ;;
-	program_check | mirror_check) echo "$TOOLS/$1" ;;
+	program_check | mirror_check | base_color_check) echo "$TOOLS/$1" ;;
 	ortho) echo "all $TOOLS/mkmodels $TOOLS/imgdiff" ;;
 	loaders) echo "all $TOOLS/mkmodels" ;;
 	cli) echo "all asan-kiosk" ;;

@@ -23,6 +23,7 @@ test_golden
 test_egl
 test_program_check
 test_mirror_check
+test_base_color_check
 # 5. A sphere under an orthographic camera reproduces the matcap disk.
 test_ortho
 # 6. Loader variants that must work from the command line.

@@ -190,6 +190,19 @@ test_loaders() {
 			--size 64x64 --model $out/models/$f --output $out/render/$f.png 2>&1 |
 			grep -q 'normalTexture.*not used'"
 	done
+	# [scene] model_scene: by index or name; one the file lacks is one
+	# error that names the setting and the scenes there are.
+	s="$KIOSK -q --backend $offscreen --size 64x64 --model $out/models/scenes.glb"
+	check "model_scene picks a scene by index and by name" sh -c "
+		$s --output $out/render/scene-default.png && $s --model-scene 1 \
+			--output $out/render/scene-1.png && $s --model-scene pair \
+			--output $out/render/scene-pair.png &&
+		cmp -s $out/render/scene-1.png $out/render/scene-pair.png &&
+		! cmp -s $out/render/scene-default.png $out/render/scene-1.png"
+	check "a model_scene the file lacks is one error naming it" sh -c "
+		! $s --model-scene nope --output $out/render/scene-bad.png 2>$out/bad/scene.log &&
+		[ \$(grep -c error $out/bad/scene.log) = 1 ] &&
+		grep -q 'no scene \"nope\" (\[scene\] model_scene).*\"one\", \"pair\"' $out/bad/scene.log"
 }
 
 # bad_input NAME OPTION FILE: through the ASan binary, exit status 1, one
@@ -375,4 +388,10 @@ test_board() {
 	grep -q "^ok every script ran" "$out/e2e.log" ||
 		echo "not ok the board scripts did not all run (see $out/e2e.err)" >>"$out/e2e.log"
 	results board "$out/e2e.log" "$out/e2e.err"
+}
+
+# The glTF base colour, loaded and drawn, against a reference written from
+# the specifications (tests/oracle/base_color_check.c).
+test_base_color_check() {
+	check "the base colour agrees with its reference" "$TOOLS/base_color_check"
 }

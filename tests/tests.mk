@@ -10,6 +10,7 @@ UNIT_TESTS  := options mesh image gltf gltf_ext shading app button content servi
 UNIT_TESTS  += tangent subdivide material mesh_cache
 UNIT_TESTS  += camera_math camera_proto camera_texture
 UNIT_TESTS  += stability fp16 lod
+UNIT_TESTS  += base_color
 UNIT_TESTS  += drm gesture touch_decode schedule power cec backlight
 UNIT_TESTS  += touch_device app_touch
 UNIT_TESTS  += model_list
@@ -94,6 +95,15 @@ $(TOOLS_DIR)/mirror_check: tests/oracle/mirror_check.c $(LIB_OBJS) $(ORACLE_OBJS
 	$(CC) $(TEST_CFLAGS) -o $@ $< $(LIB_OBJS) $(ORACLE_OBJS) $(TEST_LIBS)
 
 test-tools: $(TOOLS_DIR)/mirror_check
+
+# The glTF base colour, loaded and drawn, against a reference from the specs.
+$(TOOLS_DIR)/base_color_check: tests/oracle/base_color_check.c tests/tools/gltf_write.c \
+		tests/tools/maps.c $(LIB_OBJS) $(ORACLE_OBJS)
+	@mkdir -p $(@D)
+	$(CC) $(TEST_CFLAGS) -o $@ $< tests/tools/gltf_write.c tests/tools/maps.c $(LIB_OBJS) \
+		$(ORACLE_OBJS) $(TEST_LIBS)
+
+test-tools: $(TOOLS_DIR)/base_color_check
 
 # Speed against error, for `make bench` and `make report`.
 $(TOOLS_DIR)/bench_quality: tests/bench/bench_quality.c tests/bench/bench_quality_report.c \

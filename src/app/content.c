@@ -24,8 +24,13 @@
 /* path NULL: the built-in knot. */
 static int load_model(const char *path, const struct content_config *o, struct mesh *mesh)
 {
-	if (path)
-		return gltf_load_textures(path, material_gltf_textures(&o->material), mesh);
+	if (path) {
+		struct gltf_options g = {.textures = material_gltf_textures(&o->material),
+					 .scene = o->model_scene,
+					 .scene_setting = "[scene] model_scene"};
+
+		return gltf_load_options(path, &g, mesh);
+	}
 	return mesh_torus_knot(mesh, KNOT_TUBULAR, KNOT_RADIAL);
 }
 
@@ -42,6 +47,11 @@ static int content_cache_lookup(struct content *s, const struct content_config *
 {
 	char dir[PATH_MAX];
 	int ret = mesh_cache_scene_key(path, c->lod_pixels, &c->material, &s->cache_key);
+
+	/* Another of the file's scenes is another mesh. */
+	if (!ret && c->model_scene)
+		s->cache_key.settings =
+		    mesh_cache_hash(c->model_scene, strlen(c->model_scene), s->cache_key.settings);
 
 	if (!ret)
 		ret = mesh_cache_dir(dir, sizeof(dir));
@@ -68,7 +78,8 @@ static bool content_cache_fits(const struct content *s, int width, int height)
 
 static bool decoded_images(const struct mesh_material *m)
 {
-	return m->normal_map.width || m->occlusion_map.width || m->thickness_map.width;
+	return m->normal_map.width || m->occlusion_map.width || m->thickness_map.width ||
+	       m->base_map.width;
 }
 
 /* The prepared mesh packed as the GPU and the cache take it; the mesh's

@@ -18,8 +18,9 @@
 /* [scene] in kiosk.ini, with [display] rotation and [material]: what is
  * shown, and how it is seen. */
 struct content_config {
-	char *model;  /* a file, folder or list (model_list.h); NULL: the built-in knot */
-	char *matcap; /* a file or a folder; NULL: the shipped folder */
+	char *model;	   /* a file, folder or list (model_list.h); NULL: the built-in knot */
+	char *model_scene; /* the glTF scene by index or name; NULL: the file's */
+	char *matcap;	   /* a file or a folder; NULL: the shipped folder */
 	enum shading_mode mode;
 	bool ortho;
 	double yaw, pitch; /* degrees, the resting orientation */

@@ -37,6 +37,7 @@ static const char *const switch_names[] = {"auto", "off", "on", NULL}; /* enum m
 static const char *const lit_names[] = {"off", "on", "beside", NULL};  /* enum material_lit */
 static const char *const camera_names[] = {"off", "on", NULL};	       /* enum camera_feed_use */
 static const char *const import_names[] = {"auto", "off", NULL};       /* enum camera_feed_import */
+static const char *const base_color_names[] = {"auto", "off", NULL};   /* enum material_switch */
 
 /* A field's place and size: the size tells a bool from an enum, and the
  * copy, the comparison and the release go by it. */
@@ -216,6 +217,11 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "DEG", "how far a one-finger drag across the whole screen turns the model"},
     {"touch-long-press", 0, OPTIONS_TOUCH, "long_press", K_CHOICE, AT(app.long_press), 0, 0, 0,
      app_action_names, "ACT", "what a long touch does (none: nothing)"},
+    {"base-color", 0, OPTIONS_SCENE, "base_color", K_CHOICE, AT(content.material.base_color), 0, 0,
+     0, base_color_names, "WHAT",
+     "auto: the matcap times the model's base colour (glTF colour, texture, COLOR_0); off: not"},
+    {"model-scene", 0, OPTIONS_SCENE, "model_scene", K_STRING, AT(content.model_scene), 0, 0, 0,
+     NULL, "SCENE", "which of the model's glTF scenes: an index or a name (default: its own)"},
     {"config", 'C', OPTION_CLI, NULL, K_STRING, AT(config), 0, 0, 0, NULL, "FILE",
      "read settings from an INI file first (see config/kiosk.ini)"},
     {"output", 'o', OPTION_CLI, NULL, K_STRING, AT(output), 0, 0, 0, NULL, "FILE",

@@ -13,11 +13,11 @@
  * matcaps' key light is (src/render/bake.c), so that the two read alike. */
 static const float light_dir[3] = {-0.5499f, 0.6198f, 0.5599f};
 
-enum { UNIT_MATCAP, UNIT_DETAIL, UNIT_RAMP };
+enum { UNIT_MATCAP, UNIT_DETAIL, UNIT_RAMP, UNIT_BASE };
 
 struct program {
 	GLuint id;
-	GLint modelview, projection, normal_matrix, matcap, detail, ramp;
+	GLint modelview, projection, normal_matrix, matcap, detail, ramp, base_map, base_transform;
 	GLint iridescence, hsv, light, base_color, shininess;
 };
 
@@ -31,7 +31,7 @@ struct renderer {
 	bool ortho, mode_set;
 	bool highp;	     /* every float highp (PRECISION_HIGHP): see renderer_new */
 	struct material mat; /* the features and their numbers; no images */
-	GLuint vbo[SHADER_ATTR_COUNT], ibo, matcap, detail, ramp;
+	GLuint vbo[SHADER_ATTR_COUNT], ibo, matcap, detail, ramp, base_map;
 	GLuint matcap_override; /* another's texture as the matcap (the camera's); 0: none */
 	long attr_bytes[SHADER_ATTR_COUNT]; /* 0: not uploaded */
 	GLenum index_type;
@@ -99,6 +99,7 @@ void renderer_free(struct renderer *r)
 	r->gl->DeleteTextures(1, &r->matcap);
 	drop_texture(r->gl, &r->detail);
 	drop_texture(r->gl, &r->ramp);
+	drop_texture(r->gl, &r->base_map);
 	free(r);
 }
 
@@ -163,17 +164,29 @@ void renderer_set_vertex_format(struct renderer *r, enum vertex_format format)
 	r->format = format;
 }
 
+/* The features the programs drawn read: the lit mode alone keeps its own
+ * grey (render/shader.c), so the base colour is no feature of it. */
+static unsigned drawn_features(const struct material *m)
+{
+	unsigned base = MATERIAL_BASE_COLOR | MATERIAL_BASE_MAP;
+
+	return m->lit == LIT_ON ? m->features & ~base : m->features;
+}
+
 int renderer_set_packed(struct renderer *r, const struct mesh_packed *m)
 {
-	bool uvs = material_needs_uvs(r->mat.features);
-	bool tangents = material_needs_tangents(r->mat.features);
-	bool used[SHADER_ATTR_COUNT] = {true, true, uvs, tangents};
+	unsigned f = drawn_features(&r->mat);
+	bool uvs = material_needs_uvs(f);
+	bool tangents = material_needs_tangents(f);
+	bool colors = material_needs_colors(f);
+	bool used[SHADER_ATTR_COUNT] = {true, true, uvs, tangents, colors};
 	int ret = upload_indices(r, m);
 
 	r->drawn = m->format;
 	r->position_scale = m->position_scale;
-	if ((uvs && !m->arrays[MESH_UVS]) || (tangents && !m->arrays[MESH_TANGENTS]))
-		log_warn("render: the mesh lacks the UVs or tangents its material needs");
+	if ((uvs && !m->arrays[MESH_UVS]) || (tangents && !m->arrays[MESH_TANGENTS]) ||
+	    (colors && !m->arrays[MESH_COLORS]))
+		log_warn("render: the mesh lacks the UVs, tangents or colours its material needs");
 	for (int a = 0; a < SHADER_ATTR_COUNT && !ret; a++) {
 		if (used[a] && m->arrays[a]) {
 			ret = upload_attribute(r, m, a);
@@ -321,6 +334,7 @@ int renderer_set_material(struct renderer *r, const struct material *m)
 	memset(&r->mat.detail, 0, sizeof(r->mat.detail));
 	memset(&r->mat.ramp, 0, sizeof(r->mat.ramp));
 	memset(&r->mat.height, 0, sizeof(r->mat.height));
+	memset(&r->mat.base_map, 0, sizeof(r->mat.base_map));
 	if (m->features & MATERIAL_DETAIL)
 		ret = upload_texture(r->gl, &r->detail, &m->detail, true, true);
 	else
@@ -329,6 +343,10 @@ int renderer_set_material(struct renderer *r, const struct material *m)
 		ret = upload_texture(r->gl, &r->ramp, &m->ramp, false, false);
 	else if (!ret)
 		drop_texture(r->gl, &r->ramp);
+	if (!ret && (drawn_features(m) & MATERIAL_BASE_MAP))
+		ret = upload_texture(r->gl, &r->base_map, &m->base_map, true, true);
+	else if (!ret)
+		drop_texture(r->gl, &r->base_map);
 	if (ret)
 		log_err("render: cannot upload the material's textures");
 	if (!ret && changed) {
@@ -347,6 +365,8 @@ static void find_uniforms(const struct gl *gl, struct program *p)
 	p->matcap = gl->GetUniformLocation(p->id, "u_matcap");
 	p->detail = gl->GetUniformLocation(p->id, "u_detail");
 	p->ramp = gl->GetUniformLocation(p->id, "u_ramp");
+	p->base_map = gl->GetUniformLocation(p->id, "u_base_map");
+	p->base_transform = gl->GetUniformLocation(p->id, "u_base_transform");
 	p->iridescence = gl->GetUniformLocation(p->id, "u_iridescence");
 	p->hsv = gl->GetUniformLocation(p->id, "u_hsv");
 	p->light = gl->GetUniformLocation(p->id, "u_light");
@@ -439,6 +459,13 @@ static void set_uniforms(const struct renderer *r, const struct program *p)
 		     r->matcap_override ? r->matcap_override : r->matcap);
 	bind_texture(gl, p->detail, UNIT_DETAIL, r->detail);
 	bind_texture(gl, p->ramp, UNIT_RAMP, r->ramp);
+	bind_texture(gl, p->base_map, UNIT_BASE, r->base_map);
+	if (p->base_transform >= 0) {
+		const float *t = m->base_transform;
+		const float m3[9] = {t[0], t[1], 0, t[2], t[3], 0, t[4], t[5], 1};
+
+		gl->UniformMatrix3fv(p->base_transform, 1, GL_FALSE, m3);
+	}
 	if (p->iridescence >= 0)
 		gl->Uniform4f(p->iridescence, m->hue_range, m->hue_average, m->hue_shift,
 			      m->opacity);
@@ -451,6 +478,9 @@ static void set_uniforms(const struct renderer *r, const struct program *p)
 	if (p->shininess >= 0)
 		gl->Uniform1f(p->shininess, m->shininess);
 }
+
+static const GLenum gl_types[] = {
+    [MESH_FLOAT32] = GL_FLOAT, [MESH_SNORM16] = GL_SHORT, [MESH_UNORM8] = GL_UNSIGNED_BYTE};
 
 static void draw_with(struct renderer *r, const struct program *p, const struct view *v,
 		      const int vp[4])
@@ -475,7 +505,7 @@ static void draw_with(struct renderer *r, const struct program *p, const struct 
 	gl->UniformMatrix3fv(p->normal_matrix, 1, GL_FALSE, nm);
 	set_uniforms(r, p);
 	for (int a = 0; a < SHADER_ATTR_COUNT; a++) {
-		bool int16 = mesh_array_int16(r->drawn, (enum mesh_array)a);
+		enum mesh_component c = mesh_array_component(r->drawn, (enum mesh_array)a);
 
 		if (!r->attr_bytes[a]) {
 			gl->DisableVertexAttribArray((GLuint)a);
@@ -483,7 +513,7 @@ static void draw_with(struct renderer *r, const struct program *p, const struct 
 		}
 		gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo[a]);
 		gl->VertexAttribPointer((GLuint)a, mesh_array_components((enum mesh_array)a),
-					int16 ? GL_SHORT : GL_FLOAT, int16 ? GL_TRUE : GL_FALSE, 0,
+					gl_types[c], c != MESH_FLOAT32 ? GL_TRUE : GL_FALSE, 0,
 					NULL);
 		gl->EnableVertexAttribArray((GLuint)a);
 	}
@@ -538,7 +568,7 @@ void renderer_draw(struct renderer *r, const struct view *v, int width, int heig
 void renderer_get_stats(const struct renderer *r, struct renderer_stats *out)
 {
 	const struct program *p[2] = {r->current, r->beside};
-	bool matcap = false, detail = false, ramp = false;
+	bool matcap = false, detail = false, ramp = false, base = false;
 
 	memset(out, 0, sizeof(*out));
 	for (int a = 0; a < SHADER_ATTR_COUNT; a++) {
@@ -550,8 +580,9 @@ void renderer_get_stats(const struct renderer *r, struct renderer_stats *out)
 			matcap |= p[i]->matcap >= 0;
 			detail |= p[i]->detail >= 0;
 			ramp |= p[i]->ramp >= 0;
+			base |= p[i]->base_map >= 0;
 		}
-	out->textures = matcap + detail + ramp;
+	out->textures = matcap + detail + ramp + base;
 	out->program = p[0] ? p[0]->id : 0;
 	out->lit_program = p[1] ? p[1]->id : 0;
 	out->highp = r->highp;

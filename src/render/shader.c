@@ -59,12 +59,15 @@ int shader_source_matcap(struct shader_source *s, const char *dir, unsigned feat
 	static const struct {
 		unsigned feature;
 		const char *name;
-	} feature_defines[] = {{MATERIAL_IRIDESCENCE, "IRIDESCENCE"},
-			       {MATERIAL_RAMP, "IRIDESCENCE_RAMP"},
-			       {MATERIAL_DETAIL, "DETAIL_MAP"},
-			       {MATERIAL_DETAIL_NORMAL, "DETAIL_NORMAL"}};
+	} feature_defines[] = {
+	    {MATERIAL_IRIDESCENCE, "IRIDESCENCE"}, {MATERIAL_RAMP, "IRIDESCENCE_RAMP"},
+	    {MATERIAL_DETAIL, "DETAIL_MAP"},	   {MATERIAL_DETAIL_NORMAL, "DETAIL_NORMAL"},
+	    {MATERIAL_BASE_COLOR, "BASE_COLOR"},   {MATERIAL_BASE_MAP, "BASE_MAP"}};
 	int ret;
 
+	/* The lit mode compares shapes: it keeps its own grey. */
+	if (lit)
+		features &= ~(unsigned)(MATERIAL_BASE_COLOR | MATERIAL_BASE_MAP);
 	*s = (struct shader_source){.dir = dir,
 				    .precision = "precision mediump float;\n",
 				    .vertex = {"mapping.glsl", "matcap.vert"},
@@ -72,7 +75,8 @@ int shader_source_matcap(struct shader_source *s, const char *dir, unsigned feat
 				    .attributes = {[SHADER_ATTR_POSITION] = "a_position",
 						   [SHADER_ATTR_NORMAL] = "a_normal",
 						   [SHADER_ATTR_UV] = "a_uv",
-						   [SHADER_ATTR_TANGENT] = "a_tangent"}};
+						   [SHADER_ATTR_TANGENT] = "a_tangent",
+						   [SHADER_ATTR_COLOR] = "a_color"}};
 	/* These read the normal per fragment, which sem-vertex has not. */
 	if (mode == SHADING_SEM_VERTEX &&
 	    (lit || (features & (MATERIAL_IRIDESCENCE | MATERIAL_DETAIL_NORMAL))))

@@ -21,10 +21,11 @@ enum shader_attribute {
 	SHADER_ATTR_NORMAL,
 	SHADER_ATTR_UV,
 	SHADER_ATTR_TANGENT,
+	SHADER_ATTR_COLOR,
 	SHADER_ATTR_COUNT
 };
 
-#define SHADER_MAX_DEFINES 8
+#define SHADER_MAX_DEFINES 10
 #define SHADER_MAX_FILES   3
 
 /* What a program is made of. Each stage's text is the #version line, the

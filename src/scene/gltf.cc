@@ -33,11 +33,14 @@ struct Builder {
 	std::vector<float> normals;
 	std::vector<float> uvs;
 	std::vector<float> tangents; // xyzw, kept only when every primitive has them
+	std::vector<float> colors;   // rgba, linear (struct mesh colors), when asked
 	std::vector<uint32_t> indices;
 	std::vector<Range> ranges;
 	bool any_uvs = false;
 	int material = -1; // the first primitive's with one: the model's
 	bool other_materials = false;
+	bool want_colors = false, any_colors = false;
+	unsigned textures = 0;	  // enum gltf_texture: what is asked, for the UV set
 	size_t not_triangles = 0; // primitives of points or lines, left out
 };
 
@@ -244,9 +247,24 @@ void push_tangent(Builder &b, const View &tan, size_t i, const Mat4 world, doubl
 	b.tangents.push_back((w < 0) != (det < 0) ? -1.0f : 1.0f);
 }
 
+// COLOR_0: vec3 or vec4, float or normalized unsigned byte or short.
+bool check_color(Builder &b, const tinygltf::Model &m, int index, const std::string &what, View *v)
+{
+	static const int types[] = {TINYGLTF_COMPONENT_TYPE_FLOAT,
+				    TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+				    TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, 0};
+	bool vec4 = index < (int)m.accessors.size() && index >= 0 &&
+		    m.accessors[(size_t)index].type == TINYGLTF_TYPE_VEC4;
+	if (!check_accessor(b, m, index, vec4 ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_VEC3, types,
+			    what, v))
+		return false;
+	v->normalized = true; // the spec's only choice for integer colours
+	return true;
+}
+
 // A primitive's vertex attributes, checked: an absent one has count 0.
 struct Attributes {
-	View pos, nrm, uv, tan;
+	View pos, nrm, uv, tan, col;
 };
 
 int find_attribute(const tinygltf::Primitive &p, const char *key)
@@ -270,8 +288,9 @@ bool same_count(const View &v, size_t count)
 bool check_attributes(Builder &b, const tinygltf::Model &m, const tinygltf::Primitive &p,
 		      const std::string &what, Attributes *a)
 {
+	std::string uv = "TEXCOORD_" + std::to_string(gltf_uv_set(m, p.material, b.textures));
 	int ipos = find_attribute(p, "POSITION"), inrm = find_attribute(p, "NORMAL"),
-	    iuv = find_attribute(p, "TEXCOORD_0"), itan = find_attribute(p, "TANGENT");
+	    iuv = find_attribute(p, uv.c_str()), itan = find_attribute(p, "TANGENT");
 	if (ipos < 0)
 		return fail(b, what + ".attributes", "has no POSITION, expected one");
 	std::string at = what + ".attributes.";
@@ -279,13 +298,16 @@ bool check_attributes(Builder &b, const tinygltf::Model &m, const tinygltf::Prim
 			    &a->pos) ||
 	    !check_optional(b, m, inrm, TINYGLTF_TYPE_VEC3, direction_types, at + "NORMAL",
 			    &a->nrm) ||
-	    !check_optional(b, m, iuv, TINYGLTF_TYPE_VEC2, position_types, at + "TEXCOORD_0",
-			    &a->uv) ||
+	    !check_optional(b, m, iuv, TINYGLTF_TYPE_VEC2, position_types, at + uv, &a->uv) ||
 	    !check_optional(b, m, itan, TINYGLTF_TYPE_VEC4, direction_types, at + "TANGENT",
 			    &a->tan))
 		return false;
 	size_t n = a->pos.count;
-	if (!same_count(a->nrm, n) || !same_count(a->uv, n) || !same_count(a->tan, n))
+	int icol = b.want_colors ? find_attribute(p, "COLOR_0") : -1;
+	if (icol >= 0 && !check_color(b, m, icol, at + "COLOR_0", &a->col))
+		return false;
+	if (!same_count(a->nrm, n) || !same_count(a->uv, n) || !same_count(a->tan, n) ||
+	    !same_count(a->col, n))
 		return fail(b, what, "attributes differ in count from POSITION");
 	if (b.positions.size() / 3 + n > 0x7fffffff)
 		return fail(b, what, "too many vertices in the model");
@@ -330,6 +352,8 @@ bool read_vertices(Builder &b, const tinygltf::Model &m, const tinygltf::Primiti
 		return false;
 	double nm[9];
 	double det = normal_matrix(world, nm);
+	float base[4];
+	bool coloured = gltf_primitive_base(m, p.material, b.material, base);
 	r->has_normals = a.nrm.count > 0 && det != 0.0;
 	r->has_tangents = a.tan.count > 0 && r->has_normals;
 	for (size_t i = 0; i < a.pos.count; i++) {
@@ -340,8 +364,13 @@ bool read_vertices(Builder &b, const tinygltf::Model &m, const tinygltf::Primiti
 			b.uvs.push_back(a.uv.count ? (float)read_component(a.uv, i, k) : 0.0f);
 		if (r->has_tangents)
 			push_tangent(b, a.tan, i, world, det);
+		for (int k = 0; b.want_colors && k < 4; k++) { // a float colour may leave [0, 1]
+			double c = a.col.count && k < 3 ? read_component(a.col, i, k) : 1.0;
+			b.colors.push_back(base[k] * (float)(c >= 0.0 ? std::fmin(c, 1.0) : 0.0));
+		}
 	}
 	b.any_uvs |= a.uv.count > 0;
+	b.any_colors |= a.col.count > 0 || coloured;
 	r->vertex_count = (uint32_t)a.pos.count;
 	return true;
 }
@@ -462,6 +491,13 @@ int finish_mesh(Builder &b, struct mesh *out)
 	std::memcpy(out->indices, b.indices.data(), b.indices.size() * sizeof(uint32_t));
 	if (b.any_uvs)
 		std::memcpy(out->uvs, b.uvs.data(), b.uvs.size() * sizeof(float));
+	if (b.any_colors && b.colors.size() == (size_t)nv * 4) {
+		if (mesh_alloc_colors(out)) {
+			mesh_release(out);
+			return -ENOMEM;
+		}
+		std::memcpy(out->colors, b.colors.data(), b.colors.size() * sizeof(float));
+	}
 	bool all_tangents = true;
 	for (const Range &r : b.ranges)
 		all_tangents &= r.has_tangents;
@@ -504,8 +540,10 @@ int build_mesh(const char *name, tinygltf::Model &m, const struct gltf_options *
 	Pose pose;
 	int scene, ret;
 	b.name = name;
+	b.want_colors = (o->textures & GLTF_TEXTURE_BASE_COLOR) != 0;
+	b.textures = o->textures;
 	if (prepare(m, name, &pose, &b.error) &&
-	    gltf_ext::choose_scene(m, o->scene, &scene, &b.error)) {
+	    gltf_ext::choose_scene(m, o->scene, o->scene_setting, &scene, &b.error)) {
 		std::vector<int> roots;
 		if (scene >= 0)
 			roots = m.scenes[(size_t)scene].nodes;
@@ -529,7 +567,9 @@ int build_mesh(const char *name, tinygltf::Model &m, const struct gltf_options *
 		log_info("%s: primitives differ in material; the first one's is shown",
 			 shown.c_str());
 	if (ret == 0)
-		gltf_read_material(m, b.material, o->textures, images, name, &out->material);
+		gltf_read_material(m, b.material, b.any_uvs ? o->textures : 0, images, name,
+				   &out->material); // without UVs no texture can be placed
+	gltf_keep_colors(out);
 	return ret;
 }
 
@@ -621,7 +661,7 @@ extern "C" int gltf_load_memory_options(const char *name, const uint8_t *data, s
 extern "C" int gltf_load_memory_textures(const char *name, const uint8_t *data, size_t size,
 					 const char *dir, unsigned textures, struct mesh *out)
 {
-	struct gltf_options o = {textures, nullptr};
+	struct gltf_options o = {textures, nullptr, nullptr};
 	return gltf_load_memory_options(name, data, size, dir, &o, out);
 }
 
@@ -649,7 +689,7 @@ extern "C" int gltf_load_options(const char *path, const struct gltf_options *o,
 
 extern "C" int gltf_load_textures(const char *path, unsigned textures, struct mesh *out)
 {
-	struct gltf_options o = {textures, nullptr};
+	struct gltf_options o = {textures, nullptr, nullptr};
 	return gltf_load_options(path, &o, out);
 }
 

@@ -23,6 +23,9 @@ struct gltf_options {
 	 * the file's `scene`, else the first. A file without scenes shows
 	 * every tree of nodes. */
 	const char *scene;
+	/* How a refusal of `scene` names where it came from, e.g. "[scene]
+	 * model_scene"; NULL: not named. */
+	const char *scene_setting;
 };
 
 /* Load every triangle primitive of the default scene, each with its node

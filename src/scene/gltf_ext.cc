@@ -32,10 +32,8 @@ template <typename T> bool negative(T v)
 // The loader's one list of what it understands. Anything else in
 // extensionsRequired refuses the file, naming it.
 const char *const supported_extensions[] = {
-    "KHR_mesh_quantization",
-    "EXT_meshopt_compression",
-    "KHR_draco_mesh_compression",
-    "KHR_materials_iridescence",
+    "KHR_mesh_quantization",	 "EXT_meshopt_compression", "KHR_draco_mesh_compression",
+    "KHR_materials_iridescence", "KHR_texture_transform",
 };
 
 std::string path_of(const char *array, size_t i)

@@ -84,7 +84,8 @@ bool node_worlds(const tinygltf::Model &m, std::vector<Mat4> *worlds, std::vecto
 		 std::string *err);
 // The scene to show: `want` (an index or a scene's name), else the
 // file's default, else the first; -1 when the file has none.
-bool choose_scene(const tinygltf::Model &m, const char *want, int *scene, std::string *err);
+bool choose_scene(const tinygltf::Model &m, const char *want, const char *setting, int *scene,
+		  std::string *err);
 bool apply_morphs(tinygltf::Model &m, std::string *err);
 // Each skinned node gets a posed copy of its mesh; mesh_source[i] is the
 // file's index of mesh i.

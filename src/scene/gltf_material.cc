@@ -6,6 +6,7 @@
 #include "util/log.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <string>
 
 namespace
@@ -85,7 +86,7 @@ bool image_bytes(const tinygltf::Model &m, int index, const GltfImages &images,
 }
 
 void read_texture(const tinygltf::Model &m, int texture, int tex_coord, const GltfImages &images,
-		  const std::string &name, const char *what, struct image *out)
+		  const std::string &name, const char *what, struct image *out, unsigned &decoded)
 {
 	int source = texture_image(m, texture, tex_coord, name, what);
 	const unsigned char *data = nullptr;
@@ -98,6 +99,7 @@ void read_texture(const tinygltf::Model &m, int texture, int tex_coord, const Gl
 		return;
 	}
 	std::string label = name + " " + what + " (image " + std::to_string(source) + ")";
+	decoded++;
 	if (image_decode(label.c_str(), data, size, out))
 		log_warn("%s: %s is not used", name.c_str(), what);
 }
@@ -122,7 +124,95 @@ void read_iridescence(const tinygltf::Material &mat, struct mesh_material *out, 
 	}
 }
 
+// Element k of a two-number array, kept finite and in a sane range.
+double element(const tinygltf::Value &a, int k, double fallback)
+{
+	if (!a.IsArray() || a.ArrayLen() != 2)
+		return fallback;
+	const tinygltf::Value &v = a.Get(k);
+	double x = v.IsNumber() || v.IsInt() ? v.GetNumberAsDouble() : fallback;
+	return std::isfinite(x) ? std::fmin(std::fmax(x, -1e6), 1e6) : fallback;
+}
+
+// KHR_texture_transform as the affine map of mesh_material.base_transform:
+// translation x rotation x scale, the rotation counter-clockwise on the
+// UVs (so the image turns clockwise), as the extension's example reads.
+// Returns the texCoord it names, else `tex_coord`.
+int texture_transform(const tinygltf::ExtensionMap &ext, int tex_coord, float m[6])
+{
+	auto it = ext.find("KHR_texture_transform");
+	if (it == ext.end() || !it->second.IsObject())
+		return tex_coord;
+	const tinygltf::Value &v = it->second;
+	const tinygltf::Value &off = v.Get("offset"), &scale = v.Get("scale");
+	double r = number(v, "rotation", 0.0, -1e6, 1e6), o[2] = {0, 0}, s[2] = {1, 1};
+	for (int k = 0; k < 2; k++) {
+		o[k] = element(off, k, o[k]);
+		s[k] = element(scale, k, s[k]);
+	}
+	m[0] = (float)(std::cos(r) * s[0]);
+	m[1] = (float)(-std::sin(r) * s[0]);
+	m[2] = (float)(std::sin(r) * s[1]);
+	m[3] = (float)(std::cos(r) * s[1]);
+	m[4] = (float)o[0];
+	m[5] = (float)o[1];
+	return (int)number(v, "texCoord", tex_coord, 0, 1e9);
+}
+
 } // namespace
+
+bool gltf_primitive_base(const tinygltf::Model &m, int material, int model_material, float rgba[4])
+{
+	rgba[0] = rgba[1] = rgba[2] = 1.0f;
+	rgba[3] = 0.0f;
+	if (material < 0 || (size_t)material >= m.materials.size())
+		return false;
+	const tinygltf::PbrMetallicRoughness &pbr =
+	    m.materials[(size_t)material].pbrMetallicRoughness;
+	bool coloured = false;
+	for (size_t k = 0; k < 3 && pbr.baseColorFactor.size() == 4; k++) {
+		double f = pbr.baseColorFactor[k];
+		rgba[k] = std::isfinite(f) ? (float)std::fmin(std::fmax(f, 0.0), 1.0) : 1.0f;
+		coloured |= rgba[k] != 1.0f;
+	}
+	// The one base map shown is the model's material's: a primitive reads
+	// it when its own material names the same texture.
+	if (pbr.baseColorTexture.index >= 0 && model_material >= 0 &&
+	    (size_t)model_material < m.materials.size() &&
+	    m.materials[(size_t)model_material].pbrMetallicRoughness.baseColorTexture.index ==
+		pbr.baseColorTexture.index)
+		rgba[3] = 1.0f;
+	return coloured || pbr.baseColorTexture.index >= 0;
+}
+
+void gltf_keep_colors(struct mesh *out)
+{
+	bool plain = !out->material.base_map.width;
+	for (size_t i = 0; plain && out->colors && i < (size_t)out->vertex_count * 4; i++)
+		plain = i % 4 == 3 || out->colors[i] == 1.0f;
+	if (plain) {
+		std::free(out->colors);
+		out->colors = nullptr;
+	}
+	out->material.has_colors = out->colors != nullptr;
+}
+
+int gltf_uv_set(const tinygltf::Model &m, int material, unsigned textures)
+{
+	if (!(textures & GLTF_TEXTURE_BASE_COLOR) || material < 0 ||
+	    (size_t)material >= m.materials.size())
+		return 0;
+	const tinygltf::Material &mat = m.materials[(size_t)material];
+	const tinygltf::TextureInfo &t = mat.pbrMetallicRoughness.baseColorTexture;
+	float unused[6];
+	int set = t.index >= 0 ? texture_transform(t.extensions, t.texCoord, unused) : 0;
+	// The detail map packs the others on the one UV set it reads.
+	bool others = ((textures & GLTF_TEXTURE_NORMAL) && mat.normalTexture.index >= 0) ||
+		      ((textures & GLTF_TEXTURE_OCCLUSION) && mat.occlusionTexture.index >= 0) ||
+		      ((textures & GLTF_TEXTURE_THICKNESS) &&
+		       mat.extensions.count("KHR_materials_iridescence"));
+	return others || set < 0 || set > 7 ? 0 : set;
+}
 
 bool gltf_keep_image(tinygltf::Image *image, const int index, std::string *, std::string *, int,
 		     int, const unsigned char *bytes, int size, void *user)
@@ -159,13 +249,24 @@ void gltf_read_material(const tinygltf::Model &m, int index, unsigned textures,
 		out->occlusion_strength =
 		    (float)std::fmin(std::fmax(mat.occlusionTexture.strength, 0.0), 1.0);
 	read_iridescence(mat, out, &thickness, &thickness_coord);
+	const tinygltf::TextureInfo &base_tex = mat.pbrMetallicRoughness.baseColorTexture;
+	out->has_base_map = base_tex.index >= 0;
+	int base_coord =
+	    texture_transform(base_tex.extensions, base_tex.texCoord, out->base_transform);
+	// The mesh's UVs are this set when it was chosen for the map.
+	if (base_coord == gltf_uv_set(m, index, textures))
+		base_coord = 0;
+	if ((textures & GLTF_TEXTURE_BASE_COLOR) && out->has_base_map)
+		read_texture(m, base_tex.index, base_coord, images, name, "baseColorTexture",
+			     &out->base_map, out->images_decoded);
 	if ((textures & GLTF_TEXTURE_NORMAL) && out->has_normal_map)
 		read_texture(m, mat.normalTexture.index, mat.normalTexture.texCoord, images, name,
-			     "normalTexture", &out->normal_map);
+			     "normalTexture", &out->normal_map, out->images_decoded);
 	if ((textures & GLTF_TEXTURE_OCCLUSION) && out->has_occlusion_map)
 		read_texture(m, mat.occlusionTexture.index, mat.occlusionTexture.texCoord, images,
-			     name, "occlusionTexture", &out->occlusion_map);
+			     name, "occlusionTexture", &out->occlusion_map, out->images_decoded);
 	if ((textures & GLTF_TEXTURE_THICKNESS) && out->has_thickness_map)
 		read_texture(m, thickness, thickness_coord, images, name,
-			     "iridescenceThicknessTexture", &out->thickness_map);
+			     "iridescenceThicknessTexture", &out->thickness_map,
+			     out->images_decoded);
 }

@@ -26,6 +26,20 @@ bool gltf_keep_image(tinygltf::Image *image, const int index, std::string *err, 
 		     int req_width, int req_height, const unsigned char *bytes, int size,
 		     void *user);
 
+// A primitive's part of the base colour (struct mesh colors): rgb its
+// material's baseColorFactor, a 1 when it reads model_material's base map.
+// Returns whether the material colours the model at all.
+bool gltf_primitive_base(const tinygltf::Model &m, int material, int model_material, float rgba[4]);
+
+// Colours that change nothing (white, and no base map decoded for their
+// alpha to apply) are given back; material.has_colors says what is left.
+void gltf_keep_colors(struct mesh *out);
+
+// Which TEXCOORD_n a primitive of this material loads as the mesh's UVs:
+// the base map's (its texCoord, or its KHR_texture_transform's), when it
+// is asked for and no other texture asked for needs TEXCOORD_0; else 0.
+int gltf_uv_set(const tinygltf::Model &m, int material, unsigned textures);
+
 // Fill out from material `index` (-1: none). textures: enum gltf_texture
 // bits to decode. A texture that cannot be used is logged as a warning
 // naming `name` and left empty.

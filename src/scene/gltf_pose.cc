@@ -297,7 +297,8 @@ bool node_worlds(const tinygltf::Model &m, std::vector<Mat4> *worlds, std::vecto
 	return true;
 }
 
-bool choose_scene(const tinygltf::Model &m, const char *want, int *scene, std::string *err)
+bool choose_scene(const tinygltf::Model &m, const char *want, const char *setting, int *scene,
+		  std::string *err)
 {
 	*scene = m.scenes.empty() ? -1 : m.defaultScene >= 0 ? m.defaultScene : 0;
 	if (want && *want) {
@@ -308,9 +309,14 @@ bool choose_scene(const tinygltf::Model &m, const char *want, int *scene, std::s
 			if (m.scenes[k].name == want || (!*end && i == (long)k))
 				*scene = (int)k;
 		if (*scene == -2) {
-			*err = "scenes: no scene \"" + std::string(want) +
-			       "\", expected an index below " + std::to_string(m.scenes.size()) +
-			       " or a scene's name";
+			std::string names;
+			for (const tinygltf::Scene &s : m.scenes)
+				if (!s.name.empty())
+					names += (names.empty() ? ": \"" : ", \"") + s.name + "\"";
+			*err = "scenes: no scene \"" + std::string(want) + "\"" +
+			       (setting ? " (" + std::string(setting) + ")" : "") +
+			       ", expected an index below " + std::to_string(m.scenes.size()) +
+			       " or a scene's name" + names;
 			return false;
 		}
 	}

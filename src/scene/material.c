@@ -58,6 +58,8 @@ unsigned material_gltf_textures(const struct material_config *cfg)
 		if (cfg->iridescence != MATERIAL_OFF)
 			t |= GLTF_TEXTURE_THICKNESS;
 	}
+	if (cfg->base_color != MATERIAL_OFF)
+		t |= GLTF_TEXTURE_BASE_COLOR;
 	return t;
 }
 
@@ -246,6 +248,35 @@ static int resolve_displacement(const struct material_config *cfg, const struct 
 	return ret;
 }
 
+/* The model's base colour, when the loader gave it (mesh colors): its map
+ * needs the UVs it is placed by. */
+static int resolve_base_color(const struct material_config *cfg, const struct mesh *mesh,
+			      struct material *m)
+{
+	const struct mesh_material *g = &mesh->material;
+	int ret = 0;
+
+	if (cfg->base_color == MATERIAL_OFF || !(mesh->colors || g->has_colors))
+		return 0;
+	m->features |= MATERIAL_BASE_COLOR;
+	memcpy(m->base_transform, g->base_transform, sizeof(m->base_transform));
+	if (!g->base_map.width)
+		return 0;
+	if (!mesh->uvs) {
+		log_warn("the model's baseColorTexture has no TEXCOORD_0 to place it: not used");
+		return 0;
+	}
+	ret = image_alloc(&m->base_map, g->base_map.width, g->base_map.height);
+	if (!ret)
+		memcpy(m->base_map.rgba, g->base_map.rgba,
+		       (size_t)g->base_map.width * (size_t)g->base_map.height * 4);
+	if (!ret)
+		ret = to_pot(&m->base_map);
+	if (!ret)
+		m->features |= MATERIAL_BASE_MAP;
+	return ret;
+}
+
 int material_load(struct material *out, const struct material_config *cfg, const struct mesh *mesh,
 		  bool strict)
 {
@@ -268,6 +299,8 @@ int material_load(struct material *out, const struct material_config *cfg, const
 		ret = resolve_detail(cfg, mesh, strict, out);
 	if (!ret)
 		ret = resolve_displacement(cfg, mesh, strict, out);
+	if (!ret)
+		ret = resolve_base_color(cfg, mesh, out);
 	if (ret)
 		material_release(out);
 	return ret;
@@ -278,6 +311,7 @@ void material_release(struct material *m)
 	image_release(&m->detail);
 	image_release(&m->ramp);
 	image_release(&m->height);
+	image_release(&m->base_map);
 	memset(m, 0, sizeof(*m));
 }
 
@@ -340,10 +374,15 @@ int material_prepare_mesh(const struct material *m, struct mesh *mesh, int width
 
 bool material_needs_uvs(unsigned features)
 {
-	return (features & MATERIAL_DETAIL) != 0;
+	return (features & (MATERIAL_DETAIL | MATERIAL_BASE_MAP)) != 0;
 }
 
 bool material_needs_tangents(unsigned features)
 {
 	return (features & MATERIAL_DETAIL_NORMAL) != 0;
+}
+
+bool material_needs_colors(unsigned features)
+{
+	return (features & MATERIAL_BASE_COLOR) != 0;
 }

@@ -19,6 +19,10 @@ enum material_feature {
 	MATERIAL_DETAIL = 1u << 2,	  /* detail map: occlusion (b), hue shift (a) */
 	MATERIAL_DETAIL_NORMAL = 1u << 3, /* ... and a tangent-space normal (rg) */
 	MATERIAL_DISPLACEMENT = 1u << 4,  /* CPU only: subdivided and displaced */
+	/* The matcap times the glTF base colour, as three.js's
+	 * MeshMatcapMaterial: per vertex baseColorFactor x COLOR_0 ... */
+	MATERIAL_BASE_COLOR = 1u << 5,
+	MATERIAL_BASE_MAP = 1u << 6, /* ... x baseColorTexture */
 };
 
 enum material_switch { MATERIAL_AUTO, MATERIAL_OFF, MATERIAL_ON };
@@ -39,6 +43,7 @@ struct material_config {
 	int displacement_triangles;
 	int lit; /* enum material_lit */
 	double shininess;
+	int base_color; /* enum material_switch, auto or off ([model] base_color) */
 };
 
 /* What the renderer reads: resolved, with every texture decoded. */
@@ -53,6 +58,8 @@ struct material {
 	struct image detail; /* rg normal xy, b occlusion, a hue shift; power-of-two sides */
 	struct image ramp;
 	struct image height;
+	struct image base_map;	 /* sRGB as stored; power-of-two sides */
+	float base_transform[6]; /* mesh_material.base_transform */
 };
 
 void material_config_defaults(struct material_config *cfg);
@@ -78,5 +85,6 @@ int material_prepare_mesh(const struct material *m, struct mesh *mesh, int width
 /* The vertex attributes a program with these features reads. */
 bool material_needs_uvs(unsigned features);
 bool material_needs_tangents(unsigned features);
+bool material_needs_colors(unsigned features);
 
 #endif

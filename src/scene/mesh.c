@@ -15,6 +15,7 @@ void mesh_material_default(struct mesh_material *mat)
 	mat->thickness_max = 400.0f;
 	mat->normal_scale = 1.0f;
 	mat->occlusion_strength = 1.0f;
+	mat->base_transform[0] = mat->base_transform[3] = 1.0f;
 }
 
 int mesh_alloc(struct mesh *m, uint32_t vertex_count, uint32_t index_count, bool with_uvs)
@@ -41,16 +42,25 @@ int mesh_alloc_tangents(struct mesh *m)
 	return m->tangents ? 0 : -ENOMEM;
 }
 
+int mesh_alloc_colors(struct mesh *m)
+{
+	free(m->colors);
+	m->colors = malloc((size_t)m->vertex_count * 4 * sizeof(float) + 1);
+	return m->colors ? 0 : -ENOMEM;
+}
+
 void mesh_release(struct mesh *m)
 {
 	free(m->positions);
 	free(m->normals);
 	free(m->uvs);
 	free(m->tangents);
+	free(m->colors);
 	free(m->indices);
 	image_release(&m->material.normal_map);
 	image_release(&m->material.occlusion_map);
 	image_release(&m->material.thickness_map);
+	image_release(&m->material.base_map);
 	memset(m, 0, sizeof(*m));
 }
 

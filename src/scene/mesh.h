@@ -30,6 +30,17 @@ struct mesh_material {
 	struct image normal_map;    /* normalTexture: tangent-space xyz in rgb */
 	struct image occlusion_map; /* occlusionTexture: ambient occlusion in r */
 	struct image thickness_map; /* iridescenceThicknessTexture: thickness in g */
+	/* pbrMetallicRoughness.baseColorTexture of the model's material, as
+	 * stored (sRGB encoded: the shader decodes it), and its
+	 * KHR_texture_transform as uv' = (m[0] u + m[2] v + m[4], m[1] u +
+	 * m[3] v + m[5]). Its UVs are the mesh's uvs. */
+	bool has_base_map;
+	bool has_colors; /* the loader gave the mesh colors (kept when they are cached) */
+	/* How many images the loader decoded for it: only those a scene asked
+	 * for and can place (the tests count them). */
+	unsigned images_decoded;
+	struct image base_map;
+	float base_transform[6];
 };
 
 struct mesh {
@@ -42,6 +53,11 @@ struct mesh {
 	 * handedness, so that the bitangent is cross(normal, tangent) * w (the
 	 * glTF convention). NULL unless the model or a feature provides it. */
 	float *tangents;
+	/* rgba per vertex, linear: rgb = the primitive's baseColorFactor x
+	 * COLOR_0, a = 1 where the primitive reads the material's base map
+	 * (mesh_material.base_map), else 0. NULL when the loader was not asked
+	 * for base colour or the model has none. */
+	float *colors;
 	uint32_t *indices;
 	struct mesh_material material;
 };
@@ -49,6 +65,8 @@ struct mesh {
 int mesh_alloc(struct mesh *m, uint32_t vertex_count, uint32_t index_count, bool with_uvs);
 /* Adds (uninitialised) tangent storage to an allocated mesh. */
 int mesh_alloc_tangents(struct mesh *m);
+/* Adds (uninitialised) colour storage to an allocated mesh. */
+int mesh_alloc_colors(struct mesh *m);
 /* Frees the arrays and the material's images. */
 void mesh_release(struct mesh *m);
 /* The material with every field at the glTF default and no image. */

@@ -50,22 +50,11 @@ struct mesh_cache_entry {
 
 static void material_to_words(const struct mesh_material *m, float w[MATERIAL_WORDS])
 {
-	const float v[MATERIAL_WORDS] = {m->present,
-					 m->base_color[0],
-					 m->base_color[1],
-					 m->base_color[2],
-					 m->iridescence,
-					 m->iridescence_factor,
-					 m->iridescence_ior,
-					 m->thickness_min,
-					 m->thickness_max,
-					 m->has_normal_map,
-					 m->has_occlusion_map,
-					 m->has_thickness_map,
-					 m->normal_scale,
-					 m->occlusion_strength,
-					 0,
-					 0};
+	const float v[MATERIAL_WORDS] = {
+	    m->present,	      m->base_color[0],	     m->base_color[1],	   m->base_color[2],
+	    m->iridescence,   m->iridescence_factor, m->iridescence_ior,   m->thickness_min,
+	    m->thickness_max, m->has_normal_map,     m->has_occlusion_map, m->has_thickness_map,
+	    m->normal_scale,  m->occlusion_strength, m->has_base_map,	   m->has_colors};
 
 	memcpy(w, v, sizeof(v));
 }
@@ -81,6 +70,7 @@ static void material_from_words(const float w[MATERIAL_WORDS], struct mesh_mater
 	m->has_normal_map = w[9] != 0, m->has_occlusion_map = w[10] != 0;
 	m->has_thickness_map = w[11] != 0;
 	m->normal_scale = w[12], m->occlusion_strength = w[13];
+	m->has_base_map = w[14] != 0, m->has_colors = w[15] != 0;
 }
 
 static size_t padded(size_t n)

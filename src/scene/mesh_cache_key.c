@@ -211,7 +211,8 @@ static int build_id_note(struct dl_phdr_info *info, size_t size, void *data)
 int mesh_cache_scene_key(const char *model, double lod_pixels, const struct material_config *m,
 			 struct mesh_cache_key *out)
 {
-	const double values[] = {lod_pixels, m->detail, m->iridescence, VERTEX_COMPACT};
+	const double values[] = {lod_pixels, m->detail, m->iridescence, VERTEX_COMPACT,
+				 m->base_color};
 	uint64_t program = 0;
 	int ret = 0;
 

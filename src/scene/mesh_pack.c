@@ -5,21 +5,29 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const int components[MESH_ARRAYS] = {3, 3, 2, 4};
+static const int components[MESH_ARRAYS] = {3, 3, 2, 4, 4};
+static const size_t component_bytes[] = {[MESH_FLOAT32] = 4, [MESH_SNORM16] = 2, [MESH_UNORM8] = 1};
 
 int mesh_array_components(enum mesh_array a)
 {
 	return components[a];
 }
 
+enum mesh_component mesh_array_component(enum vertex_format f, enum mesh_array a)
+{
+	if (f != VERTEX_COMPACT || a == MESH_UVS)
+		return MESH_FLOAT32;
+	return a == MESH_COLORS ? MESH_UNORM8 : MESH_SNORM16;
+}
+
 bool mesh_array_int16(enum vertex_format f, enum mesh_array a)
 {
-	return f == VERTEX_COMPACT && a != MESH_UVS;
+	return mesh_array_component(f, a) == MESH_SNORM16;
 }
 
 size_t mesh_array_stride(enum vertex_format f, enum mesh_array a)
 {
-	return (size_t)components[a] * (mesh_array_int16(f, a) ? sizeof(int16_t) : sizeof(float));
+	return (size_t)components[a] * component_bytes[mesh_array_component(f, a)];
 }
 
 static int16_t snorm16(float v)
@@ -40,6 +48,12 @@ static float position_scale(const struct mesh *m)
 	return scale > 0.0f && isfinite(scale) ? scale : 1.0f;
 }
 
+static void to_unorm8(const float *src, size_t values, uint8_t *out)
+{
+	for (size_t i = 0; i < values; i++)
+		out[i] = (uint8_t)lrintf(fminf(fmaxf(src[i], 0.0f), 1.0f) * 255.0f);
+}
+
 static void to_int16(const float *src, size_t values, float scale, int16_t *out)
 {
 	for (size_t i = 0; i < values; i++)
@@ -48,7 +62,7 @@ static void to_int16(const float *src, size_t values, float scale, int16_t *out)
 
 int mesh_pack(const struct mesh *m, enum vertex_format f, struct mesh_packed *out)
 {
-	const float *src[MESH_ARRAYS] = {m->positions, m->normals, m->uvs, m->tangents};
+	const float *src[MESH_ARRAYS] = {m->positions, m->normals, m->uvs, m->tangents, m->colors};
 	size_t offset[MESH_ARRAYS], total = 0;
 	char *block;
 
@@ -66,7 +80,8 @@ int mesh_pack(const struct mesh *m, enum vertex_format f, struct mesh_packed *ou
 	for (int a = 0; a < MESH_ARRAYS; a++) {
 		offset[a] = total;
 		if (src[a])
-			total += m->vertex_count * mesh_array_stride(f, (enum mesh_array)a);
+			total += (m->vertex_count * mesh_array_stride(f, (enum mesh_array)a) + 3) &
+				 ~(size_t)3;
 	}
 	/* The indices too: the packed mesh outlives the mesh. */
 	block = malloc(total + (size_t)m->index_count * 4 + 1);
@@ -84,6 +99,8 @@ int mesh_pack(const struct mesh *m, enum vertex_format f, struct mesh_packed *ou
 		out->arrays[a] = block + offset[a];
 		if (a == MESH_UVS)
 			memcpy(block + offset[a], src[a], values * sizeof(float));
+		else if (a == MESH_COLORS)
+			to_unorm8(src[a], values, (uint8_t *)(block + offset[a]));
 		else
 			to_int16(src[a], values, a ? 1.0f : 1.0f / out->position_scale,
 				 (int16_t *)(void *)(block + offset[a]));

@@ -11,11 +11,15 @@
 
 /* float32 throughout, or compact: positions and unit vectors as
  * normalized int16 (half the memory; the UVs stay float, since a repeated
- * map's UVs leave [0, 1]). */
+ * map's UVs leave [0, 1]), colours as normalized uint8 (as glTF's own
+ * COLOR_0 may be). */
 enum vertex_format { VERTEX_FLOAT32, VERTEX_COMPACT };
 
 /* In the order of the shaders' attribute indices (render/shader.h). */
-enum mesh_array { MESH_POSITIONS, MESH_NORMALS, MESH_UVS, MESH_TANGENTS, MESH_ARRAYS };
+enum mesh_array { MESH_POSITIONS, MESH_NORMALS, MESH_UVS, MESH_TANGENTS, MESH_COLORS, MESH_ARRAYS };
+
+/* How an array's components are stored. */
+enum mesh_component { MESH_FLOAT32, MESH_SNORM16, MESH_UNORM8 };
 
 struct mesh_packed {
 	enum vertex_format format;
@@ -33,6 +37,7 @@ int mesh_array_components(enum mesh_array a);
 size_t mesh_array_stride(enum vertex_format f, enum mesh_array a);
 /* Whether the array is stored as normalized int16 in that format. */
 bool mesh_array_int16(enum vertex_format f, enum mesh_array a);
+enum mesh_component mesh_array_component(enum vertex_format f, enum mesh_array a);
 
 /* m in format f. float32 borrows m's arrays (m must outlive out); compact
  * converts them, and copies the indices, into one allocation of its own.

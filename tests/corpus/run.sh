@@ -20,9 +20,12 @@ shown=0
 refused=0
 mkdir -p "$out/gen"
 
-render() { # FILE PNG: the status; stderr in $out/stderr
+render() { # FILE PNG [OPTION]...: the status; stderr in $out/stderr
+	_file=$1 _png=$2
+	shift 2
 	ASAN_OPTIONS=detect_leaks=0 "$kiosk" --backend osmesa --size 96x96 --lod-pixels 0 \
-		--matcap matcaps/gold.png --model "$1" --output "$2" >"$out/stdout" 2>"$out/stderr"
+		--matcap matcaps/gold.png --model "$_file" --output "$_png" "$@" >"$out/stdout" \
+		2>"$out/stderr"
 }
 clean() {
 	! grep -qE 'Sanitizer|runtime error' "$out/stderr"
@@ -36,17 +39,19 @@ fuzz_once() { # FILE
 		echo "ok no sanitizer report in the loader alone: $2" ||
 		echo "not ok the loader alone on $2: $(grep -m3 -E 'ERROR|SUMMARY' "$out/fuzz.log")"
 }
-shows() { # NAME FILE
+shows() { # NAME FILE [OPTION]...
 	png=$out/$(echo "$1" | tr '/: ' '___').png
-	render "$2" "$png"
+	_name=$1 _file=$2
+	shift 2
+	render "$_file" "$png" "$@"
 	status=$?
 	if [ $status -eq 0 ] && clean && fig=$("$tools/silhouette" "$png"); then
 		shown=$((shown + 1))
-		echo "ok shows $1 ($fig)"
+		echo "ok shows $_name ($fig)"
 	else
-		echo "not ok shows $1 (status $status: $(said) ${fig:-})"
+		echo "not ok shows $_name (status $status: $(said) ${fig:-})"
 	fi
-	fuzz_once "$2" "$1"
+	fuzz_once "$_file" "$_name"
 }
 refuses() { # NAME FILE WORDS
 	render "$2" "$out/refused.png"
@@ -82,6 +87,18 @@ grep -v '^#' "$here/expected.txt" | while read -r result name words; do
 	fi
 	case $result in
 	shows) shows "$name" "$file" ;;
+	# Near black in its own colours: shaded with base_color = off, and
+	# drawn in its colours without a fault.
+	dark)
+		shows "$name" "$file" --base-color off
+		render "$file" "$out/dark.png"
+		status=$?
+		if [ $status -eq 0 ] && clean; then
+			echo "ok draws $name in its own dark colours"
+		else
+			echo "not ok draws $name in its own colours (status $status: $(said))"
+		fi
+		;;
 	*) refuses "$name" "$file" "$words" ;;
 	esac
 done >"$out/list.log"

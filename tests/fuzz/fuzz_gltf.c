@@ -40,6 +40,9 @@ static void check_mesh(const struct mesh *m)
 		    p[0] * p[0] + p[1] * p[1] + p[2] * p[2] > 1.01f)
 			abort();
 	}
+	for (size_t i = 0; m->colors && i < (size_t)m->vertex_count * 4; i++)
+		if (!(m->colors[i] >= 0.0f && m->colors[i] <= 1.0f))
+			abort();
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -47,7 +50,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	const char *dir = getenv("FUZZ_GLTF_DIR");
 	struct mesh m;
 
-	if (gltf_load_memory("fuzz.gltf", data, size, dir ? dir : GLTF_DIR, &m) == 0) {
+	/* With the base colour: COLOR_0, the factors and the map's transform. */
+	if (gltf_load_memory_textures("fuzz.gltf", data, size, dir ? dir : GLTF_DIR,
+				      GLTF_TEXTURE_BASE_COLOR, &m) == 0) {
 		check_mesh(&m);
 		mesh_release(&m);
 	}

@@ -16,6 +16,7 @@ scenes="knot-normal knot-view knot-sem-vertex knot-sem-fragment"
 scenes="$scenes sphere-normal sphere-view sphere-sem-vertex sphere-sem-fragment"
 scenes="$scenes knot-iridescence knot-iridescence-ramp knot-detail-map sphere-detail-gltf"
 scenes="$scenes sphere-beetle-gltf sphere-displaced sphere-lit sphere-lit-beside"
+scenes="$scenes sphere-vertex-color sphere-base-map sphere-base-map-off"
 mkdir -p "$out" "$models"
 "$TOOLS/mkmodels" "$models" >/dev/null
 
@@ -34,6 +35,8 @@ render() {
 	# The material features, each on a model that exercises it: glTF
 	# textures (embedded; beside the model with TANGENT and
 	# KHR_materials_iridescence), the settings' maps, displacement, lit.
+	# The first two show those features alone, without the material's
+	# baseColorFactor (the base colour scenes below show it).
 	knot-iridescence)
 		$k -c matcaps/black-shiny.png --iridescence on --output "$o"
 		;;
@@ -45,10 +48,11 @@ render() {
 		$k -c matcaps/pearl.png --detail-map "$m/detail.png" --iridescence on --output "$o"
 		;;
 	sphere-detail-gltf)
-		$k -c matcaps/gold.png --model "$m/sphere-detail.glb" --output "$o"
+		$k -c matcaps/gold.png --model "$m/sphere-detail.glb" --base-color off --output "$o"
 		;;
 	sphere-beetle-gltf)
-		$k -c matcaps/black-shiny.png --model "$m/sphere-beetle.gltf" --output "$o"
+		$k -c matcaps/black-shiny.png --model "$m/sphere-beetle.gltf" --base-color off \
+			--output "$o"
 		;;
 	sphere-displaced)
 		$k -c matcaps/gold.png --model "$m/sphere-coarse.glb" --displacement-map "$m/height.png" \
@@ -61,6 +65,17 @@ render() {
 		$k -c matcaps/chrome-studio.png --model "$m/sphere-coarse.glb" \
 			--displacement-map "$m/height.png" --displacement-scale 0.15 \
 			--detail-map "$m/detail.png" --lit beside --output "$o"
+		;;
+	# The glTF base colour times the matcap: COLOR_0 alone; a base map
+	# with a factor and a texture transform; the same with it off.
+	sphere-vertex-color)
+		$k -c matcaps/pearl.png --model "$m/sphere-vertex-color.glb" --output "$o"
+		;;
+	sphere-base-map)
+		$k -c matcaps/pearl.png --model "$m/sphere-base-map.glb" --output "$o"
+		;;
+	sphere-base-map-off)
+		$k -c matcaps/pearl.png --model "$m/sphere-base-map.glb" --base-color off --output "$o"
 		;;
 	*)
 		echo "golden.sh: no scene named $1 (scenes: $scenes)" >&2

@@ -35,6 +35,10 @@ static const struct scene_case cases[] = {
     {"lit beside, everything",
      MATERIAL_IRIDESCENCE | MATERIAL_RAMP | MATERIAL_DETAIL | MATERIAL_DETAIL_NORMAL, LIT_BESIDE,
      SHADING_VIEW},
+    {"base colour (COLOR_0)", MATERIAL_BASE_COLOR, LIT_OFF, SHADING_SEM_VERTEX},
+    {"base colour and map", MATERIAL_BASE_COLOR | MATERIAL_BASE_MAP, LIT_OFF, SHADING_VIEW},
+    {"lit beside, base map", MATERIAL_BASE_COLOR | MATERIAL_BASE_MAP, LIT_BESIDE, SHADING_NORMAL},
+    {"lit, base map (not read)", MATERIAL_BASE_COLOR | MATERIAL_BASE_MAP, LIT_ON, SHADING_VIEW},
 };
 
 /* Every name a feature brings, and whether this program should have it. */
@@ -46,7 +50,10 @@ static int check_program(const struct gl *gl, GLuint prog, unsigned f, bool lit,
 	} want[] = {
 	    {"a_position", true, true},
 	    {"a_normal", true, true},
-	    {"a_uv", true, (f & MATERIAL_DETAIL) != 0},
+	    {"a_uv", true, (f & MATERIAL_DETAIL) || ((f & MATERIAL_BASE_MAP) && !lit)},
+	    {"a_color", true, (f & MATERIAL_BASE_COLOR) && !lit},
+	    {"u_base_map", false, (f & MATERIAL_BASE_MAP) && !lit},
+	    {"u_base_transform", false, (f & MATERIAL_BASE_MAP) && !lit},
 	    {"a_tangent", true, (f & MATERIAL_DETAIL_NORMAL) != 0},
 	    {"u_matcap", false, !lit},
 	    {"u_detail", false, (f & MATERIAL_DETAIL) != 0},
@@ -97,16 +104,24 @@ static int check_case(struct display *d, const struct scene_case *c, const struc
 	struct renderer *r = renderer_new(&d->gl, NULL);
 	struct renderer_stats st;
 	struct view v = {.orientation = quat_identity()};
-	bool uvs = c->features & MATERIAL_DETAIL, tangents = c->features & MATERIAL_DETAIL_NORMAL;
+	unsigned base =
+	    c->lit == LIT_ON ? 0 : c->features & (MATERIAL_BASE_COLOR | MATERIAL_BASE_MAP);
+	bool uvs = (c->features & MATERIAL_DETAIL) || (base & MATERIAL_BASE_MAP),
+	     tangents = c->features & MATERIAL_DETAIL_NORMAL, colors = base & MATERIAL_BASE_COLOR;
 	/* The default vertex format: int16 positions and normals, float UVs,
-	 * int16 tangents (src/render/render.c). */
-	long bytes = (long)mesh->vertex_count * (12 + (uvs ? 8 : 0) + (tangents ? 8 : 0));
-	int textures = (c->lit != LIT_ON) + uvs + ((c->features & MATERIAL_RAMP) != 0);
+	 * int16 tangents, uint8 colours (src/render/render.c). The mesh has
+	 * colours always: uploaded only for the base colour. */
+	long bytes =
+	    (long)mesh->vertex_count * (12 + (uvs ? 8 : 0) + (tangents ? 8 : 0) + (colors ? 4 : 0));
+	int textures = (c->lit != LIT_ON) + ((c->features & MATERIAL_DETAIL) != 0) +
+		       ((c->features & MATERIAL_RAMP) != 0) + ((base & MATERIAL_BASE_MAP) != 0);
 	int bad = 0;
 
 	printf("%s\n", c->name);
 	fill(&mat.detail, 4, 4);
 	fill(&mat.ramp, 8, 1);
+	fill(&mat.base_map, 4, 4);
+	mat.base_transform[0] = mat.base_transform[3] = 1.0f;
 	if (!r || renderer_set_material(r, &mat) || renderer_set_mesh(r, mesh) ||
 	    renderer_set_matcap(r, matcap) || renderer_set_mode(r, c->mode, false)) {
 		fprintf(stderr, "%s: the renderer failed\n", c->name);
@@ -114,12 +129,12 @@ static int check_case(struct display *d, const struct scene_case *c, const struc
 		goto out;
 	}
 	renderer_get_stats(r, &st);
-	if (st.attributes != 2 + uvs + tangents || st.vertex_bytes != bytes ||
+	if (st.attributes != 2 + uvs + tangents + colors || st.vertex_bytes != bytes ||
 	    st.textures != textures) {
 		fprintf(stderr,
 			"%s: %d arrays of %ld bytes and %d textures, expected %d, %ld, %d\n",
-			c->name, st.attributes, st.vertex_bytes, st.textures, 2 + uvs + tangents,
-			bytes, textures);
+			c->name, st.attributes, st.vertex_bytes, st.textures,
+			2 + uvs + tangents + colors, bytes, textures);
 		bad = 1;
 	}
 	bad |= check_program(&d->gl, st.program, c->features, c->lit == LIT_ON, c->name);
@@ -136,6 +151,7 @@ out:
 	renderer_free(r);
 	image_release(&mat.detail);
 	image_release(&mat.ramp);
+	image_release(&mat.base_map);
 	return bad;
 }
 
@@ -188,8 +204,11 @@ int main(void)
 #else /* Mesa without OSMesa: the same renders through EGL */
 	d = display_egl_new(&cfg);
 #endif
-	if (!d || mesh_uv_sphere(&mesh, 16, 8) || tangent_generate(&mesh))
+	if (!d || mesh_uv_sphere(&mesh, 16, 8) || tangent_generate(&mesh) ||
+	    mesh_alloc_colors(&mesh))
 		return 1;
+	for (size_t i = 0; i < (size_t)mesh.vertex_count * 4; i++)
+		mesh.colors[i] = 0.5f;
 	fill(&matcap, 8, 8);
 	d->begin_frame(d);
 	for (size_t i = 0; i < sizeof(cases) / sizeof(cases[0]); i++)

@@ -31,8 +31,8 @@ static size_t pad4(size_t n)
 
 /* Where each part lies in the buffer. */
 struct layout {
-	size_t nrm, idx, uv, tan, img[3], img_len[3], size;
-	const char *img_path[3]; /* normal, occlusion, thickness: NULL when absent */
+	size_t nrm, idx, uv, tan, col, img[4], img_len[4], size;
+	const char *img_path[4]; /* normal, occlusion, thickness, base: NULL when absent */
 };
 
 static unsigned char *read_file(const char *path, size_t *len)
@@ -53,7 +53,31 @@ static unsigned char *read_file(const char *path, size_t *len)
 
 static int has_material(const struct gltf_write_opts *o)
 {
-	return o->normal_png || o->occlusion_png || o->thickness_png || o->iridescence_factor > 0;
+	return o->normal_png || o->occlusion_png || o->thickness_png || o->iridescence_factor > 0 ||
+	       o->base_color_png || o->base_factor;
+}
+
+static size_t color_bytes(const struct mesh *m, const struct gltf_write_opts *o)
+{
+	size_t c = o->color_type == 5126 ? 4 : o->color_type == 5123 ? 2 : 1;
+
+	return o->color_type ? pad4(c * (size_t)o->color_components) * m->vertex_count : 0;
+}
+
+/* One vertex's colour as the accessor stores it, each element padded to 4
+ * bytes as glTF asks of vertex attributes. */
+static void put_color(const struct mesh *m, const struct gltf_write_opts *o, uint32_t v,
+		      unsigned char *out)
+{
+	size_t c = o->color_type == 5126 ? 4 : o->color_type == 5123 ? 2 : 1;
+
+	for (int k = 0; k < o->color_components; k++) {
+		float x = m->colors[v * 4 + k];
+		uint16_t s = (uint16_t)(x * 65535.0f + 0.5f);
+		uint8_t b = (uint8_t)(x * 255.0f + 0.5f);
+
+		memcpy(out + k * c, c == 4 ? (void *)&x : c == 2 ? (void *)&s : (void *)&b, c);
+	}
 }
 
 /* positions | normals | indices | uvs | tangents | embedded images, each
@@ -63,17 +87,20 @@ static unsigned char *pack(const struct mesh *m, const struct gltf_write_opts *o
 	size_t stride = o->byte_stride ? (size_t)o->byte_stride : 12;
 	size_t npos = stride * m->vertex_count, nnrm = 12 * (size_t)m->vertex_count;
 	size_t nidx = (size_t)o->index_bytes * m->index_count;
-	unsigned char *buf, *img[3] = {NULL, NULL, NULL};
+	unsigned char *buf, *img[4] = {NULL, NULL, NULL, NULL};
+	size_t ncol = color_bytes(m, o);
 
 	l->img_path[0] = o->normal_png;
 	l->img_path[1] = o->occlusion_png;
 	l->img_path[2] = o->thickness_png;
+	l->img_path[3] = o->base_color_png;
 	l->nrm = pad4(npos);
 	l->idx = l->nrm + (o->with_normals ? nnrm : 0);
 	l->uv = pad4(l->idx + nidx);
 	l->tan = l->uv + (o->with_uvs ? 8 * (size_t)m->vertex_count : 0);
-	l->size = l->tan + (o->with_tangents ? 16 * (size_t)m->vertex_count : 0);
-	for (int i = 0; i < 3; i++) {
+	l->col = l->tan + (o->with_tangents ? 16 * (size_t)m->vertex_count : 0);
+	l->size = l->col + ncol;
+	for (int i = 0; i < 4; i++) {
 		l->img_len[i] = 0;
 		if (l->img_path[i] && o->embed_images)
 			img[i] = read_file(l->img_path[i], &l->img_len[i]);
@@ -89,6 +116,8 @@ static unsigned char *pack(const struct mesh *m, const struct gltf_write_opts *o
 			memcpy(buf + l->uv + v * 8, m->uvs + v * 2, 8);
 		if (o->with_tangents)
 			memcpy(buf + l->tan + v * 16, m->tangents + v * 4, 16);
+		if (o->color_type)
+			put_color(m, o, v, buf + l->col + v * (ncol / m->vertex_count));
 	}
 	for (uint32_t i = 0; i < m->index_count && o->index_bytes; i++) {
 		uint32_t x = m->indices[i];
@@ -97,7 +126,7 @@ static unsigned char *pack(const struct mesh *m, const struct gltf_write_opts *o
 			x = (uint32_t)o->bad_index;
 		memcpy(buf + l->idx + (size_t)i * o->index_bytes, &x, (size_t)o->index_bytes);
 	}
-	for (int i = 0; i < 3; i++) {
+	for (int i = 0; i < 4; i++) {
 		if (img[i])
 			memcpy(buf + l->img[i], img[i], l->img_len[i]);
 		free(img[i]);
@@ -108,10 +137,22 @@ static unsigned char *pack(const struct mesh *m, const struct gltf_write_opts *o
 static void write_material(FILE *f, const struct gltf_write_opts *o, const struct layout *l)
 {
 	static const char *const keys[2] = {"normalTexture", "occlusionTexture"};
+	static const double factor[4] = {0.8, 0.7, 0.6, 1};
+	const double *b = o->base_factor ? o->base_factor : factor;
 	int texture = 0, sep = 0;
 
-	fprintf(f,
-		"\"materials\":[{\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.8,0.7,0.6,1]}");
+	fprintf(f, "\"materials\":[{\"pbrMetallicRoughness\":{\"baseColorFactor\":[%g,%g,%g,%g]",
+		b[0], b[1], b[2], b[3]);
+	if (l->img_path[3]) {
+		int index = !!l->img_path[0] + !!l->img_path[1] + !!l->img_path[2];
+
+		fprintf(f, ",\"baseColorTexture\":{\"index\":%d", index);
+		if (o->texture_transform)
+			fprintf(f, ",\"extensions\":{\"KHR_texture_transform\":{%s}}",
+				o->texture_transform);
+		fprintf(f, "}");
+	}
+	fprintf(f, "}");
 	for (int i = 0; i < 2; i++)
 		if (l->img_path[i])
 			fprintf(f, ",\"%s\":{\"index\":%d}", keys[i], texture++);
@@ -124,14 +165,15 @@ static void write_material(FILE *f, const struct gltf_write_opts *o, const struc
 			fprintf(f, ",\"iridescenceThicknessTexture\":{\"index\":%d}", texture);
 		fprintf(f, "}}");
 	}
-	fprintf(f, "}],\"extensionsUsed\":[\"KHR_materials_iridescence\"],\"textures\":[");
-	for (int i = 0, n = 0; i < 3; i++)
+	fprintf(f, "}],\"extensionsUsed\":[\"KHR_materials_iridescence\"%s],\"textures\":[",
+		o->texture_transform ? ",\"KHR_texture_transform\"" : "");
+	for (int i = 0, n = 0; i < 4; i++)
 		if (l->img_path[i]) {
 			fprintf(f, "%s{\"source\":%d}", n ? "," : "", n);
 			n++;
 		}
 	fprintf(f, "],\"images\":[");
-	for (int i = 0, view = 5; i < 3; i++) {
+	for (int i = 0, view = 6; i < 4; i++) {
 		const char *name = l->img_path[i] ? strrchr(l->img_path[i], '/') : NULL;
 
 		if (!l->img_path[i])
@@ -153,18 +195,22 @@ static void write_json(FILE *f, const struct mesh *m, const struct gltf_write_op
 	static const int ctype[5] = {0, 5121, 5123, 0, 5125};
 	long count = o->position_count ? o->position_count : (long)m->vertex_count;
 
-	fprintf(f, "{\"asset\":{\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{\"nodes\":[0]}],");
+	fprintf(f, "{\"asset\":{\"version\":\"2.0\"},\"scene\":0,\"scenes\":[%s],",
+		o->scenes ? o->scenes : "{\"nodes\":[0]}");
 	fprintf(f, "\"nodes\":[");
 	if (o->parent)
 		fprintf(f, "{\"children\":[1]%s%s},", o->parent[0] ? "," : "", o->parent);
-	fprintf(f, "{\"mesh\":0%s%s}],", o->node ? "," : "", o->node ? o->node : "");
+	fprintf(f, "{\"mesh\":0%s%s}%s%s],", o->node ? "," : "", o->node ? o->node : "",
+		o->extra_nodes ? "," : "", o->extra_nodes ? o->extra_nodes : "");
 	fprintf(f, "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0");
 	if (o->with_normals)
 		fprintf(f, ",\"NORMAL\":1");
 	if (o->with_uvs)
-		fprintf(f, ",\"TEXCOORD_0\":3");
+		fprintf(f, ",\"TEXCOORD_%d\":3", o->uv_set);
 	if (o->with_tangents)
 		fprintf(f, ",\"TANGENT\":4");
+	if (o->color_type)
+		fprintf(f, ",\"COLOR_0\":5");
 	fprintf(f, "}%s%s}]}],", o->index_bytes ? ",\"indices\":2" : "",
 		has_material(o) ? ",\"material\":0" : "");
 	if (has_material(o))
@@ -184,7 +230,12 @@ static void write_json(FILE *f, const struct mesh *m, const struct gltf_write_op
 		o->with_uvs ? (size_t)m->vertex_count * 8 : 4);
 	fprintf(f, "{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu}",
 		o->with_tangents ? l->tan : 0, o->with_tangents ? (size_t)m->vertex_count * 16 : 4);
-	for (int i = 0; i < 3; i++)
+	fprintf(f, ",{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu",
+		o->color_type ? l->col : 0, o->color_type ? color_bytes(m, o) : 4);
+	if (o->color_type)
+		fprintf(f, ",\"byteStride\":%zu", color_bytes(m, o) / m->vertex_count);
+	fprintf(f, "}");
+	for (int i = 0; i < 4; i++)
 		if (l->img_path[i] && o->embed_images)
 			fprintf(f, ",{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu}",
 				l->img[i], l->img_len[i]);
@@ -201,8 +252,14 @@ static void write_json(FILE *f, const struct mesh *m, const struct gltf_write_op
 		ctype[o->index_bytes > 0 ? o->index_bytes : 1], m->index_count);
 	fprintf(f, "{\"bufferView\":%d,\"componentType\":5126,\"count\":%u,\"type\":\"VEC2\"},",
 		o->with_uvs ? 3 : 0, o->with_uvs ? m->vertex_count : 1);
-	fprintf(f, "{\"bufferView\":%d,\"componentType\":5126,\"count\":%u,\"type\":\"VEC4\"}]}",
+	fprintf(f, "{\"bufferView\":%d,\"componentType\":5126,\"count\":%u,\"type\":\"VEC4\"}",
 		o->with_tangents ? 4 : 0, o->with_tangents ? m->vertex_count : 1);
+	if (o->color_type)
+		fprintf(
+		    f, ",{\"bufferView\":5,\"componentType\":%d,\"count\":%u,\"type\":\"VEC%d\"%s}",
+		    o->color_type, m->vertex_count, o->color_components,
+		    o->color_type == 5126 ? "" : ",\"normalized\":true");
+	fprintf(f, "]}");
 }
 
 static int write_glb(FILE *f, const char *json, size_t jlen, const unsigned char *bin, size_t blen)

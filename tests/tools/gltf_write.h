@@ -19,6 +19,7 @@ struct gltf_write_opts {
 	int byte_stride;     /* byteStride of the POSITION view (0: tight) */
 	long truncate_to;    /* > 0: cut the written file to this many bytes */
 	int with_uvs;	     /* TEXCOORD_0 from the mesh's uvs */
+	int uv_set;	     /* ... written as TEXCOORD_<uv_set> */
 	int with_tangents;   /* TANGENT from the mesh's tangents */
 	/* A material, written when one of these is set. The PNG files become
 	 * its normalTexture, occlusionTexture and KHR_materials_iridescence
@@ -29,6 +30,17 @@ struct gltf_write_opts {
 	const char *image_uri;	   /* override every image's URI */
 	double iridescence_factor; /* > 0: KHR_materials_iridescence */
 	double thickness_range[2]; /* its thickness minimum and maximum, nm */
+	/* Base colour: baseColorTexture from this PNG (as the others), with
+	 * these members in its KHR_texture_transform (NULL: none); the factor
+	 * (NULL: 0.8 0.7 0.6 1); COLOR_0 from the mesh's colors, as 5126
+	 * (float), 5121 or 5123 (normalized), with 3 or 4 components. */
+	const char *base_color_png;
+	const char *texture_transform;
+	const double *base_factor;
+	int color_type, color_components;
+	/* More nodes after the mesh's (JSON members of the array), and the
+	 * scenes in place of the one scene (JSON: the array's members). */
+	const char *extra_nodes, *scenes;
 };
 
 /* Writes path (and, for GLTF_EXTERNAL_BIN, path with .bin for .gltf).

@@ -161,11 +161,36 @@ static int write_ramp(const char *dir)
 	return bad;
 }
 
+/* A base colour map, sRGB: smooth waves that repeat on both axes (so
+ * GL_REPEAT has no seam), with no axis symmetric, so that a texture
+ * transform shows. */
+static int write_base(const char *dir)
+{
+	struct image img;
+	int bad;
+
+	if (image_alloc(&img, BASE_SIDE, BASE_SIDE))
+		return 1;
+	for (int y = 0; y < BASE_SIDE; y++)
+		for (int x = 0; x < BASE_SIDE; x++) {
+			unsigned char *p = img.rgba + ((size_t)y * BASE_SIDE + (size_t)x) * 4;
+			double u = (x + 0.5) / BASE_SIDE, v = (y + 0.5) / BASE_SIDE;
+
+			p[0] = byte(0.55 + 0.4 * cos(2 * M_PI * u));
+			p[1] = byte(0.55 + 0.4 * sin(2 * M_PI * (u + 2 * v)));
+			p[2] = byte(0.5 + 0.35 * cos(2 * M_PI * 3 * v));
+			p[3] = 255;
+		}
+	bad = save(dir, "base.png", &img);
+	image_release(&img);
+	return bad;
+}
+
 int maps_write(const char *dir)
 {
 	char path[4096];
 	FILE *f;
-	int bad = write_relief(dir) | write_height(dir) | write_ramp(dir);
+	int bad = write_relief(dir) | write_height(dir) | write_ramp(dir) | write_base(dir);
 
 	snprintf(path, sizeof(path), "%s/corrupt.png", dir);
 	f = fopen(path, "wb");

@@ -6,7 +6,9 @@
 #define MK_MAPS_H
 
 /* Writes detail.png, normal.png, occlusion.png, thickness.png, height.png,
- * ramp.png and corrupt.png into dir. Returns 0, or 1 after a message. */
+ * ramp.png, base.png (BASE_SIDE square) and corrupt.png into dir. Returns
+ * 0, or 1 after a message. */
+#define BASE_SIDE 256
 int maps_write(const char *dir);
 
 #endif

@@ -10,6 +10,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static int put(const char *dir, const char *name, const struct mesh *m, struct gltf_write_opts o)
@@ -22,6 +23,38 @@ static int put(const char *dir, const char *name, const struct mesh *m, struct g
 		return 1;
 	}
 	return 0;
+}
+
+/* Base colour: COLOR_0 as normalized bytes, no material; and a base map
+ * with a factor and KHR_texture_transform. */
+static int write_color_models(const char *dir, struct mesh *s)
+{
+	static const double factor[4] = {1.0, 0.9, 0.75, 1.0};
+	struct gltf_write_opts o = {
+	    .index_bytes = 2, .with_normals = 1, .bad_index = -1, .with_uvs = 1};
+	char base[4096];
+	int bad;
+
+	if (mesh_alloc_colors(s))
+		return 1;
+	for (uint32_t v = 0; v < s->vertex_count; v++) {
+		for (int k = 0; k < 3; k++)
+			s->colors[v * 4 + k] = 0.55f + 0.4f * s->positions[v * 3 + k];
+		s->colors[v * 4 + 3] = 1.0f;
+	}
+	o.color_type = 5121;
+	o.color_components = 4;
+	bad = put(dir, "sphere-vertex-color.glb", s, o);
+	o.color_type = 0;
+	snprintf(base, sizeof(base), "%s/base.png", dir);
+	o.base_color_png = base;
+	o.embed_images = 1;
+	o.base_factor = factor;
+	o.texture_transform = "\"offset\":[0.25,0.1],\"rotation\":0.3,\"scale\":[2,1.5]";
+	bad |= put(dir, "sphere-base-map.glb", s, o);
+	free(s->colors);
+	s->colors = NULL;
+	return bad;
 }
 
 static int write_material_models(const char *dir)
@@ -67,6 +100,7 @@ static int write_material_models(const char *dir)
 	o.normal_png = corrupt;
 	o.embed_images = 1;
 	bad |= put(dir, "warn-texture-corrupt.glb", &s, o);
+	bad |= write_color_models(dir, &s);
 	/* Coarse, for displacement: 576 triangles of 15 degrees. */
 	bad |= put(dir, "sphere-coarse.glb", &coarse, base);
 	mesh_release(&s);
@@ -186,6 +220,11 @@ int main(int argc, char **argv)
 	bad |= put(argv[1], "bad-absolute-uri.gltf", &s, o);
 	o.bin_uri = "../sphere.bin";
 	bad |= put(argv[1], "bad-dotdot-uri.gltf", &s, o);
+	/* Two scenes: "one" (the file's default) and "pair", the sphere twice. */
+	o = ok;
+	o.extra_nodes = "{\"mesh\":0,\"translation\":[2.5,0,0]}";
+	o.scenes = "{\"name\":\"one\",\"nodes\":[0]},{\"name\":\"pair\",\"nodes\":[0,1]}";
+	bad |= put(argv[1], "scenes.glb", &s, o);
 	mesh_release(&s);
 	bad |= write_material_models(argv[1]);
 	bad |= write_corpus(argv[1]);

@@ -168,6 +168,10 @@ static void textures_decoded_only_when_asked(void **state)
 	/* The settings decide what is asked. */
 	material_config_defaults(&cfg);
 	assert_int_equal(material_gltf_textures(&cfg),
+			 GLTF_TEXTURE_NORMAL | GLTF_TEXTURE_OCCLUSION | GLTF_TEXTURE_THICKNESS |
+			     GLTF_TEXTURE_BASE_COLOR);
+	cfg.base_color = MATERIAL_OFF;
+	assert_int_equal(material_gltf_textures(&cfg),
 			 GLTF_TEXTURE_NORMAL | GLTF_TEXTURE_OCCLUSION | GLTF_TEXTURE_THICKNESS);
 	cfg.iridescence = MATERIAL_OFF;
 	assert_int_equal(material_gltf_textures(&cfg),
@@ -253,6 +257,7 @@ static void iridescence_from_gltf_and_settings(void **state)
 
 	write_model(f, "irid.glb", material_opts(f), path, sizeof(path));
 	material_config_defaults(&cfg);
+	cfg.base_color = MATERIAL_OFF; /* its baseColorFactor: test_base_color.c */
 	assert_int_equal(gltf_load_textures(path, material_gltf_textures(&cfg), &m), 0);
 	assert_int_equal(material_load(&mat, &cfg, &m, true), 0);
 	assert_true(mat.features & MATERIAL_IRIDESCENCE);

@@ -1,0 +1,320 @@
+/* The glTF base colour: baseColorFactor x COLOR_0 per vertex, the
+ * baseColorTexture and its KHR_texture_transform, [scene] base_color =
+ * off, and what a model without colour costs (nothing). The colours on
+ * screen: tests/oracle/base_color_check.c and the golden images. */
+#include "scene/gltf.h"
+#include "gltf_write.h"
+#include "scene/lod.h"
+#include "scene/material.h"
+#include "scene/mesh.h"
+#include "scene/mesh_pack.h"
+#include "util/image.h"
+
+#include <errno.h>
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+
+struct fixture {
+	char dir[64];
+	char png[128];	    /* a 6 x 3 base map */
+	struct mesh sphere; /* with colours (0.2 + 0.6 (p + 1) / 2) and UVs */
+};
+
+static int setup(void **state)
+{
+	struct fixture *f = calloc(1, sizeof(*f));
+	struct image img;
+
+	strcpy(f->dir, "/tmp/mk-base-color-XXXXXX");
+	if (!f || !mkdtemp(f->dir) || mesh_uv_sphere(&f->sphere, 12, 8) ||
+	    mesh_alloc_colors(&f->sphere) || image_alloc(&img, 6, 3))
+		return -1;
+	for (uint32_t v = 0; v < f->sphere.vertex_count; v++) {
+		for (int k = 0; k < 3; k++)
+			f->sphere.colors[v * 4 + k] =
+			    0.2f + 0.6f * (f->sphere.positions[v * 3 + k] + 1.0f) / 2.0f;
+		f->sphere.colors[v * 4 + 3] = 0.5f;
+	}
+	for (int i = 0; i < 6 * 3 * 4; i++)
+		img.rgba[i] = (uint8_t)(i * 3);
+	snprintf(f->png, sizeof(f->png), "%s/base.png", f->dir);
+	if (image_write_png(f->png, &img))
+		return -1;
+	image_release(&img);
+	*state = f;
+	return 0;
+}
+
+static int teardown(void **state)
+{
+	struct fixture *f = *state;
+	char cmd[128];
+
+	snprintf(cmd, sizeof(cmd), "rm -rf %s", f->dir);
+	mesh_release(&f->sphere);
+	free(f);
+	return system(cmd);
+}
+
+static void write_model(const struct fixture *f, const char *name, struct gltf_write_opts o,
+			char *path, size_t n)
+{
+	snprintf(path, n, "%s/%s", f->dir, name);
+	assert_int_equal(gltf_write(path, &f->sphere, &o), 0);
+}
+
+static struct gltf_write_opts plain(void)
+{
+	return (struct gltf_write_opts){
+	    .index_bytes = 2, .with_normals = 1, .bad_index = -1, .with_uvs = 1};
+}
+
+/* Factor x COLOR_0 per vertex, the map and its transform, and the
+ * features material.c makes of them. */
+static void factor_colour_map_and_transform(void **state)
+{
+	static const double factor[4] = {0.5, 1.0, 0.25, 1.0};
+	struct fixture *f = *state;
+	struct gltf_write_opts o = plain();
+	struct material_config cfg;
+	struct material mat;
+	char path[256];
+	struct mesh m;
+	double c = cos(0.5), s = sin(0.5);
+	const double want[6] = {c * 2, -s * 2, s * 3, c * 3, 0.25, -0.5};
+
+	o.color_type = 5126;
+	o.color_components = 3;
+	o.base_color_png = f->png;
+	o.embed_images = 1;
+	o.base_factor = factor;
+	o.texture_transform = "\"offset\":[0.25,-0.5],\"rotation\":0.5,\"scale\":[2,3]";
+	write_model(f, "all.glb", o, path, sizeof(path));
+	material_config_defaults(&cfg);
+	assert_int_equal(gltf_load_textures(path, material_gltf_textures(&cfg), &m), 0);
+	assert_non_null(m.colors);
+	assert_true(m.material.has_colors && m.material.has_base_map);
+	for (uint32_t v = 0; v < m.vertex_count; v++) {
+		for (int k = 0; k < 3; k++)
+			assert_true(fabs(m.colors[v * 4 + k] -
+					 factor[k] * f->sphere.colors[v * 4 + k]) < 1e-6);
+		assert_true(m.colors[v * 4 + 3] == 1.0f); /* the map applies */
+	}
+	assert_int_equal(m.material.base_map.width, 6);
+	for (int k = 0; k < 6; k++)
+		assert_true(fabs(m.material.base_transform[k] - want[k]) < 1e-6);
+	assert_int_equal(material_load(&mat, &cfg, &m, true), 0);
+	assert_int_equal(mat.features, MATERIAL_BASE_COLOR | MATERIAL_BASE_MAP);
+	assert_int_equal(mat.base_map.width, 8); /* power-of-two sides, to repeat */
+	assert_int_equal(mat.base_map.height, 4);
+	assert_true(mat.base_transform[4] == 0.25f && mat.base_transform[5] == -0.5f);
+	material_release(&mat);
+	mesh_release(&m);
+	/* Off: neither the colours nor the map are read, nothing is on. */
+	cfg.base_color = MATERIAL_OFF;
+	assert_int_equal(material_gltf_textures(&cfg) & GLTF_TEXTURE_BASE_COLOR, 0);
+	assert_int_equal(gltf_load_textures(path, material_gltf_textures(&cfg), &m), 0);
+	assert_null(m.colors);
+	assert_true(m.material.has_base_map && !m.material.base_map.width);
+	assert_int_equal(material_load(&mat, &cfg, &m, true), 0);
+	assert_int_equal(mat.features, 0);
+	material_release(&mat);
+	mesh_release(&m);
+}
+
+/* COLOR_0 as normalized bytes (vec4) and shorts (vec3); without a map the
+ * alpha says so, and without a material the factor is 1. */
+static void colour_types(void **state)
+{
+	static const int types[2] = {5121, 5123};
+	static const double step[2] = {1.0 / 255, 1.0 / 65535};
+	struct fixture *f = *state;
+	struct gltf_write_opts o = plain();
+	char path[256];
+	struct mesh m;
+
+	for (int t = 0; t < 2; t++) {
+		o.color_type = types[t];
+		o.color_components = t ? 3 : 4;
+		write_model(f, t ? "ushort.glb" : "ubyte.glb", o, path, sizeof(path));
+		assert_int_equal(gltf_load_textures(path, GLTF_TEXTURE_BASE_COLOR, &m), 0);
+		assert_non_null(m.colors);
+		for (uint32_t v = 0; v < m.vertex_count; v++) {
+			for (int k = 0; k < 3; k++)
+				assert_true(fabs(m.colors[v * 4 + k] -
+						 f->sphere.colors[v * 4 + k]) <= step[t]);
+			assert_true(m.colors[v * 4 + 3] == 0.0f);
+		}
+		mesh_release(&m);
+	}
+	/* Two components are no colour: refused. */
+	o.color_components = 2;
+	write_model(f, "vec2.glb", o, path, sizeof(path));
+	assert_int_equal(gltf_load_textures(path, GLTF_TEXTURE_BASE_COLOR, &m), -EINVAL);
+	/* ... but only read when the base colour is asked for. */
+	assert_int_equal(gltf_load_textures(path, 0, &m), 0);
+	mesh_release(&m);
+}
+
+/* A model with no colour costs nothing: no array, no feature. */
+static void no_colour_no_cost(void **state)
+{
+	static const double white[4] = {1, 1, 1, 1};
+	struct fixture *f = *state;
+	struct gltf_write_opts o = plain();
+	struct material_config cfg;
+	struct material mat;
+	char path[256];
+	struct mesh m;
+
+	material_config_defaults(&cfg);
+	write_model(f, "plain.glb", o, path, sizeof(path));
+	for (int i = 0; i < 2; i++) {
+		assert_int_equal(gltf_load_textures(path, GLTF_TEXTURE_BASE_COLOR, &m), 0);
+		assert_null(m.colors);
+		assert_int_equal(material_load(&mat, &cfg, &m, true), 0);
+		assert_int_equal(mat.features, 0);
+		material_release(&mat);
+		mesh_release(&m);
+		/* A white factor is no colour either. */
+		o.base_factor = white;
+		write_model(f, "white.glb", o, path, sizeof(path));
+	}
+	/* Nor is a white base map with no UVs to place it. */
+	o.base_color_png = f->png;
+	o.embed_images = 1;
+	o.with_uvs = 0;
+	write_model(f, "white-nouv.glb", o, path, sizeof(path));
+	assert_int_equal(gltf_load_textures(path, GLTF_TEXTURE_BASE_COLOR, &m), 0);
+	assert_null(m.colors);
+	assert_false(m.material.has_colors);
+	mesh_release(&m);
+}
+
+/* The base map's texCoord (here the transform's, which overrides it)
+ * picks the UV set loaded; a set the model lacks places no map. */
+static void tex_coord_picks_the_uv_set(void **state)
+{
+	struct fixture *f = *state;
+	struct gltf_write_opts o = plain();
+	char path[256];
+	struct mesh m;
+
+	o.base_color_png = f->png;
+	o.embed_images = 1;
+	o.texture_transform = "\"texCoord\":1";
+	o.uv_set = 1;
+	write_model(f, "uv1.glb", o, path, sizeof(path));
+	assert_int_equal(gltf_load_textures(path, GLTF_TEXTURE_BASE_COLOR, &m), 0);
+	assert_non_null(m.uvs);
+	assert_memory_equal(m.uvs, f->sphere.uvs, (size_t)m.vertex_count * 8);
+	assert_int_equal(m.material.base_map.width, 6);
+	mesh_release(&m);
+	/* Without the base colour, TEXCOORD_0 is what is read: none here. */
+	assert_int_equal(gltf_load_textures(path, 0, &m), 0);
+	assert_null(m.uvs);
+	mesh_release(&m);
+	o.uv_set = 0;
+	write_model(f, "uv1-missing.glb", o, path, sizeof(path));
+	assert_int_equal(gltf_load_textures(path, GLTF_TEXTURE_BASE_COLOR, &m), 0);
+	assert_non_null(m.colors); /* the default factor 0.8 0.7 0.6 */
+	assert_null(m.uvs);
+	assert_int_equal(m.material.base_map.width, 0);
+	mesh_release(&m);
+	/* A normal map asked for needs TEXCOORD_0: it wins, the base map on
+	 * TEXCOORD_1 is left out (a warning). */
+	o.normal_png = f->png;
+	write_model(f, "uv1-normal.glb", o, path, sizeof(path));
+	assert_int_equal(
+	    gltf_load_textures(path, GLTF_TEXTURE_BASE_COLOR | GLTF_TEXTURE_NORMAL, &m), 0);
+	assert_non_null(m.uvs);
+	assert_int_equal(m.material.normal_map.width, 6);
+	assert_int_equal(m.material.base_map.width, 0);
+	mesh_release(&m);
+}
+
+/* Packed as normalized bytes in the compact format, floats otherwise; and
+ * simplification keeps them. */
+static void packed_and_simplified(void **state)
+{
+	struct fixture *f = *state;
+	struct mesh_packed p;
+	struct mesh m;
+
+	assert_int_equal(mesh_array_stride(VERTEX_COMPACT, MESH_COLORS), 4);
+	assert_int_equal(mesh_array_stride(VERTEX_FLOAT32, MESH_COLORS), 16);
+	assert_int_equal(mesh_array_component(VERTEX_COMPACT, MESH_COLORS), MESH_UNORM8);
+	assert_int_equal(mesh_pack(&f->sphere, VERTEX_COMPACT, &p), 0);
+	assert_non_null(p.arrays[MESH_COLORS]);
+	for (uint32_t i = 0; i < f->sphere.vertex_count * 4; i++)
+		assert_int_equal(((const uint8_t *)p.arrays[MESH_COLORS])[i],
+				 (uint8_t)lrintf(f->sphere.colors[i] * 255.0f));
+	mesh_packed_release(&p);
+	assert_int_equal(mesh_uv_sphere(&m, 64, 32), 0);
+	assert_int_equal(mesh_alloc_colors(&m), 0);
+	for (uint32_t i = 0; i < m.vertex_count * 4; i++)
+		m.colors[i] = 0.25f;
+	assert_int_equal(lod_prepare_mesh(&m, 8.0, 320, 240, NULL), 0);
+	assert_non_null(m.colors);
+	for (uint32_t i = 0; i < m.vertex_count * 4; i++)
+		assert_true(m.colors[i] == 0.25f);
+	mesh_release(&m);
+}
+
+/* Only the images a scene uses and can place are decoded: counted by the
+ * loader, not timed. */
+static void decodes_only_what_is_used(void **state)
+{
+	struct fixture *f = *state;
+	struct gltf_write_opts o = plain();
+	struct material_config cfg;
+	char path[256];
+	struct mesh m;
+	struct {
+		unsigned textures;
+		unsigned decoded;
+	} cases[] = {
+	    {0, 0}, {GLTF_TEXTURE_BASE_COLOR, 1}, {GLTF_TEXTURE_NORMAL | GLTF_TEXTURE_OCCLUSION, 2},
+	    {0, 3}, /* the defaults: every one */
+	    {0, 0}, /* detail and base colour off */
+	};
+
+	material_config_defaults(&cfg);
+	cases[3].textures = material_gltf_textures(&cfg);
+	cfg.detail = cfg.base_color = MATERIAL_OFF;
+	cases[4].textures = material_gltf_textures(&cfg);
+	o.normal_png = o.occlusion_png = o.base_color_png = f->png;
+	o.embed_images = 1;
+	write_model(f, "maps.glb", o, path, sizeof(path));
+	for (size_t i = 0; i < sizeof(cases) / sizeof(cases[0]); i++) {
+		assert_int_equal(gltf_load_textures(path, cases[i].textures, &m), 0);
+		assert_int_equal(m.material.images_decoded, cases[i].decoded);
+		assert_true(m.material.has_normal_map && m.material.has_base_map);
+		mesh_release(&m);
+	}
+	/* No TEXCOORD_0: no texture can be placed, none is decoded. */
+	o.with_uvs = 0;
+	write_model(f, "maps-nouv.glb", o, path, sizeof(path));
+	assert_int_equal(gltf_load_textures(path, cases[3].textures, &m), 0);
+	assert_int_equal(m.material.images_decoded, 0);
+	mesh_release(&m);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+	    cmocka_unit_test(factor_colour_map_and_transform),
+	    cmocka_unit_test(colour_types),
+	    cmocka_unit_test(no_colour_no_cost),
+	    cmocka_unit_test(tex_coord_picks_the_uv_set),
+	    cmocka_unit_test(packed_and_simplified),
+	    cmocka_unit_test(decodes_only_what_is_used),
+	};
+	return cmocka_run_group_tests(tests, setup, teardown);
+}
