@@ -93,8 +93,13 @@ vm_check "once closed, it is loaded and shown" wait_until 60 has models.log "mod
 still d.png
 vm_check "the new model's frame differs from the first's" differ a.png d.png
 cp all/bad-index.glb $m/e-bad.glb
-vm_check "a broken model copied in: one journal line" \
-	wait_until 60 sh -c "[ \$(grep -c e-bad.glb models.log) = 1 ]"
+# One error line (beside the info line that it arrived): wait for it,
+# then give a second one time to show.
+vm_check "a broken model copied in: an error line" \
+	wait_until 60 grep -q 'error: .*e-bad.glb' models.log
+sleep 2
+vm_check "... one only ($(grep -c 'error: .*e-bad.glb' models.log))" \
+	test "$(grep -c 'error: .*e-bad.glb' models.log)" = 1
 still d2.png
 vm_check "and the model on screen stays" matches d.png d2.png
 vm_check "the kiosk runs on" kiosk_alive
