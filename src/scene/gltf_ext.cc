@@ -129,23 +129,6 @@ bool read_sparse(const tinygltf::Model &m, const tinygltf::Accessor &a, const st
 
 } // namespace
 
-size_t component_size(int type)
-{
-	switch (type) {
-	case TINYGLTF_COMPONENT_TYPE_BYTE:
-	case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-		return 1;
-	case TINYGLTF_COMPONENT_TYPE_SHORT:
-	case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-		return 2;
-	case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-	case TINYGLTF_COMPONENT_TYPE_FLOAT:
-		return 4;
-	default:
-		return 0;
-	}
-}
-
 const char *component_name(int type)
 {
 	switch (type) {
@@ -163,40 +146,6 @@ const char *component_name(int type)
 		return "FLOAT";
 	default:
 		return "an unknown component type";
-	}
-}
-
-double component_value(const unsigned char *p, int type, bool normalized)
-{
-	switch (type) {
-	case TINYGLTF_COMPONENT_TYPE_FLOAT: {
-		float f;
-		std::memcpy(&f, p, 4);
-		return f;
-	}
-	case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
-		uint32_t u;
-		std::memcpy(&u, p, 4);
-		return u;
-	}
-	case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-		uint16_t u;
-		std::memcpy(&u, p, 2);
-		return normalized ? u / 65535.0 : u;
-	}
-	case TINYGLTF_COMPONENT_TYPE_SHORT: {
-		int16_t s;
-		std::memcpy(&s, p, 2);
-		return normalized ? std::fmax(s / 32767.0, -1.0) : s;
-	}
-	case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-		return normalized ? *p / 255.0 : *p;
-	case TINYGLTF_COMPONENT_TYPE_BYTE: {
-		int8_t s = (int8_t)*p;
-		return normalized ? std::fmax(s / 127.0, -1.0) : s;
-	}
-	default:
-		return 0.0;
 	}
 }
 

@@ -91,9 +91,17 @@ const char *const moved_indices = "matcap_kiosk_indices";
 namespace
 {
 
+// In the JSON only: a GLB's binary chunk (30 MB for a 1M-triangle model)
+// holds no extension names, and searching it cost 215M instructions, 8 % of
+// a cold start.
 bool mentions(const unsigned char *data, size_t size, const char *key)
 {
-	return std::search(data, data + size, key, key + std::strlen(key)) != data + size;
+	size_t begin, len;
+	bool glb;
+	if (!json_span(data, size, &begin, &len, &glb))
+		return false;
+	const unsigned char *end = data + begin + len;
+	return std::search(data + begin, end, key, key + std::strlen(key)) != end;
 }
 
 bool has_view(const nlohmann::json &j, const nlohmann::json &index)
