@@ -288,6 +288,18 @@ test_live() {
 	results live "$out/live.log" "$out/live/stderr"
 }
 
+# Hands-off operation (tests/e2e/hands.sh): --status, the poster,
+# --check-config and --import of a USB stick's folder, through the ASan
+# binary.
+test_hands() {
+	need_models
+	sh tests/e2e/hands.sh "$ASAN_KIOSK" "$TOOLS/imgdiff" "$out/models" "$out/hands" \
+		>"$out/hands.log" 2>&1
+	grep -q "^ok every step ran" "$out/hands.log" ||
+		echo "not ok the scenario stopped early" >>"$out/hands.log"
+	results hands "$out/hands.log"
+}
+
 # make install honours PREFIX and DESTDIR.
 test_install() {
 	check "make install" sh -c "make -s install DESTDIR=$PWD/$out/stage PREFIX=/usr SYSCONFDIR=/etc >/dev/null &&

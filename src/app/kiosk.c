@@ -3,6 +3,7 @@
 #include "app/reload.h"
 #include "app/screen.h"
 #include "app/service.h"
+#include "app/status.h"
 #include "camera/camera_feed.h"
 #include "input/gpio.h"
 #include "input/keyboard.h"
@@ -25,7 +26,7 @@
  * this long, so a burst of files is one rescan. */
 #define MATCAP_SETTLE_NS 500000000ull
 
-enum { FD_SIGNAL, FD_DISPLAY, FD_WATCH, FD_CAMERA, FD_INPUTS };
+enum { FD_SIGNAL, FD_DISPLAY, FD_WATCH, FD_CAMERA, FD_STATUS, FD_INPUTS };
 
 /* Where an input source came from: a reload opens the buttons or the
  * keyboards again, and leaves the others alone. */
@@ -58,8 +59,10 @@ struct kiosk {
 	uint64_t waiting_since;	    /* when the pending page flip was queued */
 	bool display_absent;	    /* the last draw found no display to show it on */
 	struct service service;
-	struct camera_feed *camera; /* the live camera; NULL: none */
-	struct screen *screen;	    /* its power; NULL: always on */
+	struct camera_feed *camera;   /* the live camera; NULL: none */
+	struct screen *screen;	      /* its power; NULL: always on */
+	struct status_server *status; /* --status; NULL: not reachable */
+	uint64_t started_ns;
 };
 
 static void tell_app(struct kiosk *k, enum app_msg_kind kind)
@@ -419,6 +422,7 @@ static int fill_fds(struct kiosk *k, struct pollfd *fds, int sig_fd)
 	    (struct pollfd){.fd = k->watch ? folder_watch_fd(k->watch) : -1, .events = POLLIN};
 	fds[FD_CAMERA] =
 	    (struct pollfd){.fd = k->camera ? camera_feed_fd(k->camera) : -1, .events = POLLIN};
+	fds[FD_STATUS] = (struct pollfd){.fd = status_server_fd(k->status), .events = POLLIN};
 	for (int i = 0; i < k->input_count; i++)
 		fds[FD_INPUTS + i] = (struct pollfd){.fd = k->inputs[i]->fd, .events = POLLIN};
 	return FD_INPUTS + k->input_count;
@@ -522,6 +526,30 @@ static int service_display(struct kiosk *k, const struct pollfd *fds)
 	return 0;
 }
 
+/* --status asked: the state, and the frame on screen read back now. */
+static void service_status(struct kiosk *k, const struct pollfd *fds)
+{
+	const struct app_state *st = app_state(k->app);
+	struct image frame = {0};
+	struct status_report r = {
+	    .model = k->applied.content.model,
+	    .matcap = k->scene->set ? matcap_set_path(k->scene->set, st->matcap) : NULL,
+	    .mode = shading_mode_name(st->mode),
+	    .view = {st->orientation.x, st->orientation.y, st->orientation.z, st->orientation.w},
+	    .screen_on = awake(k),
+	    .camera_on = st->camera_on,
+	    .uptime_s = (double)(monotonic_ns() - k->started_ns) / 1e9,
+	    .frames_drawn = k->frames_drawn,
+	    .last_error = log_last_error()};
+	bool have;
+
+	if (!(fds[FD_STATUS].revents & POLLIN) || !status_server_accept(k->status))
+		return;
+	have = k->frames_drawn > 0 && k->display->read_frame(k->display, &frame) == 0;
+	status_server_answer(k->status, &r, have ? &frame : NULL);
+	image_release(&frame);
+}
+
 /* One pass: draw when the state changed, sleep until something happens,
  * and hand it on. Returns 1 to stop, 0 to go on, or a negative errno. */
 static int loop_once(struct kiosk *k, int sig_fd)
@@ -555,6 +583,7 @@ static int loop_once(struct kiosk *k, int sig_fd)
 	if ((ret = service_display(k, fds)))
 		return ret;
 	service_camera(k, fds[FD_CAMERA].revents);
+	service_status(k, fds);
 	service_matcaps(k, fds, monotonic_ns());
 	service_inputs(k, fds, monotonic_ns());
 	return 0;
@@ -570,9 +599,12 @@ int kiosk_run(struct kiosk *k)
 		return sig_fd;
 	}
 	service_init(&k->service, monotonic_ns());
+	k->status = status_server_new();
 	while (!(ret = loop_once(k, sig_fd)))
 		;
 	service_stopping();
+	status_server_free(k->status);
+	k->status = NULL;
 	close(sig_fd);
 	return ret < 0 ? ret : 0;
 }
@@ -590,6 +622,7 @@ struct kiosk *kiosk_new(const struct kiosk_parts *p, uint64_t now_ns)
 	while (p->argv[k->argc])
 		k->argc++;
 	k->camera_possible = p->camera_possible;
+	k->started_ns = now_ns;
 	/* The renderer already holds the mode. */
 	k->shown_mode = p->options->content.mode;
 	k->shown_ortho = p->options->content.ortho;

@@ -9,6 +9,9 @@
 #include "app/options.h"
 #include "render/render.h"
 #include "app/content.h"
+#include "app/import.h"
+#include "app/status.h"
+#include "render/poster.h"
 
 #include <errno.h>
 #include <math.h>
@@ -215,6 +218,26 @@ static int after_display(const struct options *o, bool was_live, struct content 
 	return scene->mesh.index_count ? 0 : content_load(scene, &o->content, false);
 }
 
+/* Something on the screen at once, before the model loads: the poster,
+ * or the background. A failure here is logged and passed over. */
+static void show_poster(const struct options *o, struct display *d)
+{
+	struct view v = content_view(&o->content);
+	struct image img = {0};
+	bool have = o->poster && *o->poster && image_load(o->poster, &img) == 0;
+
+	if (o->poster && *o->poster && !have)
+		log_warn("[display] poster %s does not load: the background instead", o->poster);
+	if (d->begin_frame(d) == 0) {
+		poster_draw(&d->gl, have ? &img : NULL, d->width, d->height, o->content.rotation,
+			    v.background);
+		if (d->present(d) == 0)
+			log_info("poster: %s on the screen while the model loads",
+				 have ? o->poster : "the background");
+	}
+	image_release(&img);
+}
+
 static int show(struct options *o, char **argv)
 {
 	double start_ms = now_ms();
@@ -225,6 +248,8 @@ static int show(struct options *o, char **argv)
 
 	if (!ret && !(display = open_display(o)))
 		ret = -ENODEV;
+	if (!ret && live && is_live(o))
+		show_poster(o, display);
 	if (!ret)
 		ret = after_display(o, live, &scene);
 	if (!ret)
@@ -239,12 +264,29 @@ static enum exit_code parse_failed(enum options_status status)
 	return status == OPTIONS_CONFIG ? EXIT_CODE_CONFIG : EXIT_CODE_USAGE;
 }
 
+/* The subcommands that talk to a kiosk or look after its files. */
+static enum exit_code tool(struct options *o)
+{
+	int ret;
+
+	if (o->status)
+		return status_client_run(stdout) ? EXIT_CODE_FAILED : EXIT_CODE_OK;
+	if (o->check_config) {
+		printf("%s: the settings are valid\n", o->config ? o->config : "the command line");
+		return EXIT_CODE_OK;
+	}
+	ret = import_run(o);
+	return ret == -EINVAL ? EXIT_CODE_CONFIG : exit_code(ret);
+}
+
 static enum exit_code start(struct options *o, char **argv)
 {
 	if (o->help)
 		options_usage(stdout);
 	else if (o->version)
 		printf("matcap-kiosk %s\n", MK_VERSION);
+	else if (o->status || o->check_config || o->import)
+		return tool(o);
 	else
 		return exit_code(show(o, argv));
 	return EXIT_CODE_OK;

@@ -68,13 +68,17 @@ struct options {
 	struct camera_feed_config camera;
 	/* [power] */
 	struct screen_config power;
+	char *poster;  /* [display] poster */
+	char *include; /* [kiosk] include */
 	/* the command line only */
 	char *config;
+	char *import;
 	char *output;
 	char *shader_dir;
 	int frames;
 	bool stats;
 	bool help, version;
+	bool status, check_config;
 };
 
 /* K_DEGREES: read in degrees, kept in radians. K_LEVEL: a log level by
@@ -100,7 +104,7 @@ struct option_def {
 
 /* The table's length: the compiler refuses an entry more, and
  * tests/unit/test_options.c one less. */
-#define OPTION_DEFS 72
+#define OPTION_DEFS 77
 extern const struct option_def option_defs[OPTION_DEFS];
 
 void option_defaults(struct options *o);
