@@ -145,6 +145,8 @@ DEBIAN_PACKAGES := make gcc g++ pkg-config libegl-dev libgles-dev \
 	libcamera-tools gpiod v4l-utils
 # glTF: Draco meshes, and the tools and sample files of the model corpus test.
 DEBIAN_PACKAGES += libdraco-dev draco gltfpack assimp-testmodels
+# The board's USB stick images (tests/e2e/sticks.sh): mke2fs -d.
+DEBIAN_PACKAGES += e2fsprogs
 
 deps:
 	$(APT_GET) update -qq

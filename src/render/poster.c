@@ -58,7 +58,8 @@ static void draw_image(const struct gl *gl, GLuint program, const struct image *
 int poster_draw(const struct gl *gl, const struct image *img, int width, int height, int rotation,
 		const float background[3])
 {
-	struct shader_source src = {.vertex = {"poster.vert"},
+	struct shader_source src = {.precision = "precision mediump float;\n",
+				    .vertex = {"poster.vert"},
 				    .fragment = {"poster.frag"},
 				    .attributes = {[SHADER_ATTR_POSITION] = "a_position"}};
 	GLuint program = 0;
