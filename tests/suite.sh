@@ -325,6 +325,12 @@ test_systemd() {
 		PREFIX=$prefix SYSCONFDIR=$prefix/etc >/dev/null"
 	check "systemd-analyze verify: no warning" sh -c \
 		"o=\$(systemd-analyze verify $unit 2>&1); echo \"\$o\"; [ -z \"\$o\" ]"
+	# The USB import unit is a template: verify checks it as an instance.
+	check "systemd-analyze verify of the USB import unit: no warning" sh -c \
+		"mkdir -p $out/import && cp $prefix/lib/systemd/system/matcap-kiosk-import@.service \
+		$out/import/matcap-kiosk-import@sda1.service &&
+		o=\$(systemd-analyze verify $out/import/matcap-kiosk-import@sda1.service 2>&1);
+		echo \"\$o\"; [ -z \"\$o\" ]"
 	score=$(systemd-analyze security --offline=yes "$unit" 2>/dev/null |
 		sed -n 's/.*Overall exposure level for .*: \([0-9.]*\).*/\1/p')
 	check "systemd-analyze security --offline: exposure ${score:-unknown}, at most 2.5" \

@@ -121,8 +121,10 @@ static int write_output(const struct options *o, struct display *d)
 }
 
 /* argv: a reload (SIGHUP) parses the same command line again. */
+/* posters: frames flipped before the kiosk took over, counted with its
+ * own (each went to the screen by a flip). */
 static int run_live(const struct options *o, char **argv, struct content *s, struct display *d,
-		    struct renderer *r)
+		    struct renderer *r, int posters)
 {
 	struct kiosk_parts parts = {.display = d,
 				    .renderer = r,
@@ -139,13 +141,13 @@ static int run_live(const struct options *o, char **argv, struct content *s, str
 	if (k && o->stats)
 		kiosk_print_stats(k, stdout);
 	if (k)
-		log_info("%ld frames drawn", kiosk_frames_drawn(k));
+		log_info("%ld frames drawn", kiosk_frames_drawn(k) + posters);
 	kiosk_free(k);
 	return ret;
 }
 
 static int run(const struct options *o, char **argv, struct content *s, struct display *d,
-	       double start_ms)
+	       double start_ms, int posters)
 {
 	struct renderer *r = renderer_new(&d->gl, o->shader_dir);
 	int ret = r ? 0 : -ENOMEM;
@@ -166,7 +168,7 @@ static int run(const struct options *o, char **argv, struct content *s, struct d
 		if (!ret && o->output)
 			ret = write_output(o, d);
 	} else {
-		ret = run_live(o, argv, s, d, r);
+		ret = run_live(o, argv, s, d, r, posters);
 	}
 out:
 	renderer_free(r);
@@ -220,22 +222,24 @@ static int after_display(const struct options *o, bool was_live, struct content 
 
 /* Something on the screen at once, before the model loads: the poster,
  * or the background. A failure here is logged and passed over. */
-static void show_poster(const struct options *o, struct display *d)
+static int show_poster(const struct options *o, struct display *d)
 {
 	struct view v = content_view(&o->content);
 	struct image img = {0};
 	bool have = o->poster && *o->poster && image_load(o->poster, &img) == 0;
+	int shown = 0;
 
 	if (o->poster && *o->poster && !have)
 		log_warn("[display] poster %s does not load: the background instead", o->poster);
 	if (d->begin_frame(d) == 0) {
 		poster_draw(&d->gl, have ? &img : NULL, d->width, d->height, o->content.rotation,
 			    v.background);
-		if (d->present(d) == 0)
+		if (d->present(d) == 0 && ++shown)
 			log_info("poster: %s on the screen while the model loads",
 				 have ? o->poster : "the background");
 	}
 	image_release(&img);
+	return shown;
 }
 
 static int show(struct options *o, char **argv)
@@ -244,16 +248,17 @@ static int show(struct options *o, char **argv)
 	bool live = is_live(o);
 	struct content scene = {0};
 	struct display *display = NULL;
+	int posters = 0;
 	int ret = before_display(o, &scene);
 
 	if (!ret && !(display = open_display(o)))
 		ret = -ENODEV;
 	if (!ret && live && is_live(o))
-		show_poster(o, display);
+		posters = show_poster(o, display);
 	if (!ret)
 		ret = after_display(o, live, &scene);
 	if (!ret)
-		ret = run(o, argv, &scene, display, start_ms);
+		ret = run(o, argv, &scene, display, start_ms, posters);
 	display_free(display);
 	content_release(&scene);
 	return ret;
