@@ -189,6 +189,37 @@ static char *staged(const struct import *im, const char *path)
 	return path ? strdup(path) : NULL;
 }
 
+/* The stick's kiosk.ini as it is (read from the staged copy, which holds
+ * it after two lines of ours, would shift its line numbers). It may not
+ * name a file to include: the stick brings its settings, not a path into
+ * the kiosk's files. */
+static int check_stick_ini(const struct import *im, struct options *t)
+{
+	char path[PATH_MAX + 16], *text = NULL;
+	size_t size = 0;
+	FILE *f, *mem = open_memstream(&text, &size);
+	int c, ret = mem ? 0 : -ENOMEM;
+
+	snprintf(path, sizeof(path), "%s/kiosk.ini", im->from);
+	if (!ret && !(f = fopen(path, "re")))
+		ret = -errno;
+	else if (!ret) {
+		while ((c = fgetc(f)) != EOF)
+			fputc(c, mem);
+		fclose(f);
+	}
+	if (mem && fclose(mem) && !ret)
+		ret = -ENOMEM;
+	if (!ret && options_read_memory(t, path, text, size) != OPTIONS_OK)
+		ret = -EINVAL;
+	if (!ret && t->include) {
+		log_err("%s: [kiosk] include: a stick's settings may not name another file", path);
+		ret = -EINVAL;
+	}
+	free(text);
+	return ret;
+}
+
 /* What the kiosk would do with it: the settings over its own, then the
  * model and the matcaps loaded, strictly (no built-in stand-in). */
 static int check(const struct import *im, const struct options *o)
@@ -204,11 +235,8 @@ static int check(const struct import *im, const struct options *o)
 	free(t.include);
 	t.include = NULL; /* the installed fragment is replaced, not read */
 	/* The stick's file first, so that a mistake is named by its line. */
-	snprintf(ini, sizeof(ini), "%s/kiosk.ini", im->from);
-	if (im->ini && options_read_file(&t, ini) != OPTIONS_OK) {
-		ret = -EINVAL;
+	if (im->ini && (ret = check_stick_ini(im, &t)))
 		goto out;
-	}
 	snprintf(ini, sizeof(ini), "%s/kiosk.ini", im->staging);
 	if (options_read_file(&t, ini) != OPTIONS_OK) {
 		ret = -EINVAL;

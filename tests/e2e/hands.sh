@@ -105,6 +105,11 @@ step "a stick with a broken model is refused" [ $? -ne 0 ]
 step "... with a line that names the file" grep -q "sphere.glb" "$dir/broken.err"
 "$kiosk" --config "$dir/kiosk.ini" --import "$dir/badini/matcap-kiosk" 2>"$dir/badini.err"
 step "a stick with a bad kiosk.ini is refused (78)" [ $? -eq 78 ]
+mkdir -p "$dir/incl/matcap-kiosk"
+cp "$models/sphere.glb" "$dir/incl/matcap-kiosk/"
+printf '[kiosk]\ninclude = /etc/passwd\n' >"$dir/incl/matcap-kiosk/kiosk.ini"
+"$kiosk" --config "$dir/kiosk.ini" --import "$dir/incl/matcap-kiosk" 2>"$dir/incl.err"
+step "a stick whose kiosk.ini names a file to include is refused (78)" [ $? -eq 78 ]
 "$kiosk" --config "$dir/kiosk.ini" --import "$dir/empty/matcap-kiosk" 2>"$dir/empty.err"
 step "a stick with nothing to import is refused" [ $? -ne 0 ]
 tree "$STATE_DIRECTORY" >"$dir/after"
