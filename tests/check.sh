@@ -92,7 +92,7 @@ needs() {
 	corpus) echo "asan-kiosk fuzzers $TOOLS/mkmodels $TOOLS/silhouette $TOOLS/imgdiff" ;;
 	baker) echo "$BAKE" ;;
 	live) echo "asan-kiosk $TOOLS/mkmodels $TOOLS/notify_listen" ;;
-	hands) echo "asan-kiosk $TOOLS/mkmodels $TOOLS/imgdiff" ;;
+	hands) echo "asan-kiosk $TOOLS/mkmodels $TOOLS/imgdiff $TOOLS/notify_listen" ;;
 	fuzz) echo fuzzers ;;
 	soak) echo "$TOOLS/soak" ;;
 	board) echo "all $TOOLS/imgdiff $TOOLS/hues $TOOLS/cec_power $TOOLS/clock_set" ;;

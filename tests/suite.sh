@@ -294,7 +294,7 @@ test_live() {
 test_hands() {
 	need_models
 	sh tests/e2e/hands.sh "$ASAN_KIOSK" "$TOOLS/imgdiff" "$out/models" "$out/hands" \
-		>"$out/hands.log" 2>&1
+		"$TOOLS/notify_listen" >"$out/hands.log" 2>&1
 	grep -q "^ok every step ran" "$out/hands.log" ||
 		echo "not ok the scenario stopped early" >>"$out/hands.log"
 	results hands "$out/hands.log"

@@ -3,7 +3,11 @@
 # --status against a running kiosk (and none), the poster, --check-config,
 # and --import of a USB stick's folder (a good one, then broken ones that
 # must change nothing), with the imported content shown after a reload.
-#   hands.sh KIOSK IMGDIFF MODELS DIR
+# Last, the Plymouth hand-over of systemd/matcap-kiosk.service, played as
+# systemd plays a Type=notify unit (ExecStartPre=, the program until it
+# sends READY=1, ExecStartPost=) with a fake plymouth that records what it
+# is asked.
+#   hands.sh KIOSK IMGDIFF MODELS DIR NOTIFY_LISTEN
 # Prints one "ok NAME" or "not ok NAME" line per step; the last line is
 # "ok every step ran" when the scenario got to its end.
 set -u
@@ -12,6 +16,7 @@ kiosk=$1
 imgdiff=$2
 models=$3
 dir=$4
+listen=$5
 rm -rf "$dir"
 mkdir -p "$dir/run" "$dir/state"
 dir=$(cd "$dir" && pwd)
@@ -119,4 +124,37 @@ kill -TERM $pid
 wait $pid
 step "the kiosk ends cleanly" [ $? -eq 0 ]
 step "its socket is gone" test ! -e "$dir/run/status.sock"
+
+# Plymouth: the unit's own command lines, with plymouth a fake that logs.
+unit=systemd/matcap-kiosk.service
+mkdir -p "$dir/bin"
+printf '#!/bin/sh\necho "$*" >>%s/plymouth.log\n' "$dir" >"$dir/bin/plymouth"
+chmod +x "$dir/bin/plymouth"
+pre=$(sed -n 's|^ExecStartPre=-+/usr/bin/plymouth ||p' "$unit")
+post=$(sed -n 's|^ExecStartPost=-+/usr/bin/plymouth ||p' "$unit")
+step "the unit orders itself before Plymouth's own quit" grep -qx \
+	'Before=plymouth-quit.service' "$unit"
+"$listen" "$dir/notify" 30 >"$dir/notify.log" &
+listener=$!
+wait_for_socket() { [ -S "$dir/notify" ]; }
+i=0
+until wait_for_socket || [ $i -gt 100 ]; do
+	i=$((i + 1))
+	sleep 0.05
+done
+# shellcheck disable=SC2086
+"$dir/bin/plymouth" $pre
+# shellcheck disable=SC2086
+NOTIFY_SOCKET=$dir/notify "$kiosk" $scene --config "$dir/kiosk.ini" >"$dir/splash.log" 2>&1 &
+pid=$!
+wait_for "$dir/notify.log" "READY=1"
+shown=$(grep -c "ready: the first frame is on the screen" "$dir/splash.log")
+# shellcheck disable=SC2086
+"$dir/bin/plymouth" $post
+step "ExecStartPost= comes after the first frame" [ "$shown" = 1 ]
+step "plymouth is told to let go first, and to quit keeping its splash last" sh -c \
+	"[ \"\$(cat '$dir/plymouth.log')\" = \"\$(printf 'deactivate\nquit --retain-splash')\" ]"
+kill -TERM $pid
+wait $pid
+wait $listener
 echo "ok every step ran"
