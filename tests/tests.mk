@@ -11,7 +11,7 @@ UNIT_TESTS  += tangent subdivide material mesh_cache
 UNIT_TESTS  += camera_math camera_proto camera_texture
 UNIT_TESTS  += stability fp16 lod
 UNIT_TESTS  += drm gesture touch_decode schedule power cec backlight
-UNIT_TESTS  += status
+UNIT_TESTS  += status poster
 TOOLS_DIR   := $(BUILD)/tools
 ASAN_BUILD  := $(BUILD)/asan
 SANITIZE    := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all \

@@ -35,8 +35,11 @@ static void draw_image(const struct gl *gl, GLuint program, const struct image *
 		       int height, int rotation)
 {
 	static const float quad[8] = {-1, -1, 1, -1, -1, 1, 1, 1};
-	double a = -rotation * M_PI / 180;
-	float turn[4] = {(float)cos(a), (float)sin(a), (float)-sin(a), (float)cos(a)};
+	/* The panel's quarter turn, exact, as the renderer turns the model
+	 * (mat4_rotate_z): a column-major 2x2. */
+	static const float c[4] = {1, 0, -1, 0}, sn[4] = {0, 1, 0, -1};
+	int k = ((rotation / 90) % 4 + 4) % 4;
+	float turn[4] = {c[k], sn[k], -sn[k], c[k]};
 	float f[2];
 	GLuint tex = upload(gl, img);
 
