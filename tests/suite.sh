@@ -311,6 +311,10 @@ test_install() {
 			$out/stage/usr/lib/systemd/system/matcap-kiosk.service &&
 		test -f $out/stage/usr/lib/sysusers.d/matcap-kiosk.conf &&
 		test -f $out/stage/usr/lib/udev/rules.d/60-matcap-kiosk-gpio.rules"
+	check "make install: the USB stick rule and its import unit (with its paths)" sh -c "
+		test -f $out/stage/usr/lib/udev/rules.d/61-matcap-kiosk-usb.rules &&
+		grep -q '^ExecStart=/usr/bin/matcap-kiosk --config /etc/matcap-kiosk/kiosk.ini --import ' \
+			'$out/stage/usr/lib/systemd/system/matcap-kiosk-import@.service'"
 }
 
 # The systemd unit, checked offline (no running systemd needed), from an
