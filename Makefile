@@ -145,8 +145,9 @@ DEBIAN_PACKAGES := make gcc g++ pkg-config libegl-dev libgles-dev \
 	libcamera-tools gpiod v4l-utils
 # glTF: Draco meshes, and the tools and sample files of the model corpus test.
 DEBIAN_PACKAGES += libdraco-dev draco gltfpack assimp-testmodels
-# The board's USB stick images (tests/e2e/sticks.sh): mke2fs -d.
-DEBIAN_PACKAGES += e2fsprogs
+# The board's USB stick images (tests/e2e/sticks.sh): FAT with files put
+# in by mtools, ext2 by mke2fs -d; no root or loop device needed.
+DEBIAN_PACKAGES += dosfstools mtools e2fsprogs
 
 deps:
 	$(APT_GET) update -qq

@@ -33,7 +33,8 @@ gone() { for _s in "$@"; do [ -z "$(stick_block "$_s")" ] || return 1; done; }
 import() {
 	_dev=$(stick_block "$1")
 	_mnt=/run/matcap-kiosk-import/$_dev
-	mkdir -p "$_mnt" && mount -o ro,nosuid,nodev,noexec "/dev/$_dev" "$_mnt" || return 2
+	mkdir -p "$_mnt" || return 2
+	mount -o ro,nosuid,nodev,noexec "/dev/$_dev" "$_mnt" || { dmesg | tail -5; return 2; }
 	matcap-kiosk --config /share/kiosk.ini --import "$_mnt/matcap-kiosk" >>import.log 2>&1
 	_rc=$?
 	umount "$_mnt"
@@ -51,7 +52,7 @@ poster_shown() {
 		[ "$(od -A n -t u1 -j 16 -N 3 poster.ppm | tr -s ' ')" = " 32 96 192" ]
 }
 
-modprobe -a xhci_pci usb_storage sd_mod ext4 vfat 2>&1
+modprobe -a xhci_pci usb_storage sd_mod ext4 vfat nls_cp437 nls_ascii nls_utf8 nls_iso8859_1 2>&1
 vm_check "the board has xhci, usb-storage, ext4 and vfat" sh -c \
 	'lsmod | grep -q usb_storage && lsmod | grep -q ext4 && lsmod | grep -q vfat'
 vm_check "both sticks are there" wait_until 30 there GOOD BROKEN
