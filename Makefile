@@ -62,8 +62,9 @@ LDLIBS    = $(PKG_LIBS) -lmeshoptimizer -ldl -lm
 # The program's sources, minus app/main.c (tests link the same objects),
 # one folder per layer: each includes only the layers listed after it
 # (tests/tools/layers.sh checks that).
-SRC_APP     := app/app app/content app/model_list app/model_loader app/kiosk_models app/kiosk app/options app/settings app/power app/reload \
-	       app/schedule app/screen app/service
+SRC_APP     := app/app app/content app/model_list app/model_loader app/kiosk_models app/kiosk \
+	       app/options app/settings app/power app/reload app/schedule app/screen app/service \
+	       app/status app/import app/signals
 SRC_DISPLAY := display/backlight display/cec display/display display/display_egl display/display_kms \
 	       display/display_osmesa \
 	       display/drm display/drm_atomic display/drm_legacy display/egl_util display/hotplug \
@@ -72,7 +73,8 @@ SRC_INPUT   := input/action input/button input/gesture input/touch_decode input/
 	       input/gpio_$(GPIOD_API) input/keyboard input/touch
 SRC_CAMERA  := camera/camera_feed camera/camera_link camera/camera_math camera/camera_proto \
 	       camera/camera_texture
-SRC_RENDER  := render/bake render/gl render/matcap_set render/render render/shader render/shading
+SRC_RENDER  := render/bake render/gl render/matcap_set render/poster render/render render/shader \
+	       render/shading
 SRC_SCENE   := scene/lod scene/material scene/mesh scene/mesh_cache scene/mesh_cache_key scene/mesh_gen scene/mesh_pack scene/subdivide scene/tangent \
 	       scene/texture
 SRC_UTIL    := util/folder_watch util/image util/log util/math3d
@@ -82,6 +84,7 @@ LIB_CC := scene/gltf scene/gltf_fs scene/gltf_material scene/gltf_ext scene/gltf
 	  scene/gltf_draco camera/camera
 SHADERS := shaders/mapping.glsl shaders/matcap.vert shaders/matcap.frag shaders/material.glsl
 SHADERS += shaders/camera.vert shaders/camera.frag
+SHADERS += shaders/poster.vert shaders/poster.frag
 
 LIB_OBJS := $(LIB_C:%=$(BUILD)/%.o) $(LIB_CC:%=$(BUILD)/%.o) $(BUILD)/shaders_embedded.o
 
@@ -143,6 +146,9 @@ DEBIAN_PACKAGES := make gcc g++ pkg-config libegl-dev libgles-dev \
 	libcamera-tools gpiod v4l-utils
 # glTF: Draco meshes, and the tools and sample files of the model corpus test.
 DEBIAN_PACKAGES += libdraco-dev draco gltfpack assimp-testmodels
+# The board's USB stick images (tests/e2e/sticks.sh): FAT with files put
+# in by mtools, ext2 by mke2fs -d; no root or loop device needed.
+DEBIAN_PACKAGES += dosfstools mtools e2fsprogs
 
 deps:
 	$(APT_GET) update -qq
@@ -171,13 +177,23 @@ install: matcap-kiosk
 	install -D -m 0644 systemd/matcap-kiosk.sysusers $(DESTDIR)$(SYSUSERSDIR)/matcap-kiosk.conf
 	install -D -m 0644 systemd/60-matcap-kiosk-gpio.rules \
 		$(DESTDIR)$(UDEVRULESDIR)/60-matcap-kiosk-gpio.rules
+	# Content from a USB stick: the rule and the unit it starts.
+	sed -e 's|/usr/local/bin/matcap-kiosk|$(BINDIR)/matcap-kiosk|' \
+		-e 's|/etc/matcap-kiosk/|$(SYSCONFDIR)/matcap-kiosk/|' \
+		systemd/matcap-kiosk-import@.service \
+		>$(DESTDIR)$(SYSTEMD_UNITDIR)/matcap-kiosk-import@.service
+	chmod 0644 $(DESTDIR)$(SYSTEMD_UNITDIR)/matcap-kiosk-import@.service
+	install -m 0644 systemd/61-matcap-kiosk-usb.rules \
+		$(DESTDIR)$(UDEVRULESDIR)/61-matcap-kiosk-usb.rules
 
 uninstall:
 	rm -f $(DESTDIR)$(BINDIR)/matcap-kiosk
 	rm -rf $(DESTDIR)$(DATADIR)
 	rm -f $(DESTDIR)$(SYSTEMD_UNITDIR)/matcap-kiosk.service \
+		$(DESTDIR)$(SYSTEMD_UNITDIR)/matcap-kiosk-import@.service \
 		$(DESTDIR)$(SYSUSERSDIR)/matcap-kiosk.conf \
-		$(DESTDIR)$(UDEVRULESDIR)/60-matcap-kiosk-gpio.rules
+		$(DESTDIR)$(UDEVRULESDIR)/60-matcap-kiosk-gpio.rules \
+		$(DESTDIR)$(UDEVRULESDIR)/61-matcap-kiosk-usb.rules
 
 format:
 	clang-format -i $(wildcard src/*/*.c src/*/*.h src/*/*.cc matcaps/*.c tests/*/*.c tests/*/*.h)

@@ -301,6 +301,18 @@ test_live() {
 	results live "$out/live.log" "$out/live/stderr"
 }
 
+# Hands-off operation (tests/e2e/hands.sh): --status, the poster,
+# --check-config and --import of a USB stick's folder, through the ASan
+# binary.
+test_hands() {
+	need_models
+	sh tests/e2e/hands.sh "$ASAN_KIOSK" "$TOOLS/imgdiff" "$out/models" "$out/hands" \
+		"$TOOLS/notify_listen" >"$out/hands.log" 2>&1
+	grep -q "^ok every step ran" "$out/hands.log" ||
+		echo "not ok the scenario stopped early" >>"$out/hands.log"
+	results hands "$out/hands.log"
+}
+
 # make install honours PREFIX and DESTDIR.
 test_install() {
 	check "make install" sh -c "make -s install DESTDIR=$PWD/$out/stage PREFIX=/usr SYSCONFDIR=/etc >/dev/null &&
@@ -312,6 +324,10 @@ test_install() {
 			$out/stage/usr/lib/systemd/system/matcap-kiosk.service &&
 		test -f $out/stage/usr/lib/sysusers.d/matcap-kiosk.conf &&
 		test -f $out/stage/usr/lib/udev/rules.d/60-matcap-kiosk-gpio.rules"
+	check "make install: the USB stick rule and its import unit (with its paths)" sh -c "
+		test -f $out/stage/usr/lib/udev/rules.d/61-matcap-kiosk-usb.rules &&
+		grep -q '^ExecStart=/usr/bin/matcap-kiosk --config /etc/matcap-kiosk/kiosk.ini --import ' \
+			'$out/stage/usr/lib/systemd/system/matcap-kiosk-import@.service'"
 }
 
 # The systemd unit, checked offline (no running systemd needed), from an
@@ -326,6 +342,12 @@ test_systemd() {
 		PREFIX=$prefix SYSCONFDIR=$prefix/etc >/dev/null"
 	check "systemd-analyze verify: no warning" sh -c \
 		"o=\$(systemd-analyze verify $unit 2>&1); echo \"\$o\"; [ -z \"\$o\" ]"
+	# The USB import unit is a template: verify checks it as an instance.
+	check "systemd-analyze verify of the USB import unit: no warning" sh -c \
+		"mkdir -p $out/import && cp $prefix/lib/systemd/system/matcap-kiosk-import@.service \
+		$out/import/matcap-kiosk-import@sda1.service &&
+		o=\$(systemd-analyze verify $out/import/matcap-kiosk-import@sda1.service 2>&1);
+		echo \"\$o\"; [ -z \"\$o\" ]"
 	score=$(systemd-analyze security --offline=yes "$unit" 2>/dev/null |
 		sed -n 's/.*Overall exposure level for .*: \([0-9.]*\).*/\1/p')
 	check "systemd-analyze security --offline: exposure ${score:-unknown}, at most 2.5" \

@@ -1,9 +1,11 @@
 #include "app/kiosk.h"
+#include "app/signals.h"
 #include "app/app.h"
 #include "app/kiosk_models.h"
 #include "app/reload.h"
 #include "app/screen.h"
 #include "app/service.h"
+#include "app/status.h"
 #include "camera/camera_feed.h"
 #include "input/gpio.h"
 #include "input/keyboard.h"
@@ -14,10 +16,8 @@
 
 #include <errno.h>
 #include <poll.h>
-#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/signalfd.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -27,13 +27,21 @@
  * this long, so a burst of files is one rescan. */
 #define MATCAP_SETTLE_NS 500000000ull
 
-enum { FD_SIGNAL, FD_DISPLAY, FD_WATCH, FD_CAMERA, FD_TOUCH, FD_MODELS, FD_MODEL_WATCH, FD_INPUTS };
+enum {
+	FD_SIGNAL,
+	FD_DISPLAY,
+	FD_WATCH,
+	FD_CAMERA,
+	FD_STATUS,
+	FD_TOUCH,
+	FD_MODELS,
+	FD_MODEL_WATCH,
+	FD_INPUTS
+};
 
 /* Where an input source came from: a reload opens the buttons or the
  * keyboards again, and leaves the others alone. */
 enum input_origin { INPUT_CALLER, INPUT_BUTTON, INPUT_KEYBOARD };
-
-enum signal_result { SIGNALS_NONE, SIGNALS_QUIT, SIGNALS_RELOADED };
 
 struct kiosk {
 	struct display *display;
@@ -60,8 +68,10 @@ struct kiosk {
 	uint64_t waiting_since;	    /* when the pending page flip was queued */
 	bool display_absent;	    /* the last draw found no display to show it on */
 	struct service service;
-	struct camera_feed *camera;  /* the live camera; NULL: none */
-	struct screen *screen;	     /* its power; NULL: always on */
+	struct camera_feed *camera;   /* the live camera; NULL: none */
+	struct screen *screen;	      /* its power; NULL: always on */
+	struct status_server *status; /* --status; NULL: not reachable */
+	uint64_t started_ns;
 	struct touch *touch;	     /* the touchscreens; NULL: off */
 	struct kiosk_models *models; /* a folder or list of models; NULL: one, unwatched */
 };
@@ -251,41 +261,6 @@ static int draw(struct kiosk *k, uint64_t now)
 	return 0;
 }
 
-static void loop_signals(sigset_t *set)
-{
-	sigemptyset(set);
-	sigaddset(set, SIGTERM);
-	sigaddset(set, SIGINT);
-	sigaddset(set, SIGHUP);
-}
-
-int kiosk_block_signals(void)
-{
-	sigset_t set;
-
-	loop_signals(&set);
-	return sigprocmask(SIG_BLOCK, &set, NULL) ? -errno : 0;
-}
-
-int kiosk_unblock_signals(void)
-{
-	sigset_t set;
-
-	loop_signals(&set);
-	return sigprocmask(SIG_UNBLOCK, &set, NULL) ? -errno : 0;
-}
-
-static int open_signals(void)
-{
-	sigset_t set;
-
-	int fd;
-
-	loop_signals(&set);
-	fd = signalfd(-1, &set, SFD_CLOEXEC | SFD_NONBLOCK);
-	return fd < 0 ? -errno : fd;
-}
-
 static void watch_matcaps(struct kiosk *k)
 {
 	folder_watch_free(k->watch);
@@ -385,28 +360,17 @@ out:
 }
 
 /* SIGHUPs queued together are one reload. */
-static enum signal_result read_signals(struct kiosk *k, int fd)
+static enum signals_seen read_signals(struct kiosk *k, int fd)
 {
-	struct signalfd_siginfo si;
-	bool quit = false, hup = false;
+	enum signals_seen seen = signals_read(fd);
 
-	while (read(fd, &si, sizeof(si)) == sizeof(si)) {
-		if (si.ssi_signo == SIGHUP) {
-			hup = true;
-			continue;
-		}
-		log_info("%s: shutting down", strsignal((int)si.ssi_signo));
-		quit = true;
+	if (seen == SIGNALS_HUP) {
+		/* A large model may take a while: the watchdog must not run
+		 * out meanwhile. */
+		service_keepalive(&k->service, monotonic_ns());
+		reload(k, monotonic_ns());
 	}
-	if (quit)
-		return SIGNALS_QUIT;
-	if (!hup)
-		return SIGNALS_NONE;
-	/* A large model may take a while: the watchdog must not run out
-	 * meanwhile. */
-	service_keepalive(&k->service, monotonic_ns());
-	reload(k, monotonic_ns());
-	return SIGNALS_RELOADED;
+	return seen;
 }
 
 static void read_input(struct kiosk *k, int i, uint64_t now)
@@ -468,6 +432,7 @@ static int fill_fds(struct kiosk *k, struct pollfd *fds, int sig_fd)
 	    (struct pollfd){.fd = k->watch ? folder_watch_fd(k->watch) : -1, .events = POLLIN};
 	fds[FD_CAMERA] =
 	    (struct pollfd){.fd = k->camera ? camera_feed_fd(k->camera) : -1, .events = POLLIN};
+	fds[FD_STATUS] = (struct pollfd){.fd = status_server_fd(k->status), .events = POLLIN};
 	fds[FD_TOUCH] = (struct pollfd){.fd = k->touch ? touch_fd(k->touch) : -1, .events = POLLIN};
 	kiosk_models_fill_fds(k->models, &fds[FD_MODELS]);
 	for (int i = 0; i < k->input_count; i++)
@@ -573,6 +538,30 @@ static int service_display(struct kiosk *k, const struct pollfd *fds)
 	return 0;
 }
 
+/* --status asked: the state, and the frame on screen read back now. */
+static void service_status(struct kiosk *k, const struct pollfd *fds)
+{
+	const struct app_state *st = app_state(k->app);
+	struct image frame = {0};
+	struct status_report r = {
+	    .model = k->applied.content.model,
+	    .matcap = k->scene->set ? matcap_set_path(k->scene->set, st->matcap) : NULL,
+	    .mode = shading_mode_name(st->mode),
+	    .view = {st->orientation.x, st->orientation.y, st->orientation.z, st->orientation.w},
+	    .screen_on = awake(k),
+	    .camera_on = st->camera_on,
+	    .uptime_s = (double)(monotonic_ns() - k->started_ns) / 1e9,
+	    .frames_drawn = k->frames_drawn,
+	    .last_error = log_last_error()};
+	bool have;
+
+	if (!(fds[FD_STATUS].revents & POLLIN) || !status_server_accept(k->status))
+		return;
+	have = k->frames_drawn > 0 && k->display->read_frame(k->display, &frame) == 0;
+	status_server_answer(k->status, &r, have ? &frame : NULL);
+	image_release(&frame);
+}
+
 /* One pass: draw when the state changed, sleep until something happens,
  * and hand it on. Returns 1 to stop, 0 to go on, or a negative errno. */
 static int loop_once(struct kiosk *k, int sig_fd)
@@ -580,7 +569,7 @@ static int loop_once(struct kiosk *k, int sig_fd)
 	struct pollfd fds[FD_INPUTS + KIOSK_MAX_INPUTS];
 	uint64_t now = monotonic_ns();
 	uint64_t next = app_advance(k->app, now);
-	enum signal_result sig = SIGNALS_NONE;
+	enum signals_seen sig = SIGNALS_NONE;
 	int n, ret;
 
 	service_screen(k, now);
@@ -607,6 +596,7 @@ static int loop_once(struct kiosk *k, int sig_fd)
 	if ((ret = service_display(k, fds)))
 		return ret;
 	service_camera(k, fds[FD_CAMERA].revents);
+	service_status(k, fds);
 	service_matcaps(k, fds, monotonic_ns());
 	service_inputs(k, fds, monotonic_ns());
 	service_touch(k, fds, monotonic_ns());
@@ -617,7 +607,7 @@ static int loop_once(struct kiosk *k, int sig_fd)
 
 int kiosk_run(struct kiosk *k)
 {
-	int sig_fd = open_signals();
+	int sig_fd = signals_open();
 	int ret = 0;
 
 	if (sig_fd < 0) {
@@ -625,9 +615,12 @@ int kiosk_run(struct kiosk *k)
 		return sig_fd;
 	}
 	service_init(&k->service, monotonic_ns());
+	k->status = status_server_new();
 	while (!(ret = loop_once(k, sig_fd)))
 		;
 	service_stopping();
+	status_server_free(k->status);
+	k->status = NULL;
 	close(sig_fd);
 	return ret < 0 ? ret : 0;
 }
@@ -645,6 +638,7 @@ struct kiosk *kiosk_new(const struct kiosk_parts *p, uint64_t now_ns)
 	while (p->argv[k->argc])
 		k->argc++;
 	k->camera_possible = p->camera_possible;
+	k->started_ns = now_ns;
 	/* The renderer already holds the mode. */
 	k->shown_mode = p->options->content.mode;
 	k->shown_ortho = p->options->content.ortho;

@@ -30,11 +30,6 @@ struct kiosk_parts {
 
 struct kiosk;
 
-/* Block the signals the loop reads through a signalfd. Call it before any
- * thread starts (the GL driver's), so that no thread takes them with the
- * default action. */
-int kiosk_block_signals(void);
-int kiosk_unblock_signals(void);
 /* The app state, the view and the matcap watch from the settings. No
  * inputs and no camera yet. NULL when out of memory. */
 struct kiosk *kiosk_new(const struct kiosk_parts *parts, uint64_t now_ns);

@@ -5,10 +5,14 @@
 #include "display/display.h"
 #include "util/image.h"
 #include "app/kiosk.h"
+#include "app/signals.h"
 #include "util/log.h"
 #include "app/options.h"
 #include "render/render.h"
 #include "app/content.h"
+#include "app/import.h"
+#include "app/status.h"
+#include "render/poster.h"
 
 #include <errno.h>
 #include <math.h>
@@ -118,8 +122,10 @@ static int write_output(const struct options *o, struct display *d)
 }
 
 /* argv: a reload (SIGHUP) parses the same command line again. */
+/* posters: frames flipped before the kiosk took over, counted with its
+ * own (each went to the screen by a flip). */
 static int run_live(const struct options *o, char **argv, struct content *s, struct display *d,
-		    struct renderer *r)
+		    struct renderer *r, int posters)
 {
 	struct kiosk_parts parts = {.display = d,
 				    .renderer = r,
@@ -136,13 +142,13 @@ static int run_live(const struct options *o, char **argv, struct content *s, str
 	if (k && o->stats)
 		kiosk_print_stats(k, stdout);
 	if (k)
-		log_info("%ld frames drawn", kiosk_frames_drawn(k));
+		log_info("%ld frames drawn", kiosk_frames_drawn(k) + posters);
 	kiosk_free(k);
 	return ret;
 }
 
 static int run(const struct options *o, char **argv, struct content *s, struct display *d,
-	       double start_ms)
+	       double start_ms, int posters)
 {
 	struct renderer *r = renderer_new(&d->gl, o->shader_dir);
 	int ret = r ? 0 : -ENOMEM;
@@ -163,7 +169,7 @@ static int run(const struct options *o, char **argv, struct content *s, struct d
 		if (!ret && o->output)
 			ret = write_output(o, d);
 	} else {
-		ret = run_live(o, argv, s, d, r);
+		ret = run_live(o, argv, s, d, r, posters);
 	}
 out:
 	renderer_free(r);
@@ -201,7 +207,7 @@ static int before_display(const struct options *o, struct content *scene)
 {
 	if (!is_live(o))
 		return content_load(scene, &o->content, true);
-	kiosk_block_signals();
+	signals_block();
 	return 0;
 }
 
@@ -211,8 +217,30 @@ static int before_display(const struct options *o, struct content *scene)
 static int after_display(const struct options *o, bool was_live, struct content *scene)
 {
 	if (was_live && !is_live(o))
-		kiosk_unblock_signals();
+		signals_unblock();
 	return scene->mesh.index_count ? 0 : content_load(scene, &o->content, false);
+}
+
+/* Something on the screen at once, before the model loads: the poster,
+ * or the background. A failure here is logged and passed over. */
+static int show_poster(const struct options *o, struct display *d)
+{
+	struct view v = content_view(&o->content);
+	struct image img = {0};
+	bool have = o->poster && *o->poster && image_load(o->poster, &img) == 0;
+	int shown = 0;
+
+	if (o->poster && *o->poster && !have)
+		log_warn("[display] poster %s does not load: the background instead", o->poster);
+	if (d->begin_frame(d) == 0) {
+		poster_draw(&d->gl, have ? &img : NULL, d->width, d->height, o->content.rotation,
+			    v.background);
+		if (d->present(d) == 0 && ++shown)
+			log_info("poster: %s on the screen while the model loads",
+				 have ? o->poster : "the background");
+	}
+	image_release(&img);
+	return shown;
 }
 
 static int show(struct options *o, char **argv)
@@ -221,14 +249,17 @@ static int show(struct options *o, char **argv)
 	bool live = is_live(o);
 	struct content scene = {0};
 	struct display *display = NULL;
+	int posters = 0;
 	int ret = before_display(o, &scene);
 
 	if (!ret && !(display = open_display(o)))
 		ret = -ENODEV;
+	if (!ret && live && is_live(o))
+		posters = show_poster(o, display);
 	if (!ret)
 		ret = after_display(o, live, &scene);
 	if (!ret)
-		ret = run(o, argv, &scene, display, start_ms);
+		ret = run(o, argv, &scene, display, start_ms, posters);
 	display_free(display);
 	content_release(&scene);
 	return ret;
@@ -239,12 +270,29 @@ static enum exit_code parse_failed(enum options_status status)
 	return status == OPTIONS_CONFIG ? EXIT_CODE_CONFIG : EXIT_CODE_USAGE;
 }
 
+/* The subcommands that talk to a kiosk or look after its files. */
+static enum exit_code tool(struct options *o)
+{
+	int ret;
+
+	if (o->status)
+		return status_client_run(stdout) ? EXIT_CODE_FAILED : EXIT_CODE_OK;
+	if (o->check_config) {
+		printf("%s: the settings are valid\n", o->config ? o->config : "the command line");
+		return EXIT_CODE_OK;
+	}
+	ret = import_run(o);
+	return ret == -EINVAL ? EXIT_CODE_CONFIG : exit_code(ret);
+}
+
 static enum exit_code start(struct options *o, char **argv)
 {
 	if (o->help)
 		options_usage(stdout);
 	else if (o->version)
 		printf("matcap-kiosk %s\n", MK_VERSION);
+	else if (o->status || o->check_config || o->import)
+		return tool(o);
 	else
 		return exit_code(show(o, argv));
 	return EXIT_CODE_OK;

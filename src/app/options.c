@@ -11,6 +11,7 @@
 #include <ini.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 /* The file: inih parses, a line reader of ours counts lines so that
  * every message names one, and each key may be set once. */
@@ -208,7 +209,7 @@ static enum options_status read_stream(struct options *o, const char *path, FILE
 	return ret || st.errors ? OPTIONS_CONFIG : OPTIONS_OK;
 }
 
-enum options_status options_read_file(struct options *o, const char *path)
+static enum options_status read_path(struct options *o, const char *path)
 {
 	FILE *f = fopen(path, "r");
 	enum options_status ret;
@@ -219,6 +220,27 @@ enum options_status options_read_file(struct options *o, const char *path)
 	}
 	ret = read_stream(o, path, f);
 	fclose(f);
+	return ret;
+}
+
+/* The file, then the one its include names where that exists: a USB
+ * stick's settings (--import writes them) go over the installed ones. The
+ * included file's own include is not followed. */
+enum options_status options_read_file(struct options *o, const char *path)
+{
+	enum options_status ret = read_path(o, path);
+	char *inc;
+
+	if (ret || !o->include || !*o->include || !strcmp(o->include, path))
+		return ret;
+	if (access(o->include, F_OK)) {
+		log_debug("%s: include %s: none there", path, o->include);
+		return ret;
+	}
+	inc = strdup(o->include);
+	ret = inc ? read_path(o, inc) : OPTIONS_CONFIG;
+	free(o->include);
+	o->include = inc;
 	return ret;
 }
 

@@ -234,6 +234,16 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "read shaders from DIR instead of the built-in copy"},
     {"help", 'h', OPTION_CLI, NULL, K_FLAG, AT(help), 0, 0, 0, NULL, NULL, "this text"},
     {"version", 'V', OPTION_CLI, NULL, K_FLAG, AT(version), 0, 0, 0, NULL, NULL, "the version"},
+    {"poster", 0, OPTIONS_DISPLAY, "poster", K_STRING, AT(poster), 0, 0, 0, NULL, "FILE",
+     "a PNG/JPEG shown from the start until the model is ready (default: the background)"},
+    {"include", 0, OPTIONS_KIOSK, "include", K_STRING, AT(include), 0, 0, 0, NULL, "FILE",
+     "a second INI file read over this one where it exists (a USB stick's, from --import)"},
+    {"status", 0, OPTION_CLI, NULL, K_FLAG, AT(status), 0, 0, 0, NULL, NULL,
+     "ask the running kiosk for its frame (PNG) and state (JSON), print the JSON, exit"},
+    {"check-config", 0, OPTION_CLI, NULL, K_FLAG, AT(check_config), 0, 0, 0, NULL, NULL,
+     "read the settings, say what is wrong, and exit (0, or 78 for a bad file)"},
+    {"import", 0, OPTION_CLI, NULL, K_STRING, AT(import), 0, 0, 0, NULL, "DIR",
+     "copy a USB stick's matcap-kiosk/ folder into the content folder, checked first; exit"},
 };
 
 const char *backend_name(enum backend_kind kind)

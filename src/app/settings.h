@@ -72,13 +72,17 @@ struct options {
 	struct screen_config power;
 	/* [touch]; its gestures' settings are in app */
 	struct touch_config touch;
+	char *poster;  /* [display] poster */
+	char *include; /* [kiosk] include */
 	/* the command line only */
 	char *config;
+	char *import;
 	char *output;
 	char *shader_dir;
 	int frames;
 	bool stats;
 	bool help, version;
+	bool status, check_config;
 };
 
 /* K_DEGREES: read in degrees, kept in radians. K_LEVEL: a log level by
@@ -104,7 +108,7 @@ struct option_def {
 
 /* The table's length: the compiler refuses an entry more, and
  * tests/unit/test_options.c one less. */
-#define OPTION_DEFS 80
+#define OPTION_DEFS 85
 extern const struct option_def option_defs[OPTION_DEFS];
 
 void option_defaults(struct options *o);

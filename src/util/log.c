@@ -7,6 +7,9 @@
 /* The level is set once from main() before anything logs; the journal check
  * is pure (it reads the environment each time), so no other state is kept. */
 static enum log_level max_level = LOG_INFO;
+/* The last error line, for the kiosk's status report (--status): the one
+ * other thing kept, as the level is, for the whole process. */
+static char last_error[1024];
 
 const enum log_level log_levels[LOG_LEVELS] = {LOG_ERR, LOG_WARN, LOG_INFO, LOG_DEBUG};
 const char *const log_level_names[LOG_LEVELS + 1] = {"error", "warning", "info", "debug", NULL};
@@ -43,10 +46,17 @@ void log_msg(enum log_level level, const char *fmt, ...)
 	va_start(ap, fmt);
 	vsnprintf(line, sizeof(line), fmt, ap);
 	va_end(ap);
+	if (level == LOG_ERR)
+		snprintf(last_error, sizeof(last_error), "%s", line);
 	/* systemd sets JOURNAL_STREAM when stderr goes to the journal: then
 	 * the <N> prefix carries the priority and the name is added by it. */
 	if (getenv("JOURNAL_STREAM"))
 		fprintf(stderr, "<%d>%s\n", (int)level, line);
 	else
 		fprintf(stderr, "matcap-kiosk: %s%s\n", level_word(level), line);
+}
+
+const char *log_last_error(void)
+{
+	return last_error;
 }

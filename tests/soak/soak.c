@@ -19,6 +19,7 @@
 #include "display/display.h"
 #include "gltf_write.h"
 #include "app/kiosk.h"
+#include "app/signals.h"
 #include "util/log.h"
 #include "scene/mesh.h"
 #include "app/options.h"
@@ -380,7 +381,7 @@ int main(int argc, char **argv)
 	}
 	log_set_level(LOG_WARN);
 	/* Before the GL driver starts its threads, as main() does. */
-	kiosk_block_signals();
+	signals_block();
 	keep = dlopen("libOSMesa.so.8", RTLD_NOW | RTLD_LOCAL);
 	ret = run(&o, kiosk_argv, 10, &s);
 	(void)keep; /* never closed: see the comment at the top */

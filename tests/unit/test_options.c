@@ -384,6 +384,34 @@ static void reload_reopens_what_changed(void **state)
 	options_release(&n);
 }
 
+/* [kiosk] include: a second file over the first where it exists; its own
+ * include is not followed; a missing one is no error. */
+static void include_file(void **state)
+{
+	char second[64], third[64], text[160];
+	const char *argv[] = {"matcap-kiosk", "--config", NULL};
+	struct options o;
+
+	(void)state;
+	snprintf(third, sizeof(third), "%s", write_ini("[scene]\nmode = sem-vertex\n"));
+	snprintf(text, sizeof(text), "[scene]\nmode = normal\nyaw = 30\n[kiosk]\ninclude = %s\n",
+		 third);
+	snprintf(second, sizeof(second), "%s", write_ini(text));
+	snprintf(text, sizeof(text), "[scene]\nmode = view\n[kiosk]\ninclude = %s\n", second);
+	argv[2] = write_ini(text);
+	assert_int_equal(parse(&o, 3, argv), OPTIONS_OK);
+	assert_int_equal(o.content.mode, SHADING_NORMAL);
+	assert_true(fabs(o.content.yaw - 30) < 1e-9);
+	assert_string_equal(o.include, second);
+	options_release(&o);
+	unlink(second);
+	assert_int_equal(parse(&o, 3, argv), OPTIONS_OK);
+	assert_int_equal(o.content.mode, SHADING_VIEW);
+	options_release(&o);
+	unlink(argv[2]);
+	unlink(third);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -395,6 +423,7 @@ int main(void)
 	    cmocka_unit_test(module_defaults),	  cmocka_unit_test(copy_is_deep),
 	    cmocka_unit_test(reload_table),	  cmocka_unit_test(reload_reopens_what_changed),
 	    cmocka_unit_test(attract_settings),
+	    cmocka_unit_test(include_file),
 	};
 	return cmocka_run_group_tests_name("options", tests, NULL, NULL);
 }

@@ -182,6 +182,10 @@ fi
 # ---------------------------------------------------------------- base initramfs
 GUEST_MODULES="vkms vimc gpio-sim gpio-mockup irq_sim configfs 9p 9pnet_virtio virtio_pci uinput evdev
 vivid"
+# USB sticks (tests/e2e/hands-board.sh): the xHCI controller, usb-storage
+# and the filesystems a stick has: FAT (with the code page and the I/O
+# charsets: Debian mounts FAT with iocharset ascii by default) and ext2-4.
+GUEST_MODULES="$GUEST_MODULES xhci_pci usb_storage sd_mod vfat nls_cp437 nls_ascii nls_utf8 nls_iso8859_1 ext4"
 BASE_BINS="/usr/bin/busybox /usr/bin/kmod /usr/bin/udevadm /usr/bin/kmscube /usr/bin/modetest
 /usr/bin/modeprint /usr/bin/proptest /usr/bin/cam /usr/bin/gpiodetect /usr/bin/gpioinfo
 /usr/bin/gpioget /usr/bin/gpioset /usr/bin/gpiomon /usr/bin/gpiofind /usr/bin/v4l2-ctl

@@ -12,6 +12,9 @@
 #                   --share, else tests/vm/cache/last-console.log)
 #   --quiet         do not copy the console to stdout while it runs
 #   --mem MB, --smp N   guest memory (2048) and CPUs (2)
+#   --usb IMG:SERIAL  a raw disk image as a read-only USB stick (usb-storage
+#                   on an xHCI controller) whose USB serial is SERIAL;
+#                   repeatable
 #   VM_CPU=MODEL    qemu's -cpu (default: max without AVX, which QEMU 7.2's
 #                   TCG emulates wrongly and slowly: an AVX2 gather whose
 #                   index is xmm4/ymm4 loads every lane from the base address,
@@ -34,7 +37,7 @@ CACHE=${VM_CACHE:-$HERE/cache}
 say() { printf '[vm-run] %s\n' "$*" >&2; }
 die() { printf '[vm-run] error: %s\n' "$*" >&2; exit 125; }
 
-BUILD_ARGS=() SHARE="" LOG="" QUIET=0
+BUILD_ARGS=() SHARE="" LOG="" QUIET=0 USB_ARGS=()
 TIMEOUT=${VM_TIMEOUT:-300} MEM=${VM_MEM:-2048} SMP=${VM_SMP:-2} CPU=${VM_CPU:-max,-avx,-avx2,-fma,-f16c,-vaes,-vpclmulqdq}
 while [ $# -gt 0 ]; do
 	case $1 in
@@ -45,6 +48,12 @@ while [ $# -gt 0 ]; do
 	--mem) [ $# -ge 2 ] || die "--mem needs MB"; MEM=$2; shift 2 ;;
 	--smp) [ $# -ge 2 ] || die "--smp needs a count"; SMP=$2; shift 2 ;;
 	--quiet) QUIET=1; shift ;;
+	--usb) [ $# -ge 2 ] || die "--usb needs IMG:SERIAL"
+		[ ${#USB_ARGS[@]} -gt 0 ] || USB_ARGS=(-device qemu-xhci,id=xhci)
+		n=${#USB_ARGS[@]}
+		USB_ARGS+=(-drive "if=none,id=stick$n,format=raw,readonly=on,file=${2%:*}"
+			-device "usb-storage,bus=xhci.0,drive=stick$n,serial=${2##*:}")
+		shift 2 ;;
 	--) shift; break ;;
 	-h|--help) sed -n '2,25p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
 	*) die "unknown option '$1' (see --help)" ;;
@@ -102,7 +111,7 @@ timeout -k 5 "$HOST_LIMIT" qemu-system-x86_64 \
 	-serial "file:$LOG" \
 	-virtfs "local,path=$JOB,mount_tag=vmjob,security_model=none,id=vmjob" \
 	-virtfs "local,path=$REPO,mount_tag=repo,security_model=none,readonly=on,multidevs=remap,id=repo" \
-	${SHARE_ARGS[@]+"${SHARE_ARGS[@]}"} \
+	${SHARE_ARGS[@]+"${SHARE_ARGS[@]}"} ${USB_ARGS[@]+"${USB_ARGS[@]}"} \
 	2>"$JOB/qemu.err" &
 QPID=$!
 TPID=""

@@ -1,0 +1,283 @@
+#include "app/status.h"
+#include "util/log.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/time.h>
+#include <sys/un.h>
+#include <unistd.h>
+
+#define STATUS_SOCKET "status.sock"
+#define STATUS_FRAME  "frame.png"
+#define STATUS_STATE  "state.json"
+#define STATUS_MAX    4096 /* the JSON, with paths and an error line */
+
+struct status_server {
+	char dir[96];
+	int listen_fd;
+	int client_fd; /* taken, not answered yet; -1: none */
+};
+
+/* systemd's RuntimeDirectory= with several folders lists them with ':';
+ * the first is ours. */
+static void runtime_dir(char *buf, size_t n)
+{
+	const char *env = getenv("RUNTIME_DIRECTORY");
+	size_t len;
+
+	if (!env || !*env)
+		env = "/run/matcap-kiosk";
+	len = strcspn(env, ":");
+	snprintf(buf, n, "%.*s", (int)len, env);
+}
+
+static int socket_address(struct sockaddr_un *a, const char *dir)
+{
+	*a = (struct sockaddr_un){.sun_family = AF_UNIX};
+	if ((size_t)snprintf(a->sun_path, sizeof(a->sun_path), "%s/%s", dir, STATUS_SOCKET) >=
+	    sizeof(a->sun_path))
+		return -ENAMETOOLONG;
+	return 0;
+}
+
+static int connect_to(const struct sockaddr_un *a)
+{
+	int fd = socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
+
+	if (fd < 0)
+		return -errno;
+	if (connect(fd, (const struct sockaddr *)a, sizeof(*a)) == 0)
+		return fd;
+	close(fd);
+	return -errno;
+}
+
+/* A socket left by a kiosk that died is removed; one that answers
+ * belongs to a kiosk that runs, and is left alone. */
+static int listen_at(const struct sockaddr_un *a)
+{
+	int fd = connect_to(a);
+
+	if (fd >= 0) {
+		close(fd);
+		return -EADDRINUSE;
+	}
+	unlink(a->sun_path);
+	fd = socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC | SOCK_NONBLOCK, 0);
+	if (fd < 0)
+		return -errno;
+	if (bind(fd, (const struct sockaddr *)a, sizeof(*a)) || listen(fd, 4)) {
+		int err = -errno;
+
+		close(fd);
+		return err;
+	}
+	return fd;
+}
+
+struct status_server *status_server_new(void)
+{
+	struct status_server *s = calloc(1, sizeof(*s));
+	struct sockaddr_un a;
+	int ret;
+
+	if (!s)
+		return NULL;
+	runtime_dir(s->dir, sizeof(s->dir));
+	s->client_fd = -1;
+	ret = socket_address(&a, s->dir);
+	s->listen_fd = ret ? ret : listen_at(&a);
+	if (s->listen_fd >= 0) {
+		log_info("status: matcap-kiosk --status answers at %s", a.sun_path);
+		return s;
+	}
+	/* A kiosk run by hand has no runtime folder: not an error. */
+	log_info("status: no socket at %s/%s (%s): --status will not reach this kiosk", s->dir,
+		 STATUS_SOCKET, strerror(-s->listen_fd));
+	free(s);
+	return NULL;
+}
+
+void status_server_free(struct status_server *s)
+{
+	struct sockaddr_un a;
+
+	if (!s)
+		return;
+	if (s->client_fd >= 0)
+		close(s->client_fd);
+	close(s->listen_fd);
+	if (socket_address(&a, s->dir) == 0)
+		unlink(a.sun_path);
+	free(s);
+}
+
+int status_server_fd(const struct status_server *s)
+{
+	return s ? s->listen_fd : -1;
+}
+
+bool status_server_accept(struct status_server *s)
+{
+	if (!s)
+		return false;
+	if (s->client_fd < 0)
+		s->client_fd = accept4(s->listen_fd, NULL, NULL, SOCK_CLOEXEC);
+	return s->client_fd >= 0;
+}
+
+/* A JSON string: quotes, backslashes and control characters escaped. */
+static void json_string(FILE *f, const char *s)
+{
+	if (!s) {
+		fputs("null", f);
+		return;
+	}
+	fputc('"', f);
+	for (; *s; s++) {
+		unsigned char c = (unsigned char)*s;
+
+		if (c == '"' || c == '\\')
+			fprintf(f, "\\%c", c);
+		else if (c < 0x20)
+			fprintf(f, "\\u%04x", c);
+		else
+			fputc(c, f);
+	}
+	fputc('"', f);
+}
+
+static void write_json(FILE *f, const struct status_report *r, const char *frame, const char *state)
+{
+	fputs("{\n  \"model\": ", f);
+	json_string(f, r->model);
+	fputs(",\n  \"matcap\": ", f);
+	json_string(f, r->matcap);
+	fputs(",\n  \"mode\": ", f);
+	json_string(f, r->mode);
+	fprintf(f, ",\n  \"view\": [%.6f, %.6f, %.6f, %.6f]", r->view[0], r->view[1], r->view[2],
+		r->view[3]);
+	fprintf(f, ",\n  \"power\": \"%s\",\n  \"camera\": %s", r->screen_on ? "on" : "off",
+		r->camera_on ? "true" : "false");
+	fprintf(f, ",\n  \"uptime_s\": %.1f,\n  \"frames_drawn\": %ld", r->uptime_s,
+		r->frames_drawn);
+	fputs(",\n  \"last_error\": ", f);
+	json_string(f, r->last_error);
+	fputs(",\n  \"frame\": ", f);
+	json_string(f, frame);
+	fputs(",\n  \"state\": ", f);
+	json_string(f, state);
+	fputs("\n}\n", f);
+}
+
+/* Written under a temporary name and renamed, so a reader never sees half
+ * a file. */
+static int write_png(const char *dir, const struct image *frame, char *path, size_t n)
+{
+	char tmp[160];
+	int ret;
+
+	snprintf(path, n, "%s/%s", dir, STATUS_FRAME);
+	snprintf(tmp, sizeof(tmp), "%s/.%s.tmp", dir, STATUS_FRAME);
+	ret = image_write_png(tmp, frame);
+	if (!ret && rename(tmp, path))
+		ret = -errno;
+	if (ret)
+		unlink(tmp);
+	return ret;
+}
+
+static int write_state(const char *dir, const char *json, char *path, size_t n)
+{
+	char tmp[160];
+	FILE *f;
+	int ret = 0;
+
+	snprintf(path, n, "%s/%s", dir, STATUS_STATE);
+	snprintf(tmp, sizeof(tmp), "%s/.%s.tmp", dir, STATUS_STATE);
+	f = fopen(tmp, "we");
+	if (!f)
+		return -errno;
+	fputs(json, f);
+	if (fclose(f) || rename(tmp, path)) {
+		ret = -errno;
+		unlink(tmp);
+	}
+	return ret;
+}
+
+/* The JSON in memory: the file and the socket get the same text. */
+static char *report_text(const struct status_report *r, const char *frame, const char *state)
+{
+	char *buf = NULL;
+	size_t size = 0;
+	FILE *f = open_memstream(&buf, &size);
+
+	if (!f)
+		return NULL;
+	write_json(f, r, frame, state);
+	if (fclose(f)) {
+		free(buf);
+		return NULL;
+	}
+	return buf;
+}
+
+void status_server_answer(struct status_server *s, const struct status_report *r,
+			  const struct image *frame)
+{
+	char frame_path[160], state_path[160];
+	bool have_frame = frame && write_png(s->dir, frame, frame_path, sizeof(frame_path)) == 0;
+	char *json;
+
+	snprintf(state_path, sizeof(state_path), "%s/%s", s->dir, STATUS_STATE);
+	json = report_text(r, have_frame ? frame_path : NULL, state_path);
+	if (json && write_state(s->dir, json, state_path, sizeof(state_path)) == 0) {
+		/* The client waits for it; one that left is not waited for. */
+		if (send(s->client_fd, json, strlen(json), MSG_NOSIGNAL | MSG_DONTWAIT) < 0)
+			log_debug("status: the client left: %s", strerror(errno));
+		log_info("status: wrote %s%s%s", state_path, have_frame ? " and " : "",
+			 have_frame ? frame_path : "");
+	} else {
+		log_err("status: cannot write %s: %s", state_path, strerror(errno));
+	}
+	free(json);
+	close(s->client_fd);
+	s->client_fd = -1;
+}
+
+int status_client_run(FILE *out)
+{
+	char dir[96], buf[STATUS_MAX];
+	struct sockaddr_un a;
+	ssize_t n;
+	int fd, ret = 1;
+
+	runtime_dir(dir, sizeof(dir));
+	fd = socket_address(&a, dir);
+	if (!fd)
+		fd = connect_to(&a);
+	if (fd < 0) {
+		fprintf(stderr,
+			"matcap-kiosk: --status: no kiosk answers at %s/%s: %s (is the service "
+			"running? the socket is the service user's: run it as root)\n",
+			dir, STATUS_SOCKET, strerror(-fd));
+		return 1;
+	}
+	/* A kiosk stuck in the GPU driver does not hold the caller forever. */
+	setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &(struct timeval){.tv_sec = 10},
+		   sizeof(struct timeval));
+	while ((n = read(fd, buf, sizeof(buf))) > 0) {
+		fwrite(buf, 1, (size_t)n, out);
+		ret = 0;
+	}
+	if (ret)
+		fprintf(stderr, "matcap-kiosk: --status: the kiosk at %s/%s sent no answer\n", dir,
+			STATUS_SOCKET);
+	close(fd);
+	return ret;
+}

@@ -1,0 +1,84 @@
+#include "render/poster.h"
+#include "render/shader.h"
+
+#include <errno.h>
+#include <math.h>
+
+/* The image's share of the screen: it fills one axis and keeps its
+ * shape; on a panel turned a quarter, the screen's axes swap. */
+static void fit(const struct image *img, int width, int height, int rotation, float out[2])
+{
+	double sw = rotation % 180 ? height : width, sh = rotation % 180 ? width : height;
+	double s = fmin(sw / img->width, sh / img->height);
+
+	out[0] = (float)(img->width * s / sw);
+	out[1] = (float)(img->height * s / sh);
+}
+
+static GLuint upload(const struct gl *gl, const struct image *img)
+{
+	GLuint tex = 0;
+
+	gl->GenTextures(1, &tex);
+	gl->BindTexture(GL_TEXTURE_2D, tex);
+	gl->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+	gl->TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, img->width, img->height, 0, GL_RGBA,
+		       GL_UNSIGNED_BYTE, img->rgba);
+	gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+	gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+	gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+	gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+	return tex;
+}
+
+static void draw_image(const struct gl *gl, GLuint program, const struct image *img, int width,
+		       int height, int rotation)
+{
+	static const float quad[8] = {-1, -1, 1, -1, -1, 1, 1, 1};
+	/* The panel's quarter turn, exact, as the renderer turns the model
+	 * (mat4_rotate_z): a column-major 2x2. */
+	static const float c[4] = {1, 0, -1, 0}, sn[4] = {0, 1, 0, -1};
+	int k = ((rotation / 90) % 4 + 4) % 4;
+	float turn[4] = {c[k], sn[k], -sn[k], c[k]};
+	float f[2];
+	GLuint tex = upload(gl, img);
+
+	fit(img, width, height, rotation, f);
+	gl->UseProgram(program);
+	gl->Uniform2f(gl->GetUniformLocation(program, "u_fit"), f[0], f[1]);
+	gl->Uniform4f(gl->GetUniformLocation(program, "u_turn"), turn[0], turn[1], turn[2],
+		      turn[3]);
+	gl->Uniform1i(gl->GetUniformLocation(program, "u_image"), 0);
+	gl->BindBuffer(GL_ARRAY_BUFFER, 0);
+	gl->EnableVertexAttribArray(SHADER_ATTR_POSITION);
+	gl->VertexAttribPointer(SHADER_ATTR_POSITION, 2, GL_FLOAT, GL_FALSE, 0, quad);
+	gl->DrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+	gl->DisableVertexAttribArray(SHADER_ATTR_POSITION);
+	gl->UseProgram(0);
+	gl->DeleteTextures(1, &tex);
+}
+
+int poster_draw(const struct gl *gl, const struct image *img, int width, int height, int rotation,
+		const float background[3])
+{
+	struct shader_source src = {.precision = "precision mediump float;\n",
+				    .vertex = {"poster.vert"},
+				    .fragment = {"poster.frag"},
+				    .attributes = {[SHADER_ATTR_POSITION] = "a_position"}};
+	GLuint program = 0;
+	int ret = 0;
+
+	gl->Viewport(0, 0, width, height);
+	gl->ClearColor(background[0], background[1], background[2], 1);
+	gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+	if (!img)
+		return 0;
+	gl->Disable(GL_DEPTH_TEST);
+	gl->Disable(GL_CULL_FACE);
+	ret = shader_program_build(gl, &src, &program);
+	if (!ret)
+		draw_image(gl, program, img, width, height, rotation);
+	if (program)
+		gl->DeleteProgram(program);
+	return ret;
+}

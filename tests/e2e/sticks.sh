@@ -1,0 +1,24 @@
+#!/bin/sh
+# The USB sticks of tests/e2e/hands-board.sh, made without root or a loop
+# device: GOOD, FAT as sticks come (mkfs.vfat and mcopy: dosfstools and
+# mtools; ext2 where they are missing, said on stderr), carries a model and
+# a kiosk.ini in matcap-kiosk/; BROKEN, ext2 (mke2fs -d: e2fsprogs), a
+# truncated model. Prints the tests/vm/run.sh options that plug them in.
+#   sticks.sh DIR
+set -eu
+dir=$1
+rm -rf "$dir"
+mkdir -p "$dir/good/matcap-kiosk" "$dir/broken/matcap-kiosk"
+cp tests/fuzz/corpus/gltf/sphere.glb "$dir/good/matcap-kiosk/"
+printf '[scene]\nyaw = 30\n' >"$dir/good/matcap-kiosk/kiosk.ini"
+head -c 500 tests/fuzz/corpus/gltf/sphere.glb >"$dir/broken/matcap-kiosk/sphere.glb"
+ext2() { mke2fs -q -F -t ext2 -L "$1" -d "$dir/$1" "$dir/$1.img" 2M >/dev/null; }
+if command -v mkfs.vfat >/dev/null && command -v mcopy >/dev/null; then
+	mkfs.vfat -n GOOD -C "$dir/good.img" 2048 >/dev/null
+	mcopy -i "$dir/good.img" -s "$dir/good/matcap-kiosk" ::
+else
+	echo "sticks.sh: no mkfs.vfat or mcopy (dosfstools, mtools): the good stick is ext2" >&2
+	ext2 good
+fi
+ext2 broken
+echo "--usb $dir/good.img:GOOD --usb $dir/broken.img:BROKEN"
