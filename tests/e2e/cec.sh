@@ -7,10 +7,12 @@
 # <Standby>, <Image View On> and <Active Source> with the output's
 # physical address; a TV that is gone (its adapter unconfigured) gives a
 # non-zero status and one journal line for several changes, no retry loop.
+# Then the kiosk itself on vkms with [power] cec = on: its screen sleeps
+# after blank_after and the TV gets <Standby>; a key wakes both.
 # Ends with "vm: N passed, N failed".
 set -u
-# shellcheck source=../vm/guest-lib.sh
-. "$VM_LIB"
+# shellcheck source=lib.sh
+. /repo/tests/e2e/lib.sh
 
 modprobe vivid n_devs=1 num_inputs=1 input_types=0x3 num_outputs=1 output_types=0x1 ||
 	echo "FAIL - vivid loads"
@@ -36,6 +38,33 @@ vm_check "the TV received <Standby>" grep -qi 'STANDBY' tv-monitor.log
 vm_check "the TV received <Image View On>" grep -qi 'IMAGE_VIEW_ON' tv-monitor.log
 vm_check "the TV saw <Active Source>" grep -qi 'ACTIVE_SOURCE' tv-monitor.log
 vm_check "the kiosk claimed a playback device address" grep -q 'logical address 4' off.log
+
+# The kiosk drives the TV itself: blank_after (minutes) puts the screen to
+# sleep and the TV to standby; a key wakes the screen and the TV.
+cat >cec.ini <<EOF2
+[display]
+mode = 640x480
+[power]
+blank_after = 0.1
+cec = on
+cec_device = $out
+EOF2
+cec-ctl -d "$tv" --monitor-all >kiosk-tv.log 2>&1 &
+monitor=$!
+vkbd_start
+kiosk_start cec-kiosk.log --config cec.ini --keyboard auto
+wait_log 90 cec-kiosk.log "ready: the first frame is on the screen"
+vm_check "the kiosk: the screen sleeps after blank_after" wait_until 60 has cec-kiosk.log "screen off"
+vm_check "the kiosk: the TV received <Standby>" wait_until 10 grep -qi STANDBY kiosk-tv.log
+vkbd_press SPACE
+vm_check "the kiosk: a key wakes the screen" wait_until 20 has cec-kiosk.log "screen on"
+vm_check "the kiosk: the TV received <Image View On>" \
+	wait_until 10 grep -qi IMAGE_VIEW_ON kiosk-tv.log
+kiosk_stop TERM
+vm_check "the kiosk: SIGTERM exits 0" test "$KRC" = 0
+vkbd_stop
+kill "$monitor" 2>/dev/null
+grep -i "cec" cec-kiosk.log
 
 # The TV goes away: its adapter stops answering.
 cec-ctl -d "$tv" --clear >/dev/null 2>&1
