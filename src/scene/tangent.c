@@ -139,8 +139,10 @@ static int split_mirrored(struct mesh *m, const double *weight, uint32_t *twin)
 	}
 	if (!extra)
 		return 0;
+	/* Every per-vertex array grows with the twins, the colours too. */
 	if (grow(&m->positions, (size_t)(n + extra) * 3) ||
-	    grow(&m->normals, (size_t)(n + extra) * 3) || grow(&m->uvs, (size_t)(n + extra) * 2))
+	    grow(&m->normals, (size_t)(n + extra) * 3) || grow(&m->uvs, (size_t)(n + extra) * 2) ||
+	    (m->colors && grow(&m->colors, (size_t)(n + extra) * 4)))
 		return -ENOMEM;
 	for (uint32_t v = 0; v < n; v++)
 		if (twin[v] != NO_TWIN) {
@@ -148,6 +150,9 @@ static int split_mirrored(struct mesh *m, const double *weight, uint32_t *twin)
 			       12);
 			memcpy(m->normals + (size_t)twin[v] * 3, m->normals + (size_t)v * 3, 12);
 			memcpy(m->uvs + (size_t)twin[v] * 2, m->uvs + (size_t)v * 2, 8);
+			if (m->colors)
+				memcpy(m->colors + (size_t)twin[v] * 4, m->colors + (size_t)v * 4,
+				       16);
 		}
 	m->vertex_count = n + extra;
 	return 0;

@@ -89,6 +89,33 @@ static void mirrored_uvs_split_the_seam(void **state)
 	mesh_release(&m);
 }
 
+/* The same seam on a coloured mesh: the twins carry their originals'
+ * colours, and the colour array has room for them (ASan reads past it
+ * otherwise). */
+static void mirrored_twins_keep_their_colours(void **state)
+{
+	static const float pos[] = {-1, 0, 0, 0, 0, 0, 1, 0, 0, -1, 1, 0, 0, 1, 0, 1, 1, 0};
+	static const float uv[] = {1, 1, 0, 1, 1, 1, 1, 0, 0, 0, 1, 0};
+	static const uint32_t idx[] = {0, 1, 4, 0, 4, 3, 1, 2, 5, 1, 5, 4};
+	struct mesh m;
+
+	(void)state;
+	make_mesh(&m, pos, uv, 6, idx, 12);
+	assert_int_equal(mesh_alloc_colors(&m), 0);
+	for (uint32_t i = 0; i < 6 * 4; i++)
+		m.colors[i] = (float)i / 32.0f;
+	assert_int_equal(tangent_generate(&m), 0);
+	assert_int_equal(m.vertex_count, 8);
+	for (uint32_t t = 0; t < 4; t++)
+		for (int k = 0; k < 3; k++) {
+			const float *got = m.colors + m.indices[t * 3 + k] * 4;
+
+			for (int c = 0; c < 4; c++)
+				assert_true(got[c] == (float)(idx[t * 3 + k] * 4 + c) / 32.0f);
+		}
+	mesh_release(&m);
+}
+
 /* Zero-area triangles (collinear, collapsed to a point), collapsed UVs, a
  * NaN UV: every frame is still finite. */
 static void degenerate_input_stays_finite(void **state)
@@ -235,6 +262,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(quad_is_right_handed),
 	    cmocka_unit_test(mirrored_uvs_split_the_seam),
+	    cmocka_unit_test(mirrored_twins_keep_their_colours),
 	    cmocka_unit_test(degenerate_input_stays_finite),
 	    cmocka_unit_test(mirror_seam_wrap_seam_and_slivers),
 	    cmocka_unit_test(shared_apex_gets_a_frame),
