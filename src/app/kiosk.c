@@ -543,8 +543,9 @@ static void service_status(struct kiosk *k, const struct pollfd *fds)
 {
 	const struct app_state *st = app_state(k->app);
 	struct image frame = {0};
+	char last_error[1024];
 	struct status_report r = {
-	    .model = k->applied.content.model,
+	    .model = k->scene->model_path,
 	    .matcap = k->scene->set ? matcap_set_path(k->scene->set, st->matcap) : NULL,
 	    .mode = shading_mode_name(st->mode),
 	    .view = {st->orientation.x, st->orientation.y, st->orientation.z, st->orientation.w},
@@ -552,12 +553,14 @@ static void service_status(struct kiosk *k, const struct pollfd *fds)
 	    .camera_on = st->camera_on,
 	    .uptime_s = (double)(monotonic_ns() - k->started_ns) / 1e9,
 	    .frames_drawn = k->frames_drawn,
-	    .last_error = log_last_error()};
+	    .last_error = last_error};
 	bool have;
 
 	if (!(fds[FD_STATUS].revents & POLLIN) || !status_server_accept(k->status))
 		return;
-	have = k->frames_drawn > 0 && k->display->read_frame(k->display, &frame) == 0;
+	log_last_error(last_error, sizeof(last_error));
+	have = k->frames_drawn > 0 && status_server_wants_frame(k->status) &&
+	       k->display->read_frame(k->display, &frame) == 0;
 	status_server_answer(k->status, &r, have ? &frame : NULL);
 	image_release(&frame);
 }

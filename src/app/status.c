@@ -1,4 +1,5 @@
 #include "app/status.h"
+#include "util/clock.h"
 #include "util/log.h"
 
 #include <errno.h>
@@ -16,10 +17,16 @@
 #define STATUS_STATE  "state.json"
 #define STATUS_MAX    4096 /* the JSON, with paths and an error line */
 
+/* A frame is read back and encoded at most this often: a client asking in
+ * a loop gets the last one again instead of stalling the animation. */
+#define FRAME_EVERY_NS 1000000000ull
+
 struct status_server {
 	char dir[96];
 	int listen_fd;
-	int client_fd; /* taken, not answered yet; -1: none */
+	int client_fd;		/* taken, not answered yet; -1: none */
+	uint64_t frame_ns;	/* when frame.png was last written; 0: never */
+	uint64_t deaf_until_ns; /* accept failed (no fd left): not polled till then */
 };
 
 /* systemd's RuntimeDirectory= with several folders lists them with ':';
@@ -70,7 +77,10 @@ static int listen_at(const struct sockaddr_un *a)
 	fd = socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC | SOCK_NONBLOCK, 0);
 	if (fd < 0)
 		return -errno;
-	if (bind(fd, (const struct sockaddr *)a, sizeof(*a)) || listen(fd, 4)) {
+	/* The service user's alone (root reaches it too): the state and the
+	 * frame show what is on a shop's screen. */
+	if (bind(fd, (const struct sockaddr *)a, sizeof(*a)) || chmod(a->sun_path, 0600) ||
+	    listen(fd, 4)) {
 		int err = -errno;
 
 		close(fd);
@@ -118,16 +128,28 @@ void status_server_free(struct status_server *s)
 
 int status_server_fd(const struct status_server *s)
 {
-	return s ? s->listen_fd : -1;
+	return s && monotonic_ns() >= s->deaf_until_ns ? s->listen_fd : -1;
 }
 
+/* Out of descriptors, the waiting client stays in the queue and the fd
+ * stays readable: poll would spin, so the socket is left alone a second. */
 bool status_server_accept(struct status_server *s)
 {
 	if (!s)
 		return false;
 	if (s->client_fd < 0)
 		s->client_fd = accept4(s->listen_fd, NULL, NULL, SOCK_CLOEXEC);
+	if (s->client_fd < 0 && errno != EAGAIN && errno != EINTR) {
+		log_warn("status: cannot take a client: %s; trying again in a second",
+			 strerror(errno));
+		s->deaf_until_ns = monotonic_ns() + 1000000000ull;
+	}
 	return s->client_fd >= 0;
+}
+
+bool status_server_wants_frame(const struct status_server *s)
+{
+	return s && (!s->frame_ns || monotonic_ns() - s->frame_ns >= FRAME_EVERY_NS);
 }
 
 /* A JSON string: quotes, backslashes and control characters escaped. */
@@ -184,7 +206,7 @@ static int write_png(const char *dir, const struct image *frame, char *path, siz
 	snprintf(path, n, "%s/%s", dir, STATUS_FRAME);
 	snprintf(tmp, sizeof(tmp), "%s/.%s.tmp", dir, STATUS_FRAME);
 	ret = image_write_png(tmp, frame);
-	if (!ret && rename(tmp, path))
+	if (!ret && (chmod(tmp, 0600) || rename(tmp, path)))
 		ret = -errno;
 	if (ret)
 		unlink(tmp);
@@ -203,7 +225,7 @@ static int write_state(const char *dir, const char *json, char *path, size_t n)
 	if (!f)
 		return -errno;
 	fputs(json, f);
-	if (fclose(f) || rename(tmp, path)) {
+	if (fclose(f) || chmod(tmp, 0600) || rename(tmp, path)) {
 		ret = -errno;
 		unlink(tmp);
 	}
@@ -231,19 +253,30 @@ void status_server_answer(struct status_server *s, const struct status_report *r
 			  const struct image *frame)
 {
 	char frame_path[160], state_path[160];
-	bool have_frame = frame && write_png(s->dir, frame, frame_path, sizeof(frame_path)) == 0;
+	bool have_frame = false;
 	char *json;
+	ssize_t sent;
 
+	snprintf(frame_path, sizeof(frame_path), "%s/%s", s->dir, STATUS_FRAME);
+	if (frame && write_png(s->dir, frame, frame_path, sizeof(frame_path)) == 0)
+		s->frame_ns = monotonic_ns(), have_frame = true;
+	else if (!frame && s->frame_ns) /* asked again within a second: the last one */
+		have_frame = access(frame_path, R_OK) == 0;
 	snprintf(state_path, sizeof(state_path), "%s/%s", s->dir, STATUS_STATE);
 	json = report_text(r, have_frame ? frame_path : NULL, state_path);
-	if (json && write_state(s->dir, json, state_path, sizeof(state_path)) == 0) {
-		/* The client waits for it; one that left is not waited for. */
-		if (send(s->client_fd, json, strlen(json), MSG_NOSIGNAL | MSG_DONTWAIT) < 0)
-			log_debug("status: the client left: %s", strerror(errno));
+	if (!json) {
+		log_err("status: no memory for the report");
+	} else if (write_state(s->dir, json, state_path, sizeof(state_path)) == 0) {
+		/* The client waits for it; one that left or reads nothing is
+		 * not waited for (the answer fits the socket's buffer). */
+		sent = send(s->client_fd, json, strlen(json), MSG_NOSIGNAL | MSG_DONTWAIT);
+		if (sent != (ssize_t)strlen(json))
+			log_debug("status: the client took %zd of %zu bytes", sent, strlen(json));
 		log_info("status: wrote %s%s%s", state_path, have_frame ? " and " : "",
 			 have_frame ? frame_path : "");
 	} else {
-		log_err("status: cannot write %s: %s", state_path, strerror(errno));
+		log_err("status: cannot write %s: %s (expected a writable runtime folder)",
+			state_path, strerror(errno));
 	}
 	free(json);
 	close(s->client_fd);

@@ -37,7 +37,10 @@ int status_server_fd(const struct status_server *s);
 /* A client waits (the fd was readable): take it. Returns true when there
  * is one to answer. */
 bool status_server_accept(struct status_server *s);
-/* Write the files and answer the client taken. frame NULL: none to read. */
+/* Whether a frame should be read back for this answer: at most one a
+ * second; in between the answer names the last one written. */
+bool status_server_wants_frame(const struct status_server *s);
+/* Write the files and answer the client taken. frame NULL: none read. */
 void status_server_answer(struct status_server *s, const struct status_report *r,
 			  const struct image *frame);
 /* The client: ask the running kiosk and print its answer to out.

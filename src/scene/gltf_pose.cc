@@ -312,8 +312,9 @@ bool choose_scene(const tinygltf::Model &m, const char *want, const char *settin
 			std::string names;
 			for (const tinygltf::Scene &s : m.scenes)
 				if (!s.name.empty())
-					names += (names.empty() ? ": \"" : ", \"") + s.name + "\"";
-			*err = "scenes: no scene \"" + std::string(want) + "\"" +
+					names += (names.empty() ? ": \"" : ", \"") +
+						 gltf_ext::escape(s.name) + "\"";
+			*err = "scenes: no scene \"" + gltf_ext::escape(want) + "\"" +
 			       (setting ? " (" + std::string(setting) + ")" : "") +
 			       ", expected an index below " + std::to_string(m.scenes.size()) +
 			       " or a scene's name" + names;

@@ -1,5 +1,6 @@
 #include "util/log.h"
 
+#include <pthread.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -8,8 +9,10 @@
  * is pure (it reads the environment each time), so no other state is kept. */
 static enum log_level max_level = LOG_INFO;
 /* The last error line, for the kiosk's status report (--status): the one
- * other thing kept, as the level is, for the whole process. */
+ * other thing kept, as the level is, for the whole process. The model
+ * loader's thread logs too: a lock, and the reader gets a copy. */
 static char last_error[1024];
+static pthread_mutex_t last_error_lock = PTHREAD_MUTEX_INITIALIZER;
 
 const enum log_level log_levels[LOG_LEVELS] = {LOG_ERR, LOG_WARN, LOG_INFO, LOG_DEBUG};
 const char *const log_level_names[LOG_LEVELS + 1] = {"error", "warning", "info", "debug", NULL};
@@ -46,8 +49,11 @@ void log_msg(enum log_level level, const char *fmt, ...)
 	va_start(ap, fmt);
 	vsnprintf(line, sizeof(line), fmt, ap);
 	va_end(ap);
-	if (level == LOG_ERR)
+	if (level == LOG_ERR) {
+		pthread_mutex_lock(&last_error_lock);
 		snprintf(last_error, sizeof(last_error), "%s", line);
+		pthread_mutex_unlock(&last_error_lock);
+	}
 	/* systemd sets JOURNAL_STREAM when stderr goes to the journal: then
 	 * the <N> prefix carries the priority and the name is added by it. */
 	if (getenv("JOURNAL_STREAM"))
@@ -56,7 +62,9 @@ void log_msg(enum log_level level, const char *fmt, ...)
 		fprintf(stderr, "matcap-kiosk: %s%s\n", level_word(level), line);
 }
 
-const char *log_last_error(void)
+void log_last_error(char *buf, size_t size)
 {
-	return last_error;
+	pthread_mutex_lock(&last_error_lock);
+	snprintf(buf, size, "%s", last_error);
+	pthread_mutex_unlock(&last_error_lock);
 }

@@ -3,6 +3,8 @@
 #ifndef MK_LOG_H
 #define MK_LOG_H
 
+#include <stddef.h>
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -19,8 +21,8 @@ extern const char *const log_level_names[LOG_LEVELS + 1];
 void log_set_level(enum log_level max);
 /* For a helper process, which is told the level on its command line. */
 enum log_level log_get_level(void);
-/* The last error logged, or "" when none was. */
-const char *log_last_error(void);
+/* A copy of the last error logged into buf, or "" when none was. */
+void log_last_error(char *buf, size_t size);
 void log_msg(enum log_level level, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 #define log_err(...)   log_msg(LOG_ERR, __VA_ARGS__)

@@ -122,7 +122,19 @@ static void test_frame(void **state)
 	snprintf(path, sizeof(path), "%s/frame.png", dir);
 	assert_int_equal(stat(path, &st), 0);
 	assert_true(st.st_size > 0);
+	assert_int_equal(st.st_mode & 0777, 0600); /* a shop's screen: ours alone */
 	assert_non_null(strstr(buf, path));
+	snprintf(path, sizeof(path), "%s/status.sock", dir);
+	assert_int_equal(stat(path, &st), 0);
+	assert_int_equal(st.st_mode & 0777, 0600);
+	/* Asked again within a second: no frame read back, the last one named. */
+	assert_false(status_server_wants_frame(s));
+	fd = connect_socket();
+	assert_true(fd >= 0 && status_server_accept(s));
+	status_server_answer(s, &r, NULL);
+	read_all(fd, buf, sizeof(buf));
+	close(fd);
+	assert_non_null(strstr(buf, "frame.png"));
 	image_release(&img);
 	status_server_free(s);
 }
