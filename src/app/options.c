@@ -241,6 +241,19 @@ enum options_status options_read_file(struct options *o, const char *path)
 	ret = inc ? read_path(o, inc) : OPTIONS_CONFIG;
 	free(o->include);
 	o->include = inc;
+	if (ret == OPTIONS_CONFIG && inc) {
+		/* A stick's settings that do not read (a key a later version
+		 * renamed, a broken file) must not keep the kiosk down: the
+		 * installed file alone, as if nothing were included. path is
+		 * the caller's, never one of o's strings. */
+		log_err("%s: ignored, for the error above; the settings of %s alone are used", inc,
+			path);
+		options_release(o);
+		option_defaults(o);
+		ret = read_path(o, path);
+		free(o->include);
+		o->include = NULL;
+	}
 	return ret;
 }
 

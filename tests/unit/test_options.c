@@ -412,18 +412,48 @@ static void include_file(void **state)
 	unlink(third);
 }
 
+/* An included file that does not read leaves the installed settings alone
+ * in force: the kiosk starts, and the include is not followed. */
+static void broken_include_is_ignored(void **state)
+{
+	char bad[64], text[160];
+	const char *argv[] = {"matcap-kiosk", "--config", NULL};
+	struct options o;
+
+	(void)state;
+	snprintf(bad, sizeof(bad), "%s", write_ini("[scene]\nmode = sideways\nyaw = 90\n"));
+	snprintf(text, sizeof(text), "[scene]\nmode = normal\nyaw = 30\n[kiosk]\ninclude = %s\n",
+		 bad);
+	argv[2] = write_ini(text);
+	assert_int_equal(parse(&o, 3, argv), OPTIONS_OK);
+	assert_int_equal(o.content.mode, SHADING_NORMAL);
+	assert_true(fabs(o.content.yaw - 30) < 1e-9);
+	assert_null(o.include);
+	options_release(&o);
+	unlink(argv[2]);
+	unlink(bad);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
-	    cmocka_unit_test(defaults),		  cmocka_unit_test(full_line),
-	    cmocka_unit_test(rejects_bad_values), cmocka_unit_test(config_file_then_command_line),
-	    cmocka_unit_test(config_errors),	  cmocka_unit_test(power_settings),
-	    cmocka_unit_test(indented_lines),	  cmocka_unit_test(shipped_example_parses),
-	    cmocka_unit_test(table_is_full),	  cmocka_unit_test(sections_into_module_configs),
-	    cmocka_unit_test(module_defaults),	  cmocka_unit_test(copy_is_deep),
-	    cmocka_unit_test(reload_table),	  cmocka_unit_test(reload_reopens_what_changed),
+	    cmocka_unit_test(defaults),
+	    cmocka_unit_test(full_line),
+	    cmocka_unit_test(rejects_bad_values),
+	    cmocka_unit_test(config_file_then_command_line),
+	    cmocka_unit_test(config_errors),
+	    cmocka_unit_test(power_settings),
+	    cmocka_unit_test(indented_lines),
+	    cmocka_unit_test(shipped_example_parses),
+	    cmocka_unit_test(table_is_full),
+	    cmocka_unit_test(sections_into_module_configs),
+	    cmocka_unit_test(module_defaults),
+	    cmocka_unit_test(copy_is_deep),
+	    cmocka_unit_test(reload_table),
+	    cmocka_unit_test(reload_reopens_what_changed),
 	    cmocka_unit_test(attract_settings),
 	    cmocka_unit_test(include_file),
+	    cmocka_unit_test(broken_include_is_ignored),
 	};
 	return cmocka_run_group_tests_name("options", tests, NULL, NULL);
 }
