@@ -179,6 +179,18 @@ test_ortho() {
 # Loader variants that must work from the command line.
 test_loaders() {
 	need_models
+	# A folder whose only model is broken shows the built-in knot and is
+	# still watched: a model moved in later is shown.
+	check "a folder with no good model: the knot, then a model moved in" sh -c "
+		rm -rf $out/late && mkdir -p $out/late && cp $out/models/bad-index.glb $out/late/a.glb
+		$KIOSK --backend egl-headless --size 64x64 --keyboard none --camera off \
+			--attract-after 0 --model $out/late >$out/late.log 2>&1 & pid=\$!
+		i=0; until grep -q 'models: 1, showing the built-in knot' $out/late.log ||
+			[ \$i -gt 100 ]; do sleep 0.1; i=\$((i + 1)); done
+		cp $out/models/sphere.glb $out/late/.b && mv $out/late/.b $out/late/b.glb
+		i=0; until grep -q 'model 2 of 2: $out/late/b.glb' $out/late.log ||
+			[ \$i -gt 100 ]; do sleep 0.1; i=\$((i + 1)); done
+		kill -TERM \$pid; wait \$pid && grep -q 'model 2 of 2: $out/late/b.glb' $out/late.log"
 	for f in sphere-nonormals.gltf sphere-datauri.gltf; do
 		check "loads $f" "$KIOSK" -q --backend $offscreen --size 64x64 --model "$out/models/$f" \
 			--output "$out/render/$f.png"

@@ -53,7 +53,9 @@ struct kiosk_models *kiosk_models_new(const struct kiosk_models_parts *parts, ui
 	struct kiosk_models *m;
 
 	(void)now_ns;
-	if (!parts->options->content.model || !parts->scene->model_path)
+	/* The built-in knot shown because the model failed: the list is
+	 * still watched, so the file fixed or copied in is shown. */
+	if (!parts->options->content.model)
 		return NULL;
 	m = calloc(1, sizeof(*m));
 	if (!m)
@@ -71,7 +73,8 @@ struct kiosk_models *kiosk_models_new(const struct kiosk_models_parts *parts, ui
 	watch_models(m);
 	tell_app(m, m->shown);
 	m->asked = app_state(m->p.app)->model;
-	log_info("models: %d, showing %s", model_list_count(m->list), parts->scene->model_path);
+	log_info("models: %d, showing %s", model_list_count(m->list),
+		 parts->scene->model_path ? parts->scene->model_path : "the built-in knot");
 	return m;
 }
 
