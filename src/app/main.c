@@ -233,8 +233,10 @@ static int show_poster(const struct options *o, struct display *d)
 	if (o->poster && *o->poster && !have)
 		log_warn("[display] poster %s does not load: the background instead", o->poster);
 	if (d->begin_frame(d) == 0) {
-		poster_draw(&d->gl, have ? &img : NULL, d->width, d->height, o->content.rotation,
-			    v.background);
+		if (poster_draw(&d->gl, have ? &img : NULL, d->width, d->height,
+				o->content.rotation, v.background))
+			log_warn("[display] poster %s cannot be drawn: the background instead",
+				 o->poster);
 		if (d->present(d) == 0 && ++shown)
 			log_info("poster: %s on the screen while the model loads",
 				 have ? o->poster : "the background");

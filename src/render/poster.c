@@ -1,5 +1,7 @@
 #include "render/poster.h"
 #include "render/shader.h"
+#include "scene/texture.h"
+#include "util/log.h"
 
 #include <errno.h>
 #include <math.h>
@@ -58,6 +60,26 @@ static void draw_image(const struct gl *gl, GLuint program, const struct image *
 	gl->DeleteTextures(1, &tex);
 }
 
+/* A photo larger than the GPU's textures (2048 on a Pi 3, 4096 on a Pi 4)
+ * would upload nothing and show black: scaled down to fit, into small. */
+static int fit_texture_size(const struct gl *gl, const struct image **img, struct image *small)
+{
+	GLint max = 0;
+	double s;
+	int ret;
+
+	gl->GetIntegerv(GL_MAX_TEXTURE_SIZE, &max);
+	if (max <= 0 || ((*img)->width <= max && (*img)->height <= max))
+		return 0;
+	s = fmin((double)max / (*img)->width, (double)max / (*img)->height);
+	log_info("poster: %dx%d is larger than this GPU's textures (%d): drawn scaled down",
+		 (*img)->width, (*img)->height, max);
+	ret = texture_resample(*img, (int)((*img)->width * s), (int)((*img)->height * s), small);
+	if (!ret)
+		*img = small;
+	return ret;
+}
+
 int poster_draw(const struct gl *gl, const struct image *img, int width, int height, int rotation,
 		const float background[3])
 {
@@ -65,6 +87,7 @@ int poster_draw(const struct gl *gl, const struct image *img, int width, int hei
 				    .vertex = {"poster.vert"},
 				    .fragment = {"poster.frag"},
 				    .attributes = {[SHADER_ATTR_POSITION] = "a_position"}};
+	struct image small = {0};
 	GLuint program = 0;
 	int ret = 0;
 
@@ -75,10 +98,15 @@ int poster_draw(const struct gl *gl, const struct image *img, int width, int hei
 		return 0;
 	gl->Disable(GL_DEPTH_TEST);
 	gl->Disable(GL_CULL_FACE);
-	ret = shader_program_build(gl, &src, &program);
+	ret = fit_texture_size(gl, &img, &small);
+	if (!ret)
+		ret = shader_program_build(gl, &src, &program);
 	if (!ret)
 		draw_image(gl, program, img, width, height, rotation);
+	if (!ret && gl->GetError() != GL_NO_ERROR)
+		ret = -EIO;
 	if (program)
 		gl->DeleteProgram(program);
+	image_release(&small);
 	return ret;
 }
