@@ -35,17 +35,14 @@ function fitTransform(root) {
 
 	root.updateMatrixWorld(true);
 	root.traverse((o) => { if (o.isMesh) meshes.push(o); });
-	for (const m of meshes) {
-		const p = m.geometry.attributes.position;
-		for (let i = 0; i < p.count; i++)
-			box.expandByPoint(v.fromBufferAttribute(p, i).applyMatrix4(m.matrixWorld));
-	}
+	// getVertexPosition: as drawn, skinned and morphed.
+	for (const m of meshes)
+		for (let i = 0; i < m.geometry.attributes.position.count; i++)
+			box.expandByPoint(m.getVertexPosition(i, v).applyMatrix4(m.matrixWorld));
 	const c = box.getCenter(new THREE.Vector3());
-	for (const m of meshes) {
-		const p = m.geometry.attributes.position;
-		for (let i = 0; i < p.count; i++)
-			r2 = Math.max(r2, v.fromBufferAttribute(p, i).applyMatrix4(m.matrixWorld).distanceToSquared(c));
-	}
+	for (const m of meshes)
+		for (let i = 0; i < m.geometry.attributes.position.count; i++)
+			r2 = Math.max(r2, m.getVertexPosition(i, v).applyMatrix4(m.matrixWorld).distanceToSquared(c));
 	const s = r2 > 0 ? 1 / Math.sqrt(r2) : 1;
 	const fit = new THREE.Group();
 	fit.scale.setScalar(s);
