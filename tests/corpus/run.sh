@@ -80,6 +80,7 @@ grep -v '^#' "$here/expected.txt" | while read -r result name words; do
 	case $name in
 	assimp:*) file=$assimp/${name#assimp:} ;;
 	khronos:*) file=$here/khronos/${name#khronos:} ;;
+	blender:*) file=$here/blender/${name#blender:} ;;
 	esac
 	if [ ! -f "$file" ]; then
 		echo "not ok $name is missing (make deps installs assimp-testmodels)"
@@ -108,7 +109,8 @@ refused=$(grep -c '^ok refuses' "$out/list.log")
 
 # 2. What gltfpack (quantized, meshopt, both compression levels, a .gltf
 #    with its .bin) and draco_transcoder make of a smooth and a flat knot,
-#    a skin and a morph target.
+#    a skin and a morph target; and Blender exports through
+#    draco_transcoder (Debian's Blender has no Draco library of its own).
 gen=$out/gen
 pack() { # SOURCE OUTPUT [OPTIONS]
 	src=$1 dst=$2
@@ -129,6 +131,8 @@ source_png knot "$models/knot.glb"
 source_png knot-flat "$models/knot-flat.glb"
 source_png skin "$skin"
 source_png morph "$morph"
+source_png blender-cube "$here/blender/cube-textured.glb"
+source_png blender-tube "$here/blender/tube-skinned.glb"
 pack "$models/knot.glb" knot-quantized.glb
 pack "$models/knot.glb" knot-noq.glb -noq
 pack "$models/knot.glb" knot-meshopt.glb -c
@@ -138,11 +142,17 @@ pack "$skin" skin-meshopt.glb -c
 pack "$morph" morph-quantized.glb
 draco "$models/knot.glb" knot-draco.glb
 draco "$models/knot-flat.glb" knot-flat-draco.glb
+draco "$here/blender/cube-textured.glb" blender-cube-draco.glb
+draco "$here/blender/tube-skinned.glb" blender-tube-draco.glb
 made=0
 for f in knot-quantized.glb knot-noq.glb knot-meshopt.glb knot-meshopt-cc.gltf knot-draco.glb \
-	knot-flat-meshopt.glb knot-flat-draco.glb skin-meshopt.glb morph-quantized.glb; do
+	knot-flat-meshopt.glb knot-flat-draco.glb skin-meshopt.glb morph-quantized.glb \
+	blender-cube-draco.glb blender-tube-draco.glb; do
 	src=${f%%-[a-z]*.gl*}
-	case $f in knot-flat-*) src=knot-flat ;; esac
+	case $f in
+	knot-flat-*) src=knot-flat ;;
+	blender-*) src=${f%-draco.glb} ;;
+	esac
 	like "made:$f" "$gen/$f" "$gen/$src.png"
 done >"$out/made.log"
 cat "$out/made.log"
