@@ -269,4 +269,6 @@ void gltf_read_material(const tinygltf::Model &m, int index, unsigned textures,
 		read_texture(m, thickness, thickness_coord, images, name,
 			     "iridescenceThicknessTexture", &out->thickness_map,
 			     out->images_decoded);
+	// For the bench; a model without a material decodes none and says nothing.
+	log_debug("%s: %u images decoded", name.c_str(), out->images_decoded);
 }

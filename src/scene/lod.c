@@ -377,6 +377,9 @@ out:
 		    "lod: %u -> %u triangles for %dx%d (%.0f of %.1f px wanted; error %.2f px)",
 		    r.triangles_before, r.triangles_after, width, height, r.wanted, pixels,
 		    r.error_pixels);
+	else
+		log_debug("lod: %u triangles kept for %dx%d (%.0f of %.1f px wanted)",
+			  r.triangles_before, width, height, r.wanted, pixels);
 	if (result)
 		*result = r;
 	free(idx);

@@ -16,25 +16,9 @@ models="knot-10k knot-100k knot-1m"
 mkdir -p "$out"
 "$TOOLS/mkmodels" "$out" --bench >/dev/null
 
-now_ns() { date +%s%N; }
-
-median() { tr ' ' '\n' | sed '/^$/d' | sort -n | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
-
-# run KIOSK MODEL CACHE: "wall_ms first_ms rss_kib setup_ms" of one
-# start; setup is the first frame less a frame's drawing (the median of
-# three): what the start costs beyond the picture the level of detail
-# decides (the 100k and 1M knots keep the same 35k triangles at 1280x720,
-# the 10k knot its 10k).
-run() {
-	t0=$(now_ns)
-	stats=$(XDG_CACHE_HOME=$3 /usr/bin/time -f "rss %M" "$1" -q -b osmesa --size 1280x720 \
-		--frames 3 --stats --model "$2" 2>&1)
-	t1=$(now_ns)
-	first=$(echo "$stats" | sed -n 's/.*first_frame_ms \([0-9.]*\).*/\1/p')
-	frame=$(echo "$stats" | sed -n 's/.*median_ms \([0-9.]*\).*/\1/p')
-	rss=$(echo "$stats" | sed -n 's/^rss //p')
-	echo "$(((t1 - t0) / 1000000)) $first $rss $(awk -v f="$first" -v d="$frame" 'BEGIN { print f - d }')"
-}
+. "$(dirname "$0")/startup_lib.sh"
+# The 100k and 1M knots keep the same 35k triangles at 1280x720, the 10k
+# knot its 10k: setup (startup_lib.sh) is what their starts cost beyond that.
 
 # measure: every variant (in $variants: label:cold|warm:kiosk) and model
 # takes its turn in each round, so that a change in the machine's load
@@ -58,9 +42,7 @@ measure() {
 		done
 	done
 	for f in "$out"/runs-*; do
-		echo "$(cut -d' ' -f1 "$f" | median)" "$(cut -d' ' -f2 "$f" | median)" \
-			"$(cut -d' ' -f3 "$f" | median)" "$(cut -d' ' -f4 "$f" | median)" \
-			>"$out/med-${f##*/runs-}"
+		medians "$f" >"$out/med-${f##*/runs-}"
 	done
 }
 

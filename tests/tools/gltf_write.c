@@ -31,7 +31,7 @@ static size_t pad4(size_t n)
 
 /* Where each part lies in the buffer. */
 struct layout {
-	size_t nrm, idx, uv, tan, col, img[4], img_len[4], size;
+	size_t nrm, idx, uv, tan, col, skin, img[4], img_len[4], size;
 	const char *img_path[4]; /* normal, occlusion, thickness, base: NULL when absent */
 };
 
@@ -80,6 +80,20 @@ static void put_color(const struct mesh *m, const struct gltf_write_opts *o, uin
 	}
 }
 
+/* Joints 0 and 1 (bytes) for every vertex, then weights (floats) that
+ * move from the first to the second along x, smoothly. */
+static void put_skin(const struct mesh *m, uint32_t v, unsigned char *skin)
+{
+	static const unsigned char joints[4] = {0, 1, 0, 0};
+	float t = (m->positions[v * 3] + 1.0f) / 2.0f, w[4] = {0, 0, 0, 0};
+
+	t = t < 0 ? 0 : t > 1 ? 1 : t;
+	w[1] = t * t * (3 - 2 * t);
+	w[0] = 1 - w[1];
+	memcpy(skin + (size_t)v * 4, joints, 4);
+	memcpy(skin + (size_t)m->vertex_count * 4 + (size_t)v * 16, w, 16);
+}
+
 /* positions | normals | indices | uvs | tangents | embedded images, each
  * padded to 4 bytes. */
 static unsigned char *pack(const struct mesh *m, const struct gltf_write_opts *o, struct layout *l)
@@ -99,7 +113,8 @@ static unsigned char *pack(const struct mesh *m, const struct gltf_write_opts *o
 	l->uv = pad4(l->idx + nidx);
 	l->tan = l->uv + (o->with_uvs ? 8 * (size_t)m->vertex_count : 0);
 	l->col = l->tan + (o->with_tangents ? 16 * (size_t)m->vertex_count : 0);
-	l->size = l->col + ncol;
+	l->skin = l->col + ncol;
+	l->size = l->skin + (o->skin_joints ? 20 * (size_t)m->vertex_count : 0);
 	for (int i = 0; i < 4; i++) {
 		l->img_len[i] = 0;
 		if (l->img_path[i] && o->embed_images)
@@ -118,6 +133,8 @@ static unsigned char *pack(const struct mesh *m, const struct gltf_write_opts *o
 			memcpy(buf + l->tan + v * 16, m->tangents + v * 4, 16);
 		if (o->color_type)
 			put_color(m, o, v, buf + l->col + v * (ncol / m->vertex_count));
+		if (o->skin_joints)
+			put_skin(m, v, buf + l->skin);
 	}
 	for (uint32_t i = 0; i < m->index_count && o->index_bytes; i++) {
 		uint32_t x = m->indices[i];
@@ -189,6 +206,20 @@ static void write_material(FILE *f, const struct gltf_write_opts *o, const struc
 	fprintf(f, "],");
 }
 
+/* The skin's views follow the images': their numbers stay as they were. */
+static void skin_accessors(FILE *f, const struct mesh *m, const struct gltf_write_opts *o,
+			   const struct layout *l)
+{
+	int view = 6;
+
+	for (int i = 0; i < 4; i++)
+		view += l->img_path[i] && o->embed_images;
+	fprintf(f,
+		",{\"bufferView\":%d,\"componentType\":5121,\"count\":%u,\"type\":\"VEC4\"}"
+		",{\"bufferView\":%d,\"componentType\":5126,\"count\":%u,\"type\":\"VEC4\"}",
+		view, m->vertex_count, view + 1, m->vertex_count);
+}
+
 static void write_json(FILE *f, const struct mesh *m, const struct gltf_write_opts *o,
 		       const struct layout *l, const char *uri)
 {
@@ -211,10 +242,15 @@ static void write_json(FILE *f, const struct mesh *m, const struct gltf_write_op
 		fprintf(f, ",\"TANGENT\":4");
 	if (o->color_type)
 		fprintf(f, ",\"COLOR_0\":5");
+	if (o->skin_joints)
+		fprintf(f, ",\"JOINTS_0\":%d,\"WEIGHTS_0\":%d", 5 + !!o->color_type,
+			6 + !!o->color_type);
 	fprintf(f, "}%s%s}]}],", o->index_bytes ? ",\"indices\":2" : "",
 		has_material(o) ? ",\"material\":0" : "");
 	if (has_material(o))
 		write_material(f, o, l);
+	if (o->skin_joints)
+		fprintf(f, "\"skins\":[{\"joints\":[%s]}],", o->skin_joints);
 	fprintf(f, "\"buffers\":[{\"byteLength\":%zu%s%s%s}],", l->size, uri ? ",\"uri\":\"" : "",
 		uri ? uri : "", uri ? "\"" : "");
 	fprintf(f, "\"bufferViews\":[{\"buffer\":0,\"byteOffset\":0,\"byteLength\":%zu", l->nrm);
@@ -239,6 +275,12 @@ static void write_json(FILE *f, const struct mesh *m, const struct gltf_write_op
 		if (l->img_path[i] && o->embed_images)
 			fprintf(f, ",{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu}",
 				l->img[i], l->img_len[i]);
+	if (o->skin_joints)
+		fprintf(f,
+			",{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu}"
+			",{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu}",
+			l->skin, (size_t)m->vertex_count * 4, l->skin + (size_t)m->vertex_count * 4,
+			(size_t)m->vertex_count * 16);
 	fprintf(f, "],");
 	fprintf(f,
 		"\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":%ld,"
@@ -259,6 +301,8 @@ static void write_json(FILE *f, const struct mesh *m, const struct gltf_write_op
 		    f, ",{\"bufferView\":5,\"componentType\":%d,\"count\":%u,\"type\":\"VEC%d\"%s}",
 		    o->color_type, m->vertex_count, o->color_components,
 		    o->color_type == 5126 ? "" : ",\"normalized\":true");
+	if (o->skin_joints)
+		skin_accessors(f, m, o, l);
 	fprintf(f, "]}");
 }
 

@@ -41,6 +41,10 @@ struct gltf_write_opts {
 	/* More nodes after the mesh's (JSON members of the array), and the
 	 * scenes in place of the one scene (JSON: the array's members). */
 	const char *extra_nodes, *scenes;
+	/* A skin of these joints (JSON: node indices, two of them), with
+	 * JOINTS_0 and WEIGHTS_0 that blend from the first joint at x = -1 to
+	 * the second at x = 1; the mesh's node names it in node. */
+	const char *skin_joints;
 };
 
 /* Writes path (and, for GLTF_EXTERNAL_BIN, path with .bin for .gltf).

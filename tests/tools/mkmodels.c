@@ -2,11 +2,13 @@
  *   mkmodels DIR          sphere, loader variants, the malformed set, the
  *                         corpus test's torus knots, and the material maps
  *                         and models
- *   mkmodels DIR --bench  also torus knots of about 10k, 100k and 1M triangles */
+ *   mkmodels DIR --bench  also torus knots of about 10k, 100k and 1M triangles,
+ *                         and the 100k one textured, skinned and flat-shaded */
 #include "gltf_write.h"
 #include "maps.h"
 #include "scene/mesh.h"
 #include "scene/tangent.h"
+#include "util/image.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -157,6 +159,100 @@ static int write_corpus(const char *dir)
 	return bad;
 }
 
+/* A texel's hash, for a little noise: real textures are photographs and
+ * paintings, and their PNGs do not shrink to nothing. */
+static double grain(int x, int y)
+{
+	uint32_t h = (uint32_t)x * 73856093u ^ (uint32_t)y * 19349663u;
+
+	h ^= h >> 13;
+	h *= 0x5bd1e995u;
+	h ^= h >> 15;
+	return (h & 255) / 255.0 - 0.5;
+}
+
+/* The textured bench model's maps, BENCH_MAP_SIDE square: base colour
+ * waves, a normal map of ripples and an occlusion map, each with grain. */
+#define BENCH_MAP_SIDE 2048
+static int write_bench_maps(const char *dir)
+{
+	static const char *const names[3] = {"bench-base.png", "bench-normal.png",
+					     "bench-occlusion.png"};
+	struct image img[3];
+	char path[4096];
+	int bad = 0;
+
+	for (int i = 0; i < 3; i++)
+		if (image_alloc(&img[i], BENCH_MAP_SIDE, BENCH_MAP_SIDE))
+			return 1;
+	for (int y = 0; y < BENCH_MAP_SIDE; y++)
+		for (int x = 0; x < BENCH_MAP_SIDE; x++) {
+			size_t at = ((size_t)y * BENCH_MAP_SIDE + (size_t)x) * 4;
+			double u = (x + 0.5) / BENCH_MAP_SIDE, v = (y + 0.5) / BENCH_MAP_SIDE;
+			double g = grain(x, y) * 0.06, nx = 0.3 * cos(2 * M_PI * 24 * u);
+			double ny = 0.3 * sin(2 * M_PI * 6 * v), nz = sqrt(1 - nx * nx - ny * ny);
+			double c[3][3] = {{0.55 + 0.4 * cos(2 * M_PI * u),
+					   0.55 + 0.4 * sin(2 * M_PI * (u + 2 * v)),
+					   0.5 + 0.35 * cos(2 * M_PI * 3 * v)},
+					  {nx * 0.5 + 0.5, ny * 0.5 + 0.5, nz * 0.5 + 0.5},
+					  {0.7 + 0.3 * (nx / 0.3) * (ny / 0.3)}};
+
+			c[2][1] = c[2][2] = c[2][0];
+			for (int i = 0; i < 3; i++) {
+				for (int k = 0; k < 3; k++) {
+					double t = fmin(fmax(c[i][k] + g, 0.0), 1.0);
+
+					img[i].rgba[at + (size_t)k] =
+					    (unsigned char)lround(t * 255);
+				}
+				img[i].rgba[at + 3] = 255;
+			}
+		}
+	for (int i = 0; i < 3; i++) {
+		snprintf(path, sizeof(path), "%s/%s", dir, names[i]);
+		if (image_write_png(path, &img[i]))
+			bad = 1, fprintf(stderr, "mkmodels: cannot write %s\n", path);
+		image_release(&img[i]);
+	}
+	return bad;
+}
+
+/* The 100k knot in the forms tests/bench/bench_gltf.sh compares: with
+ * base colour, normal and occlusion maps of BENCH_MAP_SIDE in its
+ * buffer; skinned, two joints bending it; flat-shaded, every edge a
+ * seam, for the level of detail. */
+static int write_bench_forms(const char *dir, const struct mesh *k)
+{
+	struct gltf_write_opts o = {
+	    .index_bytes = 4, .with_normals = 1, .bad_index = -1, .with_uvs = 1};
+	char base[4096], normal[4096], occlusion[4096];
+	struct mesh flat;
+	int bad = write_bench_maps(dir);
+
+	snprintf(base, sizeof(base), "%s/bench-base.png", dir);
+	snprintf(normal, sizeof(normal), "%s/bench-normal.png", dir);
+	snprintf(occlusion, sizeof(occlusion), "%s/bench-occlusion.png", dir);
+	o.base_color_png = base;
+	o.normal_png = normal;
+	o.occlusion_png = occlusion;
+	o.embed_images = 1;
+	bad |= put(dir, "knot-100k-textured.glb", k, o);
+	o.base_color_png = o.normal_png = o.occlusion_png = NULL;
+	o.embed_images = 0;
+	o.node = "\"skin\":0";
+	o.extra_nodes = "{\"children\":[2]},{\"rotation\":[0,0,0.2588,0.9659]}";
+	o.scenes = "{\"nodes\":[0,1]}";
+	o.skin_joints = "1,2";
+	bad |= put(dir, "knot-100k-skinned.glb", k, o);
+	if (split_flat(k, &flat))
+		return 1;
+	o = (struct gltf_write_opts){
+	    .index_bytes = 4, .with_normals = 1, .bad_index = -1, .with_uvs = 1};
+	bad |= put(dir, "knot-100k-flat.glb", &flat, o);
+	mesh_release(&flat);
+	return bad;
+}
+
 static int write_bench(const char *dir)
 {
 	struct mesh k10, k100, k1m;
@@ -172,6 +268,7 @@ static int write_bench(const char *dir)
 	bad |= put(dir, "knot-10k.glb", &k10, o);
 	bad |= put(dir, "knot-100k.glb", &k100, o);
 	bad |= put(dir, "knot-1m.glb", &k1m, o);
+	bad |= write_bench_forms(dir, &k100);
 	printf("knot-100k.glb %u triangles, knot-1m.glb %u triangles\n", k100.index_count / 3,
 	       k1m.index_count / 3);
 	mesh_release(&k10);
