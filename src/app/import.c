@@ -292,6 +292,12 @@ static int read_stick_ini(struct import *im)
 		n = read(fd, im->ini + im->ini_size, IMPORT_MAX_INI + 1 - im->ini_size);
 		im->ini_size += n > 0 ? (size_t)n : 0;
 	}
+	/* Notepad's byte order mark: inih drops it at the start of a file
+	 * only, and the copy follows lines of ours. */
+	if (n >= 0 && im->ini_size >= 3 && !memcmp(im->ini, "\xef\xbb\xbf", 3)) {
+		im->ini_size -= 3;
+		memmove(im->ini, im->ini + 3, im->ini_size);
+	}
 	if (n < 0 || im->ini_size > IMPORT_MAX_INI) {
 		log_err("%s/kiosk.ini: %s", im->from,
 			n < 0 ? strerror(errno) : "it grew past 64 KiB while it was read");
@@ -349,16 +355,17 @@ static bool is_path_key(const char *key)
 }
 
 /* A path that leaves the folder it is read from: absolute, or with a ".."
- * part. */
-static bool path_escapes(const char *path)
+ * part; in each of a list's (a, b) paths. */
+static bool path_escapes(const char *value)
 {
-	const char *p = path;
+	for (const char *p = value; *p; p++) {
+		bool starts = p == value || strchr(", \t", p[-1]);
 
-	if (path[0] == '/')
-		return true;
-	for (; (p = strstr(p, "..")); p += 2)
-		if ((p == path || p[-1] == '/') && (p[2] == '\0' || p[2] == '/' || p[2] == ','))
+		if (*p == '/' && starts)
 			return true;
+		if (!strncmp(p, "..", 2) && (starts || p[-1] == '/') && strchr("/, \t", p[2]))
+			return true;
+	}
 	return false;
 }
 
@@ -366,6 +373,8 @@ static int on_stick_key(void *user, const char *section, const char *key, const 
 {
 	struct stick_scan *sc = user;
 
+	if (!*section)
+		return 1; /* a key before any [section]: the settings' check names it */
 	if (!stick_may_set(section, key)) {
 		log_err("%s/kiosk.ini:%d: [%s] %s cannot be set from a USB stick", sc->im->from,
 			sc->line, section, key);

@@ -143,6 +143,9 @@ step "... nor [kiosk] log_level (turn_* it may)" refused loglevel 78 \
 stick_with abspath
 printf '[scene]\nmatcap = /etc/passwd\n' >"$dir/abspath/matcap-kiosk/kiosk.ini"
 step "... nor an absolute path" refused abspath 78 "kiosk.ini:2: \[scene\] matcap = '/etc/passwd'"
+stick_with listpath
+printf '[scene]\nmodel = sphere.glb, /etc/passwd\n' >"$dir/listpath/matcap-kiosk/kiosk.ini"
+step "... also as the second of a list" refused listpath 78 "kiosk.ini:2: \[scene\] model = "
 stick_with dotdot
 printf '[material]\ndetail_map = a/../../x.png\n' >"$dir/dotdot/matcap-kiosk/kiosk.ini"
 step "... nor a path with .." refused dotdot 78 "kiosk.ini:2: \[material\] detail_map"
@@ -197,6 +200,11 @@ ln -s "$PWD/matcaps" "$dir/mlink/matcap-kiosk/matcaps"
 step "a matcaps/ that is a link is passed over" sh -c "[ $? -eq 0 ] &&
 	! test -e '$STATE_DIRECTORY/content/matcaps' &&
 	grep -q 'matcaps: not a folder (a link?): skipped' '$dir/mlink.err'"
+
+stick_with bom
+printf '\357\273\277[scene]\npitch = 10\n' >"$dir/bom/matcap-kiosk/kiosk.ini"
+step "a kiosk.ini with a byte order mark (Notepad's) is imported" \
+	"$kiosk" --config "$dir/kiosk.ini" --import "$dir/bom/matcap-kiosk"
 
 # Two partitions at once: one import after the other, each whole.
 for i in 1 2 3; do
