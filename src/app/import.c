@@ -513,17 +513,15 @@ static void state_dir(char *buf, size_t n)
 }
 
 /* One import at a time (two partitions, two sticks): the staging folder
- * and the swap are shared. The lock goes with the process. */
+ * and the swap are shared. The lock is on the state folder itself, so a
+ * refused stick leaves not even a lock file; it goes with the process. */
 static int lock_state(const char *state)
 {
-	char path[PATH_MAX];
-	int fd;
+	int fd = open(state, O_RDONLY | O_DIRECTORY | O_CLOEXEC), err = errno;
 
-	snprintf(path, sizeof(path), "%s/.import.lock", state);
-	fd = open(path, O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0644);
 	if (fd < 0) {
-		log_err("%s: cannot open: %s", path, strerror(errno));
-		return -errno;
+		log_err("%s: cannot open: %s", state, strerror(err));
+		return -err;
 	}
 	while (flock(fd, LOCK_EX) && errno == EINTR)
 		;
@@ -612,8 +610,9 @@ int import_run(const struct options *o)
 		return 0;
 	}
 	if (im.from_fd < 0) {
-		log_err("%s: not a folder to import (a link?): %s", im.from, strerror(errno));
-		return -errno;
+		ret = -errno;
+		log_err("%s: not a folder to import (a link?): %s", im.from, strerror(-ret));
+		return ret;
 	}
 	state_dir(state, sizeof(state));
 	snprintf(im.content, sizeof(im.content), "%s/content", state);

@@ -105,6 +105,11 @@ mkdir -p "$dir/broken/matcap-kiosk" "$dir/badini/matcap-kiosk" "$dir/empty/matca
 head -c 300 "$models/sphere.glb" >"$dir/broken/matcap-kiosk/sphere.glb"
 cp "$models/sphere.glb" "$dir/badini/matcap-kiosk/"
 cp "$dir/bad.ini" "$dir/badini/matcap-kiosk/kiosk.ini"
+mkdir -p "$dir/state0"
+STATE_DIRECTORY=$dir/state0 "$kiosk" --config "$dir/kiosk.ini" \
+	--import "$dir/broken/matcap-kiosk" 2>/dev/null
+step "a refused stick leaves an empty state folder empty (no lock file)" \
+	[ -z "$(ls -A "$dir/state0")" ]
 "$kiosk" --config "$dir/kiosk.ini" --import "$dir/broken/matcap-kiosk" 2>"$dir/broken.err"
 step "a stick with a broken model is refused" [ $? -ne 0 ]
 step "... with a line that names the file" grep -q "sphere.glb" "$dir/broken.err"
