@@ -7,24 +7,34 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <ftw.h>
+#include <ini.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
+#include <sys/file.h>
 #include <sys/stat.h>
+#include <sys/statvfs.h>
 #include <unistd.h>
 
-/* A larger file is not a model for a Pi: refused rather than filling the
- * card. */
-#define IMPORT_MAX_FILE (1024ll * 1024 * 1024)
+/* More than this is not content for a Pi: refused rather than filling
+ * the card. */
+#define IMPORT_MAX_TOTAL (2048ll * 1024 * 1024)
+/* A settings file, not a way to fill memory. */
+#define IMPORT_MAX_INI (64 * 1024)
 
 struct import {
 	const char *from;	  /* the stick's folder */
+	int from_fd;		  /* it, opened once (not through a link) */
 	char content[PATH_MAX];	  /* where the kiosk reads it */
 	char staging[PATH_MAX];	  /* the copy, until it is checked */
 	char model[NAME_MAX + 1]; /* the first .gltf/.glb by name; "" none */
+	char *ini;		  /* the stick's kiosk.ini, read once; NULL none */
+	size_t ini_size;
+	bool sets_model, sets_matcap; /* the stick's kiosk.ini names its own */
+	long long total, budget;      /* bytes copied, and the most allowed */
 	int files, matcaps;
-	bool ini;
 };
 
 static bool has_ext(const char *name, const char *const *exts)
@@ -41,46 +51,108 @@ static const char *const model_exts[] = {"gltf", "glb", NULL};
 static const char *const content_exts[] = {"gltf", "glb", "bin", "png", "jpg", "jpeg", NULL};
 static const char *const image_exts[] = {"png", "jpg", "jpeg", NULL};
 
-static int copy_fd(int in, int out)
+/* A name goes into the generated kiosk.ini (model = .../NAME): one that
+ * INI syntax would read otherwise (a comment, a key, a section, blanks
+ * trimmed), or a control character, is passed over. */
+static bool name_usable(const struct import *im, const char *name)
 {
-	char buf[65536];
-	ssize_t n;
+	size_t n = strlen(name);
+	bool ok = n && name[0] != ' ' && name[n - 1] != ' ';
+	char shown[NAME_MAX + 1];
 
-	while ((n = read(in, buf, sizeof(buf))) > 0)
-		if (write(out, buf, (size_t)n) != n)
-			return -EIO;
-	return n < 0 ? -errno : 0;
+	for (const unsigned char *p = (const unsigned char *)name; ok && *p; p++)
+		ok = *p >= 0x20 && *p != 0x7f && !strchr(";#=[]", *p);
+	if (ok)
+		return true;
+	/* Said with its control characters as '?', so the journal line is
+	 * one line. */
+	snprintf(shown, sizeof(shown), "%s", name);
+	for (char *c = shown; *c; c++)
+		*c = (unsigned char)*c < 0x20 || *c == 0x7f ? '?' : *c;
+	log_warn("%s/%s: a name with a control character, one of ;#=[] or a blank at an end "
+		 "cannot go into kiosk.ini: skipped",
+		 im->from, shown);
+	return false;
 }
 
-/* A link on the stick is not followed, nor anything but a plain file
- * copied: 1 (skipped, and said). */
-static int plain_file(int from_dir, const char *name)
+static int write_all(int fd, const char *buf, size_t n)
 {
-	struct stat st;
+	while (n) {
+		ssize_t w = write(fd, buf, n);
 
-	if (fstatat(from_dir, name, &st, AT_SYMLINK_NOFOLLOW) == 0 && S_ISREG(st.st_mode))
+		if (w < 0 && errno == EINTR)
+			continue;
+		if (w <= 0)
+			return w < 0 ? -errno : -EIO;
+		buf += w;
+		n -= (size_t)w;
+	}
+	return 0;
+}
+
+/* size bytes, the size the file had when it was counted: one that grows
+ * or shrinks meanwhile is refused (-ESTALE). */
+static int copy_fd(int in, int out, off_t size)
+{
+	char buf[65536];
+	ssize_t n = 1;
+	int ret = 0;
+
+	while (!ret && size > 0 && n > 0) {
+		n = read(in, buf, size < (off_t)sizeof(buf) ? (size_t)size : sizeof(buf));
+		if (n < 0)
+			ret = errno == EINTR ? 0 : -errno;
+		else if (n > 0)
+			ret = write_all(out, buf, (size_t)n);
+		size -= n > 0 ? n : 0;
+	}
+	if (!ret && (size > 0 || read(in, buf, 1) != 0))
+		ret = -ESTALE;
+	return ret;
+}
+
+/* A link, a device or a pipe on the stick is not a file to copy: 1
+ * (skipped, and said); else 0 with the file open in *fd, or -errno. */
+static int open_plain(const struct import *im, int dir, const char *name, int *fd, struct stat *st)
+{
+	*fd = openat(dir, name, O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+	if (*fd < 0 && errno != ELOOP && errno != ENXIO && errno != ENODEV)
+		return -errno;
+	if (*fd >= 0 && !fstat(*fd, st) && S_ISREG(st->st_mode))
 		return 0;
-	log_warn("%s: not a plain file: skipped", name);
+	if (*fd >= 0)
+		close(*fd);
+	*fd = -1;
+	log_warn("%s/%s: not a plain file: skipped", im->from, name);
 	return 1;
 }
 
-/* One file, under a temporary name, synced, then renamed. */
-static int copy_file(int from_dir, const char *name, const char *to_dir)
+/* Counted against the budget first; then under a temporary name, synced,
+ * renamed. */
+static int copy_file(struct import *im, int from_dir, const char *name, const char *to_dir)
 {
 	char tmp[PATH_MAX], dst[PATH_MAX];
 	struct stat st;
-	int in = openat(from_dir, name, O_RDONLY | O_NOFOLLOW | O_CLOEXEC), out = -1, ret = 0;
+	int in, out = -1, ret = open_plain(im, from_dir, name, &in, &st);
 
+	if (ret < 0)
+		log_err("%s/%s: cannot open: %s", im->from, name, strerror(-ret));
+	if (ret)
+		return ret;
 	snprintf(dst, sizeof(dst), "%s/%s", to_dir, name);
 	snprintf(tmp, sizeof(tmp), "%s/.%s.part", to_dir, name);
-	if (in < 0 || fstat(in, &st))
-		ret = -errno;
-	else if (!S_ISREG(st.st_mode) || st.st_size > IMPORT_MAX_FILE)
+	im->total += st.st_size;
+	if (im->total > im->budget) {
+		log_err("%s: the files come to more than %lld MiB, the most an import may take "
+			"(2 GiB, and 90 %% of the free space)",
+			im->from, im->budget >> 20);
 		ret = -EFBIG;
-	if (!ret && (out = open(tmp, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644)) < 0)
+		goto out;
+	}
+	if ((out = open(tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644)) < 0)
 		ret = -errno;
 	if (!ret)
-		ret = copy_fd(in, out);
+		ret = copy_fd(in, out, st.st_size);
 	if (!ret && fsync(out))
 		ret = -errno;
 	if (out >= 0 && close(out) && !ret)
@@ -89,10 +161,11 @@ static int copy_file(int from_dir, const char *name, const char *to_dir)
 		ret = -errno;
 	if (ret) {
 		unlink(tmp);
-		log_err("%s: cannot copy into %s: %s", name, to_dir, strerror(-ret));
+		log_err("%s/%s: cannot copy into %s: %s", im->from, name, to_dir,
+			ret == -ESTALE ? "it changed while it was copied" : strerror(-ret));
 	}
-	if (in >= 0)
-		close(in);
+out:
+	close(in);
 	return ret;
 }
 
@@ -107,69 +180,256 @@ static int sync_dir(const char *path)
 	return ret;
 }
 
-static int names_cmp(const struct dirent **a, const struct dirent **b)
+static int names_cmp(const void *a, const void *b)
 {
-	return strcmp((*a)->d_name, (*b)->d_name);
+	return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+/* The names in an open folder, sorted; hidden ones (a Mac's ._name)
+ * passed over. */
+static int list_folder(int fd, char ***names, size_t *n)
+{
+	int dup_fd = fcntl(fd, F_DUPFD_CLOEXEC, 0), ret = 0;
+	DIR *d = dup_fd >= 0 ? fdopendir(dup_fd) : NULL;
+	struct dirent *e;
+	char **grown;
+
+	if (!d) {
+		ret = -errno;
+		if (dup_fd >= 0)
+			close(dup_fd);
+		return ret;
+	}
+	rewinddir(d);
+	while (!ret && (e = readdir(d))) {
+		if (e->d_name[0] == '.')
+			continue;
+		if (!(grown = realloc(*names, (*n + 1) * sizeof(**names))))
+			ret = -ENOMEM;
+		else if (!(grown[*n] = strdup(e->d_name)))
+			ret = -ENOMEM;
+		*names = grown ? grown : *names;
+		*n += !ret;
+	}
+	closedir(d);
+	if (*names)
+		qsort(*names, *n, sizeof(**names), names_cmp);
+	return ret;
 }
 
 /* The files of one folder of the stick that exts allows, copied into to;
- * *count: how many. Hidden files (a Mac's ._name) are passed over. */
-static int copy_folder(struct import *im, const char *from, const char *to, const char *const *exts,
+ * *count: how many. */
+static int copy_folder(struct import *im, int fd, const char *to, const char *const *exts,
 		       int *count)
 {
-	struct dirent **names = NULL;
-	int n = scandir(from, &names, NULL, names_cmp), fd = -1, ret = 0;
+	char **names = NULL;
+	size_t n = 0;
+	int ret = list_folder(fd, &names, &n), r;
 
-	if (n < 0)
-		return errno == ENOENT ? 0 : -errno;
-	if ((fd = open(from, O_RDONLY | O_DIRECTORY | O_CLOEXEC)) < 0 || mkdir(to, 0755))
+	if (!ret && mkdir(to, 0755))
 		ret = -errno;
-	for (int i = 0; i < n; i++) {
-		const char *name = names[i]->d_name;
+	for (size_t i = 0; i < n; i++) {
+		const char *name = names[i];
 
-		if (!ret && name[0] != '.' && has_ext(name, exts) && !plain_file(fd, name)) {
-			ret = copy_file(fd, name, to);
-			*count += !ret;
-			if (!ret && exts == content_exts && !im->model[0] &&
+		if (!ret && has_ext(name, exts) && name_usable(im, name)) {
+			r = copy_file(im, fd, name, to);
+			ret = r < 0 ? r : 0;
+			*count += !r;
+			if (!r && exts == content_exts && !im->model[0] &&
 			    has_ext(name, model_exts))
 				snprintf(im->model, sizeof(im->model), "%s", name);
 		}
 		free(names[i]);
 	}
 	free(names);
-	if (fd >= 0)
-		close(fd);
 	return ret ? ret : sync_dir(to);
 }
 
-/* kiosk.ini in the content folder: the model and matcaps copied, then the
- * stick's own settings over them. */
+/* The stick's matcaps/ folder, not a link to one. */
+static int copy_matcaps(struct import *im)
+{
+	char to[PATH_MAX + 16];
+	int fd = openat(im->from_fd, "matcaps", O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC),
+	    ret;
+
+	if (fd < 0 && errno == ENOENT)
+		return 0;
+	if (fd < 0 && (errno == ELOOP || errno == ENOTDIR)) {
+		log_warn("%s/matcaps: not a folder (a link?): skipped", im->from);
+		return 0;
+	}
+	if (fd < 0)
+		return -errno;
+	snprintf(to, sizeof(to), "%s/matcaps", im->staging);
+	ret = copy_folder(im, fd, to, image_exts, &im->matcaps);
+	close(fd);
+	return ret;
+}
+
+/* kiosk.ini, read once into memory: what is checked is what is copied. A
+ * link, a pipe or a large file is refused (-EINVAL, a bad stick's
+ * settings). */
+static int read_stick_ini(struct import *im)
+{
+	int fd = openat(im->from_fd, "kiosk.ini", O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC),
+	    ret = 0;
+	struct stat st;
+	ssize_t n = 1;
+
+	if (fd < 0 && errno == ENOENT)
+		return 0;
+	if (fd < 0 || fstat(fd, &st) || !S_ISREG(st.st_mode) || st.st_size > IMPORT_MAX_INI) {
+		log_err("%s/kiosk.ini: not a plain file of %d KiB at most", im->from,
+			IMPORT_MAX_INI / 1024);
+		ret = -EINVAL;
+		goto out;
+	}
+	if (!(im->ini = malloc(IMPORT_MAX_INI + 1))) {
+		ret = -ENOMEM;
+		goto out;
+	}
+	while (n > 0 && im->ini_size <= IMPORT_MAX_INI) {
+		n = read(fd, im->ini + im->ini_size, IMPORT_MAX_INI + 1 - im->ini_size);
+		im->ini_size += n > 0 ? (size_t)n : 0;
+	}
+	/* Notepad's byte order mark: inih drops it at the start of a file
+	 * only, and the copy follows lines of ours. */
+	if (n >= 0 && im->ini_size >= 3 && !memcmp(im->ini, "\xef\xbb\xbf", 3)) {
+		im->ini_size -= 3;
+		memmove(im->ini, im->ini + 3, im->ini_size);
+	}
+	if (n < 0 || im->ini_size > IMPORT_MAX_INI) {
+		log_err("%s/kiosk.ini: %s", im->from,
+			n < 0 ? strerror(errno) : "it grew past 64 KiB while it was read");
+		ret = -EINVAL;
+	}
+out:
+	if (fd >= 0)
+		close(fd);
+	return ret;
+}
+
+/* What a stick may set: how the model looks and turns, not the display,
+ * the buttons, the power or what else the kiosk reads. */
+struct stick_scan {
+	struct import *im;
+	FILE *f;
+	int line, errors;
+};
+
+/* As src/app/options.c reads a file (leading blanks dropped), so that the
+ * lines counted are the ones it names. */
+static char *scan_line(char *str, int num, void *stream)
+{
+	struct stick_scan *sc = stream;
+	char *r = fgets(str, num, sc->f);
+	size_t skip;
+
+	if (!r)
+		return NULL;
+	sc->line++;
+	skip = strspn(r, " \t");
+	if (skip)
+		memmove(r, r + skip, strlen(r + skip) + 1);
+	return r;
+}
+
+static bool stick_may_set(const char *section, const char *key)
+{
+	if (!strcmp(section, "scene") || !strcmp(section, "material"))
+		return true;
+	return !strcmp(section, "kiosk") &&
+	       (!strncmp(key, "attract_", 8) || !strncmp(key, "turn_", 5) ||
+		!strcmp(key, "idle_seconds"));
+}
+
+static bool is_path_key(const char *key)
+{
+	static const char *const keys[] = {"model",	 "matcap",	     "iridescence_ramp",
+					   "detail_map", "displacement_map", NULL};
+
+	for (const char *const *k = keys; *k; k++)
+		if (!strcmp(key, *k))
+			return true;
+	return false;
+}
+
+/* A path that leaves the folder it is read from: absolute, or with a ".."
+ * part; in each of a list's (a, b) paths. */
+static bool path_escapes(const char *value)
+{
+	for (const char *p = value; *p; p++) {
+		bool starts = p == value || strchr(", \t", p[-1]);
+
+		if (*p == '/' && starts)
+			return true;
+		if (!strncmp(p, "..", 2) && (starts || p[-1] == '/') && strchr("/, \t", p[2]))
+			return true;
+	}
+	return false;
+}
+
+static int on_stick_key(void *user, const char *section, const char *key, const char *value)
+{
+	struct stick_scan *sc = user;
+
+	if (!*section)
+		return 1; /* a key before any [section]: the settings' check names it */
+	if (!stick_may_set(section, key)) {
+		log_err("%s/kiosk.ini:%d: [%s] %s cannot be set from a USB stick", sc->im->from,
+			sc->line, section, key);
+		sc->errors++;
+	} else if (is_path_key(key) && path_escapes(value)) {
+		log_err("%s/kiosk.ini:%d: [%s] %s = '%s': a USB stick's paths must be relative, "
+			"without '..'",
+			sc->im->from, sc->line, section, key, value);
+		sc->errors++;
+	}
+	sc->im->sets_model |= !strcmp(section, "scene") && !strcmp(key, "model");
+	sc->im->sets_matcap |= !strcmp(section, "scene") && !strcmp(key, "matcap");
+	return 1;
+}
+
+/* -EINVAL after naming each key the stick may not set. (A line that is
+ * not INI is left to the settings' own check, which names it.) */
+static int scan_stick_ini(struct import *im)
+{
+	struct stick_scan sc = {.im = im};
+
+	if (!im->ini || !im->ini_size)
+		return 0;
+	if (!(sc.f = fmemopen(im->ini, im->ini_size, "r")))
+		return -errno;
+	ini_parse_stream(scan_line, &sc, on_stick_key, &sc);
+	fclose(sc.f);
+	return sc.errors ? -EINVAL : 0;
+}
+
+/* kiosk.ini in the content folder: the model and matcaps copied, for the
+ * keys the stick's own file does not set (a key may be set once), then
+ * that file as it was read. */
 static int write_ini(struct import *im)
 {
-	char path[PATH_MAX + 16], stick[PATH_MAX + 16];
-	FILE *f, *in;
-	int c, ret = 0;
+	char path[PATH_MAX + 16], head[3 * PATH_MAX];
+	int fd, ret;
+	size_t n = 0;
 
+	n += (size_t)snprintf(head, sizeof(head), "# Written by matcap-kiosk --import.\n[scene]\n");
+	if (im->model[0] && !im->sets_model)
+		n += (size_t)snprintf(head + n, sizeof(head) - n, "model = %s/model/%s\n",
+				      im->content, im->model);
+	if (im->matcaps && !im->sets_matcap)
+		n += (size_t)snprintf(head + n, sizeof(head) - n, "matcap = %s/matcaps\n",
+				      im->content);
 	snprintf(path, sizeof(path), "%s/kiosk.ini", im->staging);
-	snprintf(stick, sizeof(stick), "%s/kiosk.ini", im->from);
-	if (!(f = fopen(path, "we")))
+	if ((fd = open(path, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644)) < 0)
 		return -errno;
-	fprintf(f, "# Written by matcap-kiosk --import from %s.\n[scene]\n", im->from);
-	if (im->model[0])
-		fprintf(f, "model = %s/model/%s\n", im->content, im->model);
-	if (im->matcaps)
-		fprintf(f, "matcap = %s/matcaps\n", im->content);
-	in = fopen(stick, "re");
-	im->ini = in != NULL;
-	if (in) {
-		fprintf(f, "# The stick's kiosk.ini:\n");
-		while ((c = fgetc(in)) != EOF)
-			fputc(c, f);
-		fclose(in);
-	}
-	if (fflush(f) || fsync(fileno(f)))
+	ret = write_all(fd, head, n);
+	if (!ret && im->ini)
+		ret = write_all(fd, im->ini, im->ini_size);
+	if (!ret && fsync(fd))
 		ret = -errno;
-	if (fclose(f) && !ret)
+	if (close(fd) && !ret)
 		ret = -errno;
 	return ret;
 }
@@ -189,42 +449,11 @@ static char *staged(const struct import *im, const char *path)
 	return path ? strdup(path) : NULL;
 }
 
-/* The stick's kiosk.ini as it is (read from the staged copy, which holds
- * it after two lines of ours, would shift its line numbers). It may not
- * name a file to include: the stick brings its settings, not a path into
- * the kiosk's files. */
-static int check_stick_ini(const struct import *im, struct options *t)
-{
-	char path[PATH_MAX + 16], *text = NULL;
-	size_t size = 0;
-	FILE *f, *mem = open_memstream(&text, &size);
-	int c, ret = mem ? 0 : -ENOMEM;
-
-	snprintf(path, sizeof(path), "%s/kiosk.ini", im->from);
-	if (!ret && !(f = fopen(path, "re")))
-		ret = -errno;
-	else if (!ret) {
-		while ((c = fgetc(f)) != EOF)
-			fputc(c, mem);
-		fclose(f);
-	}
-	if (mem && fclose(mem) && !ret)
-		ret = -ENOMEM;
-	if (!ret && options_read_memory(t, path, text, size) != OPTIONS_OK)
-		ret = -EINVAL;
-	if (!ret && t->include) {
-		log_err("%s: [kiosk] include: a stick's settings may not name another file", path);
-		ret = -EINVAL;
-	}
-	free(text);
-	return ret;
-}
-
 /* What the kiosk would do with it: the settings over its own, then the
  * model and the matcaps loaded, strictly (no built-in stand-in). */
 static int check(const struct import *im, const struct options *o)
 {
-	char ini[PATH_MAX + 16];
+	char ini[PATH_MAX + 16], name[PATH_MAX + 16];
 	struct options t;
 	struct content s;
 	char *model, *matcap;
@@ -234,9 +463,13 @@ static int check(const struct import *im, const struct options *o)
 		return ret;
 	free(t.include);
 	t.include = NULL; /* the installed fragment is replaced, not read */
-	/* The stick's file first, so that a mistake is named by its line. */
-	if (im->ini && (ret = check_stick_ini(im, &t)))
+	/* The stick's file alone first, so that a mistake is named by its
+	 * own line. */
+	snprintf(name, sizeof(name), "%s/kiosk.ini", im->from);
+	if (im->ini && options_read_memory(&t, name, im->ini, im->ini_size) != OPTIONS_OK) {
+		ret = -EINVAL;
 		goto out;
+	}
 	snprintf(ini, sizeof(ini), "%s/kiosk.ini", im->staging);
 	if (options_read_file(&t, ini) != OPTIONS_OK) {
 		ret = -EINVAL;
@@ -279,6 +512,35 @@ static void state_dir(char *buf, size_t n)
 	snprintf(buf, n, "%.*s", (int)strcspn(env, ":"), env);
 }
 
+/* One import at a time (two partitions, two sticks): the staging folder
+ * and the swap are shared. The lock is on the state folder itself, so a
+ * refused stick leaves not even a lock file; it goes with the process. */
+static int lock_state(const char *state)
+{
+	int fd = open(state, O_RDONLY | O_DIRECTORY | O_CLOEXEC), err = errno;
+
+	if (fd < 0) {
+		log_err("%s: cannot open: %s", state, strerror(err));
+		return -err;
+	}
+	while (flock(fd, LOCK_EX) && errno == EINTR)
+		;
+	return fd;
+}
+
+/* 2 GiB, or 90 % of what the content's file system has free. */
+static long long budget(const char *state)
+{
+	struct statvfs fs;
+	long long free_bytes;
+
+	if (statvfs(state, &fs))
+		return IMPORT_MAX_TOTAL;
+	free_bytes = (long long)fs.f_bavail * (long long)fs.f_frsize;
+	free_bytes -= free_bytes / 10;
+	return free_bytes < IMPORT_MAX_TOTAL ? free_bytes : IMPORT_MAX_TOTAL;
+}
+
 /* The checked copy takes the content folder's place in one step; the old
  * one is then removed. */
 static int swap_in(struct import *im)
@@ -296,15 +558,16 @@ static int swap_in(struct import *im)
 
 static int stage(struct import *im)
 {
-	char from[PATH_MAX + 16], to[PATH_MAX + 16];
-	int ret;
+	char to[PATH_MAX + 16];
+	int ret = read_stick_ini(im);
 
-	snprintf(to, sizeof(to), "%s/model", im->staging);
-	ret = copy_folder(im, im->from, to, content_exts, &im->files);
-	snprintf(from, sizeof(from), "%s/matcaps", im->from);
-	snprintf(to, sizeof(to), "%s/matcaps", im->staging);
 	if (!ret)
-		ret = copy_folder(im, from, to, image_exts, &im->matcaps);
+		ret = scan_stick_ini(im);
+	snprintf(to, sizeof(to), "%s/model", im->staging);
+	if (!ret)
+		ret = copy_folder(im, im->from_fd, to, content_exts, &im->files);
+	if (!ret)
+		ret = copy_matcaps(im);
 	if (!ret)
 		ret = write_ini(im);
 	if (!ret && !im->model[0] && !im->matcaps && !im->ini) {
@@ -314,29 +577,54 @@ static int stage(struct import *im)
 	return ret ? ret : sync_dir(im->staging);
 }
 
+/* Staged, checked and swapped in under the lock. */
+static int import_locked(struct import *im, const struct options *o, const char *state)
+{
+	int lock = lock_state(state), ret;
+
+	if (lock < 0)
+		return lock;
+	im->budget = budget(state);
+	remove_tree(im->staging); /* what an import cut short left */
+	ret = mkdir(im->staging, 0755) ? -errno : stage(im);
+	if (!ret)
+		ret = check(im, o);
+	if (!ret)
+		ret = swap_in(im);
+	if (!ret)
+		ret = sync_dir(state);
+	remove_tree(im->staging);
+	close(lock);
+	return ret;
+}
+
 int import_run(const struct options *o)
 {
 	struct import im = {.from = o->import};
 	char state[PATH_MAX - 64];
 	int ret;
 
+	im.from_fd = open(im.from, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+	if (im.from_fd < 0 && errno == ENOENT) {
+		log_info("%s: no such folder: nothing to import", im.from);
+		return 0;
+	}
+	if (im.from_fd < 0) {
+		ret = -errno;
+		log_err("%s: not a folder to import (a link?): %s", im.from, strerror(-ret));
+		return ret;
+	}
 	state_dir(state, sizeof(state));
 	snprintf(im.content, sizeof(im.content), "%s/content", state);
 	snprintf(im.staging, sizeof(im.staging), "%s/.content.new", state);
-	remove_tree(im.staging); /* what an import cut short left */
-	ret = mkdir(im.staging, 0755) ? -errno : stage(&im);
-	if (!ret)
-		ret = check(&im, o);
-	if (!ret)
-		ret = swap_in(&im);
-	if (!ret)
-		ret = sync_dir(state);
+	ret = import_locked(&im, o, state);
 	if (ret)
 		log_err("%s: not imported (see above); the content in %s stays as it was", im.from,
 			im.content);
 	else
 		log_info("imported %d files and %d matcaps from %s into %s%s", im.files, im.matcaps,
 			 im.from, im.content, im.ini ? " with its kiosk.ini" : "");
-	remove_tree(im.staging);
+	close(im.from_fd);
+	free(im.ini);
 	return ret;
 }

@@ -18,7 +18,7 @@ models=$3
 dir=$4
 listen=$5
 rm -rf "$dir"
-mkdir -p "$dir/run" "$dir/state"
+mkdir -p "$dir/run" "$dir/state" "$dir/bin"
 dir=$(cd "$dir" && pwd)
 export RUNTIME_DIRECTORY="$dir/run" STATE_DIRECTORY="$dir/state"
 # Leaks: see tests/e2e/live.sh (OSMesa's, at unload).
@@ -105,6 +105,11 @@ mkdir -p "$dir/broken/matcap-kiosk" "$dir/badini/matcap-kiosk" "$dir/empty/matca
 head -c 300 "$models/sphere.glb" >"$dir/broken/matcap-kiosk/sphere.glb"
 cp "$models/sphere.glb" "$dir/badini/matcap-kiosk/"
 cp "$dir/bad.ini" "$dir/badini/matcap-kiosk/kiosk.ini"
+mkdir -p "$dir/state0"
+STATE_DIRECTORY=$dir/state0 "$kiosk" --config "$dir/kiosk.ini" \
+	--import "$dir/broken/matcap-kiosk" 2>/dev/null
+step "a refused stick leaves an empty state folder empty (no lock file)" \
+	[ -z "$(ls -A "$dir/state0")" ]
 "$kiosk" --config "$dir/kiosk.ini" --import "$dir/broken/matcap-kiosk" 2>"$dir/broken.err"
 step "a stick with a broken model is refused" [ $? -ne 0 ]
 step "... with a line that names the file" grep -q "sphere.glb" "$dir/broken.err"
@@ -119,6 +124,130 @@ step "a stick whose kiosk.ini names a file to include is refused (78)" [ $? -eq 
 step "a stick with nothing to import is refused" [ $? -ne 0 ]
 tree "$STATE_DIRECTORY" >"$dir/after"
 step "refused sticks change nothing" cmp -s "$dir/before" "$dir/after"
+
+# Sticks that reach further: each refused, with a line that says why.
+stick_with() { # NAME: a stick folder with the model in it
+	mkdir -p "$dir/$1/matcap-kiosk"
+	cp "$models/sphere.glb" "$dir/$1/matcap-kiosk/"
+}
+refused() { # NAME CODE PATTERN: its import exits CODE and says PATTERN
+	timeout 60 "$kiosk" --config "$dir/kiosk.ini" --import "$dir/$1/matcap-kiosk" \
+		2>"$dir/$1.err"
+	_rc=$?
+	[ $_rc = "$2" ] && grep -q -- "$3" "$dir/$1.err"
+}
+stick_with display
+printf '[scene]\nmode = normal\n[display]\nbackend = osmesa\n' \
+	>"$dir/display/matcap-kiosk/kiosk.ini"
+step "a stick may not set [display] (78, naming the line)" refused display 78 \
+	"kiosk.ini:4: \[display\] backend cannot be set from a USB stick"
+stick_with loglevel
+printf '[kiosk]\nturn_speed = 45\nlog_level = debug\n' >"$dir/loglevel/matcap-kiosk/kiosk.ini"
+step "... nor [kiosk] log_level (turn_* it may)" refused loglevel 78 \
+	"kiosk.ini:3: \[kiosk\] log_level cannot be set from a USB stick"
+stick_with abspath
+printf '[scene]\nmatcap = /etc/passwd\n' >"$dir/abspath/matcap-kiosk/kiosk.ini"
+step "... nor an absolute path" refused abspath 78 "kiosk.ini:2: \[scene\] matcap = '/etc/passwd'"
+stick_with listpath
+printf '[scene]\nmodel = sphere.glb, /etc/passwd\n' >"$dir/listpath/matcap-kiosk/kiosk.ini"
+step "... also as the second of a list" refused listpath 78 "kiosk.ini:2: \[scene\] model = "
+stick_with dotdot
+printf '[material]\ndetail_map = a/../../x.png\n' >"$dir/dotdot/matcap-kiosk/kiosk.ini"
+step "... nor a path with .." refused dotdot 78 "kiosk.ini:2: \[material\] detail_map"
+stick_with inilink
+ln -s "$dir/kiosk.ini" "$dir/inilink/matcap-kiosk/kiosk.ini"
+step "a kiosk.ini that is a link is refused" refused inilink 78 "kiosk.ini: not a plain file"
+stick_with inififo
+mkfifo "$dir/inififo/matcap-kiosk/kiosk.ini"
+step "a kiosk.ini that is a pipe is refused, without waiting on it" refused inififo 78 \
+	"kiosk.ini: not a plain file"
+stick_with inibig
+head -c 70000 /dev/zero | tr '\0' '#' >"$dir/inibig/matcap-kiosk/kiosk.ini"
+step "a kiosk.ini over 64 KiB is refused" refused inibig 78 "of 64 KiB at most"
+mkdir -p "$dir/toplink"
+ln -s "$stick" "$dir/toplink/matcap-kiosk"
+step "a matcap-kiosk folder that is a link is refused" refused toplink 1 "not a folder"
+stick_with big
+truncate -s 3G "$dir/big/matcap-kiosk/big.glb"
+step "more than 2 GiB (or the free space) is refused before a byte is copied" refused big 1 \
+	"the most an import may take"
+tree "$STATE_DIRECTORY" >"$dir/after2"
+step "... and these change nothing either" cmp -s "$dir/before" "$dir/after2"
+step "no stale staging folder is left" test ! -e "$STATE_DIRECTORY/.content.new"
+
+# No matcap-kiosk/ folder on the stick: nothing to do, and no failure.
+"$kiosk" --config "$dir/kiosk.ini" --import "$dir/plain/matcap-kiosk" 2>"$dir/plain.err"
+step "a stick without matcap-kiosk/ exits 0" [ $? -eq 0 ]
+step "... and says there is nothing to import" grep -q "nothing to import" "$dir/plain.err"
+
+# Names the generated kiosk.ini could not hold are passed over; a stick
+# that names its matcap while bringing matcaps/ gets its own.
+stick_with names
+for n in 'a=b.glb' 'c;d.glb' '[e].glb' ' f.glb' "$(printf 'g\001h.glb')"; do
+	cp "$models/sphere.glb" "$dir/names/matcap-kiosk/$n"
+done
+mkdir -p "$dir/names/matcap-kiosk/matcaps"
+cp matcaps/pearl.png "$dir/names/matcap-kiosk/matcaps/"
+printf '[scene]\nmatcap = matcaps/gold.png\n[kiosk]\nturn_speed = 45\n' \
+	>"$dir/names/matcap-kiosk/kiosk.ini"
+"$kiosk" --config "$dir/kiosk.ini" --import "$dir/names/matcap-kiosk" 2>"$dir/names.err"
+step "a stick that sets [scene] matcap and brings matcaps/ is imported" [ $? -eq 0 ]
+step "... its matcap line is the only one" sh -c \
+	"[ \$(grep -c '^matcap' '$STATE_DIRECTORY/content/kiosk.ini') = 1 ] &&
+	grep -qx 'matcap = matcaps/gold.png' '$STATE_DIRECTORY/content/kiosk.ini'"
+step "names with ;#=[], control characters or blanks at an end are skipped" sh -c "
+	[ \$(ls '$STATE_DIRECTORY/content/model') = sphere.glb ] &&
+	grep -qx 'model = $STATE_DIRECTORY/content/model/sphere.glb' \
+		'$STATE_DIRECTORY/content/kiosk.ini' && grep -q 'skipped' '$dir/names.err'"
+stick_with mlink
+ln -s "$PWD/matcaps" "$dir/mlink/matcap-kiosk/matcaps"
+"$kiosk" --config "$dir/kiosk.ini" --import "$dir/mlink/matcap-kiosk" 2>"$dir/mlink.err"
+step "a matcaps/ that is a link is passed over" sh -c "[ $? -eq 0 ] &&
+	! test -e '$STATE_DIRECTORY/content/matcaps' &&
+	grep -q 'matcaps: not a folder (a link?): skipped' '$dir/mlink.err'"
+
+stick_with bom
+printf '\357\273\277[scene]\npitch = 10\n' >"$dir/bom/matcap-kiosk/kiosk.ini"
+step "a kiosk.ini with a byte order mark (Notepad's) is imported" \
+	"$kiosk" --config "$dir/kiosk.ini" --import "$dir/bom/matcap-kiosk"
+
+# Two partitions at once: one import after the other, each whole.
+for i in 1 2 3; do
+	stick_with "par$i"
+	printf '[scene]\nyaw = %d\n' "$((i * 10))" >"$dir/par$i/matcap-kiosk/kiosk.ini"
+done
+for i in 1 2 3; do
+	"$kiosk" --config "$dir/kiosk.ini" --import "$dir/par$i/matcap-kiosk" \
+		2>"$dir/par$i.err" &
+	eval "par$i=\$!"
+done
+ok=0
+# shellcheck disable=SC2154
+for p in "$par1" "$par2" "$par3"; do wait "$p" && ok=$((ok + 1)); done
+step "three imports at once all succeed" [ $ok = 3 ]
+step "... and the content is one of them, whole" sh -c "
+	[ \$(grep -c '^yaw' '$STATE_DIRECTORY/content/kiosk.ini') = 1 ] &&
+	test -f '$STATE_DIRECTORY/content/model/sphere.glb' &&
+	test ! -e '$STATE_DIRECTORY/.content.new'"
+
+# The rule takes only the file systems the unit mounts, and the unit
+# mounts with the type udev found (udevadm and mount stand-ins here).
+rule=systemd/61-matcap-kiosk-usb.rules
+iunit=systemd/matcap-kiosk-import@.service
+step "the USB rule matches vfat, exfat and ext2/3/4 only" grep -q \
+	'ENV{ID_FS_TYPE}=="vfat|exfat|ext2|ext3|ext4"' "$rule"
+pre=$(sed -n "s|^ExecStartPre=+/bin/sh -ec '\(.*\)'\$|\1|p" "$iunit" |
+	sed -e 's|%I|sdz1|g' -e "s|%t|$dir/run|g" -e 's|\$\$|$|g')
+printf '#!/bin/sh\necho "$FS"\n' >"$dir/bin/udevadm"
+printf '#!/bin/sh\necho "$*" >>%s/mount.log\n' "$dir" >"$dir/bin/mount"
+chmod +x "$dir/bin/udevadm" "$dir/bin/mount"
+FS=vfat PATH=$dir/bin:$PATH sh -ec "$pre" 2>"$dir/mount.err"
+step "the unit mounts a FAT stick with -t vfat, read-only" grep -qxF -e \
+	"-t vfat -o ro,nosuid,nodev,noexec /dev/sdz1 $dir/run/matcap-kiosk-import/sdz1" \
+	"$dir/mount.log"
+FS=ntfs PATH=$dir/bin:$PATH sh -ec "$pre" 2>"$dir/mount.err"
+step "... and refuses another type without mounting" sh -c "[ $? -ne 0 ] &&
+	[ \$(wc -l <'$dir/mount.log') = 1 ] && grep -q ntfs '$dir/mount.err'"
 
 kill -TERM $pid
 wait $pid
