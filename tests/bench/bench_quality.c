@@ -18,6 +18,7 @@
 #include "scene/lod.h"
 #include "util/log.h"
 #include "maps.h"
+#include "scene/gltf.h"
 #include "scene/material.h"
 #include "scene/mesh.h"
 #include "app/options.h"
@@ -30,6 +31,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 
 static const double lod_steps[] = {0, 0.5, 1, 2, 4, 8};
 static const int matcap_sizes[] = {64, 128, 256, 512, 1024};
@@ -48,6 +50,8 @@ const struct look looks[LOOKS] = {
     {"knot 100k, view, 128 px", KNOT_100K, SHADING_VIEW, SHADING_NORMAL, false, false, false, 128},
     {"knot 100k, sem, 128 px", KNOT_100K, SHADING_SEM_FRAGMENT, SHADING_SEM_VERTEX, false, false,
      false, 128},
+    {"CAD engine 121k (seams, hard edges), view", ENGINE, SHADING_VIEW, SHADING_NORMAL, false,
+     false, false, 0},
 };
 
 static void read_load(char *out, size_t size)
@@ -150,6 +154,8 @@ static int make_model(enum model m, struct mesh *out)
 {
 	static const int grid[3][2] = {{256, 32}, {1024, 49}, {4096, 122}};
 
+	if (m == ENGINE)
+		return gltf_load(ENGINE_GLB, out);
 	return mesh_torus_knot(out, grid[m][0], grid[m][1]);
 }
 
@@ -505,6 +511,11 @@ int main(int argc, char **argv)
 	for (size_t l = 0; l < LOOKS && !ret; l++) {
 		if (b.only && !strstr(looks[l].name, b.only))
 			continue;
+		if (looks[l].model == ENGINE && access(ENGINE_GLB, R_OK)) {
+			fprintf(stderr, "  %s: left out, no %s (assimp-testmodels)\n",
+				looks[l].name, ENGINE_GLB);
+			continue;
+		}
 		plan(&b, (int)l);
 		ret = run_look(&b, (int)l);
 		mark_front(b.settings[l], b.count[l]);

@@ -25,7 +25,10 @@
  * src/app/options.c's. */
 #define DEFAULT_MATCAP 256
 
-enum model { KNOT_16K, KNOT_100K, KNOT_1M };
+enum model { KNOT_16K, KNOT_100K, KNOT_1M, ENGINE };
+/* A real model with hard edges and UV seams (Debian's assimp-testmodels):
+ * where the level of detail has to simplify across seams. */
+#define ENGINE_GLB "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb"
 
 struct look {
 	const char *name;
@@ -36,7 +39,7 @@ struct look {
 };
 
 /* The scenes, in the report's order. */
-#define LOOKS 9
+#define LOOKS 10
 extern const struct look looks[LOOKS];
 
 struct setting {
