@@ -27,6 +27,24 @@ kiosk_stop() {
 }
 # kiosk_alive: the background kiosk still runs.
 kiosk_alive() { kill -0 "$KPID" 2>/dev/null; }
+# cpu: the background kiosk's user + system time so far, in clock ticks.
+cpu() { awk '{ print $14 + $15 }' "/proc/$KPID/stat"; }
+# quiet: the kiosk used no CPU for a second (done drawing; llvmpipe under
+# TCG may take a while for a frame); false after two minutes.
+quiet() {
+	_i=0
+	_a=$(cpu)
+	while [ $_i -lt 120 ]; do
+		sleep 1
+		_b=$(cpu)
+		[ "$_a" = "$_b" ] && return 0
+		_a=$_b
+		_i=$((_i + 1))
+	done
+	return 1
+}
+# still OUT: the screen, read back once the kiosk has nothing left to draw.
+still() { quiet && vm-grab -o "$1" >/dev/null 2>&1; }
 
 # has LOG PATTERN / wait_log SECONDS LOG PATTERN
 has() { grep -q -- "$2" "$1"; }

@@ -26,20 +26,6 @@ click() { echo pull-down >"$sys/sim_gpio0/pull"; sleep 0.2; echo pull-up >"$sys/
 
 # Under TCG a frame may take a second: "drawn" is read from the kiosk, which
 # uses no CPU at all once it has nothing left to draw.
-cpu() { awk '{ print $14 + $15 }' "/proc/$KPID/stat"; }
-quiet() {
-	_i=0
-	_a=$(cpu)
-	while [ $_i -lt 120 ]; do
-		sleep 1
-		_b=$(cpu)
-		[ "$_a" = "$_b" ] && return 0
-		_a=$_b
-		_i=$((_i + 1))
-	done
-	return 1
-}
-still() { quiet && vm-grab -o "$1" >/dev/null 2>&1; }
 differ() { ! cmp -s "$1" "$2"; }
 shown() { [ "$(grep -c "model $1 of 3" models.log)" -ge "$2" ]; }
 broken_lines() { grep -c 'b-broken.glb' models.log; }

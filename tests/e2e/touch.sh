@@ -20,22 +20,6 @@ LOG=touch.log
 # The kiosk logs (at debug) one line per frame that shows a newer input.
 presented() { grep -c "presented .* ms after the input" $LOG; }
 more_frames() { [ "$(presented)" -gt "$1" ]; }
-cpu() { awk '{ print $14 + $15 }' "/proc/$KPID/stat"; }
-# quiet: the kiosk used no CPU for a second (done drawing; llvmpipe under
-# TCG may take a while for a frame).
-quiet() {
-	_i=0
-	_a=$(cpu)
-	while [ $_i -lt 60 ]; do
-		sleep 1
-		_b=$(cpu)
-		[ "$_a" = "$_b" ] && return 0
-		_a=$_b
-		_i=$((_i + 1))
-	done
-	return 1
-}
-still() { quiet && vm-grab -o "$1" >/dev/null 2>&1; }
 # same_fb SECONDS: one framebuffer all that time, looked at 4 times a second.
 same_fb() {
 	_f=$(crtc_fb)
