@@ -218,8 +218,8 @@ int renderer_set_mesh(struct renderer *r, const struct mesh *m)
 /* repeat: the detail map tiles (glTF's default) and is mipmapped, so a
  * far, dense map does not shimmer; it has power-of-two sides for that.
  * The ramp is read by angle: clamped, no mipmaps, so any size is legal in
- * GLES2. The matcap is clamped and gets its mipmap chain unless the
- * filter is LINEAR; which minifying filter reads it is chosen per draw
+ * GLES2. The matcap is clamped; which minifying filter reads it is chosen
+ * per draw, and its mipmap chain built on the first draw that reads one
  * (matcap_choose_filter). */
 static int upload_texture(const struct gl *gl, GLuint *tex, const struct image *img, bool repeat,
 			  bool mipmaps)
