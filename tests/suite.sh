@@ -28,19 +28,10 @@ export MODELS
 XDG_CACHE_HOME=$(pwd)/$out/cache
 export XDG_CACHE_HOME
 unset CACHE_DIRECTORY
-passed=0
-failed=0
-failures=""
-
-ok() {
-	passed=$((passed + 1))
-	echo "PASS $1"
-}
-ko() {
-	failed=$((failed + 1))
-	failures="$failures $1"
-	echo "FAIL $1"
-}
+# ok, ko, check and summary: shared with the cross and package tests.
+CHECK_LOG=$out/last.log
+# shellcheck source=tools/checks.sh
+. tests/tools/checks.sh
 # results PREFIX FILE [LOG]: one check per "ok NAME" or "not ok NAME" line
 # that a test script wrote (LOG is shown on a failure).
 results() {
@@ -55,17 +46,6 @@ results() {
 	done <"$2"
 }
 # check NAME COMMAND...: passes when the command exits 0.
-check() {
-	name=$1
-	shift
-	if "$@" >"$out/last.log" 2>&1; then ok "$name"; else cat "$out/last.log"; ko "$name"; fi
-}
-# summary: the failed checks, then "N passed, N failed"; false on a failure.
-summary() {
-	[ -n "$failures" ] && echo "failed:$failures"
-	echo "$passed passed, $failed failed"
-	[ "$failed" -eq 0 ]
-}
 
 # The models and maps the tests load (tests/tools/mkmodels.c), written once.
 need_models() {

@@ -10,24 +10,9 @@ set -u
 deb=$1
 root=$2
 suite=${3:-$(. /etc/os-release && echo "$VERSION_CODENAME")}
-passed=0
-failed=0
-failures=""
-
-ok() {
-	passed=$((passed + 1))
-	echo "PASS $1"
-}
-ko() {
-	failed=$((failed + 1))
-	failures="$failures $1"
-	echo "FAIL $1"
-}
-check() {
-	name=$1
-	shift
-	if "$@" >"$root.log" 2>&1; then ok "$name"; else cat "$root.log"; ko "$name"; fi
-}
+CHECK_LOG=$root.log
+# shellcheck source=../tools/checks.sh
+. "$(dirname "$0")/../tools/checks.sh"
 in_root() { chroot "$root" /usr/bin/env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin "$@"; }
 
 rm -rf "$root"
@@ -64,6 +49,4 @@ check "removed: the program gone, the edited config kept" sh -c "
 check "apt-get purge" in_root apt-get purge -y -qq matcap-kiosk
 check "purged: the config gone" test ! -e "$root/etc/matcap-kiosk/kiosk.ini"
 
-[ -n "$failures" ] && echo "failed:$failures"
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+summary

@@ -23,24 +23,9 @@ host_tools=$6
 out=$build/out
 rm -rf "$out"
 mkdir -p "$out/bin" "$out/models" "$out/host-models" "$out/render" "$out/host" "$out/golden"
-passed=0
-failed=0
-failures=""
-
-ok() {
-	passed=$((passed + 1))
-	echo "PASS $1"
-}
-ko() {
-	failed=$((failed + 1))
-	failures="$failures $1"
-	echo "FAIL $1"
-}
-check() {
-	name=$1
-	shift
-	if "$@" >"$out/last.log" 2>&1; then ok "$name"; else cat "$out/last.log"; ko "$name"; fi
-}
+CHECK_LOG=$out/last.log
+# shellcheck source=../tools/checks.sh
+. "$(dirname "$0")/../tools/checks.sh"
 
 # qemu-user finds the other architecture's loader and libraries in the
 # sysroot (binfmt_misc is not needed, nor mounted in a container). llvmpipe
@@ -109,6 +94,4 @@ check "$arch UBSan program renders the material features" "$out/bin/matcap-kiosk
 	--output "$out/render/ubsan-lit-beside.png"
 
 echo "NOTE largest difference on $arch against tests/golden ($driver): $worst_name"
-[ -n "$failures" ] && echo "failed:$failures"
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+summary

@@ -27,24 +27,6 @@ kiosk_stop() {
 }
 # kiosk_alive: the background kiosk still runs.
 kiosk_alive() { kill -0 "$KPID" 2>/dev/null; }
-# cpu: the background kiosk's user + system time so far, in clock ticks.
-cpu() { awk '{ print $14 + $15 }' "/proc/$KPID/stat"; }
-# quiet: the kiosk used no CPU for a second (done drawing; llvmpipe under
-# TCG may take a while for a frame); false after two minutes.
-quiet() {
-	_i=0
-	_a=$(cpu)
-	while [ $_i -lt 120 ]; do
-		sleep 1
-		_b=$(cpu)
-		[ "$_a" = "$_b" ] && return 0
-		_a=$_b
-		_i=$((_i + 1))
-	done
-	return 1
-}
-# still OUT: the screen, read back once the kiosk has nothing left to draw.
-still() { quiet && vm-grab -o "$1" >/dev/null 2>&1; }
 
 # has LOG PATTERN / wait_log SECONDS LOG PATTERN
 has() { grep -q -- "$2" "$1"; }
@@ -52,8 +34,7 @@ wait_log() { wait_until "$1" grep -q -- "$3" "$2"; }
 # count LOG SED_EXPR: the number a line of the log gives, or 0.
 number() { _n=$(sed -n "$2" "$1" | tail -1); echo "${_n:-0}"; }
 
-# What the CRTC scans out now (vm-grab reads it back, no master needed).
-crtc_fb() { vm-grab 2>/dev/null | sed -n 's/.* fb \([0-9]*\) .*/\1/p'; }
+# The mode the CRTC scans out now (vm-grab reads it back, no master needed).
 crtc_mode() { vm-grab 2>/dev/null | sed -n 's/.* mode \([^ ]*\) differ=.*/\1/p'; }
 # shows_new_frame OLD_FB: the CRTC shows another framebuffer, drawn on.
 shows_new_frame() {

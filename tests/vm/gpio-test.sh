@@ -66,26 +66,8 @@ bounce_up() {
 presented() { grep -c "presented .* ms after the input" kiosk.log; }
 # wait_frame COUNT: until a frame newer than COUNT inputs ago is drawn.
 wait_frame() { wait_until 30 sh -c "[ \$(grep -c 'presented .* ms after the input' kiosk.log) -gt $1 ]"; }
-# Under TCG on a busy host a frame may take seconds, so "done drawing" is
-# read from the kiosk itself: it uses no CPU at all while idle.
-cpu() { awk '{ print $14 + $15 }' "/proc/$kpid/stat"; }
-quiet() {
-	_i=0
-	_a=$(cpu)
-	while [ $_i -lt 120 ]; do
-		sleep 1
-		_b=$(cpu)
-		[ "$_a" = "$_b" ] && return 0
-		_a=$_b
-		_i=$((_i + 1))
-	done
-	return 1
-}
-# still OUT: the screen once the kiosk has nothing left to draw.
-still() { quiet && vm-grab -o "$1" >/dev/null 2>&1; }
 same() { cmp -s "$1" "$2"; }
 differ() { ! cmp -s "$1" "$2"; }
-crtc_fb() { vm-grab 2>/dev/null | sed -n 's/.* fb \([0-9]*\) .*/\1/p'; }
 new_fb() { [ "$(crtc_fb)" != "$1" ]; }
 # click LINE: a clean press and release, 0.2 s apart.
 click() { down "$1"; sleep 0.2; up "$1"; }
@@ -94,7 +76,7 @@ edges() { grep -c "button $1 .*: \(pressed\|released\) at" kiosk.log; }
 # ---- the main run: buttons and a keyboard
 vkbd_start
 matcap-kiosk --config gpio.ini -v >kiosk.log 2>&1 &
-kpid=$!
+KPID=$!
 vm_check "kiosk shows its first frame on KMS" wait_until 120 grep -q "ready: the first frame" kiosk.log
 vm_check "three buttons on the simulated chip" \
 	sh -c "[ \$(grep -c 'button .* on $chip): ' kiosk.log) = 3 ]"
@@ -175,8 +157,8 @@ summary() { # WHAT FILE
 			v[int((NR + 1) / 2)], v[NR], NR }'
 }
 
-kill -TERM $kpid
-wait $kpid
+kill -TERM $KPID
+wait $KPID
 rc=$?
 {
 	summary "edge to the kiosk reading it" latency-read.txt
@@ -199,7 +181,7 @@ mon=$!
 wait_until 10 sh -c "gpioinfo $c $chip | grep -q gpiomon"
 matcap-kiosk --config gpio.ini -v --button-left GPIO99 --button-right GPIO5 \
 	--button-select GPIO23 >faults.log 2>&1 &
-kpid=$!
+KPID=$!
 wait_until 120 grep -q "ready: the first frame" faults.log
 vm_check "a missing line is one error naming it" \
 	sh -c "[ \$(grep -c 'error: button left: no GPIO line named GPIO99' faults.log) = 1 ]"
@@ -211,21 +193,21 @@ sleep 0.2
 echo pull-up >"$spare/sim_gpio0/pull"
 wait_until 30 sh -c "[ \$(grep -c 'presented .* ms after the input' faults.log) -gt $n ]"
 vm_check "the button that is there works" grep -q "matcap /tmp/mc/clay-red.png" faults.log
-vm_check "the kiosk runs on" kill -0 $kpid
-kill -TERM $kpid
-wait $kpid
+vm_check "the kiosk runs on" kill -0 $KPID
+kill -TERM $KPID
+wait $KPID
 kill $mon 2>/dev/null
 wait $mon 2>/dev/null
 cat faults.log
 
 matcap-kiosk --config gpio.ini --gpio-chip nosuchchip >nochip.log 2>&1 &
-kpid=$!
+KPID=$!
 wait_until 120 grep -q "ready: the first frame" nochip.log
 vm_check "a missing chip is one error per button, naming chip and line" \
 	sh -c "[ \$(grep -c 'GPIO chip nosuchchip not found.*line GPIO' nochip.log) = 3 ]"
-vm_check "... and the kiosk runs on" kill -0 $kpid
-kill -TERM $kpid
-wait $kpid
+vm_check "... and the kiosk runs on" kill -0 $KPID
+kill -TERM $KPID
+wait $KPID
 
 # GPIO17 by name and by offset 0 on the same chip (named by its label):
 # one line, two buttons.

@@ -119,6 +119,28 @@ drm_connector_status() {
 # vm_grab OUT.ppm [vm-grab options]: read back what the CRTC scans out now
 # (the front buffer, while the program that set it still runs).
 vm_grab() { _o=$1; shift; vm-grab "$@" -o "$_o"; }
+# crtc_fb: the framebuffer the CRTC scans out now (no master needed).
+crtc_fb() { vm-grab 2>/dev/null | sed -n 's/.* fb \([0-9]*\) .*/\1/p'; }
+
+# ---- the kiosk under test (its pid in KPID)
+# cpu: its user + system time so far, in clock ticks.
+cpu() { awk '{ print $14 + $15 }' "/proc/$KPID/stat"; }
+# quiet: it used no CPU for a second, so it is done drawing (llvmpipe under
+# TCG on a busy host may take seconds a frame); false after two minutes.
+quiet() {
+	_i=0
+	_a=$(cpu)
+	while [ $_i -lt 120 ]; do
+		sleep 1
+		_b=$(cpu)
+		[ "$_a" = "$_b" ] && return 0
+		_a=$_b
+		_i=$((_i + 1))
+	done
+	return 1
+}
+# still OUT: the screen, read back once the kiosk has nothing left to draw.
+still() { quiet && vm-grab -o "$1" >/dev/null 2>&1; }
 
 # ---- keyboard (uinput)
 VKBD_FIFO=/run/vm-key.fifo
