@@ -72,6 +72,7 @@
 	X(PFNGLUNIFORMMATRIX3FVPROC, UniformMatrix3fv)                                             \
 	X(PFNGLUNIFORMMATRIX4FVPROC, UniformMatrix4fv)                                             \
 	X(PFNGLUSEPROGRAMPROC, UseProgram)                                                         \
+	X(PFNGLVERTEXATTRIB4FVPROC, VertexAttrib4fv)                                               \
 	X(PFNGLVERTEXATTRIBPOINTERPROC, VertexAttribPointer)                                       \
 	X(PFNGLVIEWPORTPROC, Viewport)
 

@@ -184,9 +184,9 @@ int renderer_set_packed(struct renderer *r, const struct mesh_packed *m)
 
 	r->drawn = m->format;
 	r->position_scale = m->position_scale;
-	if ((uvs && !m->arrays[MESH_UVS]) || (tangents && !m->arrays[MESH_TANGENTS]) ||
-	    (colors && !m->arrays[MESH_COLORS]))
-		log_warn("render: the mesh lacks the UVs, tangents or colours its material needs");
+	/* Colours without an array are one constant (material vertex_color). */
+	if ((uvs && !m->arrays[MESH_UVS]) || (tangents && !m->arrays[MESH_TANGENTS]))
+		log_warn("render: the mesh lacks the UVs or tangents its material needs");
 	for (int a = 0; a < SHADER_ATTR_COUNT && !ret; a++) {
 		if (used[a] && m->arrays[a]) {
 			ret = upload_attribute(r, m, a);
@@ -508,7 +508,11 @@ static void draw_with(struct renderer *r, const struct program *p, const struct 
 		enum mesh_component c = mesh_array_component(r->drawn, (enum mesh_array)a);
 
 		if (!r->attr_bytes[a]) {
+			/* A disabled array reads the constant: a model of one
+			 * colour needs no colour per vertex. */
 			gl->DisableVertexAttribArray((GLuint)a);
+			if (a == SHADER_ATTR_COLOR)
+				gl->VertexAttrib4fv((GLuint)a, r->mat.vertex_color);
 			continue;
 		}
 		gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo[a]);

@@ -16,18 +16,6 @@ extern "C" {
 /* Models larger than this are refused before parsing. */
 #define GLTF_MAX_FILE (512u << 20)
 
-/* What to load beyond the geometry. */
-struct gltf_options {
-	unsigned textures; /* enum gltf_texture bits */
-	/* The scene to show: an index ("1") or a scene's name; NULL or "" for
-	 * the file's `scene`, else the first. A file without scenes shows
-	 * every tree of nodes. */
-	const char *scene;
-	/* How a refusal of `scene` names where it came from, e.g. "[scene]
-	 * model_scene"; NULL: not named. */
-	const char *scene_setting;
-};
-
 /* Load every triangle primitive of the default scene, each with its node
  * transform, into one mesh fitted to the unit sphere. Every accessor is
  * bounds-checked here, whatever tinygltf checked. Returns 0, or a negative

@@ -5,6 +5,7 @@
 #include "scene/gltf_material.h"
 #include "util/log.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <string>
@@ -185,16 +186,20 @@ bool gltf_primitive_base(const tinygltf::Model &m, int material, int model_mater
 	return coloured || pbr.baseColorTexture.index >= 0;
 }
 
-void gltf_keep_colors(struct mesh *out)
+void gltf_keep_colors(struct mesh *out, const float uniform[4])
 {
 	bool plain = !out->material.base_map.width;
 	for (size_t i = 0; plain && out->colors && i < (size_t)out->vertex_count * 4; i++)
 		plain = i % 4 == 3 || out->colors[i] == 1.0f;
+	for (int k = 0; plain && !out->colors && uniform && k < 3; k++)
+		plain = uniform[k] == 1.0f;
 	if (plain) {
 		std::free(out->colors);
 		out->colors = nullptr;
+	} else if (!out->colors && uniform) {
+		std::copy(uniform, uniform + 4, out->material.color);
 	}
-	out->material.has_colors = out->colors != nullptr;
+	out->material.has_colors = !plain && (out->colors || uniform);
 }
 
 int gltf_uv_set(const tinygltf::Model &m, int material, unsigned textures)

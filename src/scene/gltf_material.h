@@ -1,4 +1,4 @@
-// Inside the glTF shim (C++ only, included by src/scene/gltf.cc): the model's
+// Inside the glTF shim (C++ only, for gltf.cc and gltf_mesh.cc): the model's
 // material, its factors and the textures a scene asked for, into the plain
 // mesh_material of src/scene/mesh.h. Split from gltf.cc to keep each file short.
 #ifndef MK_GLTF_MATERIAL_H
@@ -33,7 +33,9 @@ bool gltf_primitive_base(const tinygltf::Model &m, int material, int model_mater
 
 // Colours that change nothing (white, and no base map decoded for their
 // alpha to apply) are given back; material.has_colors says what is left.
-void gltf_keep_colors(struct mesh *out);
+// uniform: every vertex's colour when the mesh has no colour array (one
+// colour for the whole model), or null.
+void gltf_keep_colors(struct mesh *out, const float uniform[4]);
 
 // Which TEXCOORD_n a primitive of this material loads as the mesh's UVs:
 // the base map's (its texCoord, or its KHR_texture_transform's), when it

@@ -1,6 +1,7 @@
-/* The material textures a caller may ask the glTF loader to decode: the
- * C API (gltf.h) takes them, and the material reader (gltf_material.cc)
- * honours them, without either including the other. */
+/* What a caller may ask of the glTF loader (the material textures to
+ * decode, the scene to show): the C API (gltf.h) takes it, and the mesh
+ * builder (gltf_mesh.cc) and material reader (gltf_material.cc) honour
+ * it, without including the API. */
 #ifndef MK_GLTF_TEXTURE_H
 #define MK_GLTF_TEXTURE_H
 
@@ -10,8 +11,21 @@ enum gltf_texture {
 	GLTF_TEXTURE_OCCLUSION = 1u << 1, /* occlusionTexture */
 	GLTF_TEXTURE_THICKNESS = 1u << 2, /* KHR_materials_iridescence thickness */
 	/* baseColorTexture, and with it the base colour itself: per vertex
-	 * baseColorFactor x COLOR_0 (struct mesh colors) */
+	 * baseColorFactor x COLOR_0 (struct mesh colors), or one colour for
+	 * the whole model (mesh_material.color) */
 	GLTF_TEXTURE_BASE_COLOR = 1u << 3,
+};
+
+/* What to load beyond the geometry. */
+struct gltf_options {
+	unsigned textures; /* enum gltf_texture bits */
+	/* The scene to show: an index ("1") or a scene's name; NULL or "" for
+	 * the file's `scene`, else the first. A file without scenes shows
+	 * every tree of nodes. */
+	const char *scene;
+	/* How a refusal of `scene` names where it came from, e.g. "[scene]
+	 * model_scene"; NULL: not named. */
+	const char *scene_setting;
 };
 
 #endif

@@ -260,6 +260,7 @@ static int resolve_base_color(const struct material_config *cfg, const struct me
 		return 0;
 	m->features |= MATERIAL_BASE_COLOR;
 	memcpy(m->base_transform, g->base_transform, sizeof(m->base_transform));
+	memcpy(m->vertex_color, g->color, sizeof(m->vertex_color));
 	if (!g->base_map.width)
 		return 0;
 	if (!mesh->uvs) {

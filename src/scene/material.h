@@ -60,6 +60,7 @@ struct material {
 	struct image height;
 	struct image base_map;	 /* sRGB as stored; power-of-two sides */
 	float base_transform[6]; /* mesh_material.base_transform */
+	float vertex_color[4];	 /* mesh_material.color: every vertex's without a colour array */
 };
 
 void material_config_defaults(struct material_config *cfg);

@@ -9,7 +9,7 @@ void mesh_material_default(struct mesh_material *mat)
 {
 	memset(mat, 0, sizeof(*mat));
 	for (int k = 0; k < 3; k++)
-		mat->base_color[k] = 1.0f;
+		mat->base_color[k] = mat->color[k] = 1.0f;
 	mat->iridescence_ior = 1.3f;
 	mat->thickness_min = 100.0f;
 	mat->thickness_max = 400.0f;

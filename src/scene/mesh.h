@@ -36,6 +36,9 @@ struct mesh_material {
 	 * m[3] v + m[5]). Its UVs are the mesh's uvs. */
 	bool has_base_map;
 	bool has_colors; /* the loader gave the mesh colors (kept when they are cached) */
+	/* Every vertex's colour (as struct mesh colors) when has_colors and
+	 * the mesh has no colour array: a model of one colour. */
+	float color[4];
 	/* How many images the loader decoded for it: only those a scene asked
 	 * for and can place (the tests count them). */
 	unsigned images_decoded;
@@ -56,7 +59,8 @@ struct mesh {
 	/* rgba per vertex, linear: rgb = the primitive's baseColorFactor x
 	 * COLOR_0, a = 1 where the primitive reads the material's base map
 	 * (mesh_material.base_map), else 0. NULL when the loader was not asked
-	 * for base colour or the model has none. */
+	 * for base colour, the model has none, or every vertex has the same
+	 * (then mesh_material.color holds it). */
 	float *colors;
 	uint32_t *indices;
 	struct mesh_material material;

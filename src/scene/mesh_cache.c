@@ -15,9 +15,9 @@
 
 /* Changed whenever the layout or the preparation changes: an entry of
  * another version is stale. */
-#define CACHE_VERSION  1
+#define CACHE_VERSION  2
 #define CACHE_SUFFIX   ".mkmesh"
-#define MATERIAL_WORDS 16
+#define MATERIAL_WORDS 20
 
 static const char cache_magic[8] = {'M', 'K', 'M', 'E', 'S', 'H', '\r', '\n'};
 
@@ -54,7 +54,8 @@ static void material_to_words(const struct mesh_material *m, float w[MATERIAL_WO
 	    m->present,	      m->base_color[0],	     m->base_color[1],	   m->base_color[2],
 	    m->iridescence,   m->iridescence_factor, m->iridescence_ior,   m->thickness_min,
 	    m->thickness_max, m->has_normal_map,     m->has_occlusion_map, m->has_thickness_map,
-	    m->normal_scale,  m->occlusion_strength, m->has_base_map,	   m->has_colors};
+	    m->normal_scale,  m->occlusion_strength, m->has_base_map,	   m->has_colors,
+	    m->color[0],      m->color[1],	     m->color[2],	   m->color[3]};
 
 	memcpy(w, v, sizeof(v));
 }
@@ -71,6 +72,7 @@ static void material_from_words(const float w[MATERIAL_WORDS], struct mesh_mater
 	m->has_thickness_map = w[11] != 0;
 	m->normal_scale = w[12], m->occlusion_strength = w[13];
 	m->has_base_map = w[14] != 0, m->has_colors = w[15] != 0;
+	memcpy(m->color, w + 16, sizeof(m->color));
 }
 
 static size_t padded(size_t n)

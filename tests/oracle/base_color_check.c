@@ -49,10 +49,12 @@ struct tolerance {
 };
 static const struct tolerance highp_tol = {0.99, 8}, mediump_tol = {0.985, 64};
 
-static void vertex_color(const double p[3], double rgb[3])
+/* COLOR_0 at point p; white for the model written without it (one colour,
+ * the factor: the loader keeps it as a constant, not per vertex). */
+static void vertex_color(const double p[3], bool color_0, double rgb[3])
 {
 	for (int k = 0; k < 3; k++)
-		rgb[k] = 0.3 + 0.6 * (0.5 + 0.5 * p[k]);
+		rgb[k] = color_0 ? 0.3 + 0.6 * (0.5 + 0.5 * p[k]) : 1.0;
 }
 
 static double srgb_to_linear(double c)
@@ -129,7 +131,7 @@ struct agreement {
 
 /* The reference colour at unit-sphere point p (model = view orientation),
  * with normal n and eye vector e in view space. */
-static void reference(const double p[3], const double n[3], const double e[3],
+static void reference(const double p[3], const double n[3], const double e[3], bool color_0,
 		      const struct image *matcap, const struct image *map, double rgb[3])
 {
 	struct shading_fragment f = {
@@ -139,7 +141,7 @@ static void reference(const double p[3], const double n[3], const double e[3],
 	memcpy(f.normal, n, sizeof(f.normal));
 	memcpy(f.eye, e, sizeof(f.eye));
 	shading_fragment(&f, mc);
-	vertex_color(p, col);
+	vertex_color(p, color_0, col);
 	base_uv(p, uv);
 	sample_repeat(map, uv[0], uv[1], tex);
 	for (int k = 0; k < 3; k++)
@@ -164,7 +166,7 @@ static bool hit(const double mv[16], const double proj[16], int col, int row, do
 	return true;
 }
 
-static struct agreement compare(const struct image *frame, const struct image *matcap,
+static struct agreement compare(const struct image *frame, bool color_0, const struct image *matcap,
 				const struct image *map)
 {
 	struct view v = {.orientation = quat_identity()};
@@ -193,7 +195,7 @@ static struct agreement compare(const struct image *frame, const struct image *m
 			 * undefined and its polar triangles blend it. */
 			if (rim || fabs(p[1]) > 0.99)
 				continue;
-			reference(p, p, q, matcap, map, rgb);
+			reference(p, p, q, color_0, matcap, map, rgb);
 			for (int k = 0; k < 3; k++) {
 				double ref = fmin(fmax(rgb[k], 0.0), 1.0) * 255.0;
 				int diff = abs((int)lround(ref) - px[k]);
@@ -208,7 +210,7 @@ static struct agreement compare(const struct image *frame, const struct image *m
 	return a;
 }
 
-static int write_model(const char *dir, char *path, size_t size)
+static int write_model(const char *dir, bool color_0, char *path, size_t size)
 {
 	struct gltf_write_opts o = {.index_bytes = 4,
 				    .with_normals = 1,
@@ -229,14 +231,15 @@ static int write_model(const char *dir, char *path, size_t size)
 		double p[3] = {s.positions[v * 3], s.positions[v * 3 + 1], s.positions[v * 3 + 2]},
 		       c[3];
 
-		vertex_color(p, c);
+		vertex_color(p, true, c);
 		for (int k = 0; k < 3; k++)
 			s.colors[v * 4 + k] = (float)c[k];
 		s.colors[v * 4 + 3] = 1.0f;
 	}
 	snprintf(base, sizeof(base), "%s/base.png", dir);
-	snprintf(path, size, "%s/sphere-colored.glb", dir);
+	snprintf(path, size, "%s/sphere-%s.glb", dir, color_0 ? "colored" : "factor");
 	o.base_color_png = base;
+	o.color_type = color_0 ? o.color_type : 0;
 	ret = gltf_write(path, &s, &o);
 	mesh_release(&s);
 	return ret;
@@ -244,8 +247,8 @@ static int write_model(const char *dir, char *path, size_t size)
 
 /* Load, draw in vertex format f at highp or mediump, compare; prints one
  * line. */
-static int check_format(struct display *d, const char *model, enum vertex_format f, bool highp,
-			const struct image *matcap, const struct image *map)
+static int check_format(struct display *d, const char *model, bool color_0, enum vertex_format f,
+			bool highp, const struct image *matcap, const struct image *map)
 {
 	const struct tolerance *tol = highp ? &highp_tol : &mediump_tol;
 	struct gltf_options go = {.textures = GLTF_TEXTURE_BASE_COLOR};
@@ -261,7 +264,8 @@ static int check_format(struct display *d, const char *model, enum vertex_format
 
 	material_config_defaults(&cfg);
 	if (!r || gltf_load_options(model, &go, &m) || material_load(&mat, &cfg, &m, true) ||
-	    mat.features != (MATERIAL_BASE_COLOR | MATERIAL_BASE_MAP)) {
+	    mat.features != (MATERIAL_BASE_COLOR | MATERIAL_BASE_MAP) ||
+	    (m.colors != NULL) != color_0) {
 		fprintf(stderr, "the model or its base colour did not load\n");
 		goto out;
 	}
@@ -277,12 +281,13 @@ static int check_format(struct display *d, const char *model, enum vertex_format
 	d->present(d);
 	if (d->read_frame(d, &frame))
 		goto out;
-	a = compare(&frame, matcap, map);
+	a = compare(&frame, color_0, matcap, map);
 	share = (double)a.within / (double)a.pixels;
 	bad = a.pixels < 30000 || share < tol->share || a.worst > tol->worst;
-	printf("%-8s %-7s %ld pixels: %.2f%% within %d/255, worst %d/255, mean %.3f/255\n",
-	       f == VERTEX_COMPACT ? "compact" : "float32", highp ? "highp" : "mediump", a.pixels,
-	       100.0 * share, TOL, a.worst, a.sum / (3.0 * (double)a.pixels));
+	printf("%-8s %-8s %-7s %ld pixels: %.2f%% within %d/255, worst %d/255, mean %.3f/255\n",
+	       color_0 ? "COLOR_0" : "constant", f == VERTEX_COMPACT ? "compact" : "float32",
+	       highp ? "highp" : "mediump", a.pixels, 100.0 * share, TOL, a.worst,
+	       a.sum / (3.0 * (double)a.pixels));
 out:
 	image_release(&frame);
 	material_release(&mat);
@@ -300,7 +305,8 @@ static int remove_one(const char *path, const struct stat *st, int flag, struct 
 int main(void)
 {
 	struct display_config cfg = {.width = SIZE, .height = SIZE};
-	char dir[] = "/tmp/base-color-check.XXXXXX", model[4096], map_path[4096];
+	char dir[] = "/tmp/base-color-check.XXXXXX", model[4096], factor_model[4096],
+	     map_path[4096];
 	struct display *d;
 	struct image matcap = {0}, map = {0};
 	int bad = 1;
@@ -314,16 +320,20 @@ int main(void)
 	d = display_egl_new(&cfg);
 #endif
 	snprintf(map_path, sizeof(map_path), "%s/base.png", dir);
-	if (d && !write_model(dir, model, sizeof(model)) && !image_load(map_path, &map) &&
-	    !bake_matcap(BAKE_GOLD, 256, &matcap)) {
+	if (d && !write_model(dir, true, model, sizeof(model)) &&
+	    !write_model(dir, false, factor_model, sizeof(factor_model)) &&
+	    !image_load(map_path, &map) && !bake_matcap(BAKE_GOLD, 256, &matcap)) {
 		printf("%dx%d, the gold matcap x COLOR_0 x baseColorFactor x baseColorTexture "
 		       "(KHR_texture_transform); held: highp %.1f%% within %d/255 and none beyond "
 		       "%d, mediump %.1f%% and none beyond %d\n",
 		       SIZE, SIZE, highp_tol.share * 100, TOL, highp_tol.worst,
 		       mediump_tol.share * 100, mediump_tol.worst);
-		bad = check_format(d, model, VERTEX_COMPACT, true, &matcap, &map);
-		bad |= check_format(d, model, VERTEX_FLOAT32, true, &matcap, &map);
-		bad |= check_format(d, model, VERTEX_COMPACT, false, &matcap, &map);
+		bad = check_format(d, model, true, VERTEX_COMPACT, true, &matcap, &map);
+		bad |= check_format(d, model, true, VERTEX_FLOAT32, true, &matcap, &map);
+		bad |= check_format(d, model, true, VERTEX_COMPACT, false, &matcap, &map);
+		/* Without COLOR_0 the one colour is a constant attribute. */
+		bad |= check_format(d, factor_model, false, VERTEX_COMPACT, true, &matcap, &map);
+		bad |= check_format(d, factor_model, false, VERTEX_FLOAT32, false, &matcap, &map);
 	}
 	image_release(&matcap);
 	image_release(&map);

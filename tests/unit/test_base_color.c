@@ -223,7 +223,9 @@ static void tex_coord_picks_the_uv_set(void **state)
 	o.uv_set = 0;
 	write_model(f, "uv1-missing.glb", o, path, sizeof(path));
 	assert_int_equal(gltf_load_textures(path, GLTF_TEXTURE_BASE_COLOR, &m), 0);
-	assert_non_null(m.colors); /* the default factor 0.8 0.7 0.6 */
+	assert_null(m.colors); /* one colour, the default factor 0.8 0.7 0.6: a constant */
+	assert_true(m.material.has_colors);
+	assert_true(fabsf(m.material.color[0] - 0.8f) < 1e-6f);
 	assert_null(m.uvs);
 	assert_int_equal(m.material.base_map.width, 0);
 	mesh_release(&m);
@@ -306,6 +308,111 @@ static void decodes_only_what_is_used(void **state)
 	mesh_release(&m);
 }
 
+static void base64(const uint8_t *in, size_t n, char *out)
+{
+	static const char abc[] =
+	    "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+
+	for (size_t i = 0; i < n; i += 3) {
+		uint32_t v = (uint32_t)in[i] << 16 | (i + 1 < n ? (uint32_t)in[i + 1] << 8 : 0) |
+			     (i + 2 < n ? in[i + 2] : 0);
+
+		for (int k = 0; k < 4; k++)
+			*out++ = (size_t)k <= n - i ? abc[(v >> (18 - 6 * k)) & 63] : '=';
+	}
+	*out = '\0';
+}
+
+/* Three triangles, a primitive each, of materials mat[i] (-1: none) from
+ * the JSON array materials; the third with COLOR_0 (0.5, 0.25, 1) when
+ * color_0. */
+static void load_three(const char *materials, const int mat[3], bool color_0, struct mesh *m)
+{
+	float data[36] = {0};
+	char b64[200], prim[3][96], json[2048];
+	int n;
+
+	for (int t = 0; t < 3; t++) {
+		float *v = data + t * 9;
+		v[0] = (float)t, v[3] = (float)t + 1, v[6] = (float)t, v[7] = 1, v[8] = 0.1f * t;
+		char material[32] = "";
+
+		if (mat[t] >= 0)
+			snprintf(material, sizeof(material), ",\"material\":%d", mat[t]);
+		snprintf(prim[t], sizeof(prim[t]), "{\"attributes\":{\"POSITION\":%d%s}%s}", t,
+			 t == 2 && color_0 ? ",\"COLOR_0\":3" : "", material);
+	}
+	for (int k = 0; k < 3; k++)
+		data[27 + k * 3] = 0.5f, data[28 + k * 3] = 0.25f, data[29 + k * 3] = 1.0f;
+	base64((const uint8_t *)data, sizeof(data), b64);
+	n = snprintf(
+	    json, sizeof(json),
+	    "{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":144,\"uri\":"
+	    "\"data:application/octet-stream;base64,%s\"}],\"bufferViews\":[{\"buffer\":0,"
+	    "\"byteLength\":108},{\"buffer\":0,\"byteOffset\":108,\"byteLength\":36}],"
+	    "\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":3,\"type\":"
+	    "\"VEC3\"},{\"bufferView\":0,\"byteOffset\":36,\"componentType\":5126,\"count\":3,"
+	    "\"type\":\"VEC3\"},{\"bufferView\":0,\"byteOffset\":72,\"componentType\":5126,"
+	    "\"count\":3,\"type\":\"VEC3\"},{\"bufferView\":1,\"componentType\":5126,\"count\":"
+	    "3,\"type\":\"VEC3\"}],\"materials\":%s,\"meshes\":[{\"primitives\":[%s,%s,%s]}],"
+	    "\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}],\"scene\":0}",
+	    b64, materials, prim[0], prim[1], prim[2]);
+	assert_true(n > 0 && (size_t)n < sizeof(json));
+	assert_int_equal(gltf_load_memory_textures("three.gltf", (const uint8_t *)json, (size_t)n,
+						   NULL, GLTF_TEXTURE_BASE_COLOR, m),
+			 0);
+	assert_int_equal(m->vertex_count, 9);
+}
+
+static void assert_colour(const float *c, float r, float g, float b, float a)
+{
+	assert_true(c[0] == r && c[1] == g && c[2] == b && c[3] == a);
+}
+
+/* A model of one colour keeps it as a constant (mesh_material.color, a
+ * constant vertex attribute): no colour per vertex to build, store or
+ * upload. Colours that differ between primitives, or COLOR_0, are per
+ * vertex, and the constant so far becomes the first vertices' colours. */
+static void one_colour_is_a_constant(void **state)
+{
+	static const char *red = "{\"pbrMetallicRoughness\":{\"baseColorFactor\":[1,0,0,1]}}";
+	static const char *green = "{\"pbrMetallicRoughness\":{\"baseColorFactor\":[0,1,0,1]}}";
+	char two[256], one[128];
+	struct material_config cfg;
+	struct material mat;
+	struct mesh m;
+
+	(void)state;
+	snprintf(one, sizeof(one), "[%s]", red);
+	snprintf(two, sizeof(two), "[%s,%s]", red, green);
+	material_config_defaults(&cfg);
+	load_three(one, (const int[3]){0, 0, 0}, false, &m);
+	assert_null(m.colors);
+	assert_true(m.material.has_colors);
+	assert_colour(m.material.color, 1, 0, 0, 0);
+	assert_int_equal(material_load(&mat, &cfg, &m, true), 0);
+	assert_int_equal(mat.features, MATERIAL_BASE_COLOR);
+	assert_colour(mat.vertex_color, 1, 0, 0, 0);
+	material_release(&mat);
+	mesh_release(&m);
+	load_three(two, (const int[3]){0, 1, 0}, false, &m);
+	assert_non_null(m.colors);
+	for (int v = 0; v < 9; v++)
+		assert_colour(m.colors + v * 4, v / 3 != 1, v / 3 == 1, 0, 0);
+	mesh_release(&m);
+	load_three(one, (const int[3]){0, 0, 0}, true, &m);
+	assert_non_null(m.colors);
+	for (int v = 0; v < 9; v++)
+		assert_colour(m.colors + v * 4, v < 6 ? 1.0f : 0.5f, 0, 0, 0);
+	mesh_release(&m);
+	/* A primitive without a material is white. */
+	load_three(one, (const int[3]){-1, 0, -1}, false, &m);
+	assert_non_null(m.colors);
+	for (int v = 0; v < 9; v++)
+		assert_colour(m.colors + v * 4, 1, v / 3 != 1, v / 3 != 1, 0);
+	mesh_release(&m);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -315,6 +422,7 @@ int main(void)
 	    cmocka_unit_test(tex_coord_picks_the_uv_set),
 	    cmocka_unit_test(packed_and_simplified),
 	    cmocka_unit_test(decodes_only_what_is_used),
+	    cmocka_unit_test(one_colour_is_a_constant),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);
 }

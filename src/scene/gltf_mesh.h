@@ -1,0 +1,19 @@
+// Inside the glTF shim (C++ only): a parsed model into the plain struct
+// mesh of src/scene/mesh.h (gltf_mesh.cc).
+#ifndef MK_GLTF_MESH_H
+#define MK_GLTF_MESH_H
+
+#include "scene/gltf_texture.h"
+#include "scene/gltf_material.h"
+#include "scene/mesh.h"
+
+#include <tiny_gltf.h>
+
+// The scene o asks for (o->scene, else the file's), every triangle
+// primitive of it, into out, with the material's textures o asks for
+// from images. Logs what it leaves out; an error names the file (name),
+// the field and what was expected. Returns 0, -EINVAL or -ENOMEM.
+int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_options *o,
+		    const GltfImages &images, struct mesh *out);
+
+#endif
