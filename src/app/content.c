@@ -21,17 +21,31 @@
 #define KNOT_TUBULAR 256
 #define KNOT_RADIAL  32
 
-/* path NULL: the built-in knot. */
-static int load_model(const char *path, const struct content_config *o, struct mesh *mesh)
+/* path NULL: the built-in knot. Else the bytes read from path. */
+static int load_model(const char *path, const uint8_t *data, size_t size,
+		      const struct content_config *o, struct mesh *mesh)
 {
 	if (path) {
 		struct gltf_options g = {.textures = material_gltf_textures(&o->material),
 					 .scene = o->model_scene,
 					 .scene_setting = "[scene] model_scene"};
 
-		return gltf_load_options(path, &g, mesh);
+		return gltf_load_read(path, data, size, &g, mesh);
 	}
 	return mesh_torus_knot(mesh, KNOT_TUBULAR, KNOT_RADIAL);
+}
+
+/* The same, read from path first. */
+static int load_mesh_file(const char *path, const struct content_config *o, struct mesh *mesh)
+{
+	uint8_t *data = NULL;
+	size_t size = 0;
+	int ret = path ? gltf_read(path, &data, &size) : 0;
+
+	if (!ret)
+		ret = load_model(path, data, size, o, mesh);
+	free(data);
+	return ret;
 }
 
 /* The prepared-mesh cache (scene/mesh_cache.h). */
@@ -43,10 +57,12 @@ static void shell_counts(struct content *s, const struct mesh_packed *m)
 	s->mesh.index_count = m->index_count;
 }
 
-static int content_cache_lookup(struct content *s, const struct content_config *c, const char *path)
+static int content_cache_lookup(struct content *s, const struct content_config *c, const char *path,
+				const uint8_t *data, size_t size)
 {
 	char dir[PATH_MAX];
-	int ret = mesh_cache_scene_key(path, c->lod_pixels, &c->material, &s->cache_key);
+	int ret =
+	    mesh_cache_scene_key(path, data, size, c->lod_pixels, &c->material, &s->cache_key);
 
 	/* Another of the file's scenes is another mesh. */
 	if (!ret && c->model_scene)
@@ -159,10 +175,19 @@ static int load_matcap(const struct content_config *o, bool strict, struct conte
 	return s->matcap_path ? 0 : -ENOMEM;
 }
 
-/* The model of one file, from the cache or parsed; strict: no knot. */
+/* The model of one file, from the cache or parsed; strict: no knot. Its
+ * bytes are read once: the cache's key hashes them, the parser reads them,
+ * and they are given back before the first frame. */
 static int load_mesh(struct content *s, const struct content_config *o, const char *path)
 {
-	return content_cache_lookup(s, o, path) ? load_model(path, o, &s->mesh) : 0;
+	uint8_t *data = NULL;
+	size_t size = 0;
+	int ret = path ? gltf_read(path, &data, &size) : 0;
+
+	if (!ret && content_cache_lookup(s, o, path, data, size))
+		ret = load_model(path, data, size, o, &s->mesh);
+	free(data);
+	return ret;
 }
 
 struct try_ctx {
@@ -293,7 +318,7 @@ int content_prepare(struct content *s, const struct content_config *o, int width
 		mesh_cache_entry_free(s->cached);
 		s->cached = NULL;
 		mesh_release(&s->mesh);
-		ret = load_model(s->model_path, o, &s->mesh);
+		ret = load_mesh_file(s->model_path, o, &s->mesh);
 	}
 	if (!ret)
 		ret = material_prepare_mesh(&s->material, &s->mesh, width, height);

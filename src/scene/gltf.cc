@@ -6,11 +6,13 @@
 #include "scene/gltf_fs.h"
 #include "scene/gltf_material.h"
 #include "scene/gltf_mesh.h"
+#include "util/file.h"
 #include "util/log.h"
 
 #include <tiny_gltf.h>
 
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -116,20 +118,36 @@ extern "C" int gltf_load_memory(const char *name, const uint8_t *data, size_t si
 	return gltf_load_memory_textures(name, data, size, dir, 0, out);
 }
 
-extern "C" int gltf_load_options(const char *path, const struct gltf_options *o, struct mesh *out)
+extern "C" int gltf_read(const char *path, uint8_t **data, size_t *size)
 {
-	std::vector<unsigned char> bytes;
-	std::string err;
+	int ret = file_read_all(path, GLTF_MAX_FILE, data, size);
+	if (ret)
+		log_err("%s: %s", gltf_ext::escape(path).c_str(),
+			ret == -EFBIG
+			    ? "larger than the limit (512 MiB)"
+			    : ("cannot open: " + std::string(std::strerror(-ret))).c_str());
+	return ret;
+}
+
+extern "C" int gltf_load_read(const char *path, const uint8_t *data, size_t size,
+			      const struct gltf_options *o, struct mesh *out)
+{
 	std::string dir = path;
 	size_t slash = dir.rfind('/');
 	dir = slash == std::string::npos ? "" : dir.substr(0, slash);
+	return gltf_load_memory_options(path, data, size, dir.c_str(), o, out);
+}
 
+extern "C" int gltf_load_options(const char *path, const struct gltf_options *o, struct mesh *out)
+{
+	uint8_t *data;
+	size_t size;
 	std::memset(out, 0, sizeof(*out));
-	if (!gltf_read_file(path, GLTF_MAX_FILE, &bytes, &err)) {
-		log_err("%s: %s", gltf_ext::escape(path).c_str(), gltf_ext::escape(err).c_str());
-		return -ENOENT;
-	}
-	return gltf_load_memory_options(path, bytes.data(), bytes.size(), dir.c_str(), o, out);
+	int ret = gltf_read(path, &data, &size);
+	if (!ret)
+		ret = gltf_load_read(path, data, size, o, out);
+	std::free(data);
+	return ret;
 }
 
 extern "C" int gltf_load_textures(const char *path, unsigned textures, struct mesh *out)

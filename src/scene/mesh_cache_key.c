@@ -1,16 +1,13 @@
 #include "scene/mesh_cache.h"
+#include "util/file.h"
 
 #include <elf.h>
 #include <errno.h>
-#include <fcntl.h>
 #include <limits.h>
 #include <link.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/mman.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 /* Part of every content hash: a change of what the entries hold or how
  * the key is made makes every older entry a miss. */
@@ -60,33 +57,19 @@ uint64_t mesh_cache_hash(const void *data, size_t size, uint64_t seed)
 	return h;
 }
 
-/* The whole file, mapped for the time of the hash: no copy on the heap. */
-static int hash_file(const char *path, uint64_t seed, uint64_t *out, void **map, size_t *size)
-{
-	struct stat st;
-	int fd = open(path, O_RDONLY | O_CLOEXEC), ret = 0;
+/* Files the key reads: no model beyond what the loader takes. */
+#define KEY_MAX_FILE (1ull << 30)
 
-	*map = NULL;
-	*size = 0;
-	if (fd < 0)
-		return -errno;
-	if (fstat(fd, &st) || !S_ISREG(st.st_mode)) {
-		ret = -EINVAL;
-		goto out;
-	}
-	*size = (size_t)st.st_size;
-	if (*size) {
-		/* Populated at once: one call, not a fault per page. */
-		*map = mmap(NULL, *size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
-		if (*map == MAP_FAILED) {
-			*map = NULL;
-			ret = -errno;
-			goto out;
-		}
-	}
-	*out = mesh_cache_hash(*map, *size, seed);
-out:
-	close(fd);
+/* A file's bytes, read (not mapped: see file_read_all). */
+static int hash_file(const char *path, uint64_t seed, uint64_t *out)
+{
+	unsigned char *data;
+	size_t size;
+	int ret = file_read_all(path, KEY_MAX_FILE, &data, &size);
+
+	if (!ret)
+		*out = mesh_cache_hash(data, size, seed);
+	free(data);
 	return ret;
 }
 
@@ -103,8 +86,6 @@ static uint64_t hash_references(const char *path, const char *text, size_t size,
 		const char *q = p + 5, *close;
 		char file[PATH_MAX];
 		uint64_t fh = 0;
-		void *map;
-		size_t fsize;
 
 		p = q;
 		while (q < end &&
@@ -118,10 +99,8 @@ static uint64_t hash_references(const char *path, const char *text, size_t size,
 			continue;
 		if (snprintf(file, sizeof(file), "%.*s/%.*s", dir_len, dir, (int)(close - q), q) <
 			(int)sizeof(file) &&
-		    !hash_file(file, h, &fh, &map, &fsize))
+		    !hash_file(file, h, &fh))
 			h ^= fh;
-		if (map)
-			munmap(map, fsize);
 	}
 	return h;
 }
@@ -140,18 +119,24 @@ static size_t json_length(const unsigned char *data, size_t size, size_t *start)
 	return len <= size - 20 ? len : size - 20;
 }
 
+void mesh_cache_hash_model_bytes(const char *path, const unsigned char *data, size_t size,
+				 uint64_t *out)
+{
+	size_t start, json = json_length(data, size, &start);
+
+	*out = hash_references(path, (const char *)data + start, json,
+			       mesh_cache_hash(data, size, KEY_VERSION));
+}
+
 int mesh_cache_hash_model(const char *path, uint64_t *out)
 {
-	size_t size, start, json;
-	void *map;
-	int ret = hash_file(path, KEY_VERSION, out, &map, &size);
+	unsigned char *data;
+	size_t size;
+	int ret = file_read_all(path, KEY_MAX_FILE, &data, &size);
 
-	if (!ret && map) {
-		json = json_length(map, size, &start);
-		*out = hash_references(path, (const char *)map + start, json, *out);
-	}
-	if (map)
-		munmap(map, size);
+	if (!ret)
+		mesh_cache_hash_model_bytes(path, data, size, out);
+	free(data);
 	return ret;
 }
 
@@ -208,7 +193,8 @@ static int build_id_note(struct dl_phdr_info *info, size_t size, void *data)
  * is part of the key: a rebuilt kiosk (another loader, another
  * simplifier) prepares again rather than trust what an older one wrote;
  * without a build ID, the program's bytes are. */
-int mesh_cache_scene_key(const char *model, double lod_pixels, const struct material_config *m,
+int mesh_cache_scene_key(const char *model, const unsigned char *data, size_t size,
+			 double lod_pixels, const struct material_config *m,
 			 struct mesh_cache_key *out)
 {
 	const double values[] = {lod_pixels, m->detail, m->iridescence, VERTEX_COMPACT,
@@ -223,7 +209,7 @@ int mesh_cache_scene_key(const char *model, double lod_pixels, const struct mate
 	if (!program)
 		ret = mesh_cache_hash_model("/proc/self/exe", &program);
 	if (!ret)
-		ret = mesh_cache_hash_model(model, &out->content);
+		mesh_cache_hash_model_bytes(model, data, size, &out->content);
 	out->settings = mesh_cache_hash(values, sizeof(values), program);
 	return ret;
 }

@@ -7,6 +7,7 @@
 #include "scene/mesh.h"
 #include "scene/mesh_cache.h"
 #include "scene/mesh_pack.h"
+#include "util/file.h"
 #include "util/log.h"
 
 #include <errno.h>
@@ -258,6 +259,22 @@ static void the_key_follows_the_bytes(void **state)
 	assert_int_not_equal(a, b); /* the buffer beside it counts */
 	assert_int_equal(b, c);
 	assert_int_equal(mesh_cache_hash_model("/nonexistent/m.glb", &a), -ENOENT);
+	/* The bytes the loader read key it as the file does. */
+	{
+		unsigned char *data;
+		size_t size;
+
+		assert_int_equal(file_read_all(model, 1 << 20, &data, &size), 0);
+		assert_int_equal(size, strlen((const char *)data)); /* NUL after the end */
+		mesh_cache_hash_model_bytes(model, data, size, &a);
+		assert_int_equal(a, b);
+		free(data);
+		/* Read, and refused: too large, not a regular file, missing. */
+		assert_int_equal(file_read_all(model, size - 1, &data, &size), -EFBIG);
+		assert_null(data);
+		assert_int_equal(file_read_all(f->dir, 1 << 20, &data, &size), -EINVAL);
+		assert_int_equal(file_read_all("/nonexistent/m.glb", 1, &data, &size), -ENOENT);
+	}
 }
 
 static void the_directory_is_named_as_systemd_and_xdg_say(void **state)
