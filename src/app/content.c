@@ -57,12 +57,10 @@ static void shell_counts(struct content *s, const struct mesh_packed *m)
 	s->mesh.index_count = m->index_count;
 }
 
-static int content_cache_lookup(struct content *s, const struct content_config *c, const char *path,
-				const uint8_t *data, size_t size)
+static int content_cache_lookup(struct content *s, const struct content_config *c, const char *path)
 {
 	char dir[PATH_MAX];
-	int ret =
-	    mesh_cache_scene_key(path, data, size, c->lod_pixels, &c->material, &s->cache_key);
+	int ret = mesh_cache_scene_key(path, c->lod_pixels, &c->material, &s->cache_key);
 
 	/* Another of the file's scenes is another mesh. */
 	if (!ret && c->model_scene)
@@ -175,19 +173,10 @@ static int load_matcap(const struct content_config *o, bool strict, struct conte
 	return s->matcap_path ? 0 : -ENOMEM;
 }
 
-/* The model of one file, from the cache or parsed; strict: no knot. Its
- * bytes are read once: the cache's key hashes them, the parser reads them,
- * and they are given back before the first frame. */
+/* The model of one file, from the cache or parsed; strict: no knot. */
 static int load_mesh(struct content *s, const struct content_config *o, const char *path)
 {
-	uint8_t *data = NULL;
-	size_t size = 0;
-	int ret = path ? gltf_read(path, &data, &size) : 0;
-
-	if (!ret && content_cache_lookup(s, o, path, data, size))
-		ret = load_model(path, data, size, o, &s->mesh);
-	free(data);
-	return ret;
+	return content_cache_lookup(s, o, path) ? load_mesh_file(path, o, &s->mesh) : 0;
 }
 
 struct try_ctx {

@@ -1,13 +1,15 @@
 #include "scene/mesh_cache.h"
-#include "util/file.h"
 
 #include <elf.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <limits.h>
 #include <link.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 /* Part of every content hash: a change of what the entries hold or how
  * the key is made makes every older entry a miss. */
@@ -26,30 +28,43 @@ static uint64_t round64(uint64_t acc, uint64_t w)
 }
 
 /* xxHash64's shape: four independent lanes of eight bytes each (the CPU
- * runs them side by side), then the tail, then a final avalanche. Several
- * GB/s, so a 30 MB model costs a few milliseconds. */
-uint64_t mesh_cache_hash(const void *data, size_t size, uint64_t seed)
-{
-	const uint64_t p1 = 0x9E3779B185EBCA87ull, p2 = 0xC2B2AE3D27D4EB4Full;
-	const unsigned char *b = data;
-	uint64_t lane[4] = {seed + p1 + p2, seed + p2, seed, seed - p1}, h, w;
-	size_t i = 0;
+ * runs them side by side) over every whole 32-byte stripe, then the tail,
+ * then a final avalanche. Several GB/s, so a 30 MB model costs a few
+ * milliseconds. In steps, so that a file is hashed as it is read. */
+static const uint64_t p1 = 0x9E3779B185EBCA87ull, p2 = 0xC2B2AE3D27D4EB4Full;
 
-	for (; i + 32 <= size; i += 32)
+static void lanes_start(uint64_t lane[4], uint64_t seed)
+{
+	lane[0] = seed + p1 + p2, lane[1] = seed + p2, lane[2] = seed, lane[3] = seed - p1;
+}
+
+static void lanes_add(uint64_t lane[4], const unsigned char *b, size_t stripes)
+{
+	uint64_t w;
+
+	for (size_t i = 0; i < stripes * 32; i += 32)
 		for (int k = 0; k < 4; k++) {
 			memcpy(&w, b + i + 8 * k, 8);
 			lane[k] = round64(lane[k], w);
 		}
-	h = rotl(lane[0], 1) + rotl(lane[1], 7) + rotl(lane[2], 12) + rotl(lane[3], 18);
+}
+
+/* tail: the last size % 32 bytes. */
+static uint64_t lanes_finish(const uint64_t lane[4], const unsigned char *tail, uint64_t size)
+{
+	uint64_t h = rotl(lane[0], 1) + rotl(lane[1], 7) + rotl(lane[2], 12) + rotl(lane[3], 18);
+	size_t i = 0, n = (size_t)(size % 32);
+	uint64_t w;
+
 	for (int k = 0; k < 4; k++)
 		h = (h ^ round64(0, lane[k])) * p1 + p2;
 	h += size;
-	for (; i + 8 <= size; i += 8) {
-		memcpy(&w, b + i, 8);
+	for (; i + 8 <= n; i += 8) {
+		memcpy(&w, tail + i, 8);
 		h = rotl(h ^ round64(0, w), 27) * p1 + p2;
 	}
-	for (w = 0; i < size; i++)
-		w = (w << 8) | b[i];
+	for (w = 0; i < n; i++)
+		w = (w << 8) | tail[i];
 	h = rotl(h ^ round64(0, w), 27) * p1 + p2;
 	h ^= h >> 33;
 	h *= p2;
@@ -57,19 +72,75 @@ uint64_t mesh_cache_hash(const void *data, size_t size, uint64_t seed)
 	return h;
 }
 
-/* Files the key reads: no model beyond what the loader takes. */
-#define KEY_MAX_FILE (1ull << 30)
+uint64_t mesh_cache_hash(const void *data, size_t size, uint64_t seed)
+{
+	uint64_t lane[4];
 
-/* A file's bytes, read (not mapped: see file_read_all). */
+	lanes_start(lane, seed);
+	lanes_add(lane, data, size / 32);
+	return lanes_finish(lane, (const unsigned char *)data + size / 32 * 32, size);
+}
+
+/* Files are read in pieces of this many bytes (a multiple of 32), each
+ * hashed while it is warm in the cache: a warm start hashes a 30 MB model
+ * with no 30 MB buffer. Read, never mapped: a file cut short while mapped
+ * raises SIGBUS, which would take the kiosk down. */
+#define PIECE (256u << 10)
+
+/* count bytes at off, fewer at the end of the file; or -errno. */
+static ssize_t read_at(int fd, unsigned char *buf, size_t count, off_t off)
+{
+	size_t got = 0;
+	ssize_t n = 1;
+
+	while (got < count && n > 0) {
+		n = pread(fd, buf + got, count - got, off + (off_t)got);
+		if (n < 0 && errno == EINTR)
+			n = 1;
+		else if (n > 0)
+			got += (size_t)n;
+	}
+	return n < 0 ? -errno : (ssize_t)got;
+}
+
+/* The file's hash, and its first 20 bytes (zeros past its end). */
+static int hash_fd(int fd, uint64_t seed, uint64_t *out, unsigned char head[20])
+{
+	unsigned char *buf = malloc(PIECE);
+	uint64_t lane[4], size = 0;
+	ssize_t n = PIECE;
+	int ret = 0;
+
+	if (!buf)
+		return -ENOMEM;
+	lanes_start(lane, seed);
+	memset(head, 0, 20);
+	while (n == PIECE) {
+		n = read_at(fd, buf, PIECE, (off_t)size);
+		if (n < 0) {
+			ret = (int)n;
+			goto out;
+		}
+		if (!size)
+			memcpy(head, buf, n < 20 ? (size_t)n : 20);
+		lanes_add(lane, buf, (size_t)n / 32);
+		size += (uint64_t)n;
+	}
+	*out = lanes_finish(lane, buf + (size_t)n / 32 * 32, size);
+out:
+	free(buf);
+	return ret;
+}
+
 static int hash_file(const char *path, uint64_t seed, uint64_t *out)
 {
-	unsigned char *data;
-	size_t size;
-	int ret = file_read_all(path, KEY_MAX_FILE, &data, &size);
+	unsigned char head[20];
+	int fd = open(path, O_RDONLY | O_CLOEXEC), ret;
 
-	if (!ret)
-		*out = mesh_cache_hash(data, size, seed);
-	free(data);
+	if (fd < 0)
+		return -errno;
+	ret = hash_fd(fd, seed, out, head);
+	close(fd);
 	return ret;
 }
 
@@ -105,38 +176,50 @@ static uint64_t hash_references(const char *path, const char *text, size_t size,
 	return h;
 }
 
-/* A .glb's JSON is its first chunk (after a 12-byte header and the
- * chunk's length and type); a .gltf is all JSON. */
-static size_t json_length(const unsigned char *data, size_t size, size_t *start)
+/* The text "uri"s are looked for in: a .glb's JSON is its first chunk
+ * (after a 12-byte header and the chunk's length and type), a .gltf is
+ * all JSON. Into *json (malloc'd), *size bytes. */
+static int read_json(int fd, const unsigned char head[20], char **json, size_t *size)
 {
+	struct stat st;
 	uint32_t len;
+	off_t start = 0;
+	ssize_t n;
 
-	*start = 0;
-	if (size < 20 || memcmp(data, "glTF", 4))
-		return size;
-	memcpy(&len, data + 12, 4);
-	*start = 20;
-	return len <= size - 20 ? len : size - 20;
-}
-
-void mesh_cache_hash_model_bytes(const char *path, const unsigned char *data, size_t size,
-				 uint64_t *out)
-{
-	size_t start, json = json_length(data, size, &start);
-
-	*out = hash_references(path, (const char *)data + start, json,
-			       mesh_cache_hash(data, size, KEY_VERSION));
+	*json = NULL;
+	*size = 0;
+	if (fstat(fd, &st))
+		return -errno;
+	*size = (size_t)st.st_size;
+	if (!memcmp(head, "glTF", 4) && st.st_size >= 20) {
+		memcpy(&len, head + 12, 4);
+		start = 20;
+		*size = len <= st.st_size - 20 ? len : (size_t)(st.st_size - 20);
+	}
+	*json = malloc(*size + 1);
+	if (!*json)
+		return -ENOMEM;
+	n = read_at(fd, (unsigned char *)*json, *size, start);
+	*size = n > 0 ? (size_t)n : 0;
+	return n < 0 ? (int)n : 0;
 }
 
 int mesh_cache_hash_model(const char *path, uint64_t *out)
 {
-	unsigned char *data;
-	size_t size;
-	int ret = file_read_all(path, KEY_MAX_FILE, &data, &size);
+	unsigned char head[20];
+	char *json = NULL;
+	size_t size = 0;
+	int fd = open(path, O_RDONLY | O_CLOEXEC), ret;
 
+	if (fd < 0)
+		return -errno;
+	ret = hash_fd(fd, KEY_VERSION, out, head);
 	if (!ret)
-		mesh_cache_hash_model_bytes(path, data, size, out);
-	free(data);
+		ret = read_json(fd, head, &json, &size);
+	if (!ret)
+		*out = hash_references(path, json, size, *out);
+	free(json);
+	close(fd);
 	return ret;
 }
 
@@ -193,8 +276,7 @@ static int build_id_note(struct dl_phdr_info *info, size_t size, void *data)
  * is part of the key: a rebuilt kiosk (another loader, another
  * simplifier) prepares again rather than trust what an older one wrote;
  * without a build ID, the program's bytes are. */
-int mesh_cache_scene_key(const char *model, const unsigned char *data, size_t size,
-			 double lod_pixels, const struct material_config *m,
+int mesh_cache_scene_key(const char *model, double lod_pixels, const struct material_config *m,
 			 struct mesh_cache_key *out)
 {
 	const double values[] = {lod_pixels, m->detail, m->iridescence, VERTEX_COMPACT,
@@ -209,7 +291,7 @@ int mesh_cache_scene_key(const char *model, const unsigned char *data, size_t si
 	if (!program)
 		ret = mesh_cache_hash_model("/proc/self/exe", &program);
 	if (!ret)
-		mesh_cache_hash_model_bytes(model, data, size, &out->content);
+		ret = mesh_cache_hash_model(model, &out->content);
 	out->settings = mesh_cache_hash(values, sizeof(values), program);
 	return ret;
 }
