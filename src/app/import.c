@@ -1,6 +1,7 @@
 #include "app/import.h"
 #include "app/content.h"
 #include "app/options.h"
+#include "util/file.h"
 #include "util/log.h"
 
 #include <dirent.h>
@@ -127,20 +128,20 @@ static int open_plain(const struct import *im, int dir, const char *name, int *f
 	return 1;
 }
 
-/* Counted against the budget first; then under a temporary name, synced,
- * renamed. */
+/* Counted against the budget first; then replaced whole and synced
+ * (util/file.h). */
 static int copy_file(struct import *im, int from_dir, const char *name, const char *to_dir)
 {
-	char tmp[PATH_MAX], dst[PATH_MAX];
+	char dst[PATH_MAX];
+	struct file_atomic a;
 	struct stat st;
-	int in, out = -1, ret = open_plain(im, from_dir, name, &in, &st);
+	int in, ret = open_plain(im, from_dir, name, &in, &st);
 
 	if (ret < 0)
 		log_err("%s/%s: cannot open: %s", im->from, name, strerror(-ret));
 	if (ret)
 		return ret;
 	snprintf(dst, sizeof(dst), "%s/%s", to_dir, name);
-	snprintf(tmp, sizeof(tmp), "%s/.%s.part", to_dir, name);
 	im->total += st.st_size;
 	if (im->total > im->budget) {
 		log_err("%s: the files come to more than %lld MiB, the most an import may take "
@@ -149,18 +150,10 @@ static int copy_file(struct import *im, int from_dir, const char *name, const ch
 		ret = -EFBIG;
 		goto out;
 	}
-	if ((out = open(tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644)) < 0)
-		ret = -errno;
+	ret = file_atomic_begin(&a, dst, 0644);
 	if (!ret)
-		ret = copy_fd(in, out, st.st_size);
-	if (!ret && fsync(out))
-		ret = -errno;
-	if (out >= 0 && close(out) && !ret)
-		ret = -errno;
-	if (!ret && rename(tmp, dst))
-		ret = -errno;
+		ret = file_atomic_end(&a, copy_fd(in, a.fd, st.st_size), true);
 	if (ret) {
-		unlink(tmp);
 		log_err("%s/%s: cannot copy into %s: %s", im->from, name, to_dir,
 			ret == -ESTALE ? "it changed while it was copied" : strerror(-ret));
 	}

@@ -1,5 +1,6 @@
 #include "app/status.h"
 #include "util/clock.h"
+#include "util/file.h"
 #include "util/log.h"
 
 #include <errno.h>
@@ -196,39 +197,30 @@ static void write_json(FILE *f, const struct status_report *r, const char *frame
 	fputs("\n}\n", f);
 }
 
-/* Written under a temporary name and renamed, so a reader never sees half
- * a file. */
+/* Each replaced whole (util/file.h), so that a reader never sees half a
+ * file; not synced: the folder is in /run, gone at the next boot anyway. */
 static int write_png(const char *dir, const struct image *frame, char *path, size_t n)
 {
-	char tmp[160];
+	struct file_atomic a;
 	int ret;
 
 	snprintf(path, n, "%s/%s", dir, STATUS_FRAME);
-	snprintf(tmp, sizeof(tmp), "%s/.%s.tmp", dir, STATUS_FRAME);
-	ret = image_write_png(tmp, frame);
-	if (!ret && (chmod(tmp, 0600) || rename(tmp, path)))
-		ret = -errno;
-	if (ret)
-		unlink(tmp);
+	ret = file_atomic_begin(&a, path, 0600);
+	if (!ret)
+		ret = file_atomic_end(&a, image_write_png(a.tmp, frame), false);
 	return ret;
 }
 
 static int write_state(const char *dir, const char *json, char *path, size_t n)
 {
-	char tmp[160];
-	FILE *f;
-	int ret = 0;
+	size_t len = strlen(json);
+	struct file_atomic a;
+	int ret;
 
 	snprintf(path, n, "%s/%s", dir, STATUS_STATE);
-	snprintf(tmp, sizeof(tmp), "%s/.%s.tmp", dir, STATUS_STATE);
-	f = fopen(tmp, "we");
-	if (!f)
-		return -errno;
-	fputs(json, f);
-	if (fclose(f) || chmod(tmp, 0600) || rename(tmp, path)) {
-		ret = -errno;
-		unlink(tmp);
-	}
+	ret = file_atomic_begin(&a, path, 0600);
+	if (!ret)
+		ret = file_atomic_end(&a, write(a.fd, json, len) == (ssize_t)len ? 0 : -EIO, false);
 	return ret;
 }
 

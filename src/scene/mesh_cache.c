@@ -1,4 +1,5 @@
 #include "scene/mesh_cache.h"
+#include "util/file.h"
 #include "util/log.h"
 
 #include <dirent.h>
@@ -394,36 +395,27 @@ static void trim(const char *dir, uint64_t max_bytes)
 int mesh_cache_write(const char *dir, const struct mesh_cache_key *key, const struct mesh_packed *m,
 		     const struct mesh_material *material, uint64_t max_bytes)
 {
-	char tmp[PATH_MAX], path[PATH_MAX];
+	char path[PATH_MAX];
 	struct cache_header h;
-	int fd = -1, ret = make_dirs(dir);
+	struct file_atomic a;
+	int ret = make_dirs(dir);
 
 	if (!ret)
 		ret = entry_path(dir, key, path, sizeof(path));
-	if (!ret && snprintf(tmp, sizeof(tmp), "%s/.entry-XXXXXX", dir) >= (int)sizeof(tmp))
-		ret = -ENAMETOOLONG;
-	if (!ret && (fd = mkostemp(tmp, O_CLOEXEC)) < 0)
-		ret = -errno;
+	if (!ret)
+		ret = file_atomic_begin(&a, path, 0644);
 	if (ret)
 		goto out;
 	fill_header(&h, key, m, material);
 	/* The header last, once the payload's checksum is known. */
-	ret = lseek(fd, (off_t)sizeof(h), SEEK_SET) < 0 ? -errno : 0;
+	ret = lseek(a.fd, (off_t)sizeof(h), SEEK_SET) < 0 ? -errno : 0;
 	if (!ret)
-		ret = write_payload(fd, &h, m, &h.payload_hash);
+		ret = write_payload(a.fd, &h, m, &h.payload_hash);
 	h.header_hash = mesh_cache_hash(&h, offsetof(struct cache_header, header_hash), 0);
 	if (!ret)
-		ret = pwrite(fd, &h, sizeof(h), 0) == (ssize_t)sizeof(h) ? 0 : -EIO;
-	if (!ret && fsync(fd))
-		ret = -errno;
-	if (close(fd) && !ret)
-		ret = -errno;
-	fd = -1;
-	if (!ret && rename(tmp, path))
-		ret = -errno;
-	if (ret)
-		unlink(tmp);
-	else
+		ret = pwrite(a.fd, &h, sizeof(h), 0) == (ssize_t)sizeof(h) ? 0 : -EIO;
+	ret = file_atomic_end(&a, ret, true);
+	if (!ret)
 		trim(dir, max_bytes);
 out:
 	if (ret)

@@ -3,7 +3,9 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -70,5 +72,44 @@ int file_read_all(const char *path, size_t max, unsigned char **data, size_t *si
 	else
 		ret = read_fd(fd, (size_t)st.st_size, data, size);
 	close(fd);
+	return ret;
+}
+
+int file_atomic_begin(struct file_atomic *a, const char *path, mode_t mode)
+{
+	const char *slash = strrchr(path, '/');
+	int dir = slash ? (int)(slash - path) : 0;
+	const char *name = slash ? slash + 1 : path;
+
+	a->fd = -1;
+	if (snprintf(a->path, sizeof(a->path), "%s", path) >= (int)sizeof(a->path) ||
+	    snprintf(a->tmp, sizeof(a->tmp), "%.*s%s.%s.XXXXXX", dir, path, slash ? "/" : "",
+		     name) >= (int)sizeof(a->tmp))
+		return -ENAMETOOLONG;
+	a->fd = mkostemp(a->tmp, O_CLOEXEC);
+	if (a->fd < 0)
+		return -errno;
+	if (fchmod(a->fd, mode)) {
+		int ret = -errno;
+
+		file_atomic_end(a, ret, false);
+		return ret;
+	}
+	return 0;
+}
+
+int file_atomic_end(struct file_atomic *a, int ret, bool sync)
+{
+	if (a->fd < 0)
+		return ret ? ret : -EBADF;
+	if (!ret && sync && fsync(a->fd))
+		ret = -errno;
+	if (close(a->fd) && !ret)
+		ret = -errno;
+	a->fd = -1;
+	if (!ret && rename(a->tmp, a->path))
+		ret = -errno;
+	if (ret)
+		unlink(a->tmp);
 	return ret;
 }

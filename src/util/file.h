@@ -2,7 +2,10 @@
 #ifndef MK_FILE_H
 #define MK_FILE_H
 
+#include <limits.h>
+#include <stdbool.h>
 #include <stddef.h>
+#include <sys/types.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -14,6 +17,24 @@ extern "C" {
  * would take the kiosk down. Returns 0, -EFBIG past max, -EINVAL for a
  * file that is not regular, or another negative errno code. */
 int file_read_all(const char *path, size_t max, unsigned char **data, size_t *size);
+
+/* A file replaced whole or not at all: written under a temporary name
+ * beside it (fd, or the name tmp for a writer that takes a path), then
+ * renamed over it, so that a reader (or a power cut) never finds half a
+ * file. */
+struct file_atomic {
+	char tmp[PATH_MAX];
+	char path[PATH_MAX];
+	int fd;
+};
+
+/* Creates the temporary file, with mode. Returns 0 or a negative errno
+ * code (nothing is left behind). */
+int file_atomic_begin(struct file_atomic *a, const char *path, mode_t mode);
+/* ret 0: fsync first when sync (data that must survive a power cut),
+ * close, rename over path; otherwise, or when one of those fails, the
+ * temporary file is removed. Returns ret, or the first failure. */
+int file_atomic_end(struct file_atomic *a, int ret, bool sync);
 
 #ifdef __cplusplus
 }

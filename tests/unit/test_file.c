@@ -1,0 +1,120 @@
+/* util/file.c: whole files read, and files replaced whole or not at all. */
+#include "util/file.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <cmocka.h>
+
+static int setup(void **state)
+{
+	char *dir = strdup("/tmp/mk-file-XXXXXX");
+
+	if (!dir || !mkdtemp(dir))
+		return -1;
+	*state = dir;
+	return 0;
+}
+
+static int teardown(void **state)
+{
+	char cmd[64];
+
+	snprintf(cmd, sizeof(cmd), "rm -rf %s", (char *)*state);
+	free(*state);
+	return system(cmd);
+}
+
+static int entries(const char *dir)
+{
+	DIR *d = opendir(dir);
+	struct dirent *e;
+	int n = 0;
+
+	while (d && (e = readdir(d)))
+		n += e->d_name[0] != '.' || (strcmp(e->d_name, ".") && strcmp(e->d_name, ".."));
+	if (d)
+		closedir(d);
+	return n;
+}
+
+static void expect_text(const char *path, const char *text)
+{
+	unsigned char *data;
+	size_t size;
+
+	assert_int_equal(file_read_all(path, 1 << 20, &data, &size), 0);
+	assert_int_equal(size, strlen(text));
+	assert_string_equal((const char *)data, text); /* one NUL past the end */
+	free(data);
+}
+
+/* Committed: the new bytes with the mode asked, nothing else left in the
+ * folder. Failed: the old file untouched, no temporary file left. */
+static void replaced_whole_or_not_at_all(void **state)
+{
+	const char *dir = *state;
+	char path[128];
+	struct file_atomic a;
+	struct stat st;
+
+	snprintf(path, sizeof(path), "%s/state.json", dir);
+	assert_int_equal(file_atomic_begin(&a, path, 0600), 0);
+	assert_int_equal(write(a.fd, "one", 3), 3);
+	assert_int_equal(entries(dir), 1); /* only the temporary file so far */
+	assert_int_equal(access(path, F_OK), -1);
+	assert_int_equal(file_atomic_end(&a, 0, true), 0);
+	expect_text(path, "one");
+	assert_int_equal(stat(path, &st), 0);
+	assert_int_equal(st.st_mode & 0777, 0600);
+	assert_int_equal(entries(dir), 1);
+
+	assert_int_equal(file_atomic_begin(&a, path, 0644), 0);
+	assert_int_equal(write(a.fd, "two!", 4), 4);
+	assert_int_equal(file_atomic_end(&a, -EIO, true), -EIO);
+	expect_text(path, "one");
+	assert_int_equal(entries(dir), 1);
+
+	/* A writer that takes a path writes the temporary file by name. */
+	assert_int_equal(file_atomic_begin(&a, path, 0644), 0);
+	{
+		FILE *f = fopen(a.tmp, "w");
+
+		fputs("three", f);
+		fclose(f);
+	}
+	assert_int_equal(file_atomic_end(&a, 0, false), 0);
+	expect_text(path, "three");
+	assert_int_equal(entries(dir), 1);
+
+	snprintf(path, sizeof(path), "%s/missing/x", dir);
+	assert_int_equal(file_atomic_begin(&a, path, 0644), -ENOENT);
+}
+
+static void read_refuses(void **state)
+{
+	const char *dir = *state;
+	unsigned char *data;
+	size_t size;
+
+	assert_int_equal(file_read_all(dir, 1 << 20, &data, &size), -EINVAL);
+	assert_null(data);
+	assert_int_equal(file_read_all("/nonexistent/m.glb", 1, &data, &size), -ENOENT);
+	assert_int_equal(file_read_all("/proc/self/exe", 16, &data, &size), -EFBIG);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+	    cmocka_unit_test(replaced_whole_or_not_at_all),
+	    cmocka_unit_test(read_refuses),
+	};
+	return cmocka_run_group_tests(tests, setup, teardown);
+}
