@@ -38,16 +38,6 @@ struct import {
 	int files, matcaps;
 };
 
-static bool has_ext(const char *name, const char *const *exts)
-{
-	const char *dot = strrchr(name, '.');
-
-	for (; dot && *exts; exts++)
-		if (!strcasecmp(dot + 1, *exts))
-			return true;
-	return false;
-}
-
 static const char *const model_exts[] = {"gltf", "glb", NULL};
 static const char *const content_exts[] = {"gltf", "glb", "bin", "png", "jpg", "jpeg", NULL};
 static const char *const image_exts[] = {"png", "jpg", "jpeg", NULL};
@@ -224,12 +214,12 @@ static int copy_folder(struct import *im, int fd, const char *to, const char *co
 	for (size_t i = 0; i < n; i++) {
 		const char *name = names[i];
 
-		if (!ret && has_ext(name, exts) && name_usable(im, name)) {
+		if (!ret && file_name_has_ext(name, exts) && name_usable(im, name)) {
 			r = copy_file(im, fd, name, to);
 			ret = r < 0 ? r : 0;
 			*count += !r;
 			if (!r && exts == content_exts && !im->model[0] &&
-			    has_ext(name, model_exts))
+			    file_name_has_ext(name, model_exts))
 				snprintf(im->model, sizeof(im->model), "%s", name);
 		}
 		free(names[i]);

@@ -1,12 +1,11 @@
 #include "app/model_list.h"
+#include "util/file.h"
 #include "util/log.h"
 
-#include <dirent.h>
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <strings.h>
 #include <sys/stat.h>
 
 struct model_entry {
@@ -21,12 +20,7 @@ struct model_list {
 	struct model_entry *entries;
 };
 
-static bool is_model_name(const char *name)
-{
-	const char *dot = strrchr(name, '.');
-
-	return name[0] != '.' && dot && (!strcasecmp(dot, ".gltf") || !strcasecmp(dot, ".glb"));
-}
+static const char *const model_exts[] = {"gltf", "glb", NULL};
 
 bool model_spec_is_many(const char *spec)
 {
@@ -58,28 +52,19 @@ static int add_entry(struct model_list *l, const char *dir, const char *name)
 	return 0;
 }
 
-static int compare_entries(const void *a, const void *b)
-{
-	return strcmp(((const struct model_entry *)a)->path, ((const struct model_entry *)b)->path);
-}
-
+/* A folder's models in name order. */
 static int scan_folder(struct model_list *l, const char *path)
 {
-	DIR *d = opendir(path);
-	struct dirent *e;
-	int first = l->count, ret = 0;
+	char **paths;
+	int n, ret = file_list_folder(path, model_exts, &paths, &n);
 
-	if (!d) {
-		log_err("%s: cannot open folder: %s", path, strerror(errno));
-		return -errno;
+	if (ret) {
+		log_err("%s: cannot open folder: %s", path, strerror(-ret));
+		return ret;
 	}
-	while (!ret && (e = readdir(d)))
-		if (is_model_name(e->d_name))
-			ret = add_entry(l, path, e->d_name);
-	closedir(d);
-	if (l->count > first)
-		qsort(l->entries + first, (size_t)(l->count - first), sizeof(*l->entries),
-		      compare_entries);
+	for (int i = 0; i < n && !ret; i++)
+		ret = add_entry(l, "", paths[i]);
+	file_list_free(paths, n);
 	return ret;
 }
 

@@ -1,13 +1,12 @@
 #include "render/matcap_set.h"
+#include "util/file.h"
 #include "util/log.h"
 
-#include <dirent.h>
 #include <stdbool.h>
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <strings.h>
 #include <sys/stat.h>
 
 struct matcap_set {
@@ -15,18 +14,7 @@ struct matcap_set {
 	char **paths;
 };
 
-static bool is_image_name(const char *name)
-{
-	const char *dot = strrchr(name, '.');
-
-	return name[0] != '.' && dot &&
-	       (!strcasecmp(dot, ".png") || !strcasecmp(dot, ".jpg") || !strcasecmp(dot, ".jpeg"));
-}
-
-static int compare_paths(const void *a, const void *b)
-{
-	return strcmp(*(char *const *)a, *(char *const *)b);
-}
+static const char *const image_exts[] = {"png", "jpg", "jpeg", NULL};
 
 static int add_path(struct matcap_set *s, const char *dir, const char *name)
 {
@@ -49,24 +37,14 @@ static int add_path(struct matcap_set *s, const char *dir, const char *name)
 
 static int scan_folder(struct matcap_set *s, const char *path)
 {
-	DIR *d = opendir(path);
-	struct dirent *e;
-	int ret = 0;
+	int ret = file_list_folder(path, image_exts, &s->paths, &s->count);
 
-	if (!d) {
-		log_err("%s: cannot open folder: %s", path, strerror(errno));
-		return -errno;
-	}
-	while (!ret && (e = readdir(d)))
-		if (is_image_name(e->d_name))
-			ret = add_path(s, path, e->d_name);
-	closedir(d);
-	if (!ret && s->count == 0) {
+	if (ret) {
+		log_err("%s: cannot open folder: %s", path, strerror(-ret));
+	} else if (s->count == 0) {
 		log_err("%s: no .png, .jpg or .jpeg files in the folder", path);
 		ret = -ENOENT;
 	}
-	if (s->count) /* qsort(NULL, 0) is undefined */
-		qsort(s->paths, (size_t)s->count, sizeof(*s->paths), compare_paths);
 	return ret;
 }
 

@@ -1,11 +1,13 @@
 #include "util/file.h"
 
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -112,4 +114,66 @@ int file_atomic_end(struct file_atomic *a, int ret, bool sync)
 	if (ret)
 		unlink(a->tmp);
 	return ret;
+}
+
+bool file_name_has_ext(const char *name, const char *const *exts)
+{
+	const char *dot = strrchr(name, '.');
+
+	for (; dot && *exts; exts++)
+		if (!strcasecmp(dot + 1, *exts))
+			return true;
+	return false;
+}
+
+static int compare_paths(const void *a, const void *b)
+{
+	return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+static int list_add(char ***paths, int *n, const char *dir, const char *name)
+{
+	size_t size = strlen(dir) + strlen(name) + 2;
+	char **grown = realloc(*paths, sizeof(*grown) * (size_t)(*n + 1));
+
+	if (!grown)
+		return -ENOMEM;
+	*paths = grown;
+	grown[*n] = malloc(size);
+	if (!grown[*n])
+		return -ENOMEM;
+	snprintf(grown[*n], size, "%s/%s", dir, name);
+	(*n)++;
+	return 0;
+}
+
+int file_list_folder(const char *dir, const char *const *exts, char ***paths, int *n)
+{
+	DIR *d = opendir(dir);
+	struct dirent *e;
+	int ret = 0;
+
+	*paths = NULL;
+	*n = 0;
+	if (!d)
+		return -errno;
+	while (!ret && (e = readdir(d)))
+		if (e->d_name[0] != '.' && file_name_has_ext(e->d_name, exts))
+			ret = list_add(paths, n, dir, e->d_name);
+	closedir(d);
+	if (ret) {
+		file_list_free(*paths, *n);
+		*paths = NULL;
+		*n = 0;
+	} else if (*n) { /* qsort(NULL, 0) is undefined */
+		qsort(*paths, (size_t)*n, sizeof(**paths), compare_paths);
+	}
+	return ret;
+}
+
+void file_list_free(char **paths, int n)
+{
+	for (int i = 0; i < n; i++)
+		free(paths[i]);
+	free(paths);
 }

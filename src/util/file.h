@@ -18,6 +18,16 @@ extern "C" {
  * file that is not regular, or another negative errno code. */
 int file_read_all(const char *path, size_t max, unsigned char **data, size_t *size);
 
+/* Whether name ends in "." and one of exts ("png", ..., NULL), in any case. */
+bool file_name_has_ext(const char *name, const char *const *exts);
+
+/* The files of folder dir whose names have one of exts, hidden ones (a
+ * leading dot) left out, as "dir/name" in name order: *paths (count *n),
+ * each and the array malloc'd (file_list_free). Returns 0 or a negative
+ * errno code (nothing to free). */
+int file_list_folder(const char *dir, const char *const *exts, char ***paths, int *n);
+void file_list_free(char **paths, int n);
+
 /* A file replaced whole or not at all: written under a temporary name
  * beside it (fd, or the name tmp for a writer that takes a path), then
  * renamed over it, so that a reader (or a power cut) never finds half a

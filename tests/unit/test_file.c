@@ -110,11 +110,39 @@ static void read_refuses(void **state)
 	assert_int_equal(file_read_all("/proc/self/exe", 16, &data, &size), -EFBIG);
 }
 
+/* A folder's files of some kinds, hidden ones left out, in name order. */
+static void lists_a_folder(void **state)
+{
+	static const char *const exts[] = {"png", "jpg", NULL};
+	static const char *const names[] = {"b.PNG", "a.jpg", ".hidden.png", "c.txt", "d.png.part"};
+	const char *dir = *state;
+	char path[128], **paths;
+	int n;
+
+	for (size_t i = 0; i < sizeof(names) / sizeof(names[0]); i++) {
+		snprintf(path, sizeof(path), "%s/%s", dir, names[i]);
+		fclose(fopen(path, "w"));
+	}
+	assert_int_equal(file_list_folder(dir, exts, &paths, &n), 0);
+	assert_int_equal(n, 2);
+	snprintf(path, sizeof(path), "%s/a.jpg", dir);
+	assert_string_equal(paths[0], path);
+	snprintf(path, sizeof(path), "%s/b.PNG", dir);
+	assert_string_equal(paths[1], path);
+	file_list_free(paths, n);
+	assert_true(file_name_has_ext("x.JPG", exts));
+	assert_false(file_name_has_ext("png", exts));
+	assert_int_equal(file_list_folder("/nonexistent", exts, &paths, &n), -ENOENT);
+	assert_null(paths);
+	assert_int_equal(n, 0);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(replaced_whole_or_not_at_all),
 	    cmocka_unit_test(read_refuses),
+	    cmocka_unit_test(lists_a_folder),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);
 }
