@@ -21,31 +21,17 @@
 #define KNOT_TUBULAR 256
 #define KNOT_RADIAL  32
 
-/* path NULL: the built-in knot. Else the bytes read from path. */
-static int load_model(const char *path, const uint8_t *data, size_t size,
-		      const struct content_config *o, struct mesh *mesh)
+/* path NULL: the built-in knot. */
+static int load_model(const char *path, const struct content_config *o, struct mesh *mesh)
 {
 	if (path) {
 		struct gltf_options g = {.textures = material_gltf_textures(&o->material),
 					 .scene = o->model_scene,
 					 .scene_setting = "[scene] model_scene"};
 
-		return gltf_load_read(path, data, size, &g, mesh);
+		return gltf_load_options(path, &g, mesh);
 	}
 	return mesh_torus_knot(mesh, KNOT_TUBULAR, KNOT_RADIAL);
-}
-
-/* The same, read from path first. */
-static int load_mesh_file(const char *path, const struct content_config *o, struct mesh *mesh)
-{
-	uint8_t *data = NULL;
-	size_t size = 0;
-	int ret = path ? gltf_read(path, &data, &size) : 0;
-
-	if (!ret)
-		ret = load_model(path, data, size, o, mesh);
-	free(data);
-	return ret;
 }
 
 /* The prepared-mesh cache (scene/mesh_cache.h). */
@@ -176,7 +162,7 @@ static int load_matcap(const struct content_config *o, bool strict, struct conte
 /* The model of one file, from the cache or parsed; strict: no knot. */
 static int load_mesh(struct content *s, const struct content_config *o, const char *path)
 {
-	return content_cache_lookup(s, o, path) ? load_mesh_file(path, o, &s->mesh) : 0;
+	return content_cache_lookup(s, o, path) ? load_model(path, o, &s->mesh) : 0;
 }
 
 struct try_ctx {
@@ -307,7 +293,7 @@ int content_prepare(struct content *s, const struct content_config *o, int width
 		mesh_cache_entry_free(s->cached);
 		s->cached = NULL;
 		mesh_release(&s->mesh);
-		ret = load_mesh_file(s->model_path, o, &s->mesh);
+		ret = load_model(s->model_path, o, &s->mesh);
 	}
 	if (!ret)
 		ret = material_prepare_mesh(&s->material, &s->mesh, width, height);

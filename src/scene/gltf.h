@@ -32,13 +32,6 @@ int gltf_load_textures(const char *path, unsigned textures, struct mesh *out);
 /* The same with every option. */
 int gltf_load_options(const char *path, const struct gltf_options *o, struct mesh *out);
 
-/* gltf_load_options in two steps, for a caller that reads the bytes too
- * (the prepared-mesh cache's key): the file into *data (the caller frees
- * it), logged like a load that fails; then the model from those bytes. */
-int gltf_read(const char *path, uint8_t **data, size_t *size);
-int gltf_load_read(const char *path, const uint8_t *data, size_t size, const struct gltf_options *o,
-		   struct mesh *out);
-
 /* The same from memory (for the fuzzer); external buffers resolve in dir. */
 int gltf_load_memory(const char *name, const uint8_t *data, size_t size, const char *dir,
 		     struct mesh *out);
