@@ -1,4 +1,5 @@
 #include "scene/mesh_cache.h"
+#include "util/file.h"
 
 #include <elf.h>
 #include <errno.h>
@@ -87,22 +88,6 @@ uint64_t mesh_cache_hash(const void *data, size_t size, uint64_t seed)
  * raises SIGBUS, which would take the kiosk down. */
 #define PIECE (256u << 10)
 
-/* count bytes at off, fewer at the end of the file; or -errno. */
-static ssize_t read_at(int fd, unsigned char *buf, size_t count, off_t off)
-{
-	size_t got = 0;
-	ssize_t n = 1;
-
-	while (got < count && n > 0) {
-		n = pread(fd, buf + got, count - got, off + (off_t)got);
-		if (n < 0 && errno == EINTR)
-			n = 1;
-		else if (n > 0)
-			got += (size_t)n;
-	}
-	return n < 0 ? -errno : (ssize_t)got;
-}
-
 /* The file's hash, and its first 20 bytes (zeros past its end). */
 static int hash_fd(int fd, uint64_t seed, uint64_t *out, unsigned char head[20])
 {
@@ -116,7 +101,7 @@ static int hash_fd(int fd, uint64_t seed, uint64_t *out, unsigned char head[20])
 	lanes_start(lane, seed);
 	memset(head, 0, 20);
 	while (n == PIECE) {
-		n = read_at(fd, buf, PIECE, (off_t)size);
+		n = file_read_at(fd, buf, PIECE, (off_t)size);
 		if (n < 0) {
 			ret = (int)n;
 			goto out;
@@ -199,7 +184,7 @@ static int read_json(int fd, const unsigned char head[20], char **json, size_t *
 	*json = malloc(*size + 1);
 	if (!*json)
 		return -ENOMEM;
-	n = read_at(fd, (unsigned char *)*json, *size, start);
+	n = file_read_at(fd, (unsigned char *)*json, *size, start);
 	*size = n > 0 ? (size_t)n : 0;
 	return n < 0 ? (int)n : 0;
 }

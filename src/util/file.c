@@ -24,36 +24,42 @@ static void advise_huge(void *buf, size_t size)
 		madvise((void *)start, end - start, MADV_HUGEPAGE);
 }
 
-/* Not calloc: the bytes are about to be overwritten, and zeroing a 30 MB
- * model first costs as much as reading it from the page cache. */
-static int read_fd(int fd, size_t want, unsigned char **data, size_t *size)
+ssize_t file_read_at(int fd, void *buf, size_t count, off_t off)
 {
-	unsigned char *buf = malloc(want + 1);
 	size_t got = 0;
 	ssize_t n = 1;
-	int ret = 0;
 
-	if (!buf)
-		return -ENOMEM;
-	advise_huge(buf, want);
-	while (got < want && n > 0) {
-		n = read(fd, buf + got, want - got);
+	while (got < count && n > 0) {
+		n = pread(fd, (unsigned char *)buf + got, count - got, off + (off_t)got);
 		if (n < 0 && errno == EINTR)
 			n = 1;
 		else if (n > 0)
 			got += (size_t)n;
 	}
+	return n < 0 ? -errno : (ssize_t)got;
+}
+
+/* Not calloc: the bytes are about to be overwritten, and zeroing a 30 MB
+ * model first costs as much as reading it from the page cache. */
+static int read_fd(int fd, size_t want, unsigned char **data, size_t *size)
+{
+	unsigned char *buf = malloc(want + 1);
+	ssize_t n;
+
+	*data = NULL;
+	*size = 0;
+	if (!buf)
+		return -ENOMEM;
+	advise_huge(buf, want);
+	n = file_read_at(fd, buf, want, 0);
 	if (n < 0) {
-		ret = -errno;
 		free(buf);
-		buf = NULL;
-		got = 0;
-	} else {
-		buf[got] = 0;
+		return (int)n;
 	}
+	buf[n] = 0;
 	*data = buf;
-	*size = got;
-	return ret;
+	*size = (size_t)n;
+	return 0;
 }
 
 int file_read_all(const char *path, size_t max, unsigned char **data, size_t *size)

@@ -18,6 +18,10 @@ extern "C" {
  * file that is not regular, or another negative errno code. */
 int file_read_all(const char *path, size_t max, unsigned char **data, size_t *size);
 
+/* count bytes of fd at off (pread, again after a signal), fewer only at
+ * the end of the file. Returns the count read, or a negative errno code. */
+ssize_t file_read_at(int fd, void *buf, size_t count, off_t off);
+
 /* Whether name ends in "." and one of exts ("png", ..., NULL), in any case. */
 bool file_name_has_ext(const char *name, const char *const *exts);
 
