@@ -370,9 +370,11 @@ void push_normal(Builder &b, const View *nrm, size_t i, const double nm[9])
 bool colors_per_vertex(Builder &b, const float base[4], bool has_color_0, size_t vertices_before)
 {
 	bool same = true;
+	if (!b.want_colors)
+		return false;
 	for (int k = 0; k < 4; k++)
 		same &= !b.uniform_set || b.uniform[k] == base[k];
-	if (!b.want_colors || (b.colors.empty() && !has_color_0 && same)) {
+	if (b.colors.empty() && !has_color_0 && same) {
 		std::copy(base, base + 4, b.uniform);
 		b.uniform_set = true;
 		return false;
@@ -627,6 +629,6 @@ int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_opti
 		gltf_read_material(m, b.material, b.any_uvs ? o->textures : 0, images, name,
 				   &out->material); // without UVs no texture can be placed
 	gltf_keep_colors(out,
-			 b.want_colors && b.any_colors && b.colors.empty() ? b.uniform : nullptr);
+			 b.uniform_set && b.any_colors && b.colors.empty() ? b.uniform : nullptr);
 	return ret;
 }
