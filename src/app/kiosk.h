@@ -1,11 +1,11 @@
 /* The live loop: sleep in poll() on every descriptor (display, inputs,
  * camera, matcap folder, signals), hand what happened to the app state
- * (src/app/app.h) as messages, and draw only when the state changed. */
+ * (src/state/app.h) as messages, and draw only when the state changed. */
 #ifndef MK_KIOSK_H
 #define MK_KIOSK_H
 
-#include "app/content.h"
-#include "app/options.h"
+#include "content/content.h"
+#include "config/options.h"
 #include "display/display.h"
 #include "input/input.h"
 #include "render/render.h"

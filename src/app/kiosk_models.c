@@ -1,6 +1,6 @@
 #include "app/kiosk_models.h"
-#include "app/model_list.h"
-#include "app/model_loader.h"
+#include "content/model_list.h"
+#include "content/model_loader.h"
 #include "util/clock.h"
 #include "util/folder_watch.h"
 #include "util/log.h"

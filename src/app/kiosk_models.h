@@ -6,9 +6,9 @@
 #ifndef MK_KIOSK_MODELS_H
 #define MK_KIOSK_MODELS_H
 
-#include "app/app.h"
-#include "app/content.h"
-#include "app/settings.h"
+#include "state/app.h"
+#include "content/content.h"
+#include "config/settings.h"
 #include "display/display.h"
 #include "render/render.h"
 

@@ -7,11 +7,11 @@
 #include "app/kiosk.h"
 #include "app/signals.h"
 #include "util/log.h"
-#include "app/options.h"
+#include "config/options.h"
 #include "render/render.h"
-#include "app/content.h"
-#include "app/import.h"
-#include "app/status.h"
+#include "content/content.h"
+#include "ops/import.h"
+#include "ops/status.h"
 #include "render/poster.h"
 
 #include <errno.h>

@@ -5,8 +5,8 @@
 #ifndef MK_RELOAD_H
 #define MK_RELOAD_H
 
-#include "app/content.h"
-#include "app/options.h"
+#include "content/content.h"
+#include "config/options.h"
 #include "render/render.h"
 
 /* The scene of cfg, fitted to a width x height display, into shown and

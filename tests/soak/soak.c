@@ -22,9 +22,9 @@
 #include "app/signals.h"
 #include "util/log.h"
 #include "scene/mesh.h"
-#include "app/options.h"
+#include "config/options.h"
 #include "render/render.h"
-#include "app/content.h"
+#include "content/content.h"
 
 #include <dlfcn.h>
 #include <errno.h>

@@ -1,5 +1,5 @@
-#include "app/options.h"
-#include "app/settings.h"
+#include "config/options.h"
+#include "config/settings.h"
 #include "app/reload.h"
 
 #include <math.h>

@@ -2,14 +2,14 @@
  * structs of the modules that use the settings, plus the command line's
  * own), the one table that names each setting's option, its [section]
  * key, its type, range and help, and the reload rules of each section.
- * src/app/options.c reads the command line and kiosk.ini through it, so
+ * src/config/options.c reads the command line and kiosk.ini through it, so
  * the two sources cannot drift apart. */
 #ifndef MK_SETTINGS_H
 #define MK_SETTINGS_H
 
-#include "app/app.h"
-#include "app/content.h"
-#include "app/screen.h"
+#include "state/app.h"
+#include "content/content.h"
+#include "ops/screen.h"
 #include "camera/camera_feed.h"
 #include "display/display.h"
 #include "input/gpio.h"

@@ -6,7 +6,7 @@
 #define MK_CONTENT_H
 
 #include "util/image.h"
-#include "render/matcap_set.h"
+#include "content/matcap_set.h"
 #include "scene/material.h"
 #include "scene/mesh.h"
 #include "scene/mesh_cache.h"

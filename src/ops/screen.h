@@ -1,4 +1,4 @@
-/* The screen's power in the live loop: src/app/power.c decides from the
+/* The screen's power in the live loop: src/state/power.c decides from the
  * schedule, blank_after and the inputs; this puts the decision on the
  * display (KMS sleep), the panel's backlight and, with cec = on, the TV.
  * It reads the wall clock (local time, and whether the kernel says it is

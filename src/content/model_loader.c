@@ -1,4 +1,4 @@
-#include "app/model_loader.h"
+#include "content/model_loader.h"
 #include "util/log.h"
 
 #include <errno.h>

@@ -6,9 +6,9 @@
 #ifndef MK_MODEL_LOADER_H
 #define MK_MODEL_LOADER_H
 
-#include "app/content.h"
-#include "app/model_list.h"
-#include "app/settings.h"
+#include "content/content.h"
+#include "content/model_list.h"
+#include "config/settings.h"
 
 #include <stdbool.h>
 

@@ -2,7 +2,7 @@
  * where it is kept in struct options, and what is done with one setting
  * (parse, copy, compare, release). The reload rules are the second
  * table here. */
-#include "app/settings.h"
+#include "config/settings.h"
 
 #include <errno.h>
 #include <math.h>
