@@ -270,7 +270,8 @@ static void watch_matcaps(struct kiosk *k)
 
 static void start_models(struct kiosk *k, uint64_t now_ns)
 {
-	struct kiosk_models_parts parts = {k->app, k->scene, k->renderer, k->display, &k->applied};
+	struct kiosk_models_parts parts = {k->app, k->scene, k->renderer, k->display,
+					   &k->applied.content};
 
 	kiosk_models_free(k->models);
 	k->models = kiosk_models_new(&parts, now_ns);

@@ -8,7 +8,7 @@
 
 #include "state/app.h"
 #include "content/content.h"
-#include "config/settings.h"
+#include "config/content_config.h"
 #include "display/display.h"
 #include "render/render.h"
 
@@ -21,7 +21,7 @@ struct kiosk_models_parts {
 	struct content *scene; /* on screen: its model is swapped */
 	struct renderer *renderer;
 	struct display *display;
-	const struct options *options; /* [scene] model and how to prepare one */
+	const struct content_config *config; /* [scene] model and how to prepare one */
 };
 
 struct kiosk_models;

@@ -7,14 +7,14 @@
 #ifndef MK_SETTINGS_H
 #define MK_SETTINGS_H
 
-#include "state/app.h"
-#include "content/content.h"
-#include "ops/screen.h"
 #include "camera/camera_feed.h"
+#include "config/content_config.h"
+#include "config/screen_config.h"
 #include "display/display.h"
 #include "input/gpio.h"
 #include "input/keyboard.h"
 #include "input/touch.h"
+#include "state/app.h"
 #include "util/log.h"
 
 #include <stdbool.h>
@@ -120,6 +120,10 @@ bool option_set_value(struct options *o, const struct option_def *d, const char 
 /* A deep copy; 0 or -ENOMEM (dst then holds nothing to release). */
 int options_copy(struct options *dst, const struct options *src);
 void options_release(struct options *opts);
+/* The same for the content part alone (struct options' content), for
+ * whoever needs only that, such as the model worker. */
+int content_config_copy(struct content_config *dst, const struct content_config *src);
+void content_config_release(struct content_config *c);
 /* Bit (1u << enum options_section) for each section whose settings
  * differ; an at-start section's live_key is not counted. */
 unsigned options_changed(const struct options *a, const struct options *b);
