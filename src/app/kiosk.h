@@ -19,8 +19,8 @@
 /* What the kiosk runs on; none of it is freed by the kiosk. */
 struct kiosk_parts {
 	struct display *display;
-	struct renderer *renderer; /* already holding the scene, its first matcap and mode */
-	struct content *scene;	   /* on screen; a reload swaps what it holds */
+	struct renderer *renderer; /* already holding the content, its first matcap and mode */
+	struct content *content;   /* on screen; a reload swaps what it holds */
 	/* The settings it starts with (copied), and the command line a
 	 * reload parses again over the config file, so options still win. */
 	const struct options *options;

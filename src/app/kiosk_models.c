@@ -67,14 +67,14 @@ struct kiosk_models *kiosk_models_new(const struct kiosk_models_parts *parts, ui
 		kiosk_models_free(m);
 		return NULL;
 	}
-	m->shown = model_list_find(m->list, parts->scene->model_path);
+	m->shown = model_list_find(m->list, parts->content->model_path);
 	m->reload = -1;
 	m->rescan_at = CLOCK_NEVER;
 	watch_models(m);
 	tell_app(m, m->shown);
 	m->asked = app_state(m->p.app)->model;
 	log_info("models: %d, showing %s", model_list_count(m->list),
-		 parts->scene->model_path ? parts->scene->model_path : "the built-in knot");
+		 parts->content->model_path ? parts->content->model_path : "the built-in knot");
 	return m;
 }
 
@@ -115,17 +115,17 @@ static int show(struct kiosk_models *m, struct content *fresh, int index)
 
 	if (ret) {
 		log_err("%s: does not fit on the GPU; keeping %s", fresh->model_path,
-			m->p.scene->model_path);
+			m->p.content->model_path);
 		model_list_set_bad(m->list, index, true);
 		content_release(fresh);
-		if (content_upload_model(m->p.scene, m->p.renderer))
+		if (content_upload_model(m->p.content, m->p.renderer))
 			log_err("models: the model on screen could not be restored either");
 		return ret;
 	}
-	content_take_model(m->p.scene, fresh);
+	content_take_model(m->p.content, fresh);
 	m->shown = index;
 	log_info("model %d of %d: %s", index + 1, model_list_count(m->list),
-		 m->p.scene->model_path);
+		 m->p.content->model_path);
 	/* The frame that shows it is drawn next: what a switch costs is this
 	 * and one frame (the bench adds them). */
 	log_debug("models: swapped in %.1f ms after it was asked for",
@@ -206,7 +206,7 @@ static void rescan(struct kiosk_models *m)
 		return;
 	model_list_free(m->list);
 	m->list = l;
-	m->shown = model_list_find(l, m->p.scene->model_path);
+	m->shown = model_list_find(l, m->p.content->model_path);
 	m->reload = fresh;
 	if (fresh >= 0)
 		log_debug("models: %s arrived or changed: loading it", model_list_path(l, fresh));

@@ -18,7 +18,7 @@
 /* What it works on; none of it is freed here, and each outlives it. */
 struct kiosk_models_parts {
 	struct app *app;
-	struct content *scene; /* on screen: its model is swapped */
+	struct content *content; /* on screen: its model is swapped */
 	struct renderer *renderer;
 	struct display *display;
 	const struct content_config *config; /* [scene] model and how to prepare one */

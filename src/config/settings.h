@@ -39,7 +39,7 @@ enum options_section {
 /* What a reload does with a section's settings. */
 enum options_reload {
 	OPTIONS_AT_START, /* read once (the display is opened once): a restart applies them */
-	OPTIONS_LIVE,	  /* applied with the new scene and a fresh app state */
+	OPTIONS_LIVE,	  /* applied with the new content and a fresh app state */
 	OPTIONS_REOPEN,	  /* applied live: its devices are opened again when they changed */
 };
 

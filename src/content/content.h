@@ -1,6 +1,6 @@
 /* What the kiosk shows, loaded from the settings: the mesh, the matcaps
  * and the first matcap decoded. The start and a reload (SIGHUP) both build
- * a complete new scene here; a reload swaps it in only once every part of
+ * complete new content here; a reload swaps it in only once every part of
  * it loaded and uploaded, so a broken model or folder keeps the old one. */
 #ifndef MK_CONTENT_H
 #define MK_CONTENT_H
