@@ -74,6 +74,10 @@ struct kiosk {
 	uint64_t started_ns;
 	struct touch *touch;	     /* the touchscreens; NULL: off */
 	struct kiosk_models *models; /* a folder or list of models; NULL: one, unwatched */
+	/* The loop thread's longest step, from a wake-up to the next sleep:
+	 * what a page flip or an input may wait for (the bench reads it). */
+	uint64_t woke_ns;
+	uint64_t longest_step_ns;
 };
 
 static void tell_app(struct kiosk *k, enum app_msg_kind kind)
@@ -566,6 +570,14 @@ static void service_status(struct kiosk *k, const struct pollfd *fds)
 	image_release(&frame);
 }
 
+static void note_step(struct kiosk *k)
+{
+	uint64_t step = k->woke_ns ? monotonic_ns() - k->woke_ns : 0;
+
+	if (step > k->longest_step_ns)
+		k->longest_step_ns = step;
+}
+
 /* One pass: draw when the state changed, sleep until something happens,
  * and hand it on. Returns 1 to stop, 0 to go on, or a negative errno. */
 static int loop_once(struct kiosk *k, int sig_fd)
@@ -589,8 +601,10 @@ static int loop_once(struct kiosk *k, int sig_fd)
 	next = earliest(next, k->rescan_at, service_deadline(&k->service));
 	next = earliest(next, kiosk_models_deadline(k->models), CLOCK_NEVER);
 	n = fill_fds(k, fds, sig_fd);
+	note_step(k);
 	if (poll(fds, (nfds_t)n, poll_timeout_ms(k, next, now)) < 0 && errno != EINTR)
 		return -errno;
+	k->woke_ns = monotonic_ns();
 	if (fds[FD_SIGNAL].revents & POLLIN)
 		sig = read_signals(k, sig_fd);
 	/* After a reload the inputs and the camera may be new: their
@@ -623,6 +637,8 @@ int kiosk_run(struct kiosk *k)
 	while (!(ret = loop_once(k, sig_fd)))
 		;
 	service_stopping();
+	log_info("loop: the longest step between two sleeps took %.1f ms",
+		 (double)k->longest_step_ns / 1e6);
 	status_server_free(k->status);
 	k->status = NULL;
 	close(sig_fd);
@@ -680,5 +696,6 @@ long kiosk_frames_drawn(const struct kiosk *k)
 
 void kiosk_print_stats(const struct kiosk *k, FILE *out)
 {
+	fprintf(out, "loop longest_step_ms %.1f\n", (double)k->longest_step_ns / 1e6);
 	camera_feed_print_stats(k->camera, out);
 }
