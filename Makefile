@@ -62,9 +62,10 @@ LDLIBS    = $(PKG_LIBS) -lmeshoptimizer -ldl -lm
 # The program's sources, minus app/main.c (tests link the same objects),
 # one folder per layer: each includes only the layers listed after it
 # (tests/tools/layers.sh checks that).
-SRC_APP     := app/kiosk_models app/kiosk app/reload app/signals
+SRC_APP     := app/kiosk_models app/kiosk app/kiosk_content app/reload app/signals
 SRC_OPS     := ops/import ops/screen ops/service ops/status
-SRC_CONTENT := content/content content/matcap_set content/model_list content/model_loader
+SRC_CONTENT := content/content content/matcap_set content/matcap_job content/model_list \
+	       content/model_loader content/worker
 SRC_CONFIG  := config/options config/settings
 SRC_STATE   := state/app state/power state/schedule
 SRC_DISPLAY := display/backlight display/cec display/display display/display_egl display/display_kms \

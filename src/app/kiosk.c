@@ -1,4 +1,4 @@
-#include "app/kiosk.h"
+#include "app/kiosk_private.h"
 #include "app/signals.h"
 #include "state/app.h"
 #include "app/kiosk_models.h"
@@ -21,66 +21,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#define MAX_EVENTS 32
-
-/* Matcaps being copied into the folder: act once the copy has been quiet
- * this long, so a burst of files is one rescan. */
-#define MATCAP_SETTLE_NS 500000000ull
-
-enum {
-	FD_SIGNAL,
-	FD_DISPLAY,
-	FD_WATCH,
-	FD_CAMERA,
-	FD_STATUS,
-	FD_TOUCH,
-	FD_MODELS,
-	FD_MODEL_WATCH,
-	FD_INPUTS
-};
-
-/* Where an input source came from: a reload opens the buttons or the
- * keyboards again, and leaves the others alone. */
-enum input_origin { INPUT_CALLER, INPUT_BUTTON, INPUT_KEYBOARD };
-
-struct kiosk {
-	struct display *display;
-	struct renderer *renderer;
-	struct content *content; /* on screen; a reload swaps what it holds */
-	char **argv;
-	int argc;
-	bool camera_possible;
-	struct options started; /* [display] stays as it was at the start */
-	struct options applied; /* the settings in use, from the last reload */
-	struct app *app;	/* the one owner of the state; changed by messages */
-	struct view view;
-	struct input_source *inputs[KIOSK_MAX_INPUTS];
-	enum input_origin origins[KIOSK_MAX_INPUTS];
-	int input_count;
-	/* What the renderer holds now. */
-	int shown_matcap; /* the image in the texture, -1 for none */
-	bool shown_ortho;
-	enum shading_mode shown_mode;
-	long frames_drawn;
-	uint64_t input_drawn_ns;    /* the last input a drawn frame shows */
-	struct folder_watch *watch; /* the matcap folder, NULL when not watched */
-	uint64_t rescan_at;	    /* act on matcap changes then; CLOCK_NEVER: none */
-	uint64_t waiting_since;	    /* when the pending page flip was queued */
-	bool display_absent;	    /* the last draw found no display to show it on */
-	struct service service;
-	struct camera_feed *camera;   /* the live camera; NULL: none */
-	struct screen *screen;	      /* its power; NULL: always on */
-	struct status_server *status; /* --status; NULL: not reachable */
-	uint64_t started_ns;
-	struct touch *touch;	     /* the touchscreens; NULL: off */
-	struct kiosk_models *models; /* a folder or list of models; NULL: one, unwatched */
-	/* The loop thread's longest step, from a wake-up to the next sleep:
-	 * what a page flip or an input may wait for (the bench reads it). */
-	uint64_t woke_ns;
-	uint64_t longest_step_ns;
-};
-
-static void tell_app(struct kiosk *k, enum app_msg_kind kind)
+void kiosk_tell_app(struct kiosk *k, enum app_msg_kind kind)
 {
 	struct app_msg m = {.kind = kind};
 
@@ -97,7 +38,7 @@ static bool awake(const struct kiosk *k)
 static void service_screen(struct kiosk *k, uint64_t now)
 {
 	if (k->screen && screen_update(k->screen, now))
-		tell_app(k, APP_DISPLAY_BACK);
+		kiosk_tell_app(k, APP_DISPLAY_BACK);
 }
 
 static void start_screen(struct kiosk *k, uint64_t now)
@@ -193,23 +134,6 @@ int kiosk_open_devices(struct kiosk *k)
 	return 0;
 }
 
-/* Decoding a matcap is done here, when it is shown, so a folder of many
- * large images costs one image of memory. A file that fails keeps the
- * previous texture and says so. */
-static void sync_matcap(struct kiosk *k, int want)
-{
-	struct image img;
-
-	if (want == k->shown_matcap || !k->content->set)
-		return;
-	if (image_load(matcap_set_path(k->content->set, want), &img) == 0) {
-		renderer_set_matcap(k->renderer, &img);
-		image_release(&img);
-		log_info("matcap %s", matcap_set_path(k->content->set, want));
-	}
-	k->shown_matcap = want;
-}
-
 static void sync_mode(struct kiosk *k, enum shading_mode mode)
 {
 	if (mode == k->shown_mode && k->view.ortho == k->shown_ortho)
@@ -238,7 +162,6 @@ static int draw(struct kiosk *k, uint64_t now)
 	int ret;
 
 	sync_mode(k, st->mode);
-	sync_matcap(k, st->matcap);
 	k->view.orientation = st->orientation;
 	k->view.zoom = (float)st->zoom;
 	/* Not connected, or waiting for the display: stay dirty, the display
@@ -260,22 +183,15 @@ static int draw(struct kiosk *k, uint64_t now)
 		return ret;
 	}
 	k->frames_drawn++;
-	tell_app(k, APP_FRAME_SHOWN);
+	kiosk_tell_app(k, APP_FRAME_SHOWN);
 	log_latency(k, st->last_input_ns);
 	return 0;
 }
 
-static void watch_matcaps(struct kiosk *k)
-{
-	folder_watch_free(k->watch);
-	k->watch = k->content->matcap_path ? folder_watch_new(k->content->matcap_path) : NULL;
-	k->rescan_at = CLOCK_NEVER;
-}
-
 static void start_models(struct kiosk *k, uint64_t now_ns)
 {
-	struct kiosk_models_parts parts = {k->app, k->content, k->renderer, k->display,
-					   &k->applied.content};
+	struct kiosk_models_parts parts = {k->app,     k->content,	    k->renderer,
+					   k->display, &k->applied.content, k->worker};
 
 	kiosk_models_free(k->models);
 	k->models = kiosk_models_new(&parts, now_ns);
@@ -300,7 +216,7 @@ static int configure(struct kiosk *k, uint64_t now_ns)
 		k->app = app_new(&cfg, count, now_ns);
 	/* content_upload gave the renderer the set's first image. */
 	k->shown_matcap = 0;
-	watch_matcaps(k);
+	kiosk_watch_matcaps(k);
 	if (!k->app)
 		return -ENOMEM;
 	start_models(k, now_ns);
@@ -334,34 +250,20 @@ static void reopen_devices(struct kiosk *k, unsigned sections)
 	}
 }
 
-/* SIGHUP: the settings, model and matcaps again, swapped in only when all
- * of it loaded; on failure the content on screen stays and the log says why. */
-static void reload(struct kiosk *k, uint64_t now_ns)
+/* A reload's content is on the screen (kiosk_content.c): its settings
+ * now, and the devices whose sections changed opened again. */
+void kiosk_apply_reload(struct kiosk *k, uint64_t now_ns)
 {
-	struct options fresh;
-	unsigned reopen;
+	unsigned reopen = reload_reopen(&k->started, &k->applied, &k->reload.fresh);
 
-	service_reloading(false);
-	log_info("reload: reading the settings, the model and the matcaps again");
-	if (options_parse(&fresh, k->argc, k->argv) != OPTIONS_OK) {
-		log_err("reload: the settings have errors (above); keeping the scene on screen");
-		goto out;
-	}
-	if (reload_content(k->content, &fresh.content, k->renderer, k->display->width,
-			   k->display->height))
-		goto out;
-	reopen = reload_reopen(&k->started, &k->applied, &fresh);
 	options_release(&k->applied);
-	k->applied = fresh;
-	memset(&fresh, 0, sizeof(fresh)); /* k->applied owns its strings now */
+	k->applied = k->reload.fresh;
+	memset(&k->reload.fresh, 0, sizeof(k->reload.fresh)); /* k->applied owns it now */
 	configure(k, now_ns);
 	if (k->touch)
 		touch_set_rotation(k->touch, k->applied.content.rotation);
 	reopen_devices(k, reopen);
-	log_info("reload: done");
-out:
-	options_release(&fresh);
-	service_reloading(true);
+	log_info("reload: done (%ld frames drawn meanwhile)", k->frames_drawn - k->reload_frames);
 }
 
 /* SIGHUPs queued together are one reload. */
@@ -369,12 +271,10 @@ static enum signals_seen read_signals(struct kiosk *k, int fd)
 {
 	enum signals_seen seen = signals_read(fd);
 
-	if (seen == SIGNALS_HUP) {
-		/* A large model may take a while: the watchdog must not run
-		 * out meanwhile. */
-		service_keepalive(&k->service, monotonic_ns());
-		reload(k, monotonic_ns());
-	}
+	/* The content is loaded on the worker: the loop draws, flips and
+	 * pings the watchdog meanwhile. */
+	if (seen == SIGNALS_HUP)
+		kiosk_content_reload(k);
 	return seen;
 }
 
@@ -392,7 +292,7 @@ static void read_input(struct kiosk *k, int i, uint64_t now)
 
 		/* Any input wakes a sleeping screen; it also does what it does. */
 		if (k->screen && screen_input(k->screen, now))
-			tell_app(k, APP_DISPLAY_BACK);
+			kiosk_tell_app(k, APP_DISPLAY_BACK);
 		app_apply(k->app, &m);
 	}
 }
@@ -409,7 +309,7 @@ static void service_touch(struct kiosk *k, const struct pollfd *fds, uint64_t no
 	n = touch_dispatch(k->touch, now, g, MAX_EVENTS);
 	for (int i = 0; i < n; i++) {
 		if (k->screen && screen_input(k->screen, now))
-			tell_app(k, APP_DISPLAY_BACK);
+			kiosk_tell_app(k, APP_DISPLAY_BACK);
 		m.touch = g[i];
 		app_apply(k->app, &m);
 	}
@@ -439,7 +339,8 @@ static int fill_fds(struct kiosk *k, struct pollfd *fds, int sig_fd)
 	    (struct pollfd){.fd = k->camera ? camera_feed_fd(k->camera) : -1, .events = POLLIN};
 	fds[FD_STATUS] = (struct pollfd){.fd = status_server_fd(k->status), .events = POLLIN};
 	fds[FD_TOUCH] = (struct pollfd){.fd = k->touch ? touch_fd(k->touch) : -1, .events = POLLIN};
-	kiosk_models_fill_fds(k->models, &fds[FD_MODELS]);
+	fds[FD_WORKER] = (struct pollfd){.fd = worker_fd(k->worker), .events = POLLIN};
+	kiosk_models_fill_fds(k->models, &fds[FD_MODEL_WATCH]);
 	for (int i = 0; i < k->input_count; i++)
 		fds[FD_INPUTS + i] = (struct pollfd){.fd = k->inputs[i]->fd, .events = POLLIN};
 	return FD_INPUTS + k->input_count;
@@ -478,42 +379,6 @@ static uint64_t earliest(uint64_t a, uint64_t b, uint64_t c)
 	return ab < c ? ab : c;
 }
 
-/* The matcap folder changed: its images again, staying on the one shown. */
-static int find_matcap(const struct matcap_set *set, const char *path)
-{
-	for (int i = 0; i < matcap_set_count(set); i++)
-		if (strcmp(matcap_set_path(set, i), path) == 0)
-			return i;
-	return -1;
-}
-
-static void rescan_matcaps(struct kiosk *k)
-{
-	struct app_msg m = {.kind = APP_MATCAPS};
-	char *shown;
-
-	k->rescan_at = CLOCK_NEVER;
-	if (!k->content->set)
-		return;
-	shown = strdup(matcap_set_path(k->content->set, app_state(k->app)->matcap));
-	if (shown && content_rescan_matcaps(k->content) == 0) {
-		m.matcaps.count = matcap_set_count(k->content->set);
-		m.matcaps.shown = find_matcap(k->content->set, shown);
-		app_apply(k->app, &m);
-		/* It may be the very file that was rewritten: decode it again. */
-		k->shown_matcap = -1;
-	}
-	free(shown);
-}
-
-static void service_matcaps(struct kiosk *k, const struct pollfd *fds, uint64_t now)
-{
-	if ((fds[FD_WATCH].revents & POLLIN) && k->watch && folder_watch_read(k->watch))
-		k->rescan_at = now + MATCAP_SETTLE_NS;
-	if (now >= k->rescan_at)
-		rescan_matcaps(k);
-}
-
 /* What the camera found goes to the app state; it streams while shown. */
 static void service_camera(struct kiosk *k, short revents)
 {
@@ -539,7 +404,7 @@ static int service_display(struct kiosk *k, const struct pollfd *fds)
 		return ret;
 	}
 	if (ret > 0)
-		tell_app(k, APP_DISPLAY_BACK);
+		kiosk_tell_app(k, APP_DISPLAY_BACK);
 	return 0;
 }
 
@@ -589,6 +454,7 @@ static int loop_once(struct kiosk *k, int sig_fd)
 	int n, ret;
 
 	service_screen(k, now);
+	kiosk_content_start_jobs(k);
 	if (app_state(k->app)->dirty && awake(k) && !k->display->waiting && (ret = draw(k, now)))
 		return ret;
 	service_camera(k, 0);
@@ -607,19 +473,21 @@ static int loop_once(struct kiosk *k, int sig_fd)
 	k->woke_ns = monotonic_ns();
 	if (fds[FD_SIGNAL].revents & POLLIN)
 		sig = read_signals(k, sig_fd);
-	/* After a reload the inputs and the camera may be new: their
-	 * revents are stale, and the next poll asks again. */
-	if (sig != SIGNALS_NONE)
-		return sig == SIGNALS_QUIT;
+	if (sig == SIGNALS_QUIT)
+		return 1;
+	/* After a reload was applied the inputs and the camera may be new:
+	 * their revents are stale, and the next poll asks again. */
+	if (kiosk_content_service(k, fds))
+		return 0;
 	if ((ret = service_display(k, fds)))
 		return ret;
 	service_camera(k, fds[FD_CAMERA].revents);
 	service_status(k, fds);
-	service_matcaps(k, fds, monotonic_ns());
+	kiosk_service_matcaps(k, fds, monotonic_ns());
 	service_inputs(k, fds, monotonic_ns());
 	service_touch(k, fds, monotonic_ns());
 	/* After the inputs: a step to another model starts at once. */
-	kiosk_models_service(k->models, &fds[FD_MODELS], monotonic_ns());
+	kiosk_models_service(k->models, &fds[FD_MODEL_WATCH], monotonic_ns());
 	return 0;
 }
 
@@ -662,8 +530,8 @@ struct kiosk *kiosk_new(const struct kiosk_parts *p, uint64_t now_ns)
 	/* The renderer already holds the mode. */
 	k->shown_mode = p->options->content.mode;
 	k->shown_ortho = p->options->content.ortho;
-	if (options_copy(&k->started, p->options) || options_copy(&k->applied, p->options) ||
-	    configure(k, now_ns)) {
+	if (kiosk_content_start(k) || options_copy(&k->started, p->options) ||
+	    options_copy(&k->applied, p->options) || configure(k, now_ns)) {
 		kiosk_free(k);
 		return NULL;
 	}
@@ -682,6 +550,8 @@ void kiosk_free(struct kiosk *k)
 	touch_free(k->touch);
 	screen_free(k->screen);
 	folder_watch_free(k->watch);
+	/* The worker first: a job under way is its until joined. */
+	kiosk_content_stop(k);
 	kiosk_models_free(k->models);
 	app_free(k->app);
 	options_release(&k->started);

@@ -32,6 +32,8 @@ struct kiosk_models {
 	int arrived_count;
 };
 
+static void finish(void *ctx);
+
 static void tell_app(struct kiosk_models *m, int shown)
 {
 	struct app_msg msg = {.kind = APP_MODELS, .models = {model_list_count(m->list), shown}};
@@ -62,7 +64,7 @@ struct kiosk_models *kiosk_models_new(const struct kiosk_models_parts *parts, ui
 		return NULL;
 	m->p = *parts;
 	m->list = model_list_new(parts->config->model);
-	m->loader = m->list ? model_loader_new() : NULL;
+	m->loader = m->list ? model_loader_new(parts->worker, finish, m) : NULL;
 	if (!m->loader) {
 		kiosk_models_free(m);
 		return NULL;
@@ -96,21 +98,21 @@ void kiosk_models_free(struct kiosk_models *m)
 	free(m);
 }
 
-void kiosk_models_fill_fds(const struct kiosk_models *m, struct pollfd fds[2])
+void kiosk_models_fill_fds(const struct kiosk_models *m, struct pollfd fds[1])
 {
-	fds[0] = (struct pollfd){.fd = m ? model_loader_fd(m->loader) : -1, .events = POLLIN};
-	fds[1] =
+	fds[0] =
 	    (struct pollfd){.fd = m && m->watch ? folder_watch_fd(m->watch) : -1, .events = POLLIN};
 }
 
 uint64_t kiosk_models_deadline(const struct kiosk_models *m)
 {
-	return m && !model_loader_busy(m->loader) ? m->rescan_at : CLOCK_NEVER;
+	return m && !worker_busy(m->p.worker) ? m->rescan_at : CLOCK_NEVER;
 }
 
 /* On the GPU, in place of the model on screen; on failure that one stays. */
 static int show(struct kiosk_models *m, struct content *fresh, int index)
 {
+	struct content old;
 	int ret = content_upload_model(fresh, m->p.renderer);
 
 	if (ret) {
@@ -122,7 +124,9 @@ static int show(struct kiosk_models *m, struct content *fresh, int index)
 			log_err("models: the model on screen could not be restored either");
 		return ret;
 	}
-	content_take_model(m->p.content, fresh);
+	content_take_model(m->p.content, fresh, &old);
+	/* Its cache write and sync are waited for on the worker. */
+	worker_retire(m->p.worker, &old);
 	m->shown = index;
 	log_info("model %d of %d: %s", index + 1, model_list_count(m->list),
 		 m->p.content->model_path);
@@ -133,8 +137,10 @@ static int show(struct kiosk_models *m, struct content *fresh, int index)
 	return 0;
 }
 
-static void finish(struct kiosk_models *m)
+/* The loader's ready(): on the loop thread, from the worker's done(). */
+static void finish(void *ctx)
 {
+	struct kiosk_models *m = ctx;
 	struct content fresh;
 	int picked;
 
@@ -214,19 +220,18 @@ static void rescan(struct kiosk_models *m)
 	m->asked = app_state(m->p.app)->model;
 }
 
-void kiosk_models_service(struct kiosk_models *m, const struct pollfd fds[2], uint64_t now_ns)
+void kiosk_models_service(struct kiosk_models *m, const struct pollfd fds[1], uint64_t now_ns)
 {
 	int want;
 
 	if (!m)
 		return;
-	if (fds[0].revents & POLLIN)
-		finish(m);
-	if ((fds[1].revents & POLLIN) && m->watch &&
+	if ((fds[0].revents & POLLIN) && m->watch &&
 	    folder_watch_read_names(m->watch, note_arrived, m))
 		m->rescan_at = now_ns + MODEL_SETTLE_NS;
-	/* The list is the job's while it runs. */
-	if (model_loader_busy(m->loader))
+	/* The list is the job's while it runs; the worker does one job at
+	 * a time (a reload or a matcap may hold it). */
+	if (model_loader_busy(m->loader) || worker_busy(m->p.worker))
 		return;
 	if (now_ns >= m->rescan_at)
 		rescan(m);

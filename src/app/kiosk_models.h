@@ -8,6 +8,7 @@
 
 #include "state/app.h"
 #include "content/content.h"
+#include "content/worker.h"
 #include "config/content_config.h"
 #include "display/display.h"
 #include "render/render.h"
@@ -22,6 +23,7 @@ struct kiosk_models_parts {
 	struct renderer *renderer;
 	struct display *display;
 	const struct content_config *config; /* [scene] model and how to prepare one */
+	struct worker *worker;		     /* the content worker, shared with the loop */
 };
 
 struct kiosk_models;
@@ -29,13 +31,15 @@ struct kiosk_models;
 /* NULL when there is no model file to switch or watch (the built-in knot),
  * or after logging. Tells the app how many models there are. */
 struct kiosk_models *kiosk_models_new(const struct kiosk_models_parts *parts, uint64_t now_ns);
-/* Waits for a model being prepared. */
+/* The worker must be idle (or freed): a model being prepared is its job. */
 void kiosk_models_free(struct kiosk_models *m);
-/* Two descriptors for poll (-1 where there is none). */
-void kiosk_models_fill_fds(const struct kiosk_models *m, struct pollfd fds[2]);
+/* The watch's descriptor for poll (-1 where there is none); a model
+ * prepared is told through the worker's. */
+void kiosk_models_fill_fds(const struct kiosk_models *m, struct pollfd fds[1]);
 /* When it must be serviced with nothing to read; CLOCK_NEVER: not. */
 uint64_t kiosk_models_deadline(const struct kiosk_models *m);
-/* A model ready, a file changed, or another model wanted. */
-void kiosk_models_service(struct kiosk_models *m, const struct pollfd fds[2], uint64_t now_ns);
+/* A file changed, or another model wanted: a job started when the worker
+ * is idle (a model prepared is swapped in from the worker's done()). */
+void kiosk_models_service(struct kiosk_models *m, const struct pollfd fds[1], uint64_t now_ns);
 
 #endif

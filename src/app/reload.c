@@ -1,28 +1,108 @@
 #include "app/reload.h"
 #include "util/log.h"
 
-int reload_content(struct content *shown, const struct content_config *cfg, struct renderer *r,
-		   int width, int height)
-{
-	struct content fresh;
-	int ret = content_load(&fresh, cfg, true);
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
 
-	if (!ret && (ret = content_prepare(&fresh, cfg, width, height)))
-		content_release(&fresh);
+/* A test hook (tests/e2e/live.sh): MK_TEST_PREPARE_DELAY_MS slows each
+ * reload's preparation down, so that it outlasts the watchdog. Built into
+ * the sanitizer builds of the tests alone (-DMK_TEST_HOOKS). */
+static void test_delay(void)
+{
+#ifdef MK_TEST_HOOKS
+	const char *env = getenv("MK_TEST_PREPARE_DELAY_MS");
+	long ms = env ? strtol(env, NULL, 10) : 0;
+	struct timespec t = {ms / 1000, (ms % 1000) * 1000000};
+
+	if (ms > 0)
+		nanosleep(&t, NULL);
+#endif
+}
+
+/* On the worker thread: everything but the GL upload. */
+static void run(struct worker_job *job)
+{
+	struct reload_job *j = (struct reload_job *)job;
+	const struct content_config *c = &j->fresh.content;
+
+	j->ret = content_load(&j->content, c, true);
+	if (!j->ret && (j->ret = content_prepare(&j->content, c, j->width, j->height)))
+		content_release(&j->content);
+	if (!j->ret)
+		test_delay();
+}
+
+static void done(struct worker_job *job)
+{
+	struct reload_job *j = (struct reload_job *)job;
+
+	j->ready(j->ctx);
+}
+
+void reload_job_init(struct reload_job *j, void (*ready)(void *ctx), void *ctx)
+{
+	memset(j, 0, sizeof(*j));
+	j->job = (struct worker_job){run, done};
+	j->ready = ready;
+	j->ctx = ctx;
+}
+
+void reload_job_release(struct reload_job *j)
+{
+	options_release(&j->fresh);
+	content_release(&j->content);
+	j->busy = false;
+}
+
+int reload_start(struct reload_job *j, struct worker *w, int argc, char **argv, int width,
+		 int height)
+{
+	int ret;
+
+	reload_job_release(j);
+	if (options_parse(&j->fresh, argc, argv) != OPTIONS_OK) {
+		log_err("reload: the settings have errors (above); keeping the scene on screen");
+		options_release(&j->fresh);
+		return -EINVAL;
+	}
+	j->width = width;
+	j->height = height;
+	j->ret = -EINPROGRESS;
+	ret = worker_start(w, &j->job);
+	if (ret) {
+		log_err("reload: cannot load the content: %s; keeping the scene on screen",
+			strerror(-ret));
+		options_release(&j->fresh);
+		return ret;
+	}
+	j->busy = true;
+	return 0;
+}
+
+int reload_finish(struct reload_job *j, struct content *shown, struct renderer *r,
+		  struct content *old)
+{
+	int ret = j->ret;
+
+	j->busy = false;
+	memset(old, 0, sizeof(*old));
 	if (ret) {
 		log_err("reload: keeping the scene on screen");
 		return ret;
 	}
-	ret = content_upload(&fresh, r);
+	ret = content_upload(&j->content, r);
 	if (ret) {
 		log_err("reload: the new scene does not fit on the GPU; keeping the one on screen");
-		content_release(&fresh);
+		content_release(&j->content);
 		if (content_upload(shown, r))
 			log_err("reload: the scene on screen could not be restored either");
 		return ret;
 	}
-	content_release(shown);
-	*shown = fresh;
+	*old = *shown;
+	*shown = j->content;
+	memset(&j->content, 0, sizeof(j->content));
 	return 0;
 }
 

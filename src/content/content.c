@@ -259,11 +259,17 @@ static void release_model(struct content *s)
 	free(s->model_path);
 }
 
-void content_take_model(struct content *shown, struct content *fresh)
+void content_take_model(struct content *shown, struct content *fresh, struct content *old)
 {
 	struct content kept = *shown;
 
-	release_model(shown);
+	memset(old, 0, sizeof(*old));
+	old->mesh = kept.mesh;
+	old->cached = kept.cached;
+	old->packed = kept.packed;
+	old->writer = kept.writer;
+	old->material = kept.material;
+	old->model_path = kept.model_path;
 	*shown = *fresh;
 	shown->matcap = kept.matcap;
 	shown->set = kept.set;

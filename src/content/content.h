@@ -52,8 +52,10 @@ int content_upload(struct content *s, struct renderer *r);
 int content_load_model(struct content *s, const struct content_config *c, const char *path,
 		       int width, int height);
 /* The model of fresh (from content_load_model) into shown, whose own
- * model is given back; shown keeps its matcaps. fresh is left empty. */
-void content_take_model(struct content *shown, struct content *fresh);
+ * model goes to old (for content_release, where waiting for its cache
+ * write costs nothing: the worker); shown keeps its matcaps. fresh is
+ * left empty. */
+void content_take_model(struct content *shown, struct content *fresh, struct content *old);
 /* Hand the mesh alone (and its material) to the renderer. */
 int content_upload_model(struct content *s, struct renderer *r);
 /* The camera and panel the settings ask for, at the resting orientation. */

@@ -3,18 +3,16 @@
 #include "util/log.h"
 
 #include <errno.h>
-#include <pthread.h>
-#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/eventfd.h>
-#include <unistd.h>
 
 struct model_loader {
-	int fd;
-	bool busy;
-	pthread_t thread;
-	/* The job: read by the thread alone while busy. */
+	struct worker_job job; /* first: the worker hands it back */
+	struct worker *worker;
+	void (*ready)(void *ctx);
+	void *ctx;
+	bool busy, done;
+	/* The job: read by the worker alone while busy. */
 	struct model_list *list;
 	struct content_config config;
 	int from, step, shown, width, height;
@@ -23,54 +21,6 @@ struct model_loader {
 	int picked;
 };
 
-struct model_loader *model_loader_new(void)
-{
-	struct model_loader *l = calloc(1, sizeof(*l));
-
-	if (!l)
-		return NULL;
-	l->fd = eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK);
-	if (l->fd < 0) {
-		log_err("models: no eventfd (%s); models are not switched", strerror(errno));
-		free(l);
-		return NULL;
-	}
-	return l;
-}
-
-static void join(struct model_loader *l)
-{
-	uint64_t n;
-
-	if (!l->busy)
-		return;
-	pthread_join(l->thread, NULL);
-	if (read(l->fd, &n, sizeof(n)) < 0 && errno != EAGAIN)
-		log_debug("models: eventfd: %s", strerror(errno));
-	content_config_release(&l->config);
-	l->busy = false;
-}
-
-void model_loader_free(struct model_loader *l)
-{
-	if (!l)
-		return;
-	join(l);
-	content_release(&l->result);
-	close(l->fd);
-	free(l);
-}
-
-int model_loader_fd(const struct model_loader *l)
-{
-	return l->fd;
-}
-
-bool model_loader_busy(const struct model_loader *l)
-{
-	return l->busy;
-}
-
 static int try_load(void *ctx, const char *path)
 {
 	struct model_loader *l = ctx;
@@ -78,10 +28,9 @@ static int try_load(void *ctx, const char *path)
 	return content_load_model(&l->result, &l->config, path, l->width, l->height);
 }
 
-static void *run(void *arg)
+static void run(struct worker_job *j)
 {
-	struct model_loader *l = arg;
-	uint64_t one = 1;
+	struct model_loader *l = (struct model_loader *)j;
 
 	if (l->step)
 		l->picked = model_list_pick(l->list, l->from, l->step, l->shown, try_load, l);
@@ -89,9 +38,41 @@ static void *run(void *arg)
 		l->picked = l->from;
 	else
 		model_list_set_bad(l->list, l->from, true);
-	if (write(l->fd, &one, sizeof(one)) != sizeof(one))
-		log_err("models: cannot tell the loop a model is ready: %s", strerror(errno));
-	return NULL;
+}
+
+static void done(struct worker_job *j)
+{
+	struct model_loader *l = (struct model_loader *)j;
+
+	l->done = true;
+	l->ready(l->ctx);
+}
+
+struct model_loader *model_loader_new(struct worker *w, void (*ready)(void *ctx), void *ctx)
+{
+	struct model_loader *l = w ? calloc(1, sizeof(*l)) : NULL;
+
+	if (!l)
+		return NULL;
+	l->job = (struct worker_job){run, done};
+	l->worker = w;
+	l->ready = ready;
+	l->ctx = ctx;
+	return l;
+}
+
+void model_loader_free(struct model_loader *l)
+{
+	if (!l)
+		return;
+	content_config_release(&l->config);
+	content_release(&l->result);
+	free(l);
+}
+
+bool model_loader_busy(const struct model_loader *l)
+{
+	return l->busy;
 }
 
 int model_loader_start(struct model_loader *l, struct model_list *list,
@@ -100,7 +81,7 @@ int model_loader_start(struct model_loader *l, struct model_list *list,
 {
 	int ret;
 
-	if (l->busy)
+	if (l->busy || worker_busy(l->worker))
 		return -EBUSY;
 	if (content_config_copy(&l->config, c))
 		return -ENOMEM;
@@ -112,9 +93,9 @@ int model_loader_start(struct model_loader *l, struct model_list *list,
 	l->width = width;
 	l->height = height;
 	l->picked = -1;
-	ret = -pthread_create(&l->thread, NULL, run, l);
+	l->done = false;
+	ret = worker_start(l->worker, &l->job);
 	if (ret) {
-		log_err("models: no thread to load the next one: %s", strerror(-ret));
 		content_config_release(&l->config);
 		return ret;
 	}
@@ -124,11 +105,8 @@ int model_loader_start(struct model_loader *l, struct model_list *list,
 
 int model_loader_finish(struct model_loader *l, struct content *out, int *picked)
 {
-	uint64_t n;
-
-	if (!l->busy || read(l->fd, &n, sizeof(n)) != sizeof(n))
+	if (!l->busy || !l->done)
 		return -EAGAIN;
-	pthread_join(l->thread, NULL);
 	content_config_release(&l->config);
 	l->busy = false;
 	*picked = l->picked;

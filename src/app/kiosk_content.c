@@ -1,0 +1,164 @@
+/* The live loop's side of the content worker (content/worker.h): what is
+ * asked (a reload, the matcap the app state wants, a matcap folder that
+ * changed) becomes a job when the worker is idle, and a job done is
+ * uploaded here, on the loop thread, where GL is. Model switches are the
+ * worker's jobs too (kiosk_models.c). One job at a time: a reload first,
+ * then a matcap, then a model, then the release of what was swapped out. */
+#include "app/kiosk_private.h"
+#include "util/clock.h"
+#include "util/log.h"
+
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void reload_ready(void *ctx)
+{
+	struct kiosk *k = ctx;
+	struct content old;
+	int ret = reload_finish(&k->reload, k->content, k->renderer, &old);
+
+	if (ret) {
+		reload_job_release(&k->reload);
+		/* The matcap's texture may be the new one's, or none. */
+		k->shown_matcap = -1;
+	} else {
+		/* The old content's cache write is waited for on the worker. */
+		worker_retire(k->worker, &old);
+		k->matcap_set_id++;
+		kiosk_apply_reload(k, monotonic_ns());
+		k->reload_applied = true;
+	}
+	service_reloading(true);
+}
+
+/* A file that fails keeps the previous texture and says so; the image is
+ * given back once on the GPU. */
+static void matcap_ready(void *ctx)
+{
+	struct kiosk *k = ctx;
+	struct matcap_job *j = &k->matcap;
+
+	/* The set was read again meanwhile: the index may name another file. */
+	if (j->set_id != k->matcap_set_id || !k->content->set) {
+		matcap_job_release(j);
+		return;
+	}
+	if (j->ret == 0 && renderer_set_matcap(k->renderer, &j->image) == 0)
+		log_info("matcap %s", j->path);
+	k->shown_matcap = j->index;
+	matcap_job_release(j);
+	kiosk_tell_app(k, APP_DISPLAY_BACK);
+}
+
+int kiosk_content_start(struct kiosk *k)
+{
+	reload_job_init(&k->reload, reload_ready, k);
+	matcap_job_init(&k->matcap, matcap_ready, k);
+	k->worker = worker_new();
+	return k->worker ? 0 : -ENOMEM;
+}
+
+void kiosk_content_stop(struct kiosk *k)
+{
+	worker_free(k->worker);
+	k->worker = NULL;
+	reload_job_release(&k->reload);
+	matcap_job_release(&k->matcap);
+}
+
+void kiosk_content_reload(struct kiosk *k)
+{
+	k->reload_wanted = true;
+}
+
+static void start_reload(struct kiosk *k)
+{
+	k->reload_wanted = false;
+	service_reloading(false);
+	log_info("reload: reading the settings, the model and the matcaps again");
+	k->reload_frames = k->frames_drawn;
+	if (reload_start(&k->reload, k->worker, k->argc, k->argv, k->display->width,
+			 k->display->height))
+		service_reloading(true);
+}
+
+/* Decoding a matcap is done when it is shown, so a folder of many large
+ * images costs one image of memory. */
+static bool start_matcap(struct kiosk *k)
+{
+	int want = app_state(k->app)->matcap;
+	const struct matcap_set *set = k->content->set;
+
+	if (!set || want == k->shown_matcap)
+		return false;
+	if (matcap_job_start(&k->matcap, k->worker, matcap_set_path(set, want), want,
+			     k->matcap_set_id) == 0)
+		return true;
+	k->shown_matcap = want; /* no memory: the previous texture stays */
+	return false;
+}
+
+/* Before the loop sleeps: the next job, when the worker is idle. */
+void kiosk_content_start_jobs(struct kiosk *k)
+{
+	if (worker_busy(k->worker))
+		return;
+	if (k->reload_wanted)
+		start_reload(k);
+	else if (!start_matcap(k) && worker_has_retired(k->worker))
+		worker_start(k->worker, NULL);
+}
+
+bool kiosk_content_service(struct kiosk *k, const struct pollfd *fds)
+{
+	k->reload_applied = false;
+	if (fds[FD_WORKER].revents & POLLIN)
+		worker_finish(k->worker);
+	return k->reload_applied;
+}
+
+void kiosk_watch_matcaps(struct kiosk *k)
+{
+	folder_watch_free(k->watch);
+	k->watch = k->content->matcap_path ? folder_watch_new(k->content->matcap_path) : NULL;
+	k->rescan_at = CLOCK_NEVER;
+}
+
+/* The matcap folder changed: its images again, staying on the one shown. */
+static int find_matcap(const struct matcap_set *set, const char *path)
+{
+	for (int i = 0; i < matcap_set_count(set); i++)
+		if (strcmp(matcap_set_path(set, i), path) == 0)
+			return i;
+	return -1;
+}
+
+/* A folder listing (no image is decoded here: the one shown is decoded
+ * again on the worker, it may be the very file that was rewritten). */
+static void rescan_matcaps(struct kiosk *k)
+{
+	struct app_msg m = {.kind = APP_MATCAPS};
+	char *shown;
+
+	k->rescan_at = CLOCK_NEVER;
+	if (!k->content->set)
+		return;
+	shown = strdup(matcap_set_path(k->content->set, app_state(k->app)->matcap));
+	if (shown && content_rescan_matcaps(k->content) == 0) {
+		m.matcaps.count = matcap_set_count(k->content->set);
+		m.matcaps.shown = find_matcap(k->content->set, shown);
+		app_apply(k->app, &m);
+		k->shown_matcap = -1;
+		k->matcap_set_id++;
+	}
+	free(shown);
+}
+
+void kiosk_service_matcaps(struct kiosk *k, const struct pollfd *fds, uint64_t now)
+{
+	if ((fds[FD_WATCH].revents & POLLIN) && k->watch && folder_watch_read(k->watch))
+		k->rescan_at = now + MATCAP_SETTLE_NS;
+	if (now >= k->rescan_at)
+		rescan_matcaps(k);
+}

@@ -1,0 +1,100 @@
+/* The live loop's own state, shared by kiosk.c (the loop, the inputs,
+ * the display) and kiosk_content.c (the content worker's jobs: reload,
+ * matcap, the matcap folder). Nothing outside src/app/kiosk*.c includes it. */
+#ifndef MK_KIOSK_PRIVATE_H
+#define MK_KIOSK_PRIVATE_H
+
+#include "app/kiosk.h"
+#include "app/kiosk_models.h"
+#include "app/reload.h"
+#include "content/matcap_job.h"
+#include "content/worker.h"
+#include "ops/screen.h"
+#include "ops/service.h"
+#include "ops/status.h"
+#include "camera/camera_feed.h"
+#include "state/app.h"
+#include "util/folder_watch.h"
+
+#define MAX_EVENTS 32
+
+/* Matcaps being copied into the folder: act once the copy has been quiet
+ * this long, so a burst of files is one rescan. */
+#define MATCAP_SETTLE_NS 500000000ull
+
+enum {
+	FD_SIGNAL,
+	FD_DISPLAY,
+	FD_WATCH,
+	FD_CAMERA,
+	FD_STATUS,
+	FD_TOUCH,
+	FD_WORKER,
+	FD_MODEL_WATCH,
+	FD_INPUTS
+};
+
+/* Where an input source came from: a reload opens the buttons or the
+ * keyboards again, and leaves the others alone. */
+enum input_origin { INPUT_CALLER, INPUT_BUTTON, INPUT_KEYBOARD };
+
+struct kiosk {
+	struct display *display;
+	struct renderer *renderer;
+	struct content *content; /* on screen; a reload swaps what it holds */
+	char **argv;
+	int argc;
+	bool camera_possible;
+	struct options started; /* [display] stays as it was at the start */
+	struct options applied; /* the settings in use, from the last reload */
+	struct app *app;	/* the one owner of the state; changed by messages */
+	struct view view;
+	struct input_source *inputs[KIOSK_MAX_INPUTS];
+	enum input_origin origins[KIOSK_MAX_INPUTS];
+	int input_count;
+	/* What the renderer holds now. */
+	int shown_matcap; /* the image in the texture, -1 for none */
+	bool shown_ortho;
+	enum shading_mode shown_mode;
+	long frames_drawn;
+	uint64_t input_drawn_ns;    /* the last input a drawn frame shows */
+	struct folder_watch *watch; /* the matcap folder, NULL when not watched */
+	uint64_t rescan_at;	    /* act on matcap changes then; CLOCK_NEVER: none */
+	uint64_t waiting_since;	    /* when the pending page flip was queued */
+	bool display_absent;	    /* the last draw found no display to show it on */
+	struct service service;
+	struct camera_feed *camera;   /* the live camera; NULL: none */
+	struct screen *screen;	      /* its power; NULL: always on */
+	struct status_server *status; /* --status; NULL: not reachable */
+	uint64_t started_ns;
+	struct touch *touch;	     /* the touchscreens; NULL: off */
+	struct kiosk_models *models; /* a folder or list of models; NULL: one, unwatched */
+	/* The content worker and its jobs other than a model switch's. */
+	struct worker *worker;
+	struct reload_job reload;
+	bool reload_wanted;	  /* SIGHUP seen, not started yet */
+	bool reload_applied;	  /* in this pass: the devices may be new */
+	long reload_frames;	  /* frames_drawn when the reload started */
+	struct matcap_job matcap; /* decoding the image asked for */
+	unsigned matcap_set_id;	  /* bumped when the set changes */
+	/* The loop thread's longest step, from a wake-up to the next sleep:
+	 * what a page flip or an input may wait for (the bench reads it). */
+	uint64_t woke_ns;
+	uint64_t longest_step_ns;
+};
+
+void kiosk_tell_app(struct kiosk *k, enum app_msg_kind kind);
+/* kiosk_content.c */
+int kiosk_content_start(struct kiosk *k);
+void kiosk_content_stop(struct kiosk *k);
+/* Jobs done are handed on, the next one started when the worker is idle.
+ * True when a reload was applied (the devices may be new). */
+bool kiosk_content_service(struct kiosk *k, const struct pollfd *fds);
+void kiosk_content_reload(struct kiosk *k);
+void kiosk_content_start_jobs(struct kiosk *k);
+void kiosk_watch_matcaps(struct kiosk *k);
+void kiosk_service_matcaps(struct kiosk *k, const struct pollfd *fds, uint64_t now);
+/* kiosk.c: the settings of a reload whose content is on the GPU now. */
+void kiosk_apply_reload(struct kiosk *k, uint64_t now_ns);
+
+#endif
