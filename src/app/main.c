@@ -34,7 +34,7 @@ static double now_ms(void)
 
 /* auto: the display when there is one, else a PNG of the scene (the
  * README's first command on a machine with no screen). */
-static struct display *open_display(struct options *o)
+static struct display *open_display(struct options *o, int *err)
 {
 	struct display_config cfg = o->display;
 	struct display *d;
@@ -46,9 +46,9 @@ static struct display *open_display(struct options *o)
 	case BACKEND_OSMESA:
 		return display_osmesa_new(&cfg);
 	case BACKEND_KMS:
-		return display_kms_new(&cfg);
+		return display_kms_open(&cfg, err);
 	default:
-		d = o->output ? NULL : display_kms_new(&cfg);
+		d = o->output ? NULL : display_kms_open(&cfg, err);
 		if (d)
 			return d;
 		if (!o->output) {
@@ -177,21 +177,45 @@ out:
 }
 
 /* The exit status: 2 for a bad command line, 78 (EX_CONFIG) for a bad
- * config file, 1 when a model, image or display fails. */
+ * config file; for a display that does not open, why (sysexits.h): 77
+ * (EX_NOPERM) forbidden, 75 (EX_TEMPFAIL) busy, 69 (EX_UNAVAILABLE)
+ * absent; 1 when a model, image or display fails otherwise. The unit's
+ * RestartPreventExitStatus= names those a restart cannot fix (77, 78). */
 enum exit_code {
 	EXIT_CODE_OK = 0,
 	EXIT_CODE_FAILED = 1,
 	EXIT_CODE_USAGE = 2,
+	EXIT_CODE_UNAVAILABLE = 69,
+	EXIT_CODE_TEMPFAIL = 75,
+	EXIT_CODE_NOPERM = 77,
 	EXIT_CODE_CONFIG = 78
 };
 
 /* -EEXIST comes only from kiosk_open_devices: two buttons on one line,
- * which the settings could not tell (GPIO17 and 17), a config error. */
+ * which the settings could not tell (GPIO17 and 17), a config error. The
+ * display's reasons come from display_kms_open, wrapped by show(). */
 static enum exit_code exit_code(int ret)
 {
 	if (ret == -EEXIST)
 		return EXIT_CODE_CONFIG;
 	return ret ? EXIT_CODE_FAILED : EXIT_CODE_OK;
+}
+
+/* Only the display's reasons are told apart by the exit status (a model
+ * that is missing or unreadable stays 1). */
+static enum exit_code display_failed(int err)
+{
+	enum exit_code code = EXIT_CODE_FAILED;
+	const char *why = "it failed (above)";
+
+	if (err == -EACCES || err == -EPERM)
+		code = EXIT_CODE_NOPERM, why = "forbidden (the node's permissions)";
+	else if (err == -EBUSY)
+		code = EXIT_CODE_TEMPFAIL, why = "busy (another program is DRM master)";
+	else if (err == -ENODEV || err == -ENOENT)
+		code = EXIT_CODE_UNAVAILABLE, why = "absent (no such display)";
+	log_err("the display cannot be opened: %s; exit status %d", why, (int)code);
+	return code;
 }
 
 static bool is_live(const struct options *o)
@@ -245,17 +269,19 @@ static int show_poster(const struct options *o, struct display *d)
 	return shown;
 }
 
-static int show(struct options *o, char **argv)
+static int show(struct options *o, char **argv, enum exit_code *display_code)
 {
 	double start_ms = now_ms();
 	bool live = is_live(o);
 	struct content content = {0};
 	struct display *display = NULL;
-	int posters = 0;
+	int posters = 0, err = -ENODEV;
 	int ret = before_display(o, &content);
 
-	if (!ret && !(display = open_display(o)))
+	if (!ret && !(display = open_display(o, &err))) {
+		*display_code = display_failed(err);
 		ret = -ENODEV;
+	}
 	if (!ret && live && is_live(o))
 		posters = show_poster(o, display);
 	if (!ret)
@@ -287,6 +313,14 @@ static enum exit_code tool(struct options *o)
 	return ret == -EINVAL ? EXIT_CODE_CONFIG : exit_code(ret);
 }
 
+static enum exit_code show_exit_code(struct options *o, char **argv)
+{
+	enum exit_code display_code = EXIT_CODE_OK;
+	int ret = show(o, argv, &display_code);
+
+	return display_code != EXIT_CODE_OK ? display_code : exit_code(ret);
+}
+
 static enum exit_code start(struct options *o, char **argv)
 {
 	if (o->help)
@@ -296,7 +330,7 @@ static enum exit_code start(struct options *o, char **argv)
 	else if (o->status || o->check_config || o->import)
 		return tool(o);
 	else
-		return exit_code(show(o, argv));
+		return show_exit_code(o, argv);
 	return EXIT_CODE_OK;
 }
 

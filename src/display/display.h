@@ -54,6 +54,11 @@ struct display {
 struct display *display_osmesa_new(const struct display_config *cfg);
 struct display *display_egl_new(const struct display_config *cfg);
 struct display *display_kms_new(const struct display_config *cfg);
+/* The same, and when it returns NULL, why in *err: -EACCES (forbidden:
+ * the node's permissions), -EBUSY (another program is DRM master and
+ * [display] on_busy = exit), -ENODEV (no such display), or another
+ * negative errno. */
+struct display *display_kms_open(const struct display_config *cfg, int *err);
 
 /* Shared by the backends: glReadPixels into an image, flipped to rows top first. */
 int display_read_rgba(struct display *d, struct image *out);

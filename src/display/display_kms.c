@@ -571,25 +571,26 @@ static int check_master(struct display_kms *k)
 	return k->exit_when_busy ? -EBUSY : 0;
 }
 
-struct display *display_kms_new(const struct display_config *cfg)
+struct display *display_kms_open(const struct display_config *cfg, int *err)
 {
 	struct display_kms *k = calloc(1, sizeof(*k));
-	int ret;
+	int ret = -ENOMEM;
 
 	if (!k)
-		return NULL;
+		goto out;
 	init_base(k, cfg);
 	/* A display output with nothing connected yet is a kiosk waiting for
 	 * its screen, for auto too: only a machine with none draws a PNG. */
-	if (drm_open(&k->drm, cfg->device, cfg->quiet))
+	if ((ret = drm_open(&k->drm, cfg->device, cfg->quiet)))
 		goto fail;
 	k->gpu_fd = k->drm.fd;
 	k->gbm = gbm_create_device(k->gpu_fd);
 	if (!k->gbm) {
 		log_err("kms: GBM cannot use %s (is Mesa's DRI driver installed?)", k->drm.path);
+		ret = -ENODEV;
 		goto fail;
 	}
-	if (egl_init(k) || open_fds(k) || check_master(k))
+	if ((ret = egl_init(k)) || (ret = open_fds(k)) || (ret = check_master(k)))
 		goto fail;
 	ret = connect_display(k);
 	if (ret == -ENOENT)
@@ -600,5 +601,13 @@ struct display *display_kms_new(const struct display_config *cfg)
 	return &k->base;
 fail:
 	kms_destroy(&k->base);
+out:
+	if (err)
+		*err = ret < 0 ? ret : -ENODEV;
 	return NULL;
+}
+
+struct display *display_kms_new(const struct display_config *cfg)
+{
+	return display_kms_open(cfg, NULL);
 }

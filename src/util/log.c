@@ -1,13 +1,16 @@
 #include "util/log.h"
 
+#include <errno.h>
 #include <pthread.h>
 #include <stdarg.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 
-/* The level is set once from main() before anything logs; the journal check
- * is pure (it reads the environment each time), so no other state is kept. */
-static enum log_level max_level = LOG_INFO;
+/* The level is set from main() and again by a reload, while the content
+ * worker logs: an atomic. The journal check is pure (it reads the
+ * environment each time), so no other state is kept. */
+static atomic_int max_level = LOG_INFO;
 /* The last error line, for the kiosk's status report (--status): the one
  * other thing kept, as the level is, for the whole process. The model
  * loader's thread logs too: a lock, and the reader gets a copy. */
@@ -19,12 +22,12 @@ const char *const log_level_names[LOG_LEVELS + 1] = {"error", "warning", "info",
 
 void log_set_level(enum log_level max)
 {
-	max_level = max;
+	atomic_store_explicit(&max_level, (int)max, memory_order_relaxed);
 }
 
 enum log_level log_get_level(void)
 {
-	return max_level;
+	return (enum log_level)atomic_load_explicit(&max_level, memory_order_relaxed);
 }
 
 static const char *level_word(enum log_level level)
@@ -39,12 +42,14 @@ static const char *level_word(enum log_level level)
 	}
 }
 
+/* errno is kept: a caller may log, then return -errno. */
 void log_msg(enum log_level level, const char *fmt, ...)
 {
+	int saved_errno = errno;
 	char line[1024];
 	va_list ap;
 
-	if (level > max_level)
+	if ((int)level > atomic_load_explicit(&max_level, memory_order_relaxed))
 		return;
 	va_start(ap, fmt);
 	vsnprintf(line, sizeof(line), fmt, ap);
@@ -60,6 +65,7 @@ void log_msg(enum log_level level, const char *fmt, ...)
 		fprintf(stderr, "<%d>%s\n", (int)level, line);
 	else
 		fprintf(stderr, "matcap-kiosk: %s%s\n", level_word(level), line);
+	errno = saved_errno;
 }
 
 void log_last_error(char *buf, size_t size)

@@ -29,7 +29,10 @@ vm_check "/dev/dri/card0 is root:video, 0660 (udev's rules)" \
 as_user guest "/usr/local/bin/matcap-kiosk --backend kms $KIOSK_SCENE" >perm.log 2>&1
 KRC=$?
 show perm.log
-vm_check "not in the video group: exit 1 (got $KRC)" test "$KRC" = 1
+# 77 (EX_NOPERM): the unit's RestartPreventExitStatus= does not restart it.
+vm_check "not in the video group: exit 77, forbidden (got $KRC)" test "$KRC" = 77
+vm_check "not in the video group: says the display is forbidden" sh -c \
+	"grep -q 'the display cannot be opened: forbidden' perm.log"
 vm_check "not in the video group: the error names the group, once" sh -c \
 	"[ \$(grep -c \"/dev/dri/card0: permission denied: add the user to the 'video' group\" perm.log) = 1 ]"
 
@@ -39,7 +42,7 @@ vm_check "vm-hold holds DRM master, showing its picture" restored
 matcap-kiosk --backend kms $KIOSK_SCENE --on-busy exit >exit.log 2>&1
 KRC=$?
 show exit.log
-vm_check "on_busy = exit: exit 1 (got $KRC)" test "$KRC" = 1
+vm_check "on_busy = exit: exit 75, busy (got $KRC)" test "$KRC" = 75
 vm_check "on_busy = exit: names the holder and the setting" has exit.log \
 	"/dev/dri/card0 is held by vm-hold (pid $HOLD_PID) (it is DRM master): exiting, as \[display\] on_busy = exit says"
 vm_check "on_busy = exit: the holder's picture is untouched" restored
