@@ -5,6 +5,7 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/socket.h>
@@ -22,12 +23,26 @@
  * a loop gets the last one again instead of stalling the animation. */
 #define FRAME_EVERY_NS 1000000000ull
 
+/* An answer being written: the PNG encoding, the files and the socket
+ * are a thread's, so the loop only reads the frame back. Owned by the
+ * thread from pthread_create until pthread_join. */
+struct status_answer {
+	char dir[96];
+	int client_fd;
+	struct image frame; /* none when width is 0 */
+	char *json;
+	char frame_path[160], state_path[160];
+};
+
 struct status_server {
 	char dir[96];
 	int listen_fd;
 	int client_fd;		/* taken, not answered yet; -1: none */
 	uint64_t frame_ns;	/* when frame.png was last written; 0: never */
 	uint64_t deaf_until_ns; /* accept failed (no fd left): not polled till then */
+	bool writing;		/* the writer thread runs (or ran, not joined yet) */
+	pthread_t writer;
+	struct status_answer answer;
 };
 
 /* systemd's RuntimeDirectory= with several folders lists them with ':';
@@ -113,12 +128,24 @@ struct status_server *status_server_new(void)
 	return NULL;
 }
 
+/* The answer before is written: its thread joined. A client that comes
+ * within one PNG encoding of the one before waits for it here (at most
+ * once a second a frame is encoded at all). */
+static void join_writer(struct status_server *s)
+{
+	if (!s->writing)
+		return;
+	pthread_join(s->writer, NULL);
+	s->writing = false;
+}
+
 void status_server_free(struct status_server *s)
 {
 	struct sockaddr_un a;
 
 	if (!s)
 		return;
+	join_writer(s);
 	if (s->client_fd >= 0)
 		close(s->client_fd);
 	close(s->listen_fd);
@@ -241,38 +268,68 @@ static char *report_text(const struct status_report *r, const char *frame, const
 	return buf;
 }
 
-void status_server_answer(struct status_server *s, const struct status_report *r,
-			  const struct image *frame)
+/* On the writer thread. */
+static void *write_answer(void *arg)
 {
-	char frame_path[160], state_path[160];
-	bool have_frame = false;
-	char *json;
+	struct status_answer *w = arg;
+	bool have_frame = w->frame.width > 0;
 	ssize_t sent;
+	int err;
 
-	snprintf(frame_path, sizeof(frame_path), "%s/%s", s->dir, STATUS_FRAME);
-	if (frame && write_png(s->dir, frame, frame_path, sizeof(frame_path)) == 0)
-		s->frame_ns = monotonic_ns(), have_frame = true;
-	else if (!frame && s->frame_ns) /* asked again within a second: the last one */
-		have_frame = access(frame_path, R_OK) == 0;
-	snprintf(state_path, sizeof(state_path), "%s/%s", s->dir, STATUS_STATE);
-	json = report_text(r, have_frame ? frame_path : NULL, state_path);
-	if (!json) {
+	if (have_frame && write_png(w->dir, &w->frame, w->frame_path, sizeof(w->frame_path)))
+		log_warn("status: cannot write %s", w->frame_path);
+	if (!w->json) {
 		log_err("status: no memory for the report");
-	} else if (write_state(s->dir, json, state_path, sizeof(state_path)) == 0) {
+	} else if ((err = write_state(w->dir, w->json, w->state_path, sizeof(w->state_path))) ==
+		   0) {
 		/* The client waits for it; one that left or reads nothing is
 		 * not waited for (the answer fits the socket's buffer). */
-		sent = send(s->client_fd, json, strlen(json), MSG_NOSIGNAL | MSG_DONTWAIT);
-		if (sent != (ssize_t)strlen(json))
-			log_debug("status: the client took %zd of %zu bytes", sent, strlen(json));
-		log_info("status: wrote %s%s%s", state_path, have_frame ? " and " : "",
-			 have_frame ? frame_path : "");
+		sent = send(w->client_fd, w->json, strlen(w->json), MSG_NOSIGNAL | MSG_DONTWAIT);
+		if (sent != (ssize_t)strlen(w->json))
+			log_debug("status: the client took %zd of %zu bytes", sent,
+				  strlen(w->json));
+		log_info("status: wrote %s%s%s", w->state_path, have_frame ? " and " : "",
+			 have_frame ? w->frame_path : "");
 	} else {
 		log_err("status: cannot write %s: %s (expected a writable runtime folder)",
-			state_path, strerror(errno));
+			w->state_path, strerror(-err));
 	}
-	free(json);
-	close(s->client_fd);
+	free(w->json);
+	w->json = NULL;
+	image_release(&w->frame);
+	close(w->client_fd);
+	return NULL;
+}
+
+void status_server_answer(struct status_server *s, const struct status_report *r,
+			  struct image *frame)
+{
+	struct status_answer *w = &s->answer;
+	bool have_frame = false;
+	int ret;
+
+	join_writer(s);
+	memset(w, 0, sizeof(*w));
+	snprintf(w->dir, sizeof(w->dir), "%s", s->dir);
+	snprintf(w->frame_path, sizeof(w->frame_path), "%s/%s", s->dir, STATUS_FRAME);
+	snprintf(w->state_path, sizeof(w->state_path), "%s/%s", s->dir, STATUS_STATE);
+	if (frame && frame->width) {
+		w->frame = *frame; /* the thread's now */
+		memset(frame, 0, sizeof(*frame));
+		s->frame_ns = monotonic_ns(), have_frame = true;
+	} else if (s->frame_ns) { /* asked again within a second: the last one */
+		have_frame = access(w->frame_path, R_OK) == 0;
+	}
+	w->json = report_text(r, have_frame ? w->frame_path : NULL, w->state_path);
+	w->client_fd = s->client_fd;
 	s->client_fd = -1;
+	ret = pthread_create(&s->writer, NULL, write_answer, w);
+	if (ret) {
+		log_warn("status: no thread to write the answer (%s): written here", strerror(ret));
+		write_answer(w);
+		return;
+	}
+	s->writing = true;
 }
 
 int status_client_run(FILE *out)

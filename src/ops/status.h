@@ -40,9 +40,12 @@ bool status_server_accept(struct status_server *s);
 /* Whether a frame should be read back for this answer: at most one a
  * second; in between the answer names the last one written. */
 bool status_server_wants_frame(const struct status_server *s);
-/* Write the files and answer the client taken. frame NULL: none read. */
+/* Answer the client taken: the JSON composed here, the PNG encoded and
+ * the files and the socket written on a thread of the server's (the loop
+ * thread only read the frame back). The frame's pixels are taken (frame
+ * is left empty); NULL: none read. */
 void status_server_answer(struct status_server *s, const struct status_report *r,
-			  const struct image *frame);
+			  struct image *frame);
 /* The client: ask the running kiosk and print its answer to out.
  * Returns 0, or 1 after saying why on stderr. */
 int status_client_run(FILE *out);

@@ -117,6 +117,9 @@ static void test_frame(void **state)
 	fd = connect_socket();
 	assert_true(fd >= 0 && status_server_accept(s));
 	status_server_answer(s, &r, &img);
+	/* The pixels are the writer thread's: the loop keeps none. */
+	assert_null(img.rgba);
+	assert_int_equal(img.width, 0);
 	read_all(fd, buf, sizeof(buf));
 	close(fd);
 	snprintf(path, sizeof(path), "%s/frame.png", dir);
