@@ -311,7 +311,7 @@ out:
 
 bool drm_still_connected(const struct drm *drm)
 {
-	drmModeConnector *c = drmModeGetConnector(drm->fd, drm->connector_id);
+	drmModeConnector *c = drmModeGetConnectorCurrent(drm->fd, drm->connector_id);
 	bool ok = c && c->connection == DRM_MODE_CONNECTED;
 
 	for (int i = 0; ok && i < c->count_modes; i++)

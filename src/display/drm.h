@@ -56,7 +56,11 @@ int drm_open(struct drm *drm, const char *path, bool quiet);
  * one), or -EINVAL after listing what exists when a name does not. */
 int drm_select(struct drm *drm, const char *connector, const char *mode);
 /* True while the selected connector is connected and offers our mode:
- * a hotplug event that changed nothing needs no new modeset. */
+ * a hotplug event that changed nothing needs no new modeset. Asked with
+ * drmModeGetConnectorCurrent, the state the kernel already knows: no
+ * forced probe (an EDID read over DDC takes tens of milliseconds, on the
+ * loop thread). The kernel updates that state before it sends the
+ * hotplug event; only a change found here is probed for real (drm_select). */
 bool drm_still_connected(const struct drm *drm);
 
 /* Atomic when the driver offers it (never requiring fences), else legacy;
