@@ -1,7 +1,7 @@
 #include "ops/screen.h"
 #include "state/power.h"
 #include "display/backlight.h"
-#include "display/cec.h"
+#include "display/cec_link.h"
 #include "util/log.h"
 
 #include <stdlib.h>
@@ -15,8 +15,8 @@ struct screen {
 	struct power_state power;
 	struct display *display;
 	struct backlight *backlight;
-	struct cec *cec;
-	bool scheduled; /* a schedule is set: decide again each minute */
+	struct cec_link *cec; /* on its own thread: the bus may take seconds */
+	bool scheduled;	      /* a schedule is set: decide again each minute */
 };
 
 /* The wall clock as power.c reads it. The kernel keeps STA_UNSYNC set
@@ -47,7 +47,7 @@ static void apply(struct screen *s)
 	if (s->backlight)
 		backlight_power(s->backlight, on);
 	if (s->cec)
-		cec_power(s->cec, on);
+		cec_link_power(s->cec, on);
 }
 
 struct screen *screen_new(const struct screen_config *cfg, struct display *d, uint64_t now_ns)
@@ -70,7 +70,7 @@ struct screen *screen_new(const struct screen_config *cfg, struct display *d, ui
 	if (s->scheduled || cfg->blank_after > 0)
 		s->backlight = backlight_new("/sys/class/backlight");
 	if (cfg->cec)
-		s->cec = cec_new(cfg->cec_device ? cfg->cec_device : "/dev/cec0");
+		s->cec = cec_link_new(cfg->cec_device ? cfg->cec_device : "/dev/cec0");
 	power_init(&s->power, &pc, &c);
 	if (!s->power.on)
 		apply(s);
@@ -88,7 +88,7 @@ void screen_free(struct screen *s)
 			backlight_power(s->backlight, true);
 	}
 	backlight_free(s->backlight);
-	cec_free(s->cec);
+	cec_link_free(s->cec);
 	free(s);
 }
 
