@@ -26,8 +26,8 @@ PKG_CONFIG ?= pkg-config
 BUILD   ?= build
 
 # libOSMesa is opened with dlopen and libGLESv2 is never linked: every gl*
-# call goes through the table in src/render/gl.c (see DESIGN.md). Their headers
-# are still found through pkg-config.
+# call goes through the table in src/render/gl.c (the README, "How it is put
+# together"). Their headers are still found through pkg-config.
 PKGS_LINK    := egl gbm libdrm libudev libpng libturbojpeg tinygltf inih libsystemd libgpiod libevdev \
 		libcamera draco
 # Mesa 25.1 and later have no OSMesa: without its headers the osmesa
