@@ -41,6 +41,8 @@ test_config_doc
 test_baker
 # 10. The live loop as systemd runs it, through the ASan binary.
 test_live
+# 10a. The same live loop and the unit tests under ThreadSanitizer.
+test_tsan
 # 10b. Hands-off operation: --status, the poster, --import of a USB stick.
 test_hands
 # 11. make install honours PREFIX and DESTDIR; the systemd unit, checked

@@ -293,6 +293,31 @@ test_live() {
 	results live "$out/live.log" "$out/live/stderr"
 }
 
+# ThreadSanitizer: the unit tests and the live loop (tests/e2e/live.sh,
+# with its reload that outlasts the watchdog) built with -fsanitize=thread
+# (make tsan): the content worker, the loop and the log share data only
+# through the worker's hand-over, atomics and locks. No report may come;
+# a unit test exits 66 on one. Mesa's own threads (llvmpipe) are
+# suppressed by library name alone, in tests/tsan.supp.
+test_tsan() {
+	need_models
+	TSAN_OPTIONS="suppressions=$(pwd)/tests/tsan.supp exitcode=66 halt_on_error=0"
+	export TSAN_OPTIONS
+	# shellcheck disable=SC2086 # the Makefile's list, one word per test
+	for t in ${UNIT_TESTS:-}; do
+		check "tsan unit test_$t" "$TSAN_UNIT_DIR/test_$t"
+	done
+	sh tests/e2e/live.sh "$TSAN_KIOSK" "$TOOLS/notify_listen" "$out/models/sphere.glb" \
+		"$out/tsan-live" >"$out/tsan-live.log" 2>&1
+	grep -q "^ok every step ran" "$out/tsan-live.log" ||
+		echo "not ok the scenario stopped early" >>"$out/tsan-live.log"
+	results "tsan live" "$out/tsan-live.log" "$out/tsan-live/stderr"
+	reports=$(cat "$out/tsan-live/stderr" "$out/tsan-live/slow/stderr" 2>/dev/null |
+		grep -c "WARNING: ThreadSanitizer")
+	check "tsan: no ThreadSanitizer report in the live loop ($reports)" [ "$reports" -eq 0 ]
+	unset TSAN_OPTIONS
+}
+
 # Hands-off operation (tests/e2e/hands.sh): --status, the poster,
 # --check-config and --import of a USB stick's folder, through the ASan
 # binary.

@@ -15,10 +15,15 @@ UNIT_TESTS  += drm gesture touch_decode schedule power cec backlight
 UNIT_TESTS  += touch_device app_touch
 UNIT_TESTS  += model_list
 UNIT_TESTS  += status poster file
+UNIT_TESTS  += kiosk_reload
 TOOLS_DIR   := $(BUILD)/tools
 ASAN_BUILD  := $(BUILD)/asan
+# MK_TEST_HOOKS: the test hooks (MK_TEST_PREPARE_DELAY_MS, src/app/reload.c)
+# exist in the sanitizer builds alone, never in the program installed.
 SANITIZE    := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all \
-	       -fno-omit-frame-pointer
+	       -fno-omit-frame-pointer -DMK_TEST_HOOKS
+TSAN_BUILD  := $(BUILD)/tsan
+TSANITIZE   := -O1 -g -fsanitize=thread -fno-omit-frame-pointer -DMK_TEST_HOOKS
 TEST_LIBS   = $(shell $(PKG_CONFIG) --libs cmocka zlib) $(LDLIBS) -lstdc++
 TEST_CFLAGS = $(ALL_CFLAGS) -Itests -Itests/tools
 # The C mirror of the shaders: the tests' reference, never in the program.
@@ -130,12 +135,20 @@ asan-unit:
 asan-test_%:
 	@$(ASAN_MAKE) $(ASAN_BUILD)/tests/test_$*
 
+# The same with ThreadSanitizer (the content worker and the loop share
+# jobs, the log level and the last error): tests/suite.sh's tsan group.
+TSAN_MAKE = $(MAKE) --no-print-directory BUILD=$(TSAN_BUILD) OPT="$(TSANITIZE)" \
+	    LDFLAGS="-fsanitize=thread" KIOSK=$(TSAN_BUILD)/matcap-kiosk
+tsan:
+	@$(TSAN_MAKE) $(TSAN_BUILD)/matcap-kiosk unit-tests
+
 # What every test script reads: the binaries and tools to run.
 TEST_ENV = KIOSK=./$(KIOSK) ASAN_KIOSK=$(ASAN_BUILD)/matcap-kiosk UNIT_DIR=$(ASAN_BUILD)/tests \
+	   TSAN_KIOSK=$(TSAN_BUILD)/matcap-kiosk TSAN_UNIT_DIR=$(TSAN_BUILD)/tests \
 	   UNIT_TESTS="$(UNIT_TESTS)" TOOLS=$(TOOLS_DIR) BAKE=$(BUILD)/bake FUZZ_DIR=$(FUZZ_BUILD) \
 	   FUZZ_SECONDS=$(FUZZ_SECONDS)
 
-test: $(KIOSK) test-tools asan fuzzers
+test: $(KIOSK) test-tools asan tsan fuzzers
 	$(TEST_ENV) sh tests/run.sh
 
 unit: asan-unit
@@ -151,7 +164,7 @@ check:
 golden: $(KIOSK) test-tools
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/golden/golden.sh tests/golden
 
-.PHONY: unit-tests test-tools asan asan-kiosk asan-unit test unit check golden
+.PHONY: unit-tests test-tools asan asan-kiosk asan-unit tsan test unit check golden
 
 include tests/fuzz/fuzz.mk
 include tests/soak/soak.mk

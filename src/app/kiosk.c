@@ -564,6 +564,16 @@ long kiosk_frames_drawn(const struct kiosk *k)
 	return k->frames_drawn;
 }
 
+const struct app_state *kiosk_app_state(const struct kiosk *k)
+{
+	return app_state(k->app);
+}
+
+bool kiosk_reloading(const struct kiosk *k)
+{
+	return k->reload_wanted || k->reload.busy;
+}
+
 void kiosk_print_stats(const struct kiosk *k, FILE *out)
 {
 	fprintf(out, "loop longest_step_ms %.1f\n", (double)k->longest_step_ns / 1e6);

@@ -9,6 +9,7 @@
 #include "display/display.h"
 #include "input/input.h"
 #include "render/render.h"
+#include "state/app.h"
 
 #include <stdbool.h>
 #include <stdint.h>
@@ -46,6 +47,10 @@ int kiosk_open_devices(struct kiosk *k);
  * display fails for good. */
 int kiosk_run(struct kiosk *k);
 long kiosk_frames_drawn(const struct kiosk *k);
+/* For the tests: the app state the loop draws, and whether a reload was
+ * asked and its content is not on the screen yet. */
+const struct app_state *kiosk_app_state(const struct kiosk *k);
+bool kiosk_reloading(const struct kiosk *k);
 /* --stats: the camera's figures, when there is one. */
 void kiosk_print_stats(const struct kiosk *k, FILE *out);
 

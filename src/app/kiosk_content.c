@@ -19,9 +19,11 @@ static void reload_ready(void *ctx)
 	int ret = reload_finish(&k->reload, k->content, k->renderer, &old);
 
 	if (ret) {
+		/* Loaded but not uploaded: the matcap's texture may be the new
+		 * one's, or none; the one shown is decoded again. */
+		if (k->reload.ret == 0)
+			k->shown_matcap = -1;
 		reload_job_release(&k->reload);
-		/* The matcap's texture may be the new one's, or none. */
-		k->shown_matcap = -1;
 	} else {
 		/* The old content's cache write is waited for on the worker. */
 		worker_retire(k->worker, &old);

@@ -114,4 +114,60 @@ step "STOPPING=1 sent" wait_for "$dir/notify.log" "STOPPING=1"
 step "no sanitizer report (memory errors, undefined behaviour)" sh -c "! grep -qE 'Sanitizer|runtime error' '$dir/stderr'"
 kill $listener 2>/dev/null
 wait $listener 2>/dev/null
+
+# A reload that takes longer than the watchdog (WATCHDOG_USEC=3 s, as
+# systemd's WatchdogSec=3s; the test hook MK_TEST_PREPARE_DELAY_MS of the
+# sanitizer builds holds its preparation 4 s on the worker): the loop
+# draws, flips and pings meanwhile, answers --status with the old model,
+# and shows the new one after. The model turns by itself (attract mode),
+# so every pass draws a frame.
+mkdir -p "$dir/slow/run"
+printf '[kiosk]\nattract_after = 1\nattract_fps = 30\n' >"$dir/slow/kiosk.ini"
+"$listen" "$dir/slow/notify" 60 >"$dir/slow/notify.log" &
+listener=$!
+i=0
+while [ ! -S "$dir/slow/notify" ] && [ $i -lt 100 ]; do
+	i=$((i + 1))
+	sleep 0.05
+done
+ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 \
+RUNTIME_DIRECTORY=$dir/slow/run MK_TEST_PREPARE_DELAY_MS=4000 \
+NOTIFY_SOCKET=$dir/slow/notify WATCHDOG_USEC=3000000 sh -c 'export WATCHDOG_PID=$$; exec "$0" "$@"' \
+	"$kiosk" --backend $offscreen --size 64x64 --config "$dir/slow/kiosk.ini" --keyboard none \
+	--camera off -v 2>"$dir/slow/stderr" &
+kiosk_pid=$!
+step "slow reload: READY=1 first" wait_for "$dir/slow/notify.log" "READY=1 STATUS=showing"
+printf '[kiosk]\nattract_after = 1\nattract_fps = 30\n[scene]\nmodel = %s\n' "$model" \
+	>"$dir/slow/kiosk.ini"
+sleep 1.5 # attract mode on: frames drawn without input
+kill -HUP $kiosk_pid
+step "slow reload: started" wait_for "$dir/slow/stderr" "reload: reading the settings"
+sleep 1
+RUNTIME_DIRECTORY=$dir/slow/run "$kiosk" --status >"$dir/slow/during.json" 2>&1
+step "slow reload: --status answered during it, with the old model" \
+	grep -q '"model": null' "$dir/slow/during.json"
+i=0
+while ! grep -q "reload: done" "$dir/slow/stderr" && [ $i -lt 300 ]; do
+	i=$((i + 1))
+	sleep 0.05
+done
+step "slow reload: done after the 4 s preparation" grep -q "reload: done" "$dir/slow/stderr"
+frames=$(sed -n 's/.*reload: done (\([0-9]*\) frames drawn meanwhile).*/\1/p' "$dir/slow/stderr")
+step "slow reload: frames drawn and flipped during it (${frames:-none})" [ "${frames:-0}" -ge 20 ]
+# The pings between RELOADING=1 and READY=1: none more than 3 s apart.
+gap=$(awk '/RELOADING=1/ { on = 1; last = $1 } on && /WATCHDOG=1/ { if ($1 - last > max) max = $1 - last; last = $1; n++ }
+	on && /STATUS=reloaded/ { if ($1 - last > max) max = $1 - last; print n + 0, max + 0; exit }' \
+	"$dir/slow/notify.log")
+step "slow reload: the watchdog pinged during it (pings, longest gap ms: ${gap:-none})" \
+	sh -c "[ -n '$gap' ] && [ \$(echo '$gap' | cut -d' ' -f1) -ge 2 ] && [ \$(echo '$gap' | cut -d' ' -f2) -lt 3000 ]"
+RUNTIME_DIRECTORY=$dir/slow/run "$kiosk" --status >"$dir/slow/after.json" 2>&1
+step "slow reload: the new model shows after" grep -q "\"model\": \"$model\"" "$dir/slow/after.json"
+step "slow reload: not killed" kill -0 $kiosk_pid
+kill -TERM $kiosk_pid
+wait $kiosk_pid
+status=$?
+step "slow reload: SIGTERM exits 0 (status $status)" [ $status -eq 0 ]
+step "slow reload: no sanitizer report" sh -c "! grep -qE 'Sanitizer|runtime error' '$dir/slow/stderr'"
+kill $listener 2>/dev/null
+wait $listener 2>/dev/null
 echo "ok every step ran"

@@ -1,0 +1,191 @@
+/* The live loop (kiosk_run, the code the kiosk runs) through OSMesa while
+ * a reload's content is prepared on the content worker: a key press that
+ * comes during the reload is applied at once (the app state changes and
+ * a frame shows it while the reload still runs), frames go on being
+ * drawn, and the new model is on screen after. The preparation is held
+ * by the test hook MK_TEST_PREPARE_DELAY_MS (src/app/reload.c; this
+ * test is built with MK_TEST_HOOKS, as every sanitizer build is). */
+#include "app/kiosk.h"
+#include "app/signals.h"
+#include "config/options.h"
+#include "content/content.h"
+#include "display/display.h"
+#include "gltf_write.h"
+#include "render/render.h"
+#include "scene/mesh.h"
+#include "util/log.h"
+
+#include <setjmp.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include <cmocka.h>
+
+/* OSMesa leaks a fixed few hundred bytes per process; kept loaded (the
+ * display is never freed) they are suppressed by library: see
+ * tests/unit/test_camera_texture.c. */
+const char *__lsan_default_suppressions(void);
+const char *__lsan_default_suppressions(void)
+{
+	return "leak:libOSMesa\nleak:libLLVM\nleak:display_osmesa_new\n";
+}
+
+enum step { WAIT_FIRST_FRAMES, ASKED_RELOAD, PRESSED, DONE };
+
+struct script {
+	struct input_source base; /* first: the loop hands this back */
+	struct kiosk *k;
+	enum step step;
+	enum shading_mode mode_before;
+	long pressed_frame;
+	long frames_seen_changed;  /* frames drawn with the new mode while reloading */
+	long frames_during_reload; /* from the press to the reload's end */
+	bool reload_ended;
+};
+
+static int script_read(struct input_source *src, uint64_t now, struct app_event *out, int max)
+{
+	struct script *s = (struct script *)src;
+	const struct app_state *st = kiosk_app_state(s->k);
+	long f = kiosk_frames_drawn(s->k);
+
+	if (max < 2)
+		return 0;
+	switch (s->step) {
+	case WAIT_FIRST_FRAMES:
+		if (f >= 3) {
+			s->step = ASKED_RELOAD;
+			kill(getpid(), SIGHUP);
+		}
+		break;
+	case ASKED_RELOAD:
+		if (!kiosk_reloading(s->k))
+			break;
+		/* The reload runs: the key now. */
+		s->mode_before = st->mode;
+		s->pressed_frame = f;
+		s->step = PRESSED;
+		out[0] =
+		    (struct app_event){.time_ns = now, .action = ACTION_NEXT_MODE, .pressed = 1};
+		out[1] = (struct app_event){.time_ns = now, .action = ACTION_NEXT_MODE};
+		return 2;
+	case PRESSED:
+		if (kiosk_reloading(s->k)) {
+			if (st->mode != s->mode_before && f > s->pressed_frame)
+				s->frames_seen_changed = f - s->pressed_frame;
+			s->frames_during_reload = f - s->pressed_frame;
+			break;
+		}
+		s->reload_ended = true;
+		s->step = DONE;
+		kill(getpid(), SIGTERM);
+		break;
+	case DONE:
+		break;
+	}
+	/* A small turn each pass, so that every pass draws. */
+	out[0] = (struct app_event){.time_ns = now, .action = ACTION_TURN_LEFT, .pressed = 1};
+	out[1] = (struct app_event){.time_ns = now, .action = ACTION_TURN_LEFT};
+	return 2;
+}
+
+static uint64_t script_deadline(struct input_source *src)
+{
+	(void)src;
+	return 0; /* always: the loop never sleeps */
+}
+
+static void script_destroy(struct input_source *src)
+{
+	(void)src; /* on the test's stack */
+}
+
+static void a_key_during_a_reload_is_applied_at_once(void **state)
+{
+	char dir[] = "/tmp/mk-reload-XXXXXX", ini[64], model[64];
+	char *argv[] = {"matcap-kiosk", "--backend", "osmesa",	 "--size", "32x32", "--config", ini,
+			"--keyboard",	"none",	     "--camera", "off",	   "-q",    NULL};
+	struct gltf_write_opts w = {.index_bytes = 2, .with_normals = 1, .bad_index = -1};
+	struct script s = {.base = {.name = "reload script",
+				    .fd = -1,
+				    .read = script_read,
+				    .deadline = script_deadline,
+				    .destroy = script_destroy}};
+	struct display_config cfg = {.width = 32, .height = 32};
+	struct options o;
+	struct content content;
+	struct kiosk_parts parts = {.content = &content, .options = &o, .argv = argv};
+	struct display *d;
+	struct renderer *r;
+	struct mesh m;
+	FILE *f;
+
+	(void)state;
+	assert_non_null(mkdtemp(dir));
+	snprintf(ini, sizeof(ini), "%s/kiosk.ini", dir);
+	snprintf(model, sizeof(model), "%s/sphere.glb", dir);
+	setenv("XDG_CACHE_HOME", dir, 1);
+	assert_int_equal(mesh_uv_sphere(&m, 16, 8), 0);
+	assert_int_equal(gltf_write(model, &m, &w), 0);
+	mesh_release(&m);
+	f = fopen(ini, "w");
+	assert_non_null(f);
+	fprintf(f, "[scene]\nmode = view\n");
+	fclose(f);
+	assert_int_equal(options_parse(&o, 12, argv), OPTIONS_OK);
+	assert_int_equal(content_load(&content, &o.content, true), 0);
+	assert_null(content.model_path); /* the built-in knot first */
+#ifdef MK_HAVE_OSMESA
+	d = display_osmesa_new(&cfg);
+#else
+	d = display_egl_new(&cfg);
+#endif
+	assert_non_null(d);
+	r = renderer_new(&d->gl, NULL);
+	assert_non_null(r);
+	assert_int_equal(content_prepare(&content, &o.content, d->width, d->height), 0);
+	assert_int_equal(content_upload(&content, r), 0);
+	assert_int_equal(renderer_set_mode(r, o.content.mode, o.content.ortho), 0);
+	parts.display = d;
+	parts.renderer = r;
+	s.k = kiosk_new(&parts, 0);
+	assert_non_null(s.k);
+	assert_int_equal(kiosk_add_input(s.k, &s.base), 0);
+	/* The reload reads the new model; its preparation is held 1.5 s. */
+	f = fopen(ini, "w");
+	assert_non_null(f);
+	fprintf(f, "[scene]\nmode = view\nmodel = %s\n", model);
+	fclose(f);
+	setenv("MK_TEST_PREPARE_DELAY_MS", "1500", 1);
+	assert_int_equal(kiosk_run(s.k), 0);
+	unsetenv("MK_TEST_PREPARE_DELAY_MS");
+	assert_true(s.reload_ended);
+	/* Drawn with the key's mode while the reload still ran. */
+	assert_true(s.frames_seen_changed > 0);
+	assert_true(s.frames_during_reload >= s.frames_seen_changed);
+	/* And the new model on screen after. */
+	assert_non_null(content.model_path);
+	assert_string_equal(content.model_path, model);
+	kiosk_free(s.k);
+	renderer_free(r);
+	/* The display is left open: see __lsan_default_suppressions. */
+	content_release(&content);
+	options_release(&o);
+	unsetenv("XDG_CACHE_HOME");
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+	    cmocka_unit_test(a_key_during_a_reload_is_applied_at_once),
+	};
+
+	/* Before the GL driver starts its threads, as main() does. */
+	signals_block();
+	log_set_level(LOG_WARN);
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
