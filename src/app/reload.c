@@ -96,7 +96,9 @@ int reload_finish(struct reload_job *j, struct content *shown, struct renderer *
 	if (ret) {
 		log_err("reload: the new scene does not fit on the GPU; keeping the one on screen");
 		content_release(&j->content);
-		if (content_upload(shown, r))
+		/* Its matcap is decoded again on the worker (its image went
+		 * once on the GPU). */
+		if (content_upload_model(shown, r))
 			log_err("reload: the scene on screen could not be restored either");
 		return ret;
 	}

@@ -311,6 +311,17 @@ int content_prepare(struct content *s, const struct content_config *o, int width
 	return ret;
 }
 
+/* The glTF's decoded maps were copied into the material's own images
+ * (material_load), which are what the renderer uploads: once on the GPU
+ * these CPU copies serve nothing (a reload decodes the file again). */
+static void release_decoded_maps(struct mesh_material *m)
+{
+	image_release(&m->normal_map);
+	image_release(&m->occlusion_map);
+	image_release(&m->thickness_map);
+	image_release(&m->base_map);
+}
+
 int content_upload_model(struct content *s, struct renderer *r)
 {
 	/* The material first: it decides which attributes the mesh uploads. */
@@ -330,6 +341,8 @@ int content_upload_model(struct content *s, struct renderer *r)
 		mesh_cache_entry_evict(s->cached);
 	if (!ret)
 		content_cache_store(s);
+	if (!ret)
+		release_decoded_maps(&s->mesh.material);
 	/* The parse, the preparation and the upload freed far more than the
 	 * scene keeps; malloc holds freed heap for reuse, and a kiosk reuses
 	 * little: back to the system before the first frame. */
@@ -341,7 +354,12 @@ int content_upload(struct content *s, struct renderer *r)
 {
 	int ret = content_upload_model(s, r);
 
-	return ret ? ret : renderer_set_matcap(r, &s->matcap);
+	if (!ret)
+		ret = renderer_set_matcap(r, &s->matcap);
+	/* A texture now; the matcap shown next is decoded on the worker. */
+	if (!ret)
+		image_release(&s->matcap);
+	return ret;
 }
 
 struct view content_view(const struct content_config *o)

@@ -44,7 +44,9 @@ void content_release(struct content *s);
  * The start and a reload do the same, so a reload shows what a restart
  * would. */
 int content_prepare(struct content *s, const struct content_config *c, int width, int height);
-/* Hand the mesh and the first matcap to the renderer. */
+/* Hand the mesh and the first matcap to the renderer; the matcap's
+ * decoded image is then given back (matcap is left empty), so a second
+ * upload of s is content_upload_model's. */
 int content_upload(struct content *s, struct renderer *r);
 /* Another model of a folder or list, for a worker thread: the model of
  * path alone (no matcaps), loaded strictly and prepared for a width x
@@ -56,7 +58,10 @@ int content_load_model(struct content *s, const struct content_config *c, const 
  * write costs nothing: the worker); shown keeps its matcaps. fresh is
  * left empty. */
 void content_take_model(struct content *shown, struct content *fresh, struct content *old);
-/* Hand the mesh alone (and its material) to the renderer. */
+/* Hand the mesh alone (and its material) to the renderer. The glTF's
+ * decoded maps (mesh.material's images, copied into material) are given
+ * back once on the GPU; the material's own images and the mesh stay, so
+ * a failed swap can put this content back. */
 int content_upload_model(struct content *s, struct renderer *r);
 /* The camera and panel the settings ask for, at the resting orientation. */
 struct view content_view(const struct content_config *c);
