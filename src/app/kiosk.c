@@ -1,3 +1,4 @@
+#include "app/kiosk.h"
 #include "app/kiosk_private.h"
 #include "app/signals.h"
 #include "state/app.h"

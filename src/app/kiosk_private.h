@@ -4,7 +4,6 @@
 #ifndef MK_KIOSK_PRIVATE_H
 #define MK_KIOSK_PRIVATE_H
 
-#include "app/kiosk.h"
 #include "app/kiosk_models.h"
 #include "app/reload.h"
 #include "content/matcap_job.h"
@@ -15,6 +14,16 @@
 #include "camera/camera_feed.h"
 #include "state/app.h"
 #include "util/folder_watch.h"
+#include "config/options.h"
+#include "display/display.h"
+#include "input/input.h"
+#include "render/render.h"
+
+#include <poll.h>
+#include <stdbool.h>
+#include <stdint.h>
+
+#define KIOSK_MAX_INPUTS 16
 
 #define MAX_EVENTS 32
 
