@@ -500,19 +500,24 @@ static void kms_destroy(struct display *d)
 	free(k);
 }
 
+/* Each errno is read right after the call that set it: the next call
+ * (timerfd_create, or udev's in hotplug_new) could change it. */
 static int open_fds(struct display_kms *k)
 {
 	struct stat st;
+	int ret;
 
 	k->epoll_fd = epoll_create1(EPOLL_CLOEXEC);
+	if (k->epoll_fd < 0)
+		return -errno;
 	k->timer_fd = timerfd_create(CLOCK_MONOTONIC, TFD_CLOEXEC | TFD_NONBLOCK);
-	if (k->epoll_fd < 0 || k->timer_fd < 0)
+	if (k->timer_fd < 0)
 		return -errno;
 	if (fstat(k->drm.fd, &st) == 0)
 		k->hotplug = hotplug_new(st.st_rdev);
-	if (watch(k, k->drm.fd) || watch(k, k->timer_fd) ||
-	    (k->hotplug && watch(k, hotplug_fd(k->hotplug))))
-		return -errno;
+	if ((ret = watch(k, k->drm.fd)) || (ret = watch(k, k->timer_fd)) ||
+	    (k->hotplug && (ret = watch(k, hotplug_fd(k->hotplug)))))
+		return ret;
 	return 0;
 }
 

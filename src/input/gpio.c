@@ -326,7 +326,11 @@ static struct input_source *source_new(const struct gpio_config *c, struct gpio_
 		goto fail;
 	fd = gpio_request_fd(g->req);
 	/* Read also when only a deadline passed: it must not block. */
-	if (fd < 0 || fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) | O_NONBLOCK) < 0) {
+	if (fd < 0) {
+		log_err("%s: the line gave no event descriptor", g->name);
+		goto fail;
+	}
+	if (fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) | O_NONBLOCK) < 0) {
 		log_err("%s: no event descriptor: %s", g->name, strerror(errno));
 		goto fail;
 	}
