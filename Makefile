@@ -63,7 +63,7 @@ LDLIBS    = $(PKG_LIBS) -lmeshoptimizer -ldl -lm
 # one folder per layer: each includes only the layers listed after it
 # (tests/tools/layers.sh checks that).
 SRC_APP     := app/app app/content app/model_list app/model_loader app/kiosk_models app/kiosk \
-	       app/options app/settings app/power app/reload app/schedule app/screen app/service \
+	       app/options app/settings app/settings_origin app/check app/power app/reload app/schedule app/screen app/service \
 	       app/status app/import app/signals
 SRC_DISPLAY := display/backlight display/cec display/display display/display_egl display/display_kms \
 	       display/display_osmesa \

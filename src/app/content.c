@@ -131,7 +131,7 @@ static int content_cache_reopen(struct content *s)
 	return ret;
 }
 
-static const char *default_matcaps(void)
+const char *content_default_matcaps(void)
 {
 	/* Installed data first; the source tree's folder when run from it. */
 	if (access(MK_MATCAP_DIR, R_OK) == 0)
@@ -141,7 +141,7 @@ static const char *default_matcaps(void)
 
 static int load_matcap(const struct content_config *o, bool strict, struct content *s)
 {
-	const char *path = o->matcap ? o->matcap : default_matcaps();
+	const char *path = o->matcap ? o->matcap : content_default_matcaps();
 	int ret = -ENOENT;
 
 	s->set = path ? matcap_set_open(path) : NULL;

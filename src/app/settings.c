@@ -322,6 +322,7 @@ void options_release(struct options *o)
 			free(get_string(field_of(o, &option_defs[i])));
 			put_string(field_of(o, &option_defs[i]), NULL);
 		}
+	options_origins_free(o);
 }
 
 int options_copy(struct options *dst, const struct options *src)
@@ -329,6 +330,7 @@ int options_copy(struct options *dst, const struct options *src)
 	int ret = 0;
 
 	*dst = *src;
+	dst->origins = NULL;
 	for (size_t i = 0; i < OPTION_DEFS; i++)
 		if (option_defs[i].kind == K_STRING)
 			put_string(field_of(dst, &option_defs[i]), NULL);
