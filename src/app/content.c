@@ -64,8 +64,8 @@ static int content_cache_lookup(struct content *s, const struct content_config *
 	 * texture: its factors are all material_load needs. */
 	s->mesh.material = *mesh_cache_entry_material(s->cached);
 	shell_counts(s, mesh_cache_entry_mesh(s->cached));
-	log_info("%s: the prepared mesh from the cache (%u triangles)", path,
-		 s->mesh.index_count / 3);
+	/* Said by content_prepare, once it is known to be used. */
+	log_debug("%s: a prepared mesh in the cache", path);
 	return 0;
 }
 
@@ -286,10 +286,15 @@ int content_prepare(struct content *s, const struct content_config *o, int width
 	bool displaced = s->material.features & MATERIAL_DISPLACEMENT;
 	int ret = 0;
 
-	if (content_cache_fits(s, width, height))
+	if (content_cache_fits(s, width, height)) {
+		log_info("%s: the prepared mesh from the cache (%u triangles)", s->model_path,
+			 s->mesh.index_count / 3);
 		return 0;
+	}
 	if (s->cached) {
 		/* Cached for another display: its level of detail is another. */
+		log_info("%s: the cache holds it prepared for another screen size: prepared again",
+			 s->model_path);
 		mesh_cache_entry_free(s->cached);
 		s->cached = NULL;
 		mesh_release(&s->mesh);
