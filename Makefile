@@ -64,7 +64,7 @@ LDLIBS    = $(PKG_LIBS) -lmeshoptimizer -ldl -lm
 # (tests/tools/layers.sh checks that).
 SRC_APP     := app/app app/content app/model_list app/model_loader app/kiosk_models app/kiosk \
 	       app/options app/settings app/settings_origin app/check app/power app/reload app/schedule app/screen app/service \
-	       app/status app/import app/signals
+	       app/status app/import app/import_ini app/signals
 SRC_DISPLAY := display/backlight display/cec display/display display/display_egl display/display_kms \
 	       display/display_osmesa \
 	       display/drm display/drm_atomic display/drm_legacy display/egl_util display/hotplug \

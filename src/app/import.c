@@ -1,4 +1,5 @@
 #include "app/import.h"
+#include "app/import_ini.h"
 #include "app/content.h"
 #include "app/options.h"
 #include "util/file.h"
@@ -390,7 +391,8 @@ static int scan_stick_ini(struct import *im)
 
 /* kiosk.ini in the content folder: the model and matcaps copied, for the
  * keys the stick's own file does not set (a key may be set once), then
- * that file as it was read. */
+ * that file as it was read, its relative paths made the content folder's
+ * (the files are in model/ there). */
 static int write_ini(struct import *im)
 {
 	char path[PATH_MAX + 16], head[3 * PATH_MAX];
@@ -408,8 +410,15 @@ static int write_ini(struct import *im)
 	if ((fd = open(path, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644)) < 0)
 		return -errno;
 	ret = write_all(fd, head, n);
-	if (!ret && im->ini)
-		ret = write_all(fd, im->ini, im->ini_size);
+	if (!ret && im->ini) {
+		char *rebased = NULL;
+		size_t size = 0;
+
+		ret = import_ini_rebase(im->ini, im->ini_size, &rebased, &size);
+		if (!ret)
+			ret = write_all(fd, rebased, size);
+		free(rebased);
+	}
 	if (!ret && fsync(fd))
 		ret = -errno;
 	if (close(fd) && !ret)
