@@ -165,6 +165,8 @@ install: matcap-kiosk
 	install -d $(DESTDIR)$(DATADIR)/matcaps
 	install -m 0644 matcaps/*.png $(DESTDIR)$(DATADIR)/matcaps/
 	install -D -m 0644 config/kiosk.ini $(DESTDIR)$(DATADIR)/kiosk.ini.example
+	# Settings in pieces: packages and Ansible roles drop *.ini files here.
+	install -d $(DESTDIR)$(SYSCONFDIR)/matcap-kiosk/kiosk.ini.d
 	# An edited config survives a reinstall.
 	test -e $(DESTDIR)$(SYSCONFDIR)/matcap-kiosk/kiosk.ini || \
 		install -D -m 0644 config/kiosk.ini $(DESTDIR)$(SYSCONFDIR)/matcap-kiosk/kiosk.ini

@@ -531,7 +531,10 @@ void options_usage(FILE *out)
 {
 	fputs("Usage: matcap-kiosk [OPTION]...\n"
 	      "Show a glTF model shaded with a matcap, fullscreen on DRM/KMS or offscreen.\n"
-	      "Settings marked [section] key can also be set in the config file.\n\n",
+	      "Settings marked [section] key can also be set in the config file, and in\n"
+	      "FILE.d/*.ini beside it (read in name order after it; a later file's key\n"
+	      "overrides). A relative path in a file is taken from that file's folder; on\n"
+	      "the command line, from the current folder.\n\n",
 	      out);
 	for (size_t i = 0; i < OPTION_DEFS; i++) {
 		const struct option_def *d = &option_defs[i];
