@@ -87,7 +87,7 @@ needs() {
 	program_check | mirror_check | base_color_check) echo "$TOOLS/$1" ;;
 	ortho) echo "all $TOOLS/mkmodels $TOOLS/imgdiff" ;;
 	loaders) echo "all $TOOLS/mkmodels" ;;
-	cli) echo "all asan-kiosk" ;;
+	cli) echo "all asan-kiosk $TOOLS/mkmodels" ;;
 	config_doc | install | systemd | no-camera) echo all ;;
 	bad-input) echo "asan-kiosk $TOOLS/mkmodels" ;;
 	corpus) echo "asan-kiosk fuzzers $TOOLS/mkmodels $TOOLS/silhouette $TOOLS/imgdiff" ;;

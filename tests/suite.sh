@@ -265,6 +265,15 @@ test_cli() {
 		kill -0 \$p && kill -TERM \$p && wait \$p && [ \$(grep -c ': error: ' $out/bad/gpio.log) = 1 ] &&
 		! grep -qE 'Sanitizer|runtime error' $out/bad/gpio.log &&
 		grep -q 'button left: GPIO chip nosuchchip not found.*line GPIO17' $out/bad/gpio.log"
+
+	# --check-config's cases as a user meets them (tests/e2e/config_check.sh):
+	# each file named loaded, 0/78/66, the paths rules, kiosk.ini.d/.
+	need_models
+	sh tests/e2e/config_check.sh "$ASAN_KIOSK" "$out/models" "$out/config_check" \
+		>"$out/config_check.log" 2>&1
+	grep -q "^ok every step ran" "$out/config_check.log" ||
+		echo "not ok the scenario stopped early" >>"$out/config_check.log"
+	results check-config "$out/config_check.log"
 }
 
 # Every setting that the config file takes is documented in the example.
