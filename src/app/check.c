@@ -165,8 +165,7 @@ int check_config_run(const struct options *o, FILE *out)
 
 	list_files(&c);
 	if (o->include_ignored) {
-		fprintf(out,
-			"%s: the settings are not valid: an included file has errors (above)\n",
+		log_err("%s: the settings are not valid: an included file has errors (above)",
 			name);
 		return CHECK_BAD_SETTINGS;
 	}
@@ -181,10 +180,9 @@ int check_config_run(const struct options *o, FILE *out)
 	check_image(&c, "display", "poster", o->poster);
 	/* Per-model settings files do not exist yet: nothing more to load. */
 	if (c.bad_files) {
-		fprintf(out,
-			"%s: the settings read, but %d file%s they name %s not load (above): the "
+		log_err("%s: the settings read, but %d file%s they name %s not load (above): the "
 			"kiosk would show a stand-in (the knot, the clay matcap, the background) "
-			"or, drawing offscreen, stop\n",
+			"or, drawing offscreen, stop",
 			name, c.bad_files, c.bad_files == 1 ? "" : "s",
 			c.bad_files == 1 ? "does" : "do");
 		return CHECK_BAD_FILE;

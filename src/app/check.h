@@ -11,8 +11,9 @@
 /* The exit status: 0 valid; CHECK_BAD_SETTINGS (78, EX_CONFIG) for a
  * settings error (an included file with errors too); CHECK_BAD_FILE (66,
  * EX_NOINPUT) when the settings are right but a file they name is missing
- * or does not load. Each problem is logged with file, line and cause; the
- * verdict and the files read go to out. */
+ * or does not load. Each problem, and a failed verdict, is logged (stderr)
+ * with file, line and cause; the files read, where each value came from
+ * and a "valid" verdict go to out. */
 enum { CHECK_BAD_FILE = 66, CHECK_BAD_SETTINGS = 78 };
 int check_config_run(const struct options *o, FILE *out);
 

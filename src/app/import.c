@@ -441,18 +441,25 @@ static char *staged(const struct import *im, const char *path)
 	return path ? strdup(path) : NULL;
 }
 
-/* What the kiosk would do with it: the settings over its own, then the
- * model and the matcaps loaded, strictly (no built-in stand-in). */
+/* What the kiosk would do with it: the settings over the installed ones
+ * (kiosk.ini and kiosk.ini.d/; options on the command line are not the
+ * service's), then the model and the matcaps loaded, strictly (no
+ * built-in stand-in). */
 static int check(const struct import *im, const struct options *o)
 {
 	char ini[PATH_MAX + 16], name[PATH_MAX + 16];
 	struct options t;
 	struct content s;
 	char *model, *matcap;
-	int ret = options_copy(&t, o);
+	int ret = 0;
 
-	if (ret)
-		return ret;
+	/* The installed files alone: o holds what the content folder's
+	 * kiosk.ini (the include) set, and that is what is replaced. */
+	option_defaults(&t);
+	if (o->config && options_read_installed(&t, o->config) != OPTIONS_OK) {
+		ret = -EINVAL;
+		goto out;
+	}
 	free(t.include);
 	t.include = NULL; /* the installed fragment is replaced, not read */
 	/* The stick's file alone first, so that a mistake is named by its

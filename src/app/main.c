@@ -284,7 +284,7 @@ static enum exit_code parse_failed(enum options_status status, int argc, char **
 			name = argv[i] + 9;
 	}
 	if (check)
-		printf("%s: the settings are not valid (the errors above)\n", name);
+		log_err("%s: the settings are not valid (the errors above)", name);
 	return status == OPTIONS_CONFIG ? EXIT_CODE_CONFIG : EXIT_CODE_USAGE;
 }
 

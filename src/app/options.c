@@ -337,7 +337,7 @@ static enum options_status read_path(struct options *o, const char *path)
  * Debian convention: what a package or Ansible role drops in). A key set
  * by a later file overrides an earlier one; within one file it is set once.
  * Every file is read, so all errors are reported at once. */
-static enum options_status read_installed(struct options *o, const char *path)
+enum options_status options_read_installed(struct options *o, const char *path)
 {
 	static const char *const ini[] = {"ini", NULL};
 	enum options_status ret = read_path(o, path);
@@ -364,7 +364,7 @@ static enum options_status read_installed(struct options *o, const char *path)
  * installed ones. The included file's own include is not followed. */
 enum options_status options_read_file(struct options *o, const char *path)
 {
-	enum options_status ret = read_installed(o, path);
+	enum options_status ret = options_read_installed(o, path);
 	char *inc;
 
 	if (ret || !o->include || !*o->include || !strcmp(o->include, path))
@@ -386,7 +386,7 @@ enum options_status options_read_file(struct options *o, const char *path)
 			path);
 		options_release(o);
 		option_defaults(o);
-		ret = read_installed(o, path);
+		ret = options_read_installed(o, path);
 		free(o->include);
 		o->include = NULL;
 		o->include_ignored = true;

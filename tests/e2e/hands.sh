@@ -188,13 +188,13 @@ for n in 'a=b.glb' 'c;d.glb' '[e].glb' ' f.glb' "$(printf 'g\001h.glb')"; do
 done
 mkdir -p "$dir/names/matcap-kiosk/matcaps"
 cp matcaps/pearl.png "$dir/names/matcap-kiosk/matcaps/"
-printf '[scene]\nmatcap = matcaps/gold.png\n[kiosk]\nturn_speed = 45\n' \
+printf '[scene]\nmatcap = matcaps/pearl.png\n[kiosk]\nturn_speed = 45\n' \
 	>"$dir/names/matcap-kiosk/kiosk.ini"
 "$kiosk" --config "$dir/kiosk.ini" --import "$dir/names/matcap-kiosk" 2>"$dir/names.err"
 step "a stick that sets [scene] matcap and brings matcaps/ is imported" [ $? -eq 0 ]
 step "... its matcap line is the only one" sh -c \
 	"[ \$(grep -c '^matcap' '$STATE_DIRECTORY/content/kiosk.ini') = 1 ] &&
-	grep -qx 'matcap = matcaps/gold.png' '$STATE_DIRECTORY/content/kiosk.ini'"
+	grep -qx 'matcap = matcaps/pearl.png' '$STATE_DIRECTORY/content/kiosk.ini'"
 step "names with ;#=[], control characters or blanks at an end are skipped" sh -c "
 	[ \$(ls '$STATE_DIRECTORY/content/model') = sphere.glb ] &&
 	grep -qx 'model = $STATE_DIRECTORY/content/model/sphere.glb' \
