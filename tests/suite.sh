@@ -319,7 +319,8 @@ test_install() {
 	check "make install" sh -c "make -s install DESTDIR=$PWD/$out/stage PREFIX=/usr SYSCONFDIR=/etc >/dev/null &&
 		test -x $out/stage/usr/bin/matcap-kiosk &&
 		test -f $out/stage/usr/share/matcap-kiosk/matcaps/gold.png &&
-		test -f $out/stage/etc/matcap-kiosk/kiosk.ini"
+		test -f $out/stage/etc/matcap-kiosk/kiosk.ini &&
+		test -d $out/stage/etc/matcap-kiosk/kiosk.ini.d"
 	check "make install: the unit (with its paths), sysusers.d and udev rule" sh -c "
 		grep -qx 'ExecStart=/usr/bin/matcap-kiosk --config /etc/matcap-kiosk/kiosk.ini' \
 			$out/stage/usr/lib/systemd/system/matcap-kiosk.service &&

@@ -110,6 +110,12 @@ step "a good reload after it" wait_for "$dir/stderr" "reload: done" 4
 step "... clears --status's last error" sh -c "
 	ASAN_OPTIONS=detect_leaks=0 '$kiosk' --status 2>&1 | tee '$dir/status-good.json' |
 	grep -qF '\"last_error\": \"\"'"
+# A drop-in (kiosk.ini.d/*.ini) is read again by a reload, over kiosk.ini.
+mkdir -p "$dir/kiosk.ini.d"
+printf '[scene]\nmode = sem-vertex\n' >"$dir/kiosk.ini.d/10-fleet.ini"
+kill -HUP $kiosk_pid
+step "a reload reads a drop-in put in kiosk.ini.d/" wait_for "$dir/stderr" "mode sem-vertex"
+rm -r "$dir/kiosk.ini.d"
 printf '[scene]\nmode = phong\n' >"$dir/kiosk.ini"
 kill -HUP $kiosk_pid
 step "a reload with a bad setting" wait_for "$dir/stderr" "settings have errors" 2
