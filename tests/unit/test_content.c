@@ -116,7 +116,12 @@ static void second_parse_sees_the_new_file(void **state)
 	assert_int_equal(a.content.mode, SHADING_NORMAL);
 	assert_int_equal(b.content.mode, SHADING_NORMAL);
 	assert_int_equal(b.log_level, LOG_WARN);
-	assert_string_equal(b.content.model, "m.glb");
+	{ /* a relative path: the file's folder's */
+		char want[160];
+
+		snprintf(want, sizeof(want), "%s/m.glb", dir);
+		assert_string_equal(b.content.model, want);
+	}
 	options_release(&a);
 	options_release(&b);
 	write_text(ini, "[scene]\nyaw = east\n");
