@@ -274,6 +274,17 @@ test_cli() {
 	grep -q "^ok every step ran" "$out/config_check.log" ||
 		echo "not ok the scenario stopped early" >>"$out/config_check.log"
 	results check-config "$out/config_check.log"
+
+	# The log says "from the cache" only when the cached mesh is drawn: the
+	# same size again, not another size (which prepares the model again).
+	check "'from the cache' only when the cached mesh is used" sh -c "
+		export XDG_CACHE_HOME=$PWD/$out/cache-used
+		r() { $KIOSK --backend $offscreen --model $out/models/sphere.glb --size \$1 \
+			--output $out/bad/cached.png 2>&1; }
+		r 64x64 >/dev/null && r 64x64 | grep -q 'sphere.glb: the prepared mesh from the cache' &&
+		r 48x48 >$out/bad/cached-other.log &&
+		! grep -q 'from the cache' $out/bad/cached-other.log &&
+		grep -q 'prepared for another screen size' $out/bad/cached-other.log"
 }
 
 # Every setting that the config file takes is documented in the example.

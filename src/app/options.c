@@ -106,6 +106,14 @@ static bool quoted(const char *v)
 	return n >= 2 && (v[0] == '"' || v[0] == '\'') && v[n - 1] == v[0];
 }
 
+/* A refused line still counts as the key's first, so that a second line
+ * for it is reported too. */
+static void seen(struct file_state *st, const struct option_def *d)
+{
+	if (!st->seen_line[d - option_defs])
+		st->seen_line[d - option_defs] = st->line;
+}
+
 /* A value of a setting that names files, its relative paths taken from
  * dir: each of a list's (model = a, b) too. "~" is not the service's home
  * (it has none): refused. NULL with *why set, or the value (malloc'd). */
@@ -120,6 +128,7 @@ static char *resolve_paths(const char *value, const char *dir, bool list, const 
 		return NULL;
 	for (char *t = list ? strtok_r(copy, sep, &save) : copy; t;
 	     t = list ? strtok_r(NULL, sep, &save) : NULL) {
+		char *grown;
 		bool rel;
 
 		t += strspn(t, " \t");
@@ -131,8 +140,7 @@ static char *resolve_paths(const char *value, const char *dir, bool list, const 
 			goto fail;
 		}
 		cap += rel ? strlen(dir) + 1 : 0;
-		char *grown = realloc(out, cap);
-		if (!grown)
+		if (!(grown = realloc(out, cap)))
 			goto fail;
 		out = grown;
 		len += (size_t)snprintf(out + len, cap - len, "%s%s%s%s", len ? ", " : "",
@@ -168,13 +176,13 @@ static int on_key(void *user, const char *section, const char *key, const char *
 		log_err("%s:%d: [%s] %s = %s: the quotes would be part of the value; write it "
 			"without them (blanks inside a path are fine)",
 			st->path, st->line, section, key, value);
-		st->seen_line[d - option_defs] = st->line;
+		seen(st, d);
 		return 1;
 	}
 	if (d && names_files(d) &&
 	    !(resolved = resolve_paths(value, st->dir, !strcmp(key, "model"), &why))) {
 		log_err("%s:%d: [%s] %s = '%s': %s", st->path, st->line, section, key, value, why);
-		st->seen_line[d - option_defs] = st->line;
+		seen(st, d);
 		return 1;
 	}
 	if (resolved)
