@@ -1,13 +1,13 @@
-/* The settings files as src/app/options.c reads them: relative paths from
+/* The settings files as src/config/options.c reads them: relative paths from
  * the file's folder, quotes, ~ and folders refused, kiosk.ini.d/ drop-ins
  * in name order with their origins, an include with errors; --check-config's
- * verdicts (src/app/check.c); a reload's cause (src/app/reload.c); and a
- * USB stick's paths made the content folder's (src/app/import_ini.c). */
-#include "app/check.h"
-#include "app/import_ini.h"
-#include "app/options.h"
+ * verdicts (src/ops/check.c); a reload's cause (src/app/reload.c); and a
+ * USB stick's paths made the content folder's (src/ops/import_ini.c). */
+#include "ops/check.h"
+#include "ops/import_ini.h"
+#include "config/options.h"
 #include "app/reload.h"
-#include "app/settings.h"
+#include "config/settings.h"
 #include "util/log.h"
 
 #include <limits.h>

@@ -4,7 +4,7 @@
 #ifndef MK_CHECK_H
 #define MK_CHECK_H
 
-#include "app/settings.h"
+#include "config/settings.h"
 
 #include <stdio.h>
 

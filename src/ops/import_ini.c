@@ -1,5 +1,5 @@
 /* A USB stick's kiosk.ini, its paths made the content folder's. */
-#include "app/import_ini.h"
+#include "ops/import_ini.h"
 
 #include <errno.h>
 #include <stdbool.h>

@@ -1,7 +1,7 @@
 /* Where each setting came from: the file and line that set it last, and
  * the files read in order (kiosk.ini, its kiosk.ini.d/ files, the
  * include), so that --check-config and the messages can name them. */
-#include "app/settings.h"
+#include "config/settings.h"
 
 #include <errno.h>
 #include <stdlib.h>

@@ -1,10 +1,10 @@
 /* --check-config: what the settings name, loaded as the kiosk loads it.
  * A problem is one line: where the setting came from (file:line), the
  * setting, its value and the loader's own reason. */
-#include "app/check.h"
-#include "app/content.h"
-#include "app/model_list.h"
-#include "render/matcap_set.h"
+#include "ops/check.h"
+#include "content/content.h"
+#include "content/model_list.h"
+#include "content/matcap_set.h"
 #include "util/image.h"
 #include "util/log.h"
 
