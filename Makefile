@@ -82,6 +82,7 @@ LIB_C  := $(SRC_APP) $(SRC_DISPLAY) $(SRC_INPUT) $(SRC_CAMERA) $(SRC_RENDER) $(S
 # The C++ shims, each behind a C header (gltf_ext.h is internal to the glTF one).
 LIB_CC := scene/gltf scene/gltf_mesh scene/gltf_fs scene/gltf_material scene/gltf_ext scene/gltf_files scene/gltf_pose \
 	  scene/gltf_draco camera/camera
+LIB_CC += scene/gltf_words
 SHADERS := shaders/mapping.glsl shaders/matcap.vert shaders/matcap.frag shaders/material.glsl
 SHADERS += shaders/camera.vert shaders/camera.frag
 SHADERS += shaders/poster.vert shaders/poster.frag

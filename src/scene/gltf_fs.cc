@@ -2,6 +2,11 @@
 // are read only from its own folder (or below), and what was refused or
 // missing is kept, to name it when tinygltf gives up.
 #include "scene/gltf_fs.h"
+#include "scene/gltf.h"
+#include "scene/gltf_ext.h"
+
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
@@ -51,6 +56,26 @@ bool gltf_read_file(const std::string &path, size_t max, std::vector<unsigned ch
 		return false;
 	}
 	return true;
+}
+
+std::string gltf_uri_fault(const std::string &dir, const std::string &uri)
+{
+	GltfFiles c;
+	struct stat st;
+	c.dir = dir;
+	std::string path = (dir.empty() ? "" : dir + "/") + gltf_ext::percent_decoded(uri);
+	if (!gltf_path_allowed(c, path))
+		return "lies outside the model's folder (absolute paths and \"..\" are refused)";
+	if (stat(path.c_str(), &st) != 0)
+		return errno == ENOENT || errno == ENOTDIR
+			   ? "is not in the model's folder (no such file)"
+			   : std::string("cannot be read: ") + std::strerror(errno);
+	if (!S_ISREG(st.st_mode))
+		return "is not a plain file";
+	if ((unsigned long long)st.st_size > GLTF_MAX_FILE)
+		return "is larger than the limit (512 MiB)";
+	return access(path.c_str(), R_OK) ? std::string("cannot be read: ") + std::strerror(errno)
+					  : "could not be read";
 }
 
 namespace
