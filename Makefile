@@ -150,6 +150,8 @@ DEBIAN_PACKAGES += libdraco-dev draco gltfpack assimp-testmodels
 # The board's USB stick images (tests/e2e/sticks.sh): FAT with files put
 # in by mtools, ext2 by mke2fs -d; no root or loop device needed.
 DEBIAN_PACKAGES += dosfstools mtools e2fsprogs
+# Content by sync (tests/e2e/sync.sh): real rsync into a live kiosk's folder.
+DEBIAN_PACKAGES += rsync
 
 deps:
 	$(APT_GET) update -qq
