@@ -48,7 +48,7 @@ int load_memory(const char *name, const uint8_t *data, size_t size, const char *
 	ctx.dir = dir ? dir : "";
 	ctx.max_size = GLTF_MAX_FILE;
 	images.keep = o->textures != 0;
-	images.dir = ctx.dir;
+	images.files = &ctx;
 	std::memset(out, 0, sizeof(*out));
 
 	if (size > GLTF_MAX_FILE || size > 0xffffffffu) {

@@ -23,10 +23,10 @@ bool gltf_path_allowed(const GltfFiles &files, const std::string &path);
 // The whole file at path, refused when larger than max bytes.
 bool gltf_read_file(const std::string &path, size_t max, std::vector<unsigned char> *out,
 		    std::string *err);
-// Why the file a URI (as written, %-encoded) names in dir could not be
+// Why the file a URI (as written, %-encoded) names in files.dir could not be
 // used, in words that follow it: "lies outside the model's folder ...", "is
 // not in the model's folder", ...
-std::string gltf_uri_fault(const std::string &dir, const std::string &uri);
+std::string gltf_uri_fault(const GltfFiles &files, const std::string &uri);
 // The callbacks, with files as their user data (kept by the caller).
 tinygltf::FsCallbacks gltf_fs_callbacks(GltfFiles *files);
 

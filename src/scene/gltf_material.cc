@@ -81,7 +81,9 @@ bool image_bytes(const tinygltf::Model &m, int index, const GltfImages &images,
 		return true;
 	}
 	*why = img.uri.empty() ? "has no data"
-			       : "\"" + img.uri + "\" " + gltf_uri_fault(images.dir, img.uri);
+			       : "\"" + img.uri + "\" " +
+				     (images.files ? gltf_uri_fault(*images.files, img.uri)
+						   : std::string("could not be read"));
 	return false;
 }
 
