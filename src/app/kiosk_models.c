@@ -238,7 +238,7 @@ void kiosk_models_service(struct kiosk_models *m, const struct pollfd fds[2], ui
 	    folder_watch_sync_under_way(m->watch, time(NULL))) {
 		if (!m->syncing)
 			log_info("models: a sync is writing into %s: waiting until it is done",
-				 m->p.options->content.model);
+				 m->p.config->model);
 		m->syncing = true;
 		m->rescan_at = now_ns + MODEL_SETTLE_NS;
 	}
