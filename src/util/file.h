@@ -32,9 +32,10 @@ bool file_name_has_ext(const char *name, const char *const *exts);
 bool file_name_is_partial(const char *name);
 
 /* The files of folder dir whose names have one of exts, hidden ones (a
- * leading dot) and partial ones (file_name_is_partial) left out, as "dir/name" in name order: *paths (count *n),
- * each and the array malloc'd (file_list_free). Returns 0 or a negative
- * errno code (nothing to free). */
+ * leading dot) and partial ones (file_name_is_partial) left out, as
+ * "dir/name" in name order: *paths (count *n), each and the array
+ * malloc'd (file_list_free). Returns 0 or a negative errno code (nothing
+ * to free). */
 int file_list_folder(const char *dir, const char *const *exts, char ***paths, int *n);
 void file_list_free(char **paths, int n);
 
