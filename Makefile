@@ -84,6 +84,7 @@ LIB_C  := $(SRC_APP) $(SRC_OPS) $(SRC_CONTENT) $(SRC_CONFIG) $(SRC_STATE) $(SRC_
 # The C++ shims, each behind a C header (gltf_ext.h is internal to the glTF one).
 LIB_CC := scene/gltf scene/gltf_mesh scene/gltf_fs scene/gltf_material scene/gltf_ext scene/gltf_files scene/gltf_pose \
 	  scene/gltf_draco camera/camera
+LIB_CC += scene/gltf_words
 SHADERS := shaders/mapping.glsl shaders/matcap.vert shaders/matcap.frag shaders/material.glsl
 SHADERS += shaders/camera.vert shaders/camera.frag
 SHADERS += shaders/poster.vert shaders/poster.frag
@@ -151,6 +152,8 @@ DEBIAN_PACKAGES += libdraco-dev draco gltfpack assimp-testmodels
 # The board's USB stick images (tests/e2e/sticks.sh): FAT with files put
 # in by mtools, ext2 by mke2fs -d; no root or loop device needed.
 DEBIAN_PACKAGES += dosfstools mtools e2fsprogs
+# Content by sync (tests/e2e/sync.sh): real rsync into a live kiosk's folder.
+DEBIAN_PACKAGES += rsync
 
 deps:
 	$(APT_GET) update -qq

@@ -325,6 +325,21 @@ test_hands() {
 	results hands "$out/hands.log"
 }
 
+# Content by sync (tests/e2e/sync.sh): real rsync, slowed down, and
+# Syncthing's temporary names, into the model folder of a live kiosk
+# (the ASan build): nothing is tried before it is whole.
+test_sync() {
+	need_models
+	if ! command -v rsync >/dev/null; then
+		ko "sync: rsync is not installed (make deps)"
+		return
+	fi
+	sh tests/e2e/sync.sh "$ASAN_KIOSK" "$out/models" "$out/sync" >"$out/sync.log" 2>&1
+	grep -q "^ok every step ran" "$out/sync.log" ||
+		echo "not ok the scenario stopped early" >>"$out/sync.log"
+	results sync "$out/sync.log" "$out/sync/kiosk.log"
+}
+
 # make install honours PREFIX and DESTDIR.
 test_install() {
 	check "make install" sh -c "make -s install DESTDIR=$PWD/$out/stage PREFIX=/usr SYSCONFDIR=/etc >/dev/null &&
