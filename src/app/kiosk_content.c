@@ -78,6 +78,8 @@ static void start_reload(struct kiosk *k)
 {
 	k->reload_wanted = false;
 	service_reloading(false);
+	/* --status names this reload's failure, or none after a good one. */
+	log_clear_last_error();
 	log_info("reload: reading the settings, the model and the matcaps again");
 	k->reload_frames = k->frames_drawn;
 	if (reload_start(&k->reload, k->worker, k->argc, k->argv, k->display->width,

@@ -6,6 +6,17 @@
 #include <string.h>
 #include <time.h>
 
+void reload_failed(const char *what)
+{
+	char cause[768];
+
+	log_last_error(cause, sizeof(cause));
+	if (cause[0])
+		log_err("reload: %s; keeping the scene on screen (%s)", what, cause);
+	else
+		log_err("reload: %s; keeping the scene on screen", what);
+}
+
 /* A test hook (tests/e2e/live.sh): MK_TEST_PREPARE_DELAY_MS slows each
  * reload's preparation down, so that it outlasts the watchdog. Built into
  * the sanitizer builds of the tests alone (-DMK_TEST_HOOKS). */
@@ -63,7 +74,7 @@ int reload_start(struct reload_job *j, struct worker *w, int argc, char **argv, 
 
 	reload_job_release(j);
 	if (options_parse(&j->fresh, argc, argv) != OPTIONS_OK) {
-		log_err("reload: the settings have errors (above); keeping the scene on screen");
+		reload_failed("the settings have errors");
 		options_release(&j->fresh);
 		return -EINVAL;
 	}
@@ -72,8 +83,7 @@ int reload_start(struct reload_job *j, struct worker *w, int argc, char **argv, 
 	j->ret = -EINPROGRESS;
 	ret = worker_start(w, &j->job);
 	if (ret) {
-		log_err("reload: cannot load the content: %s; keeping the scene on screen",
-			strerror(-ret));
+		reload_failed("the content cannot be loaded: the worker does not start");
 		options_release(&j->fresh);
 		return ret;
 	}
@@ -89,7 +99,7 @@ int reload_finish(struct reload_job *j, struct content *shown, struct renderer *
 	j->busy = false;
 	memset(old, 0, sizeof(*old));
 	if (ret) {
-		log_err("reload: keeping the scene on screen");
+		reload_failed("the scene does not load");
 		return ret;
 	}
 	ret = content_upload(&j->content, r);

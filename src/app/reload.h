@@ -12,6 +12,10 @@
 #include "config/options.h"
 #include "render/render.h"
 
+/* Logs that the reload failed: what, and the cause, the last error logged
+ * since the reload began (the file, line and reason), so that --status,
+ * which shows the last error, names it. */
+void reload_failed(const char *what);
 #include <stdbool.h>
 
 struct reload_job {
