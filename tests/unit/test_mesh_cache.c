@@ -327,7 +327,7 @@ static void content_maps_a_model_prepared_before(void **state)
 	assert_int_equal(s.packed.index_count / 3, triangles);
 	assert_int_equal(content_upload(&s, r), 0);
 	assert_int_equal(s.packed.vertex_count, 0); /* to the cache's writer */
-	assert_null(s.matcap.rgba); /* a texture now: the image given back */
+	assert_null(s.matcap.rgba);		    /* a texture now: the image given back */
 	/* A failed reload uploads it again (the model; the matcap is
 	 * decoded again on the worker): from the entry. */
 	assert_int_equal(content_upload_model(&s, r), 0);
