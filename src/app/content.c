@@ -1,6 +1,7 @@
 #include "app/content.h"
 #include "app/model_list.h"
 #include "render/bake.h"
+#include "render/framing.h"
 #include "scene/gltf.h"
 #include "scene/lod.h"
 #include "util/log.h"
@@ -139,12 +140,31 @@ static const char *default_matcaps(void)
 	return access("matcaps", R_OK) == 0 ? "matcaps" : NULL;
 }
 
+/* The shipped folder starts with a bright matcap that reads on the
+ * default background (README.md, "The first picture"); another folder in
+ * name order, unless [scene] matcap_first names where. */
+#define MATCAP_FIRST_SHIPPED "gold"
+
+static struct matcap_set *open_matcaps(const struct content_config *o, const char *path)
+{
+	struct matcap_set *set = matcap_set_open(path);
+	const char *first = o->matcap_first && *o->matcap_first ? o->matcap_first
+			    : o->matcap				? NULL
+								: MATCAP_FIRST_SHIPPED;
+
+	if (set && first && matcap_set_start_at(set, first) && o->matcap_first)
+		log_warn("[scene] matcap_first = %s: no such matcap in %s; expected one of its "
+			 "file names, with or without the extension; starting at %s",
+			 first, path, matcap_set_path(set, 0));
+	return set;
+}
+
 static int load_matcap(const struct content_config *o, bool strict, struct content *s)
 {
 	const char *path = o->matcap ? o->matcap : default_matcaps();
 	int ret = -ENOENT;
 
-	s->set = path ? matcap_set_open(path) : NULL;
+	s->set = path ? open_matcaps(o, path) : NULL;
 	if (s->set)
 		ret = image_load(matcap_set_path(s->set, 0), &s->matcap);
 	if (ret && strict && o->matcap)
@@ -216,12 +236,34 @@ static int load_the_model(struct content *s, const struct content_config *o, boo
 	return ret;
 }
 
+int content_load_background(const struct content_config *o, bool strict,
+			    struct background_spec *spec, struct image *img)
+{
+	char err[200];
+	int ret = background_parse(o->background, spec, err, sizeof(err));
+
+	memset(img, 0, sizeof(*img));
+	if (ret) /* the settings checked it: a caller that did not */
+		log_err("[display] background = '%s' is not valid: %s; expected %s", o->background,
+			err, BACKGROUND_EXPECTED);
+	if (!ret && spec->kind == BACKGROUND_IMAGE)
+		ret = image_load(spec->path, img);
+	spec->path = NULL; /* it pointed into o's text */
+	if (!ret || strict)
+		return ret;
+	log_warn("[display] background: the default instead");
+	background_spec_default(spec);
+	return 0;
+}
+
 int content_load(struct content *s, const struct content_config *o, bool strict)
 {
 	int ret;
 
 	memset(s, 0, sizeof(*s));
 	ret = load_the_model(s, o, strict);
+	if (!ret)
+		ret = content_load_background(o, strict, &s->background, &s->background_image);
 	if (!ret)
 		ret = load_matcap(o, strict, s);
 	if (!ret)
@@ -268,7 +310,10 @@ void content_take_model(struct content *shown, struct content *fresh)
 	shown->matcap = kept.matcap;
 	shown->set = kept.set;
 	shown->matcap_path = kept.matcap_path;
-	/* fresh had no matcaps of its own: nothing of it is left to free. */
+	shown->background = kept.background;
+	shown->background_image = kept.background_image;
+	/* fresh had no matcaps or background of its own: nothing of it is
+	 * left to free. */
 	memset(fresh, 0, sizeof(*fresh));
 }
 
@@ -276,9 +321,52 @@ void content_release(struct content *s)
 {
 	release_model(s);
 	image_release(&s->matcap);
+	image_release(&s->background_image);
 	matcap_set_free(s->set);
 	free(s->matcap_path);
 	memset(s, 0, sizeof(*s));
+}
+
+/* Positions of the prepared mesh as the GPU gets them: the mesh's own, or
+ * the packed arrays (float32, or int16 in units of position_scale). */
+static void frame_packed(struct framing *f, const struct mesh_packed *m)
+{
+	const void *a = m->arrays[MESH_POSITIONS];
+	bool int16 = mesh_array_int16(m->format, MESH_POSITIONS);
+
+	for (uint32_t i = 0; a && i < m->vertex_count; i++) {
+		double p[3];
+
+		for (int c = 0; c < 3; c++)
+			p[c] = int16 ? fmax(((const int16_t *)a)[3 * i + c] / 32767.0, -1.0) *
+					   m->position_scale
+				     : ((const float *)a)[3 * i + c];
+		framing_add(f, p);
+	}
+}
+
+/* [scene] fit: the zoom at which this model fills its share of a width x
+ * height frame at the start view (render/framing.h). */
+static void content_frame(struct content *s, const struct content_config *o, int width, int height)
+{
+	struct view v = content_view(o);
+	struct framing f;
+
+	framing_begin(&f, &v, width, height);
+	if (s->cached)
+		frame_packed(&f, mesh_cache_entry_mesh(s->cached));
+	else if (s->packed.vertex_count)
+		frame_packed(&f, &s->packed);
+	for (uint32_t i = 0; s->mesh.positions && i < s->mesh.vertex_count; i++) {
+		const float *q = s->mesh.positions + 3 * (size_t)i;
+		double p[3] = {q[0], q[1], q[2]};
+
+		framing_add(&f, p);
+	}
+	s->zoom = framing_zoom(&f, o->fit > 0 ? o->fit : CONTENT_FIT_DEFAULT);
+	log_debug("framing: zoom %.3f (at the start %.2f x %.2f, over a turn %.2f x %.2f of the "
+		  "half-frame)",
+		  s->zoom, f.start_x, f.start_y, f.turn_x, f.turn_y);
 }
 
 int content_prepare(struct content *s, const struct content_config *o, int width, int height)
@@ -286,8 +374,10 @@ int content_prepare(struct content *s, const struct content_config *o, int width
 	bool displaced = s->material.features & MATERIAL_DISPLACEMENT;
 	int ret = 0;
 
-	if (content_cache_fits(s, width, height))
+	if (content_cache_fits(s, width, height)) {
+		content_frame(s, o, width, height);
 		return 0;
+	}
 	if (s->cached) {
 		/* Cached for another display: its level of detail is another. */
 		mesh_cache_entry_free(s->cached);
@@ -302,6 +392,8 @@ int content_prepare(struct content *s, const struct content_config *o, int width
 				       NULL);
 	if (!ret)
 		content_cache_pack(s, width, height);
+	if (!ret)
+		content_frame(s, o, width, height);
 	return ret;
 }
 
@@ -335,13 +427,20 @@ int content_upload(struct content *s, struct renderer *r)
 {
 	int ret = content_upload_model(s, r);
 
+	if (!ret)
+		ret = renderer_set_background(r, &s->background, &s->background_image);
 	return ret ? ret : renderer_set_matcap(r, &s->matcap);
 }
 
 struct view content_view(const struct content_config *o)
 {
-	struct view v = {
-	    .ortho = o->ortho, .rotation = o->rotation, .background = {0.06f, 0.06f, 0.07f}};
+	struct view v = {.ortho = o->ortho, .rotation = o->rotation};
+	struct background_spec bg;
+	char err[200];
+
+	if (background_parse(o->background, &bg, err, sizeof(err)))
+		background_spec_default(&bg);
+	background_clear_color(&bg, v.background);
 
 	v.orientation = quat_multiply(quat_from_axis_angle(1, 0, 0, o->pitch * M_PI / 180),
 				      quat_from_axis_angle(0, 1, 0, o->yaw * M_PI / 180));
@@ -359,6 +458,13 @@ int content_rescan_matcaps(struct content *s)
 		log_warn("%s: keeping the %d matcaps known before", s->matcap_path,
 			 matcap_set_count(s->set));
 		return -ENOENT;
+	}
+	/* The cycle starts where it started before ([scene] matcap_first),
+	 * while that one is still there. */
+	if (s->set) {
+		const char *first = matcap_set_path(s->set, 0), *slash = strrchr(first, '/');
+
+		matcap_set_start_at(set, slash ? slash + 1 : first);
 	}
 	matcap_set_free(s->set);
 	s->set = set;

@@ -6,6 +6,7 @@
 #define MK_CONTENT_H
 
 #include "util/image.h"
+#include "render/background.h"
 #include "render/matcap_set.h"
 #include "scene/material.h"
 #include "scene/mesh.h"
@@ -15,12 +16,19 @@
 
 #include <stdbool.h>
 
-/* [scene] in kiosk.ini, with [display] rotation and [material]: what is
- * shown, and how it is seen. */
+/* [scene] fit when it is not set: the model fills most of the frame and
+ * leaves it a margin. */
+#define CONTENT_FIT_DEFAULT 0.85
+
+/* [scene] in kiosk.ini, with [display] rotation and background, and
+ * [material]: what is shown, and how it is seen. */
 struct content_config {
-	char *model;	   /* a file, folder or list (model_list.h); NULL: the built-in knot */
-	char *model_scene; /* the glTF scene by index or name; NULL: the file's */
-	char *matcap;	   /* a file or a folder; NULL: the shipped folder */
+	char *model;	    /* a file, folder or list (model_list.h); NULL: the built-in knot */
+	char *model_scene;  /* the glTF scene by index or name; NULL: the file's */
+	char *matcap;	    /* a file or a folder; NULL: the shipped folder */
+	char *matcap_first; /* the folder's matcap shown first; NULL: see load_matcap */
+	char *background;   /* render/background.h's text; NULL: the default */
+	double fit;	    /* render/framing.h: the share of the frame the model fills */
 	enum shading_mode mode;
 	bool ortho;
 	double yaw, pitch; /* degrees, the resting orientation */
@@ -38,11 +46,14 @@ struct content {
 	struct mesh_packed packed;	  /* the prepared mesh, packed, until stored */
 	struct mesh_cache_writer *writer; /* storing it; NULL: none */
 	struct mesh_cache_key cache_key;
-	bool cacheable;		  /* the key is known and the cache directory named */
-	struct image matcap;	  /* the first one shown */
-	struct matcap_set *set;	  /* NULL: the built-in clay only */
-	char *matcap_path;	  /* the file or folder set came from; NULL with set */
-	struct material material; /* the optional features ([material]) */
+	bool cacheable;			   /* the key is known and the cache directory named */
+	struct image matcap;		   /* the first one shown */
+	struct matcap_set *set;		   /* NULL: the built-in clay only */
+	char *matcap_path;		   /* the file or folder set came from; NULL with set */
+	struct material material;	   /* the optional features ([material]) */
+	struct background_spec background; /* its path is NULL once decoded */
+	struct image background_image;	   /* decoded once, when it is an image */
+	double zoom; /* the fit (render/framing.h) on the display prepared for; 0: none */
 };
 
 /* strict: every file the settings name must load (a one-shot render is
@@ -69,8 +80,15 @@ int content_load_model(struct content *s, const struct content_config *c, const 
 void content_take_model(struct content *shown, struct content *fresh);
 /* Hand the mesh alone (and its material) to the renderer. */
 int content_upload_model(struct content *s, struct renderer *r);
-/* The camera and panel the settings ask for, at the resting orientation. */
+/* The camera and panel the settings ask for, at the resting orientation,
+ * with the clear colour of the background. */
 struct view content_view(const struct content_config *c);
+/* Parse c's background and decode its image into spec and img (left
+ * empty for a colour or a gradient). strict: a background that does not
+ * load fails; otherwise it is replaced by the default, and the journal
+ * says so. */
+int content_load_background(const struct content_config *c, bool strict,
+			    struct background_spec *spec, struct image *img);
 /* The matcap folder was changed: open the set again. Returns 0 and
  * replaces s->set, or a negative errno (after logging) and keeps it. */
 int content_rescan_matcaps(struct content *s);

@@ -236,7 +236,8 @@ static int draw(struct kiosk *k, uint64_t now)
 	sync_mode(k, st->mode);
 	sync_matcap(k, st->matcap);
 	k->view.orientation = st->orientation;
-	k->view.zoom = (float)st->zoom;
+	/* Pinching scales the fitted picture ([scene] fit). */
+	k->view.zoom = (float)(st->zoom * (k->scene->zoom > 0 ? k->scene->zoom : 1.0));
 	/* Not connected, or waiting for the display: stay dirty, the display
 	 * asks for a redraw through dispatch() when it is back. */
 	k->display_absent = true;

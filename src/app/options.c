@@ -196,6 +196,22 @@ static void check_schedule(struct file_state *st)
 		st->path, at, text, err);
 }
 
+/* Counts an error when this file set a background that does not parse
+ * (an image that does not decode is the scene's to say, as a model's). */
+static void check_background(struct file_state *st)
+{
+	const char *text = st->opts->content.background;
+	int at = st->seen_line[find_key("display", "background") - option_defs];
+	struct background_spec spec;
+	char err[200];
+
+	if (!at || !background_parse(text, &spec, err, sizeof(err)))
+		return;
+	st->errors++;
+	log_err("%s:%d: [display] background = '%s' is not valid: %s; expected %s", st->path, at,
+		text, err, BACKGROUND_EXPECTED);
+}
+
 static enum options_status read_stream(struct options *o, const char *path, FILE *f)
 {
 	struct file_state st = {.opts = o, .path = path, .f = f};
@@ -203,6 +219,7 @@ static enum options_status read_stream(struct options *o, const char *path, FILE
 
 	check_lines(&st);
 	check_schedule(&st);
+	check_background(&st);
 	if (ret > 0)
 		log_err("%s:%d: not an INI line; expected [section], key = value or a comment",
 			path, ret);
@@ -346,7 +363,8 @@ static enum options_status read_config_first(struct options *o, int argc, char *
 static enum options_status check_command_line(const struct options *o, int argc, char **argv)
 {
 	struct schedule sch;
-	char err[160];
+	struct background_spec bg;
+	char err[200];
 	int first, second;
 
 	if (optind < argc) {
@@ -364,6 +382,11 @@ static enum options_status check_command_line(const struct options *o, int argc,
 	if (o->power.schedule && *o->power.schedule &&
 	    schedule_parse(&sch, o->power.schedule, err, sizeof(err))) {
 		log_err("--schedule: '%s' is not valid: %s", o->power.schedule, err);
+		return OPTIONS_USAGE;
+	}
+	if (background_parse(o->content.background, &bg, err, sizeof(err))) {
+		log_err("--background: '%s' is not valid: %s; expected %s", o->content.background,
+			err, BACKGROUND_EXPECTED);
 		return OPTIONS_USAGE;
 	}
 	return OPTIONS_OK;

@@ -37,7 +37,8 @@ static const char *const switch_names[] = {"auto", "off", "on", NULL}; /* enum m
 static const char *const lit_names[] = {"off", "on", "beside", NULL};  /* enum material_lit */
 static const char *const camera_names[] = {"off", "on", NULL};	       /* enum camera_feed_use */
 static const char *const import_names[] = {"auto", "off", NULL};       /* enum camera_feed_import */
-static const char *const base_color_names[] = {"auto", "off", NULL};   /* enum material_switch */
+static const char *const antialias_names[] = {"auto", "off", "2", "4", "8", NULL};
+static const char *const base_color_names[] = {"auto", "off", NULL}; /* enum material_switch */
 
 /* A field's place and size: the size tells a bool from an enum, and the
  * copy, the comparison and the release go by it. */
@@ -57,7 +58,8 @@ _Static_assert(sizeof(enum backend_kind) == sizeof(int) &&
 		   sizeof(enum button_active) == sizeof(int) &&
 		   sizeof(enum button_bias) == sizeof(int) &&
 		   sizeof(enum camera_feed_use) == sizeof(int) &&
-		   sizeof(enum camera_feed_import) == sizeof(int),
+		   sizeof(enum camera_feed_import) == sizeof(int) &&
+		   sizeof(enum display_antialias) == sizeof(int),
 	       "enums are ints");
 
 const struct option_def option_defs[OPTION_DEFS] = {
@@ -244,6 +246,20 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "read the settings, say what is wrong, and exit (0, or 78 for a bad file)"},
     {"import", 0, OPTION_CLI, NULL, K_STRING, AT(import), 0, 0, 0, NULL, "DIR",
      "copy a USB stick's matcap-kiosk/ folder into the content folder, checked first; exit"},
+    {"background", 0, OPTIONS_DISPLAY, "background", K_STRING, AT(content.background), 0, 0, 0,
+     NULL, "WHAT",
+     "behind the model: a colour #rrggbb, a vertical gradient '#top, #bottom', or a PNG/JPEG "
+     "scaled to cover the screen (default: dark grey)"},
+    {"antialias", 0, OPTIONS_DISPLAY, "antialias", K_CHOICE, AT(display.antialias), 0, 0, 0,
+     antialias_names, "N",
+     "smooth edges by multisampling: auto (4 samples on a GPU, off on a software rasteriser), "
+     "off, 2, 4 or 8"},
+    {"matcap-first", 0, OPTIONS_SCENE, "matcap_first", K_STRING, AT(content.matcap_first), 0, 0, 0,
+     NULL, "NAME",
+     "the matcap of the folder shown first, by file name (default: gold-brushed, else the "
+     "first by name)"},
+    {"fit", 0, OPTIONS_SCENE, "fit", K_DOUBLE, AT(content.fit), 0.1, 1, 0, NULL, "SHARE",
+     "the share of the frame the model fills at its start view; it stays inside as it turns"},
 };
 
 const char *backend_name(enum backend_kind kind)
@@ -271,6 +287,7 @@ void option_defaults(struct options *o)
 	o->content.pitch = 20.0;
 	o->content.yaw = -30.0;
 	o->content.lod_pixels = 4.0;
+	o->content.fit = CONTENT_FIT_DEFAULT;
 	material_config_defaults(&o->content.material);
 	o->log_level = LOG_INFO;
 	o->app.attract_after_s = 60;
