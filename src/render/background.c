@@ -72,6 +72,8 @@ int background_parse(const char *text, struct background_spec *out, char *err, s
 	int ret;
 
 	background_spec_default(out);
+	while (text && isspace((unsigned char)*text))
+		text++;
 	if (!text || !*text)
 		return 0;
 	if (text[0] != '#') {
