@@ -207,7 +207,12 @@ static void egl_make_msaa(struct display_egl *e, int antialias)
 	else if (samples && es_major(gl) >= 3 && make_msaa_es3(e, samples) == 0)
 		how = "resolved by a blit (OpenGL ES 3.0)";
 	if (how) {
-		e->base.samples = samples;
+		GLint got = 0;
+
+		/* What the driver made: llvmpipe makes 4 for 2. */
+		gl->BindFramebuffer(GL_FRAMEBUFFER, e->msaa_fbo ? e->msaa_fbo : e->fbo);
+		gl->GetIntegerv(GL_SAMPLES, &got);
+		e->base.samples = samples = got > 0 ? got : samples;
 		log_info("egl-headless: antialias %d samples (%d asked), %s", samples, want, how);
 		return;
 	}
@@ -248,6 +253,11 @@ static int egl_begin_frame(struct display *d)
 {
 	struct display_egl *e = (struct display_egl *)d;
 
+	/* Another context may be current in this thread (the bench draws on
+	 * several displays in turn); making one current that is costs nothing. */
+	if (eglGetCurrentContext() != e->ctx &&
+	    !eglMakeCurrent(e->dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, e->ctx))
+		return -EIO;
 	d->gl.BindFramebuffer(GL_FRAMEBUFFER, e->msaa_fbo ? e->msaa_fbo : e->fbo);
 	d->gl.Viewport(0, 0, d->width, d->height);
 	return 0;
