@@ -102,6 +102,7 @@ test_unit() {
 # renders them and compared with the golden images' tolerance.
 test_golden() {
 	need_models
+	all=$#
 	if [ $# -eq 0 ]; then
 		check "golden scenes rendered" sh tests/golden/golden.sh "$out/render"
 		for g in tests/golden/*.png; do set -- "$@" "$(basename "$g" .png)"; done
@@ -111,6 +112,12 @@ test_golden() {
 	for g in "$@"; do
 		check "golden $g.png" imgdiff_golden "tests/golden/$g.png" "$out/render/$g.png"
 	done
+	# The README's first picture is what `make run` draws: no settings.
+	[ "$all" -eq 0 ] || return 0
+	check "README's first picture: the defaults render" "$KIOSK" -q --backend "$offscreen" \
+		--output "$out/render/readme-first.png"
+	check "README's first picture is what make run shows (tests/readme/first.png)" \
+		imgdiff_golden tests/readme/first.png "$out/render/readme-first.png"
 }
 
 # The same scenes through EGL headless agree with OSMesa.

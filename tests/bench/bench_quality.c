@@ -26,6 +26,7 @@
 #include "render/render.h"
 #include "render/shading.h"
 
+#include <EGL/egl.h>
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -274,6 +275,13 @@ static int measure(struct bench *b, const struct look *lk, const struct material
 	int h = lk->small ? lk->small * s->ss : d->height;
 	int ret;
 
+	/* OSMesa's displays and EGL's share Mesa's one current context per
+	 * thread, but EGL keeps its own record of it: once OSMesa has drawn,
+	 * EGL would take its context for current still. Released here, EGL's
+	 * begin_frame makes its own current again. */
+	if (k != b->last_display && eglGetCurrentContext() != EGL_NO_CONTEXT)
+		eglMakeCurrent(eglGetCurrentDisplay(), EGL_NO_SURFACE, EGL_NO_SURFACE,
+			       EGL_NO_CONTEXT);
 	renderer_set_vertex_format(r, s->format);
 	renderer_set_matcap_filter(r, s->filter);
 	ret = d->begin_frame(d);
