@@ -145,12 +145,17 @@ static const char *default_matcaps(void)
  * name order, unless [scene] matcap_first names where. */
 #define MATCAP_FIRST_SHIPPED "gold"
 
+static const char *first_matcap(const struct content_config *o)
+{
+	if (o->matcap_first && *o->matcap_first)
+		return o->matcap_first;
+	return o->matcap ? NULL : MATCAP_FIRST_SHIPPED;
+}
+
 static struct matcap_set *open_matcaps(const struct content_config *o, const char *path)
 {
 	struct matcap_set *set = matcap_set_open(path);
-	const char *first = o->matcap_first && *o->matcap_first ? o->matcap_first
-			    : o->matcap				? NULL
-								: MATCAP_FIRST_SHIPPED;
+	const char *first = first_matcap(o);
 
 	if (set && first && matcap_set_start_at(set, first) && o->matcap_first)
 		log_warn("[scene] matcap_first = %s: no such matcap in %s; expected one of its "
@@ -176,6 +181,8 @@ static int load_matcap(const struct content_config *o, bool strict, struct conte
 		return bake_matcap(BAKE_CLAY_RED, 256, &s->matcap);
 	}
 	s->matcap_path = strdup(path);
+	if (first_matcap(o) && !(s->matcap_first = strdup(first_matcap(o))))
+		return -ENOMEM;
 	return s->matcap_path ? 0 : -ENOMEM;
 }
 
@@ -310,6 +317,7 @@ void content_take_model(struct content *shown, struct content *fresh)
 	shown->matcap = kept.matcap;
 	shown->set = kept.set;
 	shown->matcap_path = kept.matcap_path;
+	shown->matcap_first = kept.matcap_first;
 	shown->background = kept.background;
 	shown->background_image = kept.background_image;
 	/* fresh had no matcaps or background of its own: nothing of it is
@@ -324,6 +332,7 @@ void content_release(struct content *s)
 	image_release(&s->background_image);
 	matcap_set_free(s->set);
 	free(s->matcap_path);
+	free(s->matcap_first);
 	memset(s, 0, sizeof(*s));
 }
 
@@ -459,13 +468,10 @@ int content_rescan_matcaps(struct content *s)
 			 matcap_set_count(s->set));
 		return -ENOENT;
 	}
-	/* The cycle starts where it started before ([scene] matcap_first),
-	 * while that one is still there. */
-	if (s->set) {
-		const char *first = matcap_set_path(s->set, 0), *slash = strrchr(first, '/');
-
-		matcap_set_start_at(set, slash ? slash + 1 : first);
-	}
+	/* The cycle starts where the settings said ([scene] matcap_first),
+	 * while that one is there. */
+	if (s->matcap_first)
+		matcap_set_start_at(set, s->matcap_first);
 	matcap_set_free(s->set);
 	s->set = set;
 	log_info("%s: %d matcaps", s->matcap_path, matcap_set_count(set));

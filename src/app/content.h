@@ -46,11 +46,12 @@ struct content {
 	struct mesh_packed packed;	  /* the prepared mesh, packed, until stored */
 	struct mesh_cache_writer *writer; /* storing it; NULL: none */
 	struct mesh_cache_key cache_key;
-	bool cacheable;			   /* the key is known and the cache directory named */
-	struct image matcap;		   /* the first one shown */
-	struct matcap_set *set;		   /* NULL: the built-in clay only */
-	char *matcap_path;		   /* the file or folder set came from; NULL with set */
-	struct material material;	   /* the optional features ([material]) */
+	bool cacheable;		  /* the key is known and the cache directory named */
+	struct image matcap;	  /* the first one shown */
+	struct matcap_set *set;	  /* NULL: the built-in clay only */
+	char *matcap_path;	  /* the file or folder set came from; NULL with set */
+	char *matcap_first;	  /* where set's cycle starts (a rescan too); NULL: the first */
+	struct material material; /* the optional features ([material]) */
 	struct background_spec background; /* its path is NULL once decoded */
 	struct image background_image;	   /* decoded once, when it is an image */
 	double zoom; /* the fit (render/framing.h) on the display prepared for; 0: none */
