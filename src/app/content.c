@@ -53,6 +53,10 @@ static int content_cache_lookup(struct content *s, const struct content_config *
 	if (!ret && c->model_scene)
 		s->cache_key.settings =
 		    mesh_cache_hash(c->model_scene, strlen(c->model_scene), s->cache_key.settings);
+	/* The fit's zoom sets the level of detail's pixels. */
+	if (!ret)
+		s->cache_key.settings =
+		    mesh_cache_hash(&c->fit, sizeof(c->fit), s->cache_key.settings);
 
 	if (!ret)
 		ret = mesh_cache_dir(dir, sizeof(dir));
@@ -396,9 +400,14 @@ int content_prepare(struct content *s, const struct content_config *o, int width
 	}
 	if (!ret)
 		ret = material_prepare_mesh(&s->material, &s->mesh, width, height);
+	/* The fit magnifies the picture: the level of detail judges its
+	 * pixels as drawn (the zoom of the whole mesh, then of the simplified
+	 * one, which a start from the cache finds too). */
 	if (!ret)
-		ret = lod_prepare_mesh(&s->mesh, displaced ? 0.0 : o->lod_pixels, width, height,
-				       NULL);
+		content_frame(s, o, width, height);
+	if (!ret)
+		ret = lod_prepare_mesh(&s->mesh, displaced ? 0.0 : o->lod_pixels / s->zoom, width,
+				       height, NULL);
 	if (!ret)
 		content_cache_pack(s, width, height);
 	if (!ret)
