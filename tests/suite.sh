@@ -237,6 +237,10 @@ test_bad_input() {
 	bad_input "missing model" --model "$out/bad/no-such-model.glb"
 	bad_input "bad detail map" --detail-map "$out/models/corrupt.png"
 	bad_input "missing height map" --displacement-map "$out/bad/no-such-height.png"
+	for f in truncated.png text.jpg; do
+		bad_input "bad background $f" --background "$out/bad/$f"
+	done
+	bad_input "missing background" --background "$out/bad/no-such-background.jpg"
 }
 
 # The command line itself, and config errors that stop the program.
