@@ -204,7 +204,11 @@ static int egl_init(struct display_kms *k)
 		log_err("kms: EGL on GBM is not available: %s", egl_error_string(eglGetError()));
 		return -ENODEV;
 	}
-	if (choose_config(k, display_antialias_samples(k->antialias, false)))
+	/* auto: a plain config first; antialias_auto decides once the
+	 * context says what the GPU is. */
+	if (choose_config(k, k->antialias == DISPLAY_AA_AUTO
+				 ? 0
+				 : display_antialias_samples(k->antialias, false)))
 		return -ENODEV;
 	ret = make_context(k);
 	if (!ret && k->antialias == DISPLAY_AA_AUTO)

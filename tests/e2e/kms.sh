@@ -22,6 +22,9 @@ grab_when_shown atomic.log atomic.png "$HOLD_FB"
 vm_check "finds vkms, sets Virtual-1 1024x768@60 with atomic modesetting" \
 	has atomic.log "kms: Virtual-1 1024x768@60, atomic modesetting"
 vm_check "the EGL surface has a depth buffer" has atomic.log "bit depth buffer"
+vm_check "antialias = auto: off on llvmpipe, a plain config" \
+	sh -c "grep -q 'antialias = auto: off (a software rasteriser)' atomic.log &&
+		grep -q 'bit depth buffer, 0 samples' atomic.log"
 vm_check "what the display scans out matches the OSMesa reference" \
 	matches "$REF/knot-1024x768.png" atomic.png
 kiosk_stop TERM
