@@ -82,12 +82,14 @@ static int compare_double(const void *a, const void *b)
 	return (x > y) - (x < y);
 }
 
-static const int msaa_asked[] = {DISPLAY_AA_2, DISPLAY_AA_4, DISPLAY_AA_8};
+static const int msaa_asked[] = {DISPLAY_AA_OFF, DISPLAY_AA_2, DISPLAY_AA_4, DISPLAY_AA_8};
 
-/* Which display draws s: by its supersampling, or by its samples. */
+/* Which display draws s: by its supersampling, or EGL's by its samples. */
 static int display_of(const struct bench *b, const struct setting *s)
 {
-	for (int k = 3; s->msaa && k < DISPLAYS; k++)
+	if (s->msaa == 1)
+		return 3;
+	for (int k = 4; s->msaa && k < DISPLAYS; k++)
 		if (b->display[k] && b->display[k]->samples == s->msaa)
 			return k;
 	return s->ss == 4 ? 2 : s->ss == 2 ? 1 : 0;
@@ -157,11 +159,14 @@ static void plan(struct bench *b, int l)
 		add(b, l, label)->ss = ss_factors[i];
 	}
 	/* antialias = 2, 4, 8: one row for each count of samples the GPU
-	 * gives (it gives its most for more). */
-	for (int k = 3; k < DISPLAYS; k++) {
+	 * gives (it gives its most for more), after EGL headless without,
+	 * the cost's baseline (OSMesa's context is another). */
+	if (b->display[3])
+		add(b, l, "egl-headless, antialias off")->msaa = 1;
+	for (int k = 4; k < DISPLAYS; k++) {
 		int got = b->display[k] ? b->display[k]->samples : 0;
 
-		if (!got || (k > 3 && b->display[k - 1] && b->display[k - 1]->samples == got))
+		if (!got || (k > 4 && b->display[k - 1] && b->display[k - 1]->samples == got))
 			continue;
 		snprintf(label, sizeof(label), "antialias %d (msaa)", got);
 		add(b, l, label)->msaa = got;
@@ -509,13 +514,13 @@ static int open_displays(struct bench *b)
 		if (!b->renderer[k])
 			return -ENOMEM;
 	}
-	/* Multisampled displays beside them, where EGL headless has them. */
+	/* EGL headless beside them: plain, and multisampled where it can be. */
 	for (int k = 3; k < DISPLAYS; k++) {
 		struct display_config cfg = {
 		    .width = b->width, .height = b->height, .antialias = msaa_asked[k - 3]};
 
 		b->display[k] = display_egl_new(&cfg);
-		if (b->display[k] && !b->display[k]->samples) {
+		if (k > 3 && b->display[k] && !b->display[k]->samples) {
 			display_free(b->display[k]);
 			b->display[k] = NULL;
 		}

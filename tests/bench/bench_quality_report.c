@@ -47,7 +47,7 @@ static void describe_method(FILE *f, const struct bench *b)
 	static const int asked[] = {2, 4, 8};
 	size_t len = 0;
 
-	for (int k = 3; k < DISPLAYS; k++) {
+	for (int k = 4; k < DISPLAYS; k++) {
 		const struct display *d = b->display[k];
 
 		if (!d)
@@ -59,7 +59,7 @@ static void describe_method(FILE *f, const struct bench *b)
 		}
 		if (len < sizeof(msaa_note))
 			len += (size_t)snprintf(msaa_note + len, sizeof(msaa_note) - len,
-						" %d for %d,", d->samples, asked[k - 3]);
+						" %d for %d,", d->samples, asked[k - 4]);
 	}
 	if (len && len < sizeof(msaa_note))
 		snprintf(msaa_note + len - 1, sizeof(msaa_note) - len + 1,
@@ -85,7 +85,9 @@ static void describe_method(FILE *f, const struct bench *b)
 		"Supersampling is drawn at 2x or 4x the size and box-filtered on the CPU; "
 		"the time\nleaves the filter out. The \"antialias N (msaa)\" rows are [display] "
 		"antialias: the same scene\non an EGL headless display multisampled with N "
-		"samples (OSMesa has none), resolved by\nthe GPU within the time; %s. The matcap "
+		"samples (OSMesa has none), resolved by\nthe GPU within the time, against "
+		"\"egl-headless, antialias off\" for their cost (another\ncontext than OSMesa's, "
+		"and 32-bit indices where OSMesa has none); %s. The matcap "
 		"is the gold\none, baked at each size. The reference's matcap is "
 		"mipmapped: at 4x a 1024 matcap is still\nminified several texels a sample on a "
 		"thin part, and unfiltered it aliases too; its vertices are\nfloat32. A scene "
