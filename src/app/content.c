@@ -377,7 +377,7 @@ static void content_frame(struct content *s, const struct content_config *o, int
 		framing_add(&f, p);
 	}
 	s->zoom = framing_zoom(&f, o->fit > 0 ? o->fit : CONTENT_FIT_DEFAULT);
-	log_debug("framing: zoom %.3f (at the start %.2f x %.2f, over a turn %.2f x %.2f of the "
+	log_debug("framing: zoom %.6f (at the start %.2f x %.2f, over a turn %.2f x %.2f of the "
 		  "half-frame)",
 		  s->zoom, f.start_x, f.start_y, f.turn_x, f.turn_y);
 }

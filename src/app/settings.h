@@ -80,6 +80,7 @@ struct options {
 	char *output;
 	char *shader_dir;
 	int frames;
+	double zoom; /* --zoom: the offscreen picture's scale; 0: the fit's */
 	bool stats;
 	bool help, version;
 	bool status, check_config;
@@ -108,7 +109,7 @@ struct option_def {
 
 /* The table's length: the compiler refuses an entry more, and
  * tests/unit/test_options.c one less. */
-#define OPTION_DEFS 89
+#define OPTION_DEFS 90
 extern const struct option_def option_defs[OPTION_DEFS];
 
 void option_defaults(struct options *o);
