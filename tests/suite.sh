@@ -155,8 +155,10 @@ test_mirror_check() {
 test_ortho() {
 	need_models
 	for m in gold chrome-studio; do
+		# --zoom 1: the unit sphere's own framing, where it fills the
+		# frame (not [scene] fit's margin), so it is the matcap's disc.
 		check "ortho sphere renders ($m)" "$KIOSK" -q --backend $offscreen --size 256x256 --ortho \
-			--mode normal --pitch 0 --yaw 0 --model "$out/models/sphere.glb" \
+			--zoom 1 --mode normal --pitch 0 --yaw 0 --model "$out/models/sphere.glb" \
 			--matcap matcaps/$m.png --output "$out/render/ortho-$m.png"
 		check "ortho sphere reproduces the matcap ($m)" "$TOOLS/imgdiff" --disk --rim 3 \
 			--tol 8 --share 0.002 "matcaps/$m.png" "$out/render/ortho-$m.png"

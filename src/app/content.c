@@ -53,10 +53,13 @@ static int content_cache_lookup(struct content *s, const struct content_config *
 	if (!ret && c->model_scene)
 		s->cache_key.settings =
 		    mesh_cache_hash(c->model_scene, strlen(c->model_scene), s->cache_key.settings);
-	/* The fit's zoom sets the level of detail's pixels. */
+	/* The fit's zoom (or --zoom) sets the level of detail's pixels. */
 	if (!ret)
 		s->cache_key.settings =
 		    mesh_cache_hash(&c->fit, sizeof(c->fit), s->cache_key.settings);
+	if (!ret)
+		s->cache_key.settings =
+		    mesh_cache_hash(&c->zoom, sizeof(c->zoom), s->cache_key.settings);
 
 	if (!ret)
 		ret = mesh_cache_dir(dir, sizeof(dir));
@@ -376,7 +379,8 @@ static void content_frame(struct content *s, const struct content_config *o, int
 
 		framing_add(&f, p);
 	}
-	s->zoom = framing_zoom(&f, o->fit > 0 ? o->fit : CONTENT_FIT_DEFAULT);
+	s->zoom =
+	    o->zoom > 0 ? o->zoom : framing_zoom(&f, o->fit > 0 ? o->fit : CONTENT_FIT_DEFAULT);
 	log_debug("framing: zoom %.6f (at the start %.2f x %.2f, over a turn %.2f x %.2f of the "
 		  "half-frame)",
 		  s->zoom, f.start_x, f.start_y, f.turn_x, f.turn_y);

@@ -29,6 +29,7 @@ struct content_config {
 	char *matcap_first; /* the folder's matcap shown first; NULL: see load_matcap */
 	char *background;   /* render/background.h's text; NULL: the default */
 	double fit;	    /* render/framing.h: the share of the frame the model fills */
+	double zoom;	    /* --zoom: this scale instead of the fit's; 0: the fit's */
 	enum shading_mode mode;
 	bool ortho;
 	double yaw, pitch; /* degrees, the resting orientation */

@@ -90,7 +90,7 @@ static int render_frames(const struct options *o, const struct content *s, struc
 
 	if (!times)
 		return -ENOMEM;
-	v.zoom = (float)(o->zoom > 0 ? o->zoom : s->zoom);
+	v.zoom = (float)s->zoom;
 	for (int i = 0; i < o->frames && !ret; i++) {
 		double t = now_ms();
 

@@ -258,9 +258,9 @@ const struct option_def option_defs[OPTION_DEFS] = {
      NULL, "NAME",
      "the matcap of the folder shown first, by file name (default: gold-brushed, else the "
      "first by name)"},
-    {"zoom", 0, OPTION_CLI, NULL, K_DOUBLE, AT(zoom), 0.05, 20, 0, NULL, "Z",
-     "offscreen: draw at this scale instead of the one [scene] fit chose (logged at debug), "
-     "so stills of other views keep one size"},
+    {"zoom", 0, OPTION_CLI, NULL, K_DOUBLE, AT(content.zoom), 0.05, 20, 0, NULL, "Z",
+     "draw at this scale of the sphere's framing instead of the one [scene] fit chose (logged "
+     "at debug), so stills of other views keep one size"},
     {"fit", 0, OPTIONS_SCENE, "fit", K_DOUBLE, AT(content.fit), 0.1, 1, 0, NULL, "SHARE",
      "the share of the frame the model fills at its start view; it stays inside as it turns"},
 };

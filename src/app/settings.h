@@ -80,7 +80,6 @@ struct options {
 	char *output;
 	char *shader_dir;
 	int frames;
-	double zoom; /* --zoom: the offscreen picture's scale; 0: the fit's */
 	bool stats;
 	bool help, version;
 	bool status, check_config;
