@@ -3,8 +3,8 @@
  * drawing on a real GL (OSMesa, or EGL where Mesa has no OSMesa): a
  * colour is the clear alone, a gradient runs top to bottom of the panel
  * as the viewer sees it, an image covers the screen and keeps its shape. */
-#include "app/options.h"
-#include "app/settings.h"
+#include "config/options.h"
+#include "config/settings.h"
 #include "display/display.h"
 #include "render/background.h"
 #include "render/poster.h"

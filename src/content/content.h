@@ -1,13 +1,14 @@
 /* What the kiosk shows, loaded from the settings: the mesh, the matcaps
  * and the first matcap decoded. The start and a reload (SIGHUP) both build
- * a complete new scene here; a reload swaps it in only once every part of
+ * complete new content here; a reload swaps it in only once every part of
  * it loaded and uploaded, so a broken model or folder keeps the old one. */
 #ifndef MK_CONTENT_H
 #define MK_CONTENT_H
 
+#include "config/content_config.h"
 #include "util/image.h"
+#include "content/matcap_set.h"
 #include "render/background.h"
-#include "render/matcap_set.h"
 #include "scene/material.h"
 #include "scene/mesh.h"
 #include "scene/mesh_cache.h"
@@ -15,28 +16,6 @@
 #include "render/shading.h"
 
 #include <stdbool.h>
-
-/* [scene] fit when it is not set: the model fills most of the frame and
- * leaves it a margin. */
-#define CONTENT_FIT_DEFAULT 0.85
-
-/* [scene] in kiosk.ini, with [display] rotation and background, and
- * [material]: what is shown, and how it is seen. */
-struct content_config {
-	char *model;	    /* a file, folder or list (model_list.h); NULL: the built-in knot */
-	char *model_scene;  /* the glTF scene by index or name; NULL: the file's */
-	char *matcap;	    /* a file or a folder; NULL: the shipped folder */
-	char *matcap_first; /* the folder's matcap shown first; NULL: see load_matcap */
-	char *background;   /* render/background.h's text; NULL: the default */
-	double fit;	    /* render/framing.h: the share of the frame the model fills */
-	double zoom;	    /* --zoom: this scale instead of the fit's; 0: the fit's */
-	enum shading_mode mode;
-	bool ortho;
-	double yaw, pitch; /* degrees, the resting orientation */
-	double lod_pixels; /* simplify to this error on the display; 0: off */
-	int rotation;	   /* the panel's, degrees */
-	struct material_config material;
-};
 
 struct content {
 	char *model_path; /* the file the mesh came from; NULL: the built-in knot */
@@ -94,5 +73,8 @@ int content_load_background(const struct content_config *c, bool strict,
 /* The matcap folder was changed: open the set again. Returns 0 and
  * replaces s->set, or a negative errno (after logging) and keeps it. */
 int content_rescan_matcaps(struct content *s);
+/* The matcaps shown when none is named: the installed folder, else
+ * ./matcaps (the source tree); NULL: none (the built-in clay). */
+const char *content_default_matcaps(void);
 
 #endif
