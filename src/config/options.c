@@ -86,7 +86,7 @@ static void list_sections(char *buf, size_t n)
 
 /* The settings that name files: read from the folder of the file that
  * names them. (Devices are absolute, under /dev.) */
-/* value: [display] background names a file unless it is colours. */
+/* value: [display] background names a file when it is a picture's name. */
 static bool names_files(const struct option_def *d, const char *value)
 {
 	static const char *const keys[] = {
@@ -96,7 +96,7 @@ static bool names_files(const struct option_def *d, const char *value)
 	if (d->kind != K_STRING || d->section == OPTION_CLI)
 		return false;
 	if (!strcmp(d->key, "background"))
-		return value[strspn(value, " \t")] != '#';
+		return background_names_image(value);
 	for (const char *const *k = keys; *k; k++)
 		if (!strcmp(d->key, *k))
 			return true;

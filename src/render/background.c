@@ -58,7 +58,7 @@ static int parse_color(const char *s, size_t len, float out[3], char *err, size_
 	return 0;
 }
 
-static bool image_name(const char *s)
+bool background_names_image(const char *s)
 {
 	const char *dot = strrchr(s, '.');
 
@@ -77,7 +77,7 @@ int background_parse(const char *text, struct background_spec *out, char *err, s
 	if (!text || !*text)
 		return 0;
 	if (text[0] != '#') {
-		if (!image_name(text)) {
+		if (!background_names_image(text)) {
 			snprintf(err, n, "'%s' is neither a colour nor a .png/.jpg/.jpeg file",
 				 text);
 			return -EINVAL;

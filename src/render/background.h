@@ -30,6 +30,9 @@ void background_spec_default(struct background_spec *out);
  * "" is the default. Returns 0, or -EINVAL with what is wrong in err
  * (without the key: the caller names it). out->path points into text. */
 int background_parse(const char *text, struct background_spec *out, char *err, size_t n);
+/* Whether text names a PNG or JPEG file (by its extension): a path the
+ * settings take from the config file's folder. */
+bool background_names_image(const char *text);
 /* The colour the screen is cleared to: the colour, or the average of a
  * gradient (what shows where nothing else is drawn). */
 void background_clear_color(const struct background_spec *s, float out[3]);

@@ -167,6 +167,31 @@ static void kept(void **state)
 	options_release(&o);
 }
 
+/* In a file, an image's relative path is taken from the file's folder,
+ * as every path; colours are left as written. */
+static void relative(void **state)
+{
+	const char *values[][2] = {{"shop.jpg", "/tmp/shop.jpg"},
+				   {"#101010, #202020", "#101010, #202020"}};
+
+	(void)state;
+	for (int i = 0; i < 2; i++) {
+		char text[200], path[] = "/tmp/mk-bg-ini-XXXXXX";
+		int fd = mkstemp(path);
+		struct options o;
+
+		snprintf(text, sizeof(text), "[display]\nbackground = %s\n", values[i][0]);
+		assert_true(fd >= 0);
+		assert_int_equal(write(fd, text, strlen(text)), (ssize_t)strlen(text));
+		close(fd);
+		option_defaults(&o);
+		assert_int_equal(options_read_file(&o, path), OPTIONS_OK);
+		assert_string_equal(o.content.background, values[i][1]);
+		options_release(&o);
+		unlink(path);
+	}
+}
+
 /* The drawing. */
 static int setup(void **state)
 {
@@ -306,10 +331,8 @@ static void poster(void **state)
 int main(void)
 {
 	const struct CMUnitTest pure[] = {
-	    cmocka_unit_test(good),
-	    cmocka_unit_test(reasons),
-	    cmocka_unit_test(messages),
-	    cmocka_unit_test(kept),
+	    cmocka_unit_test(good), cmocka_unit_test(reasons),	cmocka_unit_test(messages),
+	    cmocka_unit_test(kept), cmocka_unit_test(relative),
 	};
 	const struct CMUnitTest gl[] = {
 	    cmocka_unit_test(colour),
