@@ -63,6 +63,7 @@ LDLIBS    = $(PKG_LIBS) -lmeshoptimizer -ldl -lm
 # one folder per layer: each includes only the layers listed after it
 # (tests/tools/layers.sh checks that).
 SRC_APP     := app/app app/content app/model_list app/model_loader app/kiosk_models app/kiosk \
+	       app/kiosk_report app/metrics \
 	       app/options app/settings app/power app/reload app/schedule app/screen app/service \
 	       app/status app/import app/signals
 SRC_DISPLAY := display/backlight display/cec display/display display/display_egl display/display_kms \
@@ -149,6 +150,9 @@ DEBIAN_PACKAGES += libdraco-dev draco gltfpack assimp-testmodels
 # The board's USB stick images (tests/e2e/sticks.sh): FAT with files put
 # in by mtools, ext2 by mke2fs -d; no root or loop device needed.
 DEBIAN_PACKAGES += dosfstools mtools e2fsprogs
+# [status] metrics scraped from a real node_exporter (tests/e2e/metrics.sh);
+# the Ansible role applied to a fresh root (tests/cross/ansible.sh).
+DEBIAN_PACKAGES += prometheus-node-exporter curl ansible mmdebstrap
 
 deps:
 	$(APT_GET) update -qq

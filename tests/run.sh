@@ -43,6 +43,8 @@ test_baker
 test_live
 # 10b. Hands-off operation: --status, the poster, --import of a USB stick.
 test_hands
+# 10c. Metrics for Prometheus, scraped from a real node_exporter.
+test_metrics
 # 11. make install honours PREFIX and DESTDIR; the systemd unit, checked
 #     offline.
 test_install

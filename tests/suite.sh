@@ -305,6 +305,22 @@ test_hands() {
 	results hands "$out/hands.log"
 }
 
+# [status] metrics scraped from a real node_exporter (tests/e2e/metrics.sh):
+# the live kiosk's values, escaped labels, no textfile parse error; the
+# exporter on 127.0.0.1 only, stopped at the end.
+test_metrics() {
+	need_models
+	if ! command -v prometheus-node-exporter >/dev/null || ! command -v curl >/dev/null; then
+		ko "metrics: prometheus-node-exporter and curl are not installed (make deps)"
+		return
+	fi
+	sh tests/e2e/metrics.sh "$ASAN_KIOSK" "$out/models/sphere.glb" "$out/metrics" \
+		>"$out/metrics.log" 2>&1
+	grep -q "^ok every step ran" "$out/metrics.log" ||
+		echo "not ok the scenario stopped early" >>"$out/metrics.log"
+	results metrics "$out/metrics.log" "$out/metrics/stderr"
+}
+
 # make install honours PREFIX and DESTDIR.
 test_install() {
 	check "make install" sh -c "make -s install DESTDIR=$PWD/$out/stage PREFIX=/usr SYSCONFDIR=/etc >/dev/null &&

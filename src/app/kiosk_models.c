@@ -114,6 +114,7 @@ static int show(struct kiosk_models *m, struct content *fresh, int index)
 	int ret = content_upload_model(fresh, m->p.renderer);
 
 	if (ret) {
+		m->p.counts->model_load_failures++;
 		log_err("%s: does not fit on the GPU; keeping %s", fresh->model_path,
 			m->p.scene->model_path);
 		model_list_set_bad(m->list, index, true);
@@ -124,6 +125,7 @@ static int show(struct kiosk_models *m, struct content *fresh, int index)
 	}
 	content_take_model(m->p.scene, fresh);
 	m->shown = index;
+	m->p.counts->model_loads++;
 	log_info("model %d of %d: %s", index + 1, model_list_count(m->list),
 		 m->p.scene->model_path);
 	/* The frame that shows it is drawn next: what a switch costs is this
@@ -142,6 +144,8 @@ static void finish(struct kiosk_models *m)
 		return;
 	if (picked >= 0 && fresh.model_path)
 		show(m, &fresh, picked);
+	else /* none loaded, or only the one on screen */
+		m->p.counts->model_load_failures++;
 	content_release(&fresh);
 	/* The user may have stepped on meanwhile: that step stands, and is
 	 * acted on next. A file that arrived is shown whatever was wanted. */

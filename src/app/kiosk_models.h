@@ -9,6 +9,7 @@
 #include "app/app.h"
 #include "app/content.h"
 #include "app/settings.h"
+#include "app/status.h"
 #include "display/display.h"
 #include "render/render.h"
 
@@ -22,6 +23,7 @@ struct kiosk_models_parts {
 	struct renderer *renderer;
 	struct display *display;
 	const struct options *options; /* [scene] model and how to prepare one */
+	struct status_counts *counts;  /* model loads counted here */
 };
 
 struct kiosk_models;
