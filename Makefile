@@ -6,6 +6,7 @@
 #   make deps       install the packages this Debian release names them
 #                   (12 bookworm or 13 trixie; through sudo unless root)
 #   make test-trixie  make deps and make test in a Debian 13 chroot
+#   make test-ansible the Ansible role (contrib/ansible) applied to a fresh root
 
 VERSION    := 0.1.0
 PREFIX     ?= /usr/local
@@ -128,6 +129,7 @@ run: matcap-kiosk
 include tests/tests.mk
 -include tests/vm/vm.mk
 -include tests/cross/cross.mk
+-include tests/cross/ansible.mk
 
 # Package names differ between releases: clang (and its runtime for the
 # fuzzers) is 14 on Debian 12 and 19 on Debian 13; OSMesa only while Mesa
