@@ -63,10 +63,11 @@ LDLIBS    = $(PKG_LIBS) -lmeshoptimizer -ldl -lm
 # The program's sources, minus app/main.c (tests link the same objects),
 # one folder per layer: each includes only the layers listed after it
 # (tests/tools/layers.sh checks that).
-SRC_APP     := app/app app/content app/model_list app/model_loader app/kiosk_models app/kiosk \
-	       app/kiosk_report app/metrics \
-	       app/options app/settings app/power app/reload app/schedule app/screen app/service \
-	       app/status app/import app/signals
+SRC_APP     := app/kiosk_models app/kiosk app/kiosk_report app/reload app/signals
+SRC_OPS     := ops/import ops/metrics ops/screen ops/service ops/status
+SRC_CONTENT := content/content content/matcap_set content/model_list content/model_loader
+SRC_CONFIG  := config/options config/settings
+SRC_STATE   := state/app state/power state/schedule
 SRC_DISPLAY := display/backlight display/cec display/display display/display_egl display/display_kms \
 	       display/display_osmesa \
 	       display/drm display/drm_atomic display/drm_legacy display/egl_util display/hotplug \
@@ -75,12 +76,12 @@ SRC_INPUT   := input/action input/button input/gesture input/touch_decode input/
 	       input/gpio_$(GPIOD_API) input/keyboard input/touch
 SRC_CAMERA  := camera/camera_feed camera/camera_link camera/camera_math camera/camera_proto \
 	       camera/camera_texture
-SRC_RENDER  := render/bake render/gl render/matcap_set render/poster render/render render/shader \
+SRC_RENDER  := render/bake render/gl render/poster render/render render/shader \
 	       render/shading
 SRC_SCENE   := scene/lod scene/material scene/mesh scene/mesh_cache scene/mesh_cache_key scene/mesh_gen scene/mesh_pack scene/subdivide scene/tangent \
 	       scene/texture
 SRC_UTIL    := util/file util/folder_watch util/image util/log util/math3d
-LIB_C  := $(SRC_APP) $(SRC_DISPLAY) $(SRC_INPUT) $(SRC_CAMERA) $(SRC_RENDER) $(SRC_SCENE) $(SRC_UTIL)
+LIB_C  := $(SRC_APP) $(SRC_OPS) $(SRC_CONTENT) $(SRC_CONFIG) $(SRC_STATE) $(SRC_DISPLAY) $(SRC_INPUT) $(SRC_CAMERA) $(SRC_RENDER) $(SRC_SCENE) $(SRC_UTIL)
 # The C++ shims, each behind a C header (gltf_ext.h is internal to the glTF one).
 LIB_CC := scene/gltf scene/gltf_mesh scene/gltf_fs scene/gltf_material scene/gltf_ext scene/gltf_files scene/gltf_pose \
 	  scene/gltf_draco camera/camera

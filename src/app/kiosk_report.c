@@ -1,6 +1,6 @@
 #include "app/kiosk_report.h"
 #include "app/kiosk_state.h"
-#include "app/screen.h"
+#include "ops/screen.h"
 #include "render/shading.h"
 #include "util/clock.h"
 #include "util/log.h"
@@ -12,8 +12,8 @@ static void report(const struct kiosk *k, struct status_report *r, char *last_er
 
 	log_last_error(last_error, n);
 	*r = (struct status_report){
-	    .model = k->scene->model_path,
-	    .matcap = k->scene->set ? matcap_set_path(k->scene->set, st->matcap) : NULL,
+	    .model = k->content->model_path,
+	    .matcap = k->content->set ? matcap_set_path(k->content->set, st->matcap) : NULL,
 	    .mode = shading_mode_name(st->mode),
 	    .view = {st->orientation.x, st->orientation.y, st->orientation.z, st->orientation.w},
 	    .screen_on = !k->screen || screen_on(k->screen),

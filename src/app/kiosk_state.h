@@ -6,13 +6,13 @@
 #ifndef MK_KIOSK_STATE_H
 #define MK_KIOSK_STATE_H
 
-#include "app/app.h"
-#include "app/content.h"
+#include "state/app.h"
+#include "content/content.h"
 #include "app/kiosk_models.h"
-#include "app/metrics.h"
-#include "app/service.h"
-#include "app/settings.h"
-#include "app/status.h"
+#include "ops/metrics.h"
+#include "ops/service.h"
+#include "config/settings.h"
+#include "ops/status.h"
 #include "camera/camera_feed.h"
 #include "display/display.h"
 #include "input/input.h"
@@ -33,7 +33,7 @@ enum input_origin { INPUT_CALLER, INPUT_BUTTON, INPUT_KEYBOARD };
 struct kiosk {
 	struct display *display;
 	struct renderer *renderer;
-	struct content *scene; /* on screen; a reload swaps what it holds */
+	struct content *content; /* on screen; a reload swaps what it holds */
 	char **argv;
 	int argc;
 	bool camera_possible;

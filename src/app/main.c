@@ -7,11 +7,11 @@
 #include "app/kiosk.h"
 #include "app/signals.h"
 #include "util/log.h"
-#include "app/options.h"
+#include "config/options.h"
 #include "render/render.h"
-#include "app/content.h"
-#include "app/import.h"
-#include "app/status.h"
+#include "content/content.h"
+#include "ops/import.h"
+#include "ops/status.h"
 #include "render/poster.h"
 
 #include <errno.h>
@@ -129,7 +129,7 @@ static int run_live(const struct options *o, char **argv, struct content *s, str
 {
 	struct kiosk_parts parts = {.display = d,
 				    .renderer = r,
-				    .scene = s,
+				    .content = s,
 				    .options = o,
 				    .argv = argv,
 				    /* No EGL context (OSMesa), no camera. */
@@ -203,10 +203,10 @@ static bool is_live(const struct options *o)
  * the user named does not load. The live kiosk blocks its signals instead,
  * before any thread starts (the GL driver's): the loop reads them from a
  * signalfd. */
-static int before_display(const struct options *o, struct content *scene)
+static int before_display(const struct options *o, struct content *content)
 {
 	if (!is_live(o))
-		return content_load(scene, &o->content, true);
+		return content_load(content, &o->content, true);
 	signals_block();
 	return 0;
 }
@@ -214,11 +214,11 @@ static int before_display(const struct options *o, struct content *scene)
 /* When auto found no display, the kiosk draws one PNG instead, with no
  * loop for the signals. The kiosk falls back to the built-in model and
  * matcap, and says so. */
-static int after_display(const struct options *o, bool was_live, struct content *scene)
+static int after_display(const struct options *o, bool was_live, struct content *content)
 {
 	if (was_live && !is_live(o))
 		signals_unblock();
-	return scene->mesh.index_count ? 0 : content_load(scene, &o->content, false);
+	return content->mesh.index_count ? 0 : content_load(content, &o->content, false);
 }
 
 /* Something on the screen at once, before the model loads: the poster,
@@ -249,21 +249,21 @@ static int show(struct options *o, char **argv)
 {
 	double start_ms = now_ms();
 	bool live = is_live(o);
-	struct content scene = {0};
+	struct content content = {0};
 	struct display *display = NULL;
 	int posters = 0;
-	int ret = before_display(o, &scene);
+	int ret = before_display(o, &content);
 
 	if (!ret && !(display = open_display(o)))
 		ret = -ENODEV;
 	if (!ret && live && is_live(o))
 		posters = show_poster(o, display);
 	if (!ret)
-		ret = after_display(o, live, &scene);
+		ret = after_display(o, live, &content);
 	if (!ret)
-		ret = run(o, argv, &scene, display, start_ms, posters);
+		ret = run(o, argv, &content, display, start_ms, posters);
 	display_free(display);
-	content_release(&scene);
+	content_release(&content);
 	return ret;
 }
 

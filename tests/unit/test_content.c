@@ -2,8 +2,8 @@
  * the command line that a reload does, and the matcap folder watch. */
 #include "util/folder_watch.h"
 #include "util/log.h"
-#include "app/options.h"
-#include "app/content.h"
+#include "config/options.h"
+#include "content/content.h"
 
 #include <errno.h>
 #include <poll.h>

@@ -5,7 +5,7 @@
  * when due and not before, up 0 at the stop, removed when the settings
  * name another; a folder that is not there logged once. The live file as
  * node_exporter reads it: tests/e2e/metrics.sh. */
-#include "app/metrics.h"
+#include "ops/metrics.h"
 #include "util/clock.h"
 #include "util/log.h"
 

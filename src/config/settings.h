@@ -2,19 +2,19 @@
  * structs of the modules that use the settings, plus the command line's
  * own), the one table that names each setting's option, its [section]
  * key, its type, range and help, and the reload rules of each section.
- * src/app/options.c reads the command line and kiosk.ini through it, so
+ * src/config/options.c reads the command line and kiosk.ini through it, so
  * the two sources cannot drift apart. */
 #ifndef MK_SETTINGS_H
 #define MK_SETTINGS_H
 
-#include "app/app.h"
-#include "app/content.h"
-#include "app/screen.h"
 #include "camera/camera_feed.h"
+#include "config/content_config.h"
+#include "config/screen_config.h"
 #include "display/display.h"
 #include "input/gpio.h"
 #include "input/keyboard.h"
 #include "input/touch.h"
+#include "state/app.h"
 #include "util/log.h"
 
 #include <stdbool.h>
@@ -40,7 +40,7 @@ enum options_section {
 /* What a reload does with a section's settings. */
 enum options_reload {
 	OPTIONS_AT_START, /* read once (the display is opened once): a restart applies them */
-	OPTIONS_LIVE,	  /* applied with the new scene and a fresh app state */
+	OPTIONS_LIVE,	  /* applied with the new content and a fresh app state */
 	OPTIONS_REOPEN,	  /* applied live: its devices are opened again when they changed */
 };
 
@@ -122,6 +122,10 @@ bool option_set_value(struct options *o, const struct option_def *d, const char 
 /* A deep copy; 0 or -ENOMEM (dst then holds nothing to release). */
 int options_copy(struct options *dst, const struct options *src);
 void options_release(struct options *opts);
+/* The same for the content part alone (struct options' content), for
+ * whoever needs only that, such as the model worker. */
+int content_config_copy(struct content_config *dst, const struct content_config *src);
+void content_config_release(struct content_config *c);
 /* Bit (1u << enum options_section) for each section whose settings
  * differ; an at-start section's live_key is not counted. */
 unsigned options_changed(const struct options *a, const struct options *b);

@@ -2,7 +2,7 @@
  * where it is kept in struct options, and what is done with one setting
  * (parse, copy, compare, release). The reload rules are the second
  * table here. */
-#include "app/settings.h"
+#include "config/settings.h"
 
 #include <errno.h>
 #include <math.h>
@@ -351,6 +351,55 @@ int options_copy(struct options *dst, const struct options *src)
 	}
 	if (ret)
 		options_release(dst);
+	return ret;
+}
+
+/* The content part's strings: the table's string settings whose field lies
+ * inside struct options' content, at their offset within it. */
+static bool in_content(const struct option_def *d)
+{
+	size_t at = offsetof(struct options, content);
+
+	return d->kind == K_STRING && d->offset >= at &&
+	       d->offset < at + sizeof(struct content_config);
+}
+
+static size_t content_offset(const struct option_def *d)
+{
+	return d->offset - offsetof(struct options, content);
+}
+
+void content_config_release(struct content_config *c)
+{
+	for (size_t i = 0; i < OPTION_DEFS; i++)
+		if (in_content(&option_defs[i])) {
+			free(get_string((char *)c + content_offset(&option_defs[i])));
+			put_string((char *)c + content_offset(&option_defs[i]), NULL);
+		}
+}
+
+int content_config_copy(struct content_config *dst, const struct content_config *src)
+{
+	int ret = 0;
+
+	*dst = *src;
+	for (size_t i = 0; i < OPTION_DEFS; i++)
+		if (in_content(&option_defs[i]))
+			put_string((char *)dst + content_offset(&option_defs[i]), NULL);
+	for (size_t i = 0; i < OPTION_DEFS && !ret; i++) {
+		char *s;
+
+		if (!in_content(&option_defs[i]))
+			continue;
+		s = get_string((const char *)src + content_offset(&option_defs[i]));
+		if (!s)
+			continue;
+		s = strdup(s);
+		put_string((char *)dst + content_offset(&option_defs[i]), s);
+		ret = s ? 0 : -ENOMEM;
+	}
+	if (ret)
+		content_config_release(dst);
 	return ret;
 }
 

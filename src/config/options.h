@@ -1,9 +1,9 @@
 /* Reading the settings: the command line and kiosk.ini, through the
- * table of src/app/settings.h, into struct options. */
+ * table of src/config/settings.h, into struct options. */
 #ifndef MK_OPTIONS_H
 #define MK_OPTIONS_H
 
-#include "app/settings.h"
+#include "config/settings.h"
 
 #include <stdbool.h>
 #include <stdio.h>

@@ -1,9 +1,9 @@
 /* Reading the settings: the config file (inih) and the command line
- * (getopt_long), both through the table in src/app/settings.c, and
+ * (getopt_long), both through the table in src/config/settings.c, and
  * --help from it. */
-#include "app/options.h"
-#include "app/schedule.h"
-#include "app/settings.h"
+#include "config/options.h"
+#include "state/schedule.h"
+#include "config/settings.h"
 #include "util/log.h"
 
 #include <errno.h>

@@ -1,4 +1,4 @@
-#include "app/metrics.h"
+#include "ops/metrics.h"
 #include "util/clock.h"
 #include "util/file.h"
 #include "util/log.h"

@@ -1,5 +1,5 @@
-#include "app/content.h"
-#include "app/model_list.h"
+#include "content/content.h"
+#include "content/model_list.h"
 #include "render/bake.h"
 #include "scene/gltf.h"
 #include "scene/lod.h"

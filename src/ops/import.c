@@ -1,6 +1,6 @@
-#include "app/import.h"
-#include "app/content.h"
-#include "app/options.h"
+#include "ops/import.h"
+#include "content/content.h"
+#include "config/options.h"
 #include "util/file.h"
 #include "util/log.h"
 
@@ -300,7 +300,7 @@ struct stick_scan {
 	int line, errors;
 };
 
-/* As src/app/options.c reads a file (leading blanks dropped), so that the
+/* As src/config/options.c reads a file (leading blanks dropped), so that the
  * lines counted are the ones it names. */
 static char *scan_line(char *str, int num, void *stream)
 {

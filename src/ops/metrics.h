@@ -7,7 +7,7 @@
 #ifndef MK_METRICS_H
 #define MK_METRICS_H
 
-#include "app/status.h"
+#include "ops/status.h"
 
 #include <stdint.h>
 #include <stdio.h>
