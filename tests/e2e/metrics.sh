@@ -15,12 +15,14 @@
 set -u
 offscreen=${OFFSCREEN_BACKEND:-osmesa}
 kiosk=$1
-model=$(cd "$(dirname "$2")" && pwd)/$(basename "$2")
 dir=$3
 exporter=${4:-prometheus-node-exporter}
 rm -rf "$dir"
-mkdir -p "$dir/textfile"
+mkdir -p "$dir/textfile" "$dir/models"
 dir=$(cd "$dir" && pwd)
+# A copy of its own: the test replaces it, and the kiosk loads it again.
+cp "$2" "$dir/models/model.glb"
+model=$dir/models/model.glb
 # A label value must be escaped: a folder name with a quote and a backslash.
 mc="$dir/mc \"q\" \\b"
 mkdir -p "$mc"
@@ -135,6 +137,25 @@ step "... reloads done 1, failed still 1" sh -c "
 step "... the model shown, in the new mode" scraped \
 	"matcap_kiosk_shown_info{matcap=\"$esc_mc\",mode=\"normal\",model=\"$model\"} 1"
 step "... uptime grows" awk -v t="$(value matcap_kiosk_uptime_seconds)" 'BEGIN { exit !(t > 0) }'
+
+# The model replaced (as a sync tool does: a temporary name, renamed into
+# place): loaded while running, and counted.
+cp "$model" "$dir/models/.model.glb.tmp"
+mv "$dir/models/.model.glb.tmp" "$model"
+step "a model loaded while running is counted" until_true \
+	in_file 'matcap_kiosk_model_loads_total{result="shown"} 1'
+step "scraped again" scrape
+step "... model loads shown 1, failed 0" sh -c "
+	grep -qx 'matcap_kiosk_model_loads_total{result=\"shown\"} 1' '$dir/scrape.txt' &&
+	grep -qx 'matcap_kiosk_model_loads_total{result=\"failed\"} 0' '$dir/scrape.txt'"
+printf 'not a glb' >"$dir/models/.model.glb.tmp"
+mv "$dir/models/.model.glb.tmp" "$model"
+step "a model that fails to load is counted" until_true \
+	in_file 'matcap_kiosk_model_loads_total{result="failed"} 1'
+step "scraped again" scrape
+step "... model loads shown 1, failed 1" sh -c "
+	grep -qx 'matcap_kiosk_model_loads_total{result=\"shown\"} 1' '$dir/scrape.txt' &&
+	grep -qx 'matcap_kiosk_model_loads_total{result=\"failed\"} 1' '$dir/scrape.txt'"
 
 kill -TERM $kiosk_pid
 wait $kiosk_pid
