@@ -64,9 +64,9 @@ LDLIBS    = $(PKG_LIBS) -lmeshoptimizer -ldl -lm
 # one folder per layer: each includes only the layers listed after it
 # (tests/tools/layers.sh checks that).
 SRC_APP     := app/kiosk_models app/kiosk app/kiosk_report app/reload app/signals
-SRC_OPS     := ops/import ops/metrics ops/screen ops/service ops/status
+SRC_OPS     := ops/check ops/import ops/import_ini ops/metrics ops/screen ops/service ops/status
 SRC_CONTENT := content/content content/matcap_set content/model_list content/model_loader
-SRC_CONFIG  := config/options config/settings
+SRC_CONFIG  := config/options config/settings config/settings_origin
 SRC_STATE   := state/app state/power state/schedule
 SRC_DISPLAY := display/backlight display/cec display/display display/display_egl display/display_kms \
 	       display/display_osmesa \
@@ -85,6 +85,7 @@ LIB_C  := $(SRC_APP) $(SRC_OPS) $(SRC_CONTENT) $(SRC_CONFIG) $(SRC_STATE) $(SRC_
 # The C++ shims, each behind a C header (gltf_ext.h is internal to the glTF one).
 LIB_CC := scene/gltf scene/gltf_mesh scene/gltf_fs scene/gltf_material scene/gltf_ext scene/gltf_files scene/gltf_pose \
 	  scene/gltf_draco camera/camera
+LIB_CC += scene/gltf_words
 SHADERS := shaders/mapping.glsl shaders/matcap.vert shaders/matcap.frag shaders/material.glsl
 SHADERS += shaders/camera.vert shaders/camera.frag
 SHADERS += shaders/poster.vert shaders/poster.frag
@@ -153,6 +154,8 @@ DEBIAN_PACKAGES += libdraco-dev draco gltfpack assimp-testmodels
 # The board's USB stick images (tests/e2e/sticks.sh): FAT with files put
 # in by mtools, ext2 by mke2fs -d; no root or loop device needed.
 DEBIAN_PACKAGES += dosfstools mtools e2fsprogs
+# Content by sync (tests/e2e/sync.sh): real rsync into a live kiosk's folder.
+DEBIAN_PACKAGES += rsync
 # [status] metrics scraped from a real node_exporter (tests/e2e/metrics.sh);
 # the Ansible role applied to a fresh root (tests/cross/ansible.sh).
 DEBIAN_PACKAGES += prometheus-node-exporter curl ansible mmdebstrap
@@ -172,6 +175,8 @@ install: matcap-kiosk
 	install -d $(DESTDIR)$(DATADIR)/matcaps
 	install -m 0644 matcaps/*.png $(DESTDIR)$(DATADIR)/matcaps/
 	install -D -m 0644 config/kiosk.ini $(DESTDIR)$(DATADIR)/kiosk.ini.example
+	# Settings in pieces: packages and Ansible roles drop *.ini files here.
+	install -d $(DESTDIR)$(SYSCONFDIR)/matcap-kiosk/kiosk.ini.d
 	# An edited config survives a reinstall.
 	test -e $(DESTDIR)$(SYSCONFDIR)/matcap-kiosk/kiosk.ini || \
 		install -D -m 0644 config/kiosk.ini $(DESTDIR)$(SYSCONFDIR)/matcap-kiosk/kiosk.ini

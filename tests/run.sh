@@ -43,7 +43,9 @@ test_baker
 test_live
 # 10b. Hands-off operation: --status, the poster, --import of a USB stick.
 test_hands
-# 10c. Metrics for Prometheus, scraped from a real node_exporter.
+# 10c. Content by sync: rsync and Syncthing's temporary names.
+test_sync
+# 10d. Metrics for Prometheus, scraped from a real node_exporter.
 test_metrics
 # 11. make install honours PREFIX and DESTDIR; the systemd unit, checked
 #     offline.

@@ -304,9 +304,11 @@ static void reload(struct kiosk *k, uint64_t now_ns)
 	bool done = false;
 
 	service_reloading(false);
+	/* --status names this reload's failure, or none after a good one. */
+	log_clear_last_error();
 	log_info("reload: reading the settings, the model and the matcaps again");
 	if (options_parse(&fresh, k->argc, k->argv) != OPTIONS_OK) {
-		log_err("reload: the settings have errors (above); keeping the scene on screen");
+		reload_failed("the settings have errors");
 		goto out;
 	}
 	if (reload_content(k->content, &fresh.content, k->renderer, k->display->width,

@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 /* A model copied in: act once the copy has been quiet this long. */
 #define MODEL_SETTLE_NS 500000000ull
@@ -30,6 +31,7 @@ struct kiosk_models {
 	uint64_t asked_ns; /* when the job under way was started, for the bench */
 	char *arrived[MAX_ARRIVED];
 	int arrived_count;
+	bool syncing; /* a sync tool is writing into the folder: said once */
 };
 
 static void tell_app(struct kiosk_models *m, int shown)
@@ -205,6 +207,7 @@ static void rescan(struct kiosk_models *m)
 	    model_list_rescan(m->list, m->p.config->model, arrived_path, m, &fresh);
 
 	m->rescan_at = CLOCK_NEVER;
+	m->syncing = false;
 	forget_arrived(m);
 	if (!l)
 		return;
@@ -232,6 +235,17 @@ void kiosk_models_service(struct kiosk_models *m, const struct pollfd fds[2], ui
 	/* The list is the job's while it runs. */
 	if (model_loader_busy(m->loader))
 		return;
+	/* rsync and Syncthing write each file under a temporary name and
+	 * rename it into place; a .gltf may land before its .bin or its
+	 * textures/: the folder is read once nothing is being written. */
+	if (now_ns >= m->rescan_at && m->watch &&
+	    folder_watch_sync_under_way(m->watch, time(NULL))) {
+		if (!m->syncing)
+			log_info("models: a sync is writing into %s: waiting until it is done",
+				 m->p.config->model);
+		m->syncing = true;
+		m->rescan_at = now_ns + MODEL_SETTLE_NS;
+	}
 	if (now_ns >= m->rescan_at)
 		rescan(m);
 	want = app_state(m->p.app)->model;

@@ -12,6 +12,7 @@
 #include "content/content.h"
 #include "ops/import.h"
 #include "ops/status.h"
+#include "ops/check.h"
 #include "render/poster.h"
 
 #include <errno.h>
@@ -177,7 +178,8 @@ out:
 }
 
 /* The exit status: 2 for a bad command line, 78 (EX_CONFIG) for a bad
- * config file, 1 when a model, image or display fails. */
+ * config file, 1 when a model, image or display fails; --check-config
+ * says 66 (EX_NOINPUT) for a named file that is missing or broken. */
 enum exit_code {
 	EXIT_CODE_OK = 0,
 	EXIT_CODE_FAILED = 1,
@@ -267,8 +269,22 @@ static int show(struct options *o, char **argv)
 	return ret;
 }
 
-static enum exit_code parse_failed(enum options_status status)
+/* The settings did not read (each error is above); --check-config ends
+ * with its verdict, as it does when they read. */
+static enum exit_code parse_failed(enum options_status status, int argc, char **argv)
 {
+	const char *name = "the command line";
+	bool check = false;
+
+	for (int i = 1; i < argc && status == OPTIONS_CONFIG; i++) {
+		check |= !strcmp(argv[i], "--check-config");
+		if ((!strcmp(argv[i], "--config") || !strcmp(argv[i], "-C")) && i + 1 < argc)
+			name = argv[i + 1];
+		else if (!strncmp(argv[i], "--config=", 9))
+			name = argv[i] + 9;
+	}
+	if (check)
+		log_err("%s: the settings are not valid (the errors above)", name);
 	return status == OPTIONS_CONFIG ? EXIT_CODE_CONFIG : EXIT_CODE_USAGE;
 }
 
@@ -279,10 +295,8 @@ static enum exit_code tool(struct options *o)
 
 	if (o->status)
 		return status_client_run(stdout) ? EXIT_CODE_FAILED : EXIT_CODE_OK;
-	if (o->check_config) {
-		printf("%s: the settings are valid\n", o->config ? o->config : "the command line");
-		return EXIT_CODE_OK;
-	}
+	if (o->check_config)
+		return (enum exit_code)check_config_run(o, stdout);
 	ret = import_run(o);
 	return ret == -EINVAL ? EXIT_CODE_CONFIG : exit_code(ret);
 }
@@ -311,7 +325,7 @@ int main(int argc, char **argv)
 		return camera_helper_main(CAMERA_HELPER_FD);
 	status = options_parse(&opts, argc, argv);
 	log_set_level(opts.log_level);
-	ret = status == OPTIONS_OK ? start(&opts, argv) : parse_failed(status);
+	ret = status == OPTIONS_OK ? start(&opts, argv) : parse_failed(status, argc, argv);
 	options_release(&opts);
 	return ret;
 }

@@ -239,11 +239,13 @@ const struct option_def option_defs[OPTION_DEFS] = {
     {"poster", 0, OPTIONS_DISPLAY, "poster", K_STRING, AT(poster), 0, 0, 0, NULL, "FILE",
      "a PNG/JPEG shown from the start until the model is ready (default: the background)"},
     {"include", 0, OPTIONS_KIOSK, "include", K_STRING, AT(include), 0, 0, 0, NULL, "FILE",
-     "a second INI file read over this one where it exists (a USB stick's, from --import)"},
+     "a second INI file read over this one and its .d/ files where it exists (a USB stick's, "
+     "from --import)"},
     {"status", 0, OPTION_CLI, NULL, K_FLAG, AT(status), 0, 0, 0, NULL, NULL,
      "ask the running kiosk for its frame (PNG) and state (JSON), print the JSON, exit"},
     {"check-config", 0, OPTION_CLI, NULL, K_FLAG, AT(check_config), 0, 0, 0, NULL, NULL,
-     "read the settings, say what is wrong, and exit (0, or 78 for a bad file)"},
+     "read the settings, load every file they name, say what is wrong, and exit (0 valid, 78 a "
+     "bad setting, 66 a named file missing or broken)"},
     {"import", 0, OPTION_CLI, NULL, K_STRING, AT(import), 0, 0, 0, NULL, "DIR",
      "copy a USB stick's matcap-kiosk/ folder into the content folder, checked first; exit"},
     {"metrics", 0, OPTIONS_STATUS, "metrics", K_STRING, AT(metrics), 0, 0, 0, NULL, "FILE",
@@ -327,6 +329,7 @@ void options_release(struct options *o)
 			free(get_string(field_of(o, &option_defs[i])));
 			put_string(field_of(o, &option_defs[i]), NULL);
 		}
+	options_origins_free(o);
 }
 
 int options_copy(struct options *dst, const struct options *src)
@@ -334,6 +337,7 @@ int options_copy(struct options *dst, const struct options *src)
 	int ret = 0;
 
 	*dst = *src;
+	dst->origins = NULL;
 	for (size_t i = 0; i < OPTION_DEFS; i++)
 		if (option_defs[i].kind == K_STRING)
 			put_string(field_of(dst, &option_defs[i]), NULL);

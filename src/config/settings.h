@@ -76,6 +76,11 @@ struct options {
 	char *poster;  /* [display] poster */
 	char *include; /* [kiosk] include */
 	char *metrics; /* [status] metrics */
+	/* Where each setting came from (file and line), and the files read,
+	 * for --check-config and the messages; NULL: none recorded. Owned;
+	 * options_copy does not copy it (a copy has none). */
+	struct options_origins *origins;
+	bool include_ignored; /* the include had errors: the installed files alone */
 	/* the command line only */
 	char *config;
 	char *import;
@@ -130,5 +135,23 @@ void content_config_release(struct content_config *c);
  * differ; an at-start section's live_key is not counted. */
 unsigned options_changed(const struct options *a, const struct options *b);
 const char *backend_name(enum backend_kind kind);
+
+/* One setting's origin: a file and line, "the command line" (line 0), or
+ * NULL when it has its default. */
+struct options_origin {
+	const char *file;
+	int line;
+};
+
+/* The origin of d's value in o (files as they were named). */
+struct options_origin options_origin(const struct options *o, const struct option_def *d);
+/* Note that d was set by file at line (file NULL: the command line). */
+int options_origin_set(struct options *o, const struct option_def *d, const char *file, int line);
+/* Add file to the list of those read; its copy, or NULL on -ENOMEM. */
+const char *options_origin_file(struct options *o, const char *file);
+/* The files read, in order: the count, and each through *files. */
+int options_files_read(const struct options *o, const char *const **files);
+/* options_release does this; for a reader that starts over. */
+void options_origins_free(struct options *o);
 
 #endif

@@ -61,5 +61,8 @@ struct view content_view(const struct content_config *c);
 /* The matcap folder was changed: open the set again. Returns 0 and
  * replaces s->set, or a negative errno (after logging) and keeps it. */
 int content_rescan_matcaps(struct content *s);
+/* The matcaps shown when none is named: the installed folder, else
+ * ./matcaps (the source tree); NULL: none (the built-in clay). */
+const char *content_default_matcaps(void);
 
 #endif

@@ -92,7 +92,8 @@ static void shown(FILE *f, const struct status_report *r)
 static void last_error(FILE *f, const struct status_report *r)
 {
 	head(f, "last_error_timestamp_seconds", "gauge",
-	     "When the last error was logged, in seconds since the epoch; 0: none yet.");
+	     "When the last error was logged, in seconds since the epoch; 0: none (since the "
+	     "start, or the last reload that went well).");
 	fprintf(f, "matcap_kiosk_last_error_timestamp_seconds %.3f\n", r->last_error_at);
 	if (!r->last_error || !*r->last_error)
 		return;

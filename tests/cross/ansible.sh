@@ -4,8 +4,9 @@
 # ansible through its chroot connection against a fresh Debian root
 # (mmdebstrap, with the python3 every Ansible host needs and systemd, as a
 # Pi's image has), then checked from outside: the package installed from
-# the copied .deb, the settings drop-in with its content (and accepted by
-# the installed kiosk's --check-config), the content copied, the service
+# the copied .deb, the settings drop-in with its content (read after
+# kiosk.ini by the installed kiosk's --check-config, which finds it all
+# valid), the content copied, the service
 # enabled (its symlink in multi-user.target.wants; nothing is started in
 # a chroot), and a second run that changes nothing. Ends with one
 # "N passed, N failed" line. Needs root (the root is a chroot) and the
@@ -78,8 +79,13 @@ check "... with the model, the metrics path and the playbook's settings" awk '
 	s == "[power]" && $0 == "schedule = Mon-Fri 08:00-20:00, Sat 10:00-16:00" { n++ }
 	END { exit n != 4 }' "$dropin"
 check "... readable by the service (0644)" sh -c "stat -c %a '$dropin' | grep -qx 644"
-check "... settings the installed kiosk accepts (--check-config)" in_root \
-	/usr/bin/matcap-kiosk --config /etc/matcap-kiosk/kiosk.ini.d/50-ansible.ini --check-config
+# The kiosk as the service starts it: kiosk.ini, then the drop-ins.
+check "... read by the installed kiosk after kiosk.ini, the model from it, all valid (--check-config)" \
+	in_root sh -c 'out=$(/usr/bin/matcap-kiosk --config /etc/matcap-kiosk/kiosk.ini --check-config 2>&1)
+	rc=$?
+	echo "$out"
+	[ $rc = 0 ] && echo "$out" | grep -q "read /etc/matcap-kiosk/kiosk.ini.d/50-ansible.ini" &&
+		echo "$out" | grep -q "model = /srv/matcap-kiosk.*(/etc/matcap-kiosk/kiosk.ini.d/50-ansible.ini:[0-9]*): loads"'
 for f in cube-textured.glb sphere-material.glb; do
 	check "content copied: /srv/matcap-kiosk/$f" cmp "$work/content/$f" "$root/srv/matcap-kiosk/$f"
 done

@@ -134,6 +134,8 @@ step "scraped again" scrape
 step "... reloads done 1, failed still 1" sh -c "
 	grep -qx 'matcap_kiosk_reloads_total{result=\"done\"} 1' '$dir/scrape.txt' &&
 	grep -qx 'matcap_kiosk_reloads_total{result=\"failed\"} 1' '$dir/scrape.txt'"
+step "... the error cleared by the good reload" same matcap_kiosk_last_error_timestamp_seconds 0
+step "... and its _info gone" sh -c "! grep -q '^matcap_kiosk_last_error_info' '$dir/scrape.txt'"
 step "... the model shown, in the new mode" scraped \
 	"matcap_kiosk_shown_info{matcap=\"$esc_mc\",mode=\"normal\",model=\"$model\"} 1"
 step "... uptime grows" awk -v t="$(value matcap_kiosk_uptime_seconds)" 'BEGIN { exit !(t > 0) }'

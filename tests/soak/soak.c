@@ -102,14 +102,15 @@ static int write_text(const char *path, const char *text)
 static void write_variant(struct script *s, int i)
 {
 	static const char *const text[VARIANTS] = {
-	    "[scene]\nmode = normal\nmodel = %s/sphere.glb\n",
+	    /* Relative: from kiosk.ini's folder, which is o->dir. */
+	    "[scene]\nmode = normal\nmodel = sphere.glb\n",
 	    "[scene]\nmode = sem-fragment\n",
-	    "[scene]\nmodel = %s/no-such-model.glb\n",
+	    "[scene]\nmodel = no-such-model.glb\n",
 	    "[scene]\nmode = phong\n",
 	};
 	char path[4096], body[4096];
 
-	snprintf(body, sizeof(body), text[i % VARIANTS], s->o->dir);
+	snprintf(body, sizeof(body), "%s", text[i % VARIANTS]);
 	path_in(path, sizeof(path), s->o, "kiosk.ini");
 	if (write_text(path, body)) {
 		fprintf(stderr, "soak: cannot write %s\n", path);

@@ -103,7 +103,8 @@ static void config_file_then_command_line(void **state)
 	assert_int_equal(parse(&o, 5, argv), 0);
 	assert_int_equal(o.backend, BACKEND_OSMESA);
 	assert_int_equal(o.content.rotation, 180);
-	assert_string_equal(o.content.model, "a.glb");
+	/* From the file's folder, not the current one. */
+	assert_string_equal(o.content.model, "/tmp/a.glb");
 	assert_true(o.content.ortho);
 	assert_int_equal(o.log_level, LOG_DEBUG);
 	/* The command line wins over the file, wherever --config stands. */
