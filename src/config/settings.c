@@ -25,6 +25,8 @@ const struct options_section_rule options_sections[OPTIONS_SECTIONS] = {
 		       "at once; the screen's power is decided again if this section changed"},
     [OPTIONS_TOUCH] = {"touch", OPTIONS_REOPEN, NULL,
 		       "at once; the touchscreens are opened again if this section changed"},
+    [OPTIONS_STATUS] = {"status", OPTIONS_LIVE, NULL,
+			"at once; a metrics file no longer named is removed"},
 };
 
 static const char *const backend_names[] = {"auto", "kms", "osmesa", "egl-headless", NULL};
@@ -248,6 +250,9 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "bad setting, 66 a named file missing or broken)"},
     {"import", 0, OPTION_CLI, NULL, K_STRING, AT(import), 0, 0, 0, NULL, "DIR",
      "copy a USB stick's matcap-kiosk/ folder into the content folder, checked first; exit"},
+    {"metrics", 0, OPTIONS_STATUS, "metrics", K_STRING, AT(metrics), 0, 0, 0, NULL, "FILE",
+     "write the state every 5 s as a Prometheus text file (FILE.prom, for node_exporter's "
+     "textfile collector)"},
     {"background", 0, OPTIONS_DISPLAY, "background", K_STRING, AT(content.background), 0, 0, 0,
      NULL, "WHAT",
      "behind the model: a colour #rrggbb, a vertical gradient '#top, #bottom', or a PNG/JPEG "
@@ -258,8 +263,8 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "off, 2, 4 or 8"},
     {"matcap-first", 0, OPTIONS_SCENE, "matcap_first", K_STRING, AT(content.matcap_first), 0, 0, 0,
      NULL, "NAME",
-     "the matcap of the folder shown first, by file name (default: gold-brushed, else the "
-     "first by name)"},
+     "the matcap of the folder shown first, by file name (default: the shipped folder "
+     "starts at gold, another at its first by name)"},
     {"zoom", 0, OPTION_CLI, NULL, K_DOUBLE, AT(content.zoom), 0.05, 20, 0, NULL, "Z",
      "draw at this scale of the sphere's framing instead of the one [scene] fit chose (logged "
      "at debug), so stills of other views keep one size"},
