@@ -6,6 +6,7 @@
 #   make deps       install the packages this Debian release names them
 #                   (12 bookworm or 13 trixie; through sudo unless root)
 #   make test-trixie  make deps and make test in a Debian 13 chroot
+#   make test-ansible the Ansible role (contrib/ansible) applied to a fresh root
 
 VERSION    := 0.1.0
 PREFIX     ?= /usr/local
@@ -62,8 +63,9 @@ LDLIBS    = $(PKG_LIBS) -lmeshoptimizer -ldl -lm
 # The program's sources, minus app/main.c (tests link the same objects),
 # one folder per layer: each includes only the layers listed after it
 # (tests/tools/layers.sh checks that).
-SRC_APP     := app/kiosk_models app/kiosk app/kiosk_content app/reload app/signals
-SRC_OPS     := ops/check ops/import ops/import_ini ops/screen ops/service ops/status
+SRC_APP     := app/kiosk_models app/kiosk app/kiosk_content app/kiosk_report app/reload \
+	       app/signals
+SRC_OPS     := ops/check ops/import ops/import_ini ops/metrics ops/screen ops/service ops/status
 SRC_CONTENT := content/content content/matcap_set content/matcap_job content/model_list \
 	       content/model_loader content/worker
 SRC_CONFIG  := config/options config/settings config/settings_origin
@@ -76,7 +78,7 @@ SRC_INPUT   := input/action input/button input/gesture input/touch_decode input/
 	       input/gpio_$(GPIOD_API) input/keyboard input/touch
 SRC_CAMERA  := camera/camera_feed camera/camera_link camera/camera_math camera/camera_proto \
 	       camera/camera_texture
-SRC_RENDER  := render/bake render/gl render/poster render/render render/shader \
+SRC_RENDER  := render/background render/bake render/gl render/poster render/framing render/render render/shader \
 	       render/shading
 SRC_SCENE   := scene/lod scene/material scene/mesh scene/mesh_cache scene/mesh_cache_key scene/mesh_gen scene/mesh_pack scene/subdivide scene/tangent \
 	       scene/texture
@@ -89,6 +91,7 @@ LIB_CC += scene/gltf_words
 SHADERS := shaders/mapping.glsl shaders/matcap.vert shaders/matcap.frag shaders/material.glsl
 SHADERS += shaders/camera.vert shaders/camera.frag
 SHADERS += shaders/poster.vert shaders/poster.frag
+SHADERS += shaders/background.vert shaders/background.frag
 
 LIB_OBJS := $(LIB_C:%=$(BUILD)/%.o) $(LIB_CC:%=$(BUILD)/%.o) $(BUILD)/shaders_embedded.o
 
@@ -131,6 +134,7 @@ run: matcap-kiosk
 include tests/tests.mk
 -include tests/vm/vm.mk
 -include tests/cross/cross.mk
+-include tests/cross/ansible.mk
 
 # Package names differ between releases: clang (and its runtime for the
 # fuzzers) is 14 on Debian 12 and 19 on Debian 13; OSMesa only while Mesa
@@ -155,6 +159,9 @@ DEBIAN_PACKAGES += libdraco-dev draco gltfpack assimp-testmodels
 DEBIAN_PACKAGES += dosfstools mtools e2fsprogs
 # Content by sync (tests/e2e/sync.sh): real rsync into a live kiosk's folder.
 DEBIAN_PACKAGES += rsync
+# [status] metrics scraped from a real node_exporter (tests/e2e/metrics.sh);
+# the Ansible role applied to a fresh root (tests/cross/ansible.sh).
+DEBIAN_PACKAGES += prometheus-node-exporter curl ansible mmdebstrap
 
 deps:
 	$(APT_GET) update -qq

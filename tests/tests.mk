@@ -3,7 +3,8 @@
 #                      N failed" line; VM_E2E=0 leaves the virtual board out
 #   make unit          the unit tests alone, built with ASan and UBSan
 #   make check T=NAME  one test or group by name (tests/check.sh; T= lists them)
-#   make golden        regenerate tests/golden/*.png on purpose (then look at them)
+#   make golden        regenerate tests/golden/*.png and tests/readme/first.png on
+#                      purpose (then look at them)
 #   make bench         speed figures (printed, never asserted); make report
 
 UNIT_TESTS  := options mesh image gltf gltf_ext shading app button content service
@@ -14,7 +15,7 @@ UNIT_TESTS  += base_color
 UNIT_TESTS  += drm gesture touch_decode schedule power cec backlight
 UNIT_TESTS  += touch_device app_touch
 UNIT_TESTS  += model_list gltf_words settings_files
-UNIT_TESTS  += status poster file
+UNIT_TESTS  += status poster file metrics background framing
 UNIT_TESTS  += kiosk_reload
 TOOLS_DIR   := $(BUILD)/tools
 ASAN_BUILD  := $(BUILD)/asan
@@ -163,8 +164,14 @@ check:
 
 golden: $(KIOSK) test-tools
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/golden/golden.sh tests/golden
+	$(MAKE) readme
 
-.PHONY: unit-tests test-tools asan asan-kiosk asan-unit tsan test unit check golden
+# The README's first picture: what `make run` draws with no settings on a
+# machine with no display (the frame it writes), through the offscreen backend.
+readme: $(KIOSK)
+	./$(KIOSK) -q --backend $(OFFSCREEN_BACKEND) --output tests/readme/first.png
+
+.PHONY: unit-tests test-tools asan asan-kiosk asan-unit tsan test unit check golden readme
 
 include tests/fuzz/fuzz.mk
 include tests/soak/soak.mk

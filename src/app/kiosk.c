@@ -1,5 +1,6 @@
 #include "app/kiosk.h"
-#include "app/kiosk_private.h"
+#include "app/kiosk_report.h"
+#include "app/kiosk_state.h"
 #include "app/signals.h"
 #include "state/app.h"
 #include "app/kiosk_models.h"
@@ -164,7 +165,8 @@ static int draw(struct kiosk *k, uint64_t now)
 
 	sync_mode(k, st->mode);
 	k->view.orientation = st->orientation;
-	k->view.zoom = (float)st->zoom;
+	/* Pinching scales the fitted picture ([scene] fit). */
+	k->view.zoom = (float)(st->zoom * (k->content->zoom > 0 ? k->content->zoom : 1.0));
 	/* Not connected, or waiting for the display: stay dirty, the display
 	 * asks for a redraw through dispatch() when it is back. */
 	k->display_absent = true;
@@ -192,7 +194,8 @@ static int draw(struct kiosk *k, uint64_t now)
 static void start_models(struct kiosk *k, uint64_t now_ns)
 {
 	struct kiosk_models_parts parts = {k->app,     k->content,	    k->renderer,
-					   k->display, &k->applied.content, k->worker};
+					   k->display, &k->applied.content, k->worker,
+					   &k->counts};
 
 	kiosk_models_free(k->models);
 	k->models = kiosk_models_new(&parts, now_ns);
@@ -257,6 +260,7 @@ void kiosk_apply_reload(struct kiosk *k, uint64_t now_ns)
 {
 	unsigned reopen = reload_reopen(&k->started, &k->applied, &k->reload.fresh);
 
+	metrics_follow(&k->metrics, k->reload.fresh.metrics);
 	options_release(&k->applied);
 	k->applied = k->reload.fresh;
 	memset(&k->reload.fresh, 0, sizeof(k->reload.fresh)); /* k->applied owns it now */
@@ -265,6 +269,7 @@ void kiosk_apply_reload(struct kiosk *k, uint64_t now_ns)
 		touch_set_rotation(k->touch, k->applied.content.rotation);
 	reopen_devices(k, reopen);
 	log_info("reload: done (%ld frames drawn meanwhile)", k->frames_drawn - k->reload_frames);
+	k->counts.reloads++;
 }
 
 /* SIGHUPs queued together are one reload. */
@@ -409,33 +414,6 @@ static int service_display(struct kiosk *k, const struct pollfd *fds)
 	return 0;
 }
 
-/* --status asked: the state, and the frame on screen read back now. */
-static void service_status(struct kiosk *k, const struct pollfd *fds)
-{
-	const struct app_state *st = app_state(k->app);
-	struct image frame = {0};
-	char last_error[1024];
-	struct status_report r = {
-	    .model = k->content->model_path,
-	    .matcap = k->content->set ? matcap_set_path(k->content->set, st->matcap) : NULL,
-	    .mode = shading_mode_name(st->mode),
-	    .view = {st->orientation.x, st->orientation.y, st->orientation.z, st->orientation.w},
-	    .screen_on = awake(k),
-	    .camera_on = st->camera_on,
-	    .uptime_s = (double)(monotonic_ns() - k->started_ns) / 1e9,
-	    .frames_drawn = k->frames_drawn,
-	    .last_error = last_error};
-	bool have;
-
-	if (!(fds[FD_STATUS].revents & POLLIN) || !status_server_accept(k->status))
-		return;
-	log_last_error(last_error, sizeof(last_error));
-	have = k->frames_drawn > 0 && status_server_wants_frame(k->status) &&
-	       k->display->read_frame(k->display, &frame) == 0;
-	status_server_answer(k->status, &r, have ? &frame : NULL);
-	image_release(&frame);
-}
-
 static void note_step(struct kiosk *k)
 {
 	uint64_t step = k->woke_ns ? monotonic_ns() - k->woke_ns : 0;
@@ -466,7 +444,7 @@ static int loop_once(struct kiosk *k, int sig_fd)
 	if (k->screen)
 		next = earliest(next, screen_deadline(k->screen, now), CLOCK_NEVER);
 	next = earliest(next, k->rescan_at, service_deadline(&k->service));
-	next = earliest(next, kiosk_models_deadline(k->models), CLOCK_NEVER);
+	next = earliest(next, kiosk_models_deadline(k->models), metrics_deadline(k->metrics));
 	n = fill_fds(k, fds, sig_fd);
 	note_step(k);
 	if (poll(fds, (nfds_t)n, poll_timeout_ms(k, next, now)) < 0 && errno != EINTR)
@@ -483,7 +461,9 @@ static int loop_once(struct kiosk *k, int sig_fd)
 	if ((ret = service_display(k, fds)))
 		return ret;
 	service_camera(k, fds[FD_CAMERA].revents);
-	service_status(k, fds);
+	if (fds[FD_STATUS].revents & POLLIN)
+		kiosk_report_status(k);
+	kiosk_report_metrics(k, monotonic_ns(), false);
 	kiosk_service_matcaps(k, fds, monotonic_ns());
 	service_inputs(k, fds, monotonic_ns());
 	service_touch(k, fds, monotonic_ns());
@@ -503,11 +483,13 @@ int kiosk_run(struct kiosk *k)
 	}
 	service_init(&k->service, monotonic_ns());
 	k->status = status_server_new();
+	metrics_follow(&k->metrics, k->applied.metrics);
 	while (!(ret = loop_once(k, sig_fd)))
 		;
 	service_stopping();
 	log_info("loop: the longest step between two sleeps took %.1f ms",
 		 (double)k->longest_step_ns / 1e6);
+	kiosk_report_metrics(k, monotonic_ns(), true);
 	status_server_free(k->status);
 	k->status = NULL;
 	close(sig_fd);
@@ -528,6 +510,7 @@ struct kiosk *kiosk_new(const struct kiosk_parts *p, uint64_t now_ns)
 		k->argc++;
 	k->camera_possible = p->camera_possible;
 	k->started_ns = now_ns;
+	k->started_at = (double)clock_ns(CLOCK_REALTIME) / 1e9;
 	/* The renderer already holds the mode. */
 	k->shown_mode = p->options->content.mode;
 	k->shown_ortho = p->options->content.ortho;
@@ -554,6 +537,7 @@ void kiosk_free(struct kiosk *k)
 	/* The worker first: a job under way is its until joined. */
 	kiosk_content_stop(k);
 	kiosk_models_free(k->models);
+	metrics_free(k->metrics);
 	app_free(k->app);
 	options_release(&k->started);
 	options_release(&k->applied);

@@ -4,7 +4,7 @@
  * uploaded here, on the loop thread, where GL is. Model switches are the
  * worker's jobs too (kiosk_models.c). One job at a time: a reload first,
  * then a matcap, then a model, then the release of what was swapped out. */
-#include "app/kiosk_private.h"
+#include "app/kiosk_state.h"
 #include "util/clock.h"
 #include "util/log.h"
 
@@ -19,6 +19,7 @@ static void reload_ready(void *ctx)
 	int ret = reload_finish(&k->reload, k->content, k->renderer, &old);
 
 	if (ret) {
+		k->counts.reload_failures++;
 		/* Loaded but not uploaded: the matcap's texture may be the new
 		 * one's, or none; the one shown is decoded again. */
 		if (k->reload.ret == 0)
@@ -83,8 +84,10 @@ static void start_reload(struct kiosk *k)
 	log_info("reload: reading the settings, the model and the matcaps again");
 	k->reload_frames = k->frames_drawn;
 	if (reload_start(&k->reload, k->worker, k->argc, k->argv, k->display->width,
-			 k->display->height))
+			 k->display->height)) {
+		k->counts.reload_failures++;
 		service_reloading(true);
+	}
 }
 
 /* Decoding a matcap is done when it is shown, so a folder of many large

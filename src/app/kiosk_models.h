@@ -10,6 +10,7 @@
 #include "content/content.h"
 #include "content/worker.h"
 #include "config/content_config.h"
+#include "ops/status.h"
 #include "display/display.h"
 #include "render/render.h"
 
@@ -24,6 +25,7 @@ struct kiosk_models_parts {
 	struct display *display;
 	const struct content_config *config; /* [scene] model and how to prepare one */
 	struct worker *worker;		     /* the content worker, shared with the loop */
+	struct status_counts *counts;	     /* model loads counted here */
 };
 
 struct kiosk_models;

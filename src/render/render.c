@@ -1,4 +1,5 @@
 #include "render/render.h"
+#include "render/background.h"
 #include "util/log.h"
 #include "render/shader.h"
 #include "scene/texture.h"
@@ -41,10 +42,11 @@ struct renderer {
 	enum vertex_format drawn;  /* of the arrays uploaded */
 	float position_scale;	   /* int16 positions: the model units of 1.0 */
 	enum matcap_filter matcap_filter;
-	bool matcap_mippable;  /* the image texture's size can have a chain */
-	bool matcap_has_mips;  /* it has its mipmap chain */
-	int matcap_side;       /* its shorter side, texels */
-	bool matcap_mipmapped; /* its minifying filter now reads the chain */
+	bool matcap_mippable;	       /* the image texture's size can have a chain */
+	bool matcap_has_mips;	       /* it has its mipmap chain */
+	int matcap_side;	       /* its shorter side, texels */
+	bool matcap_mipmapped;	       /* its minifying filter now reads the chain */
+	struct background *background; /* NULL: the view's clear colour */
 };
 
 struct renderer *renderer_new(const struct gl *gl, const char *shader_dir)
@@ -100,6 +102,7 @@ void renderer_free(struct renderer *r)
 	drop_texture(r->gl, &r->detail);
 	drop_texture(r->gl, &r->ramp);
 	drop_texture(r->gl, &r->base_map);
+	background_free(r->background);
 	free(r);
 }
 
@@ -274,6 +277,18 @@ int renderer_set_matcap(struct renderer *r, const struct image *img)
 				   : (img->width < img->height ? img->width : img->height);
 	image_release(&pot);
 	return ret;
+}
+
+int renderer_set_background(struct renderer *r, const struct background_spec *s,
+			    const struct image *img)
+{
+	struct background *b = background_new(r->gl, s, img);
+
+	if (!b)
+		return -EINVAL;
+	background_free(r->background);
+	r->background = b;
+	return 0;
 }
 
 void renderer_set_matcap_filter(struct renderer *r, enum matcap_filter filter)
@@ -550,8 +565,12 @@ void renderer_draw(struct renderer *r, const struct view *v, int width, int heig
 	const struct gl *gl = r->gl;
 	int vp[4] = {0, 0, width, height};
 
-	gl->ClearColor(v->background[0], v->background[1], v->background[2], 1.0f);
-	gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+	if (r->background) {
+		background_draw(r->background, width, height, v->rotation);
+	} else {
+		gl->ClearColor(v->background[0], v->background[1], v->background[2], 1.0f);
+		gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+	}
 	if (!r->current || !r->draw_count)
 		return;
 	gl->Enable(GL_DEPTH_TEST);

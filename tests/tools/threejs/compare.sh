@@ -80,12 +80,14 @@ three() {
 }
 
 # kiosk NAME ARGS: the kiosk's picture at the resting view, every triangle
-# drawn (three.js draws the whole mesh).
+# drawn (three.js draws the whole mesh); zoom: the scale [scene] fit chose
+# for it (src/render/framing.c), which the page's camera takes as its zoom.
 kiosk() {
 	name=$1
 	shift
-	./matcap-kiosk -q -b osmesa --size "$size" -c "$matcap" --lod-pixels 0 \
-		--output "$out/$name-kiosk.png" "$@"
+	./matcap-kiosk -v -b osmesa --size "$size" -c "$matcap" --lod-pixels 0 \
+		--output "$out/$name-kiosk.png" "$@" 2>"$out/$name-kiosk.log"
+	zoom=$(sed -n 's/.*framing: zoom \([0-9.]*\).*/\1/p' "$out/$name-kiosk.log")
 }
 
 fail=0
@@ -96,7 +98,7 @@ fail=0
 while IFS='|' read -r name model share kopt query; do
 	# shellcheck disable=SC2086 # kopt is zero or two words
 	kiosk "$name" --model "$www/models/$model" $kopt
-	three "$name" "model=models/$model$query" || {
+	three "$name" "model=models/$model$query&zoom=${zoom:-1}" || {
 		fail=1
 		continue
 	}

@@ -17,6 +17,9 @@ const height = parseInt(q.get('h') || '240', 10);
 const yaw = parseFloat(q.get('yaw') || '-30');
 const pitch = parseFloat(q.get('pitch') || '20');
 const baseColor = (q.get('basecolor') || 'auto') !== 'off';
+// [scene] fit's scale of the picture, as the kiosk logged it: three.js's
+// camera zoom scales the frustum exactly as the kiosk's clip space.
+const zoom = parseFloat(q.get('zoom') || '1');
 const out = document.getElementById('out');
 
 function fitDistance(aspect) {
@@ -92,6 +95,8 @@ async function main() {
 	const dist = fitDistance(aspect);
 	const camera = new THREE.PerspectiveCamera(FOV_Y_DEGREES, aspect, dist - 1.5, dist + 1.5);
 	camera.position.set(0, 0, dist);
+	camera.zoom = zoom;
+	camera.updateProjectionMatrix();
 
 	renderer.render(scene, camera);
 	out.textContent = renderer.domElement.toDataURL('image/png');

@@ -1,36 +1,42 @@
-/* The live loop's own state, shared by kiosk.c (the loop, the inputs,
- * the display) and kiosk_content.c (the content worker's jobs: reload,
- * matcap, the matcap folder). Nothing outside src/app/kiosk*.c includes it. */
-#ifndef MK_KIOSK_PRIVATE_H
-#define MK_KIOSK_PRIVATE_H
+/* The live loop's state, shared by the files that make up the loop:
+ * src/app/kiosk.c (the loop, the devices, a reload applied),
+ * src/app/kiosk_content.c (the content worker's jobs) and
+ * src/app/kiosk_report.c (what --status and the metrics say). Nothing
+ * else includes it: the rest of the program sees struct kiosk as opaque
+ * (src/app/kiosk.h). */
+#ifndef MK_KIOSK_STATE_H
+#define MK_KIOSK_STATE_H
 
+#include "state/app.h"
+#include "content/content.h"
 #include "app/kiosk_models.h"
 #include "app/reload.h"
 #include "content/matcap_job.h"
 #include "content/worker.h"
-#include "ops/screen.h"
+#include "ops/metrics.h"
 #include "ops/service.h"
+#include "config/settings.h"
 #include "ops/status.h"
 #include "camera/camera_feed.h"
-#include "state/app.h"
-#include "util/folder_watch.h"
-#include "config/options.h"
 #include "display/display.h"
 #include "input/input.h"
+#include "input/touch.h"
 #include "render/render.h"
+#include "util/folder_watch.h"
 
 #include <poll.h>
 #include <stdbool.h>
 #include <stdint.h>
 
+/* Input sources at most (kiosk_add_input). */
 #define KIOSK_MAX_INPUTS 16
-
-#define MAX_EVENTS 32
+#define MAX_EVENTS	 32
 
 /* Matcaps being copied into the folder: act once the copy has been quiet
  * this long, so a burst of files is one rescan. */
 #define MATCAP_SETTLE_NS 500000000ull
 
+/* The loop's descriptors, in poll()'s array. */
 enum {
 	FD_SIGNAL,
 	FD_DISPLAY,
@@ -75,7 +81,10 @@ struct kiosk {
 	struct camera_feed *camera;   /* the live camera; NULL: none */
 	struct screen *screen;	      /* its power; NULL: always on */
 	struct status_server *status; /* --status; NULL: not reachable */
+	struct metrics *metrics;      /* [status] metrics; NULL: none */
+	struct status_counts counts;
 	uint64_t started_ns;
+	double started_at;	     /* the wall clock's seconds then, for the metrics */
 	struct touch *touch;	     /* the touchscreens; NULL: off */
 	struct kiosk_models *models; /* a folder or list of models; NULL: one, unwatched */
 	/* The content worker and its jobs other than a model switch's. */
@@ -93,17 +102,19 @@ struct kiosk {
 };
 
 void kiosk_tell_app(struct kiosk *k, enum app_msg_kind kind);
-/* kiosk_content.c */
+/* src/app/kiosk_content.c: the content worker's jobs (reload, matcap,
+ * the matcap folder). */
 int kiosk_content_start(struct kiosk *k);
 void kiosk_content_stop(struct kiosk *k);
-/* Jobs done are handed on, the next one started when the worker is idle.
- * True when a reload was applied (the devices may be new). */
-bool kiosk_content_service(struct kiosk *k, const struct pollfd *fds);
 void kiosk_content_reload(struct kiosk *k);
+/* Before the loop sleeps: the next job, when the worker is idle. */
 void kiosk_content_start_jobs(struct kiosk *k);
+/* A job done is handed on. True when a reload was applied (the devices
+ * may be new). */
+bool kiosk_content_service(struct kiosk *k, const struct pollfd *fds);
 void kiosk_watch_matcaps(struct kiosk *k);
 void kiosk_service_matcaps(struct kiosk *k, const struct pollfd *fds, uint64_t now);
-/* kiosk.c: the settings of a reload whose content is on the GPU now. */
+/* src/app/kiosk.c: the settings of a reload whose content is on the GPU now. */
 void kiosk_apply_reload(struct kiosk *k, uint64_t now_ns);
 
 #endif
