@@ -476,9 +476,12 @@ int content_upload(struct content *s, struct renderer *r)
 		ret = renderer_set_background(r, &s->background, &s->background_image);
 	if (!ret)
 		ret = renderer_set_matcap(r, &s->matcap);
-	/* A texture now; the matcap shown next is decoded on the worker. */
-	if (!ret)
+	/* Textures now: the matcap shown next is decoded on the worker, the
+	 * background again at a reload. */
+	if (!ret) {
 		image_release(&s->matcap);
+		image_release(&s->background_image);
+	}
 	return ret;
 }
 

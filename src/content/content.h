@@ -49,9 +49,9 @@ void content_release(struct content *s);
  * The start and a reload do the same, so a reload shows what a restart
  * would. */
 int content_prepare(struct content *s, const struct content_config *c, int width, int height);
-/* Hand the mesh and the first matcap to the renderer; the matcap's
- * decoded image is then given back (matcap is left empty), so a second
- * upload of s is content_upload_model's. */
+/* Hand the mesh, the background and the first matcap to the renderer;
+ * the matcap's and the background's decoded images are then given back
+ * (left empty), so a second upload of s is content_upload_model's. */
 int content_upload(struct content *s, struct renderer *r);
 /* Another model of a folder or list, for a worker thread: the model of
  * path alone (no matcaps), loaded strictly and prepared for a width x
