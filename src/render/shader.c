@@ -62,7 +62,8 @@ int shader_source_matcap(struct shader_source *s, const char *dir, unsigned feat
 	} feature_defines[] = {
 	    {MATERIAL_IRIDESCENCE, "IRIDESCENCE"}, {MATERIAL_RAMP, "IRIDESCENCE_RAMP"},
 	    {MATERIAL_DETAIL, "DETAIL_MAP"},	   {MATERIAL_DETAIL_NORMAL, "DETAIL_NORMAL"},
-	    {MATERIAL_BASE_COLOR, "BASE_COLOR"},   {MATERIAL_BASE_MAP, "BASE_MAP"}};
+	    {MATERIAL_BASE_COLOR, "BASE_COLOR"},   {MATERIAL_BASE_MAP, "BASE_MAP"},
+	    {MATERIAL_ALPHA_MASK, "ALPHA_MASK"},   {MATERIAL_ALPHA_BLEND, "ALPHA_BLEND"}};
 	int ret;
 
 	/* The lit mode compares shapes: it keeps its own grey. */

@@ -106,14 +106,19 @@ static void factor_colour_map_and_transform(void **state)
 					 factor[k] * f->sphere.colors[v * 4 + k]) < 1e-6);
 		assert_true(m.colors[v * 4 + 3] == 1.0f); /* the map applies */
 	}
-	assert_int_equal(m.material.base_map.width, 6);
+	/* The map is its range's material's (one here). */
+	assert_int_equal(m.range_count, 1);
+	assert_int_equal(m.material_count, 1);
+	assert_int_equal(m.materials[0].base_map.width, 6);
 	for (int k = 0; k < 6; k++)
-		assert_true(fabs(m.material.base_transform[k] - want[k]) < 1e-6);
+		assert_true(fabs(m.materials[0].base_transform[k] - want[k]) < 1e-6);
 	assert_int_equal(material_load(&mat, &cfg, &m, true), 0);
 	assert_int_equal(mat.features, MATERIAL_BASE_COLOR | MATERIAL_BASE_MAP);
-	assert_int_equal(mat.base_map.width, 8); /* power-of-two sides, to repeat */
-	assert_int_equal(mat.base_map.height, 4);
-	assert_true(mat.base_transform[4] == 0.25f && mat.base_transform[5] == -0.5f);
+	assert_int_equal(mat.surface_count, 1);
+	assert_int_equal(mat.surfaces[0].base_map.width, 8); /* power-of-two sides, to repeat */
+	assert_int_equal(mat.surfaces[0].base_map.height, 4);
+	assert_true(mat.surfaces[0].base_transform[4] == 0.25f &&
+		    mat.surfaces[0].base_transform[5] == -0.5f);
 	material_release(&mat);
 	mesh_release(&m);
 	/* Off: neither the colours nor the map are read, nothing is on. */
@@ -121,7 +126,7 @@ static void factor_colour_map_and_transform(void **state)
 	assert_int_equal(material_gltf_textures(&cfg) & GLTF_TEXTURE_BASE_COLOR, 0);
 	assert_int_equal(gltf_load_textures(path, material_gltf_textures(&cfg), &m), 0);
 	assert_null(m.colors);
-	assert_true(m.material.has_base_map && !m.material.base_map.width);
+	assert_true(m.material.has_base_map && !m.materials[0].base_map.width);
 	assert_int_equal(material_load(&mat, &cfg, &m, true), 0);
 	assert_int_equal(mat.features, 0);
 	material_release(&mat);
@@ -214,7 +219,7 @@ static void tex_coord_picks_the_uv_set(void **state)
 	assert_int_equal(gltf_load_textures(path, GLTF_TEXTURE_BASE_COLOR, &m), 0);
 	assert_non_null(m.uvs);
 	assert_memory_equal(m.uvs, f->sphere.uvs, (size_t)m.vertex_count * 8);
-	assert_int_equal(m.material.base_map.width, 6);
+	assert_int_equal(m.materials[0].base_map.width, 6);
 	mesh_release(&m);
 	/* Without the base colour, TEXCOORD_0 is what is read: none here. */
 	assert_int_equal(gltf_load_textures(path, 0, &m), 0);
@@ -227,7 +232,7 @@ static void tex_coord_picks_the_uv_set(void **state)
 	assert_true(m.material.has_colors);
 	assert_true(fabsf(m.material.color[0] - 0.8f) < 1e-6f);
 	assert_null(m.uvs);
-	assert_int_equal(m.material.base_map.width, 0);
+	assert_int_equal(m.materials[0].base_map.width, 0);
 	mesh_release(&m);
 	/* A normal map asked for needs TEXCOORD_0: it wins, the base map on
 	 * TEXCOORD_1 is left out (a warning). */
@@ -237,7 +242,7 @@ static void tex_coord_picks_the_uv_set(void **state)
 	    gltf_load_textures(path, GLTF_TEXTURE_BASE_COLOR | GLTF_TEXTURE_NORMAL, &m), 0);
 	assert_non_null(m.uvs);
 	assert_int_equal(m.material.normal_map.width, 6);
-	assert_int_equal(m.material.base_map.width, 0);
+	assert_int_equal(m.materials[0].base_map.width, 0);
 	mesh_release(&m);
 }
 
