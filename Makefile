@@ -73,7 +73,7 @@ SRC_INPUT   := input/action input/button input/gesture input/touch_decode input/
 	       input/gpio_$(GPIOD_API) input/keyboard input/touch
 SRC_CAMERA  := camera/camera_feed camera/camera_link camera/camera_math camera/camera_proto \
 	       camera/camera_texture
-SRC_RENDER  := render/bake render/draw_list render/gl render/matcap_set render/poster render/render render/shader \
+SRC_RENDER  := render/bake render/draw_list render/gl render/matcap_set render/poster render/render render/render_draw render/shader \
 	       render/shading
 SRC_SCENE   := scene/lod scene/material scene/mesh scene/mesh_cache scene/mesh_cache_fields scene/mesh_cache_key scene/mesh_gen scene/mesh_pack scene/subdivide scene/tangent \
 	       scene/texture

@@ -6,7 +6,9 @@
 #include "util/log.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <cstdlib>
 #include <string>
 
@@ -177,7 +179,48 @@ void read_alpha(const tinygltf::Material &mat, const std::string &name, struct m
 	out->double_sided = mat.doubleSided;
 }
 
+bool is_blend(const tinygltf::Model &m, int material)
+{
+	return material >= 0 && m.materials[(size_t)material].alphaMode == "BLEND";
+}
+
 } // namespace
+
+int gltf_group_ranges(const tinygltf::Model &m, const std::vector<GltfPart> &prims,
+		      const uint32_t *indices, struct mesh *out, std::vector<int> *slots_out)
+{
+	std::vector<int> slots;
+	std::vector<std::vector<size_t>> parts; // per slot: its primitives
+	for (size_t i = 0; i < prims.size(); i++) {
+		if (!prims[i].index_count)
+			continue;
+		size_t k = std::find(slots.begin(), slots.end(), prims[i].material) - slots.begin();
+		if (k == slots.size()) {
+			slots.push_back(prims[i].material);
+			parts.emplace_back();
+		}
+		parts[k].push_back(i);
+	}
+	size_t count = 0;
+	for (size_t k = 0; k < slots.size(); k++)
+		count += is_blend(m, slots[k]) ? parts[k].size() : 1;
+	if (mesh_alloc_ranges(out, (uint32_t)count, (uint32_t)slots.size()))
+		return -ENOMEM;
+	uint32_t at = 0, r = 0;
+	for (size_t k = 0; k < slots.size(); k++)
+		for (size_t j = 0; j < parts[k].size(); j++) {
+			const GltfPart &p = prims[parts[k][j]];
+			if (j == 0 || is_blend(m, slots[k]))
+				out->ranges[r++] = {at, 0, (uint32_t)k, {0, 0, 0}};
+			std::memcpy(out->indices + at, indices + p.first_index,
+				    p.index_count * sizeof(uint32_t));
+			at += p.index_count;
+			out->ranges[r - 1].index_count += p.index_count;
+		}
+	*slots_out = slots;
+	mesh_range_centers(out);
+	return 0;
+}
 
 bool gltf_primitive_base(const tinygltf::Model &m, int material, float rgba[4])
 {

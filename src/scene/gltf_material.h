@@ -43,6 +43,22 @@ void gltf_keep_colors(struct mesh *out, const float uniform[4]);
 // is asked for and no other texture asked for needs TEXCOORD_0; else 0.
 int gltf_uv_set(const tinygltf::Model &m, int material, unsigned textures);
 
+// A primitive's triangles in the builder's index array, and its material
+// (-1: none).
+struct GltfPart {
+	uint32_t first_index, index_count;
+	int material;
+};
+
+// The primitives' triangles into out's indices, grouped by material in the
+// order materials are first used: one range for every opaque or masked
+// material (one draw each, however many primitives share it), one per
+// primitive for a blended one (ordered back to front as the model turns).
+// slots[k]: the glTF material of out->materials[k], for gltf_read_material.
+// Returns 0 or -ENOMEM.
+int gltf_group_ranges(const tinygltf::Model &m, const std::vector<GltfPart> &parts,
+		      const uint32_t *indices, struct mesh *out, std::vector<int> *slots);
+
 // Fill out from material `index` (-1: none). textures: enum gltf_texture
 // bits asked for (they chose the UV set: gltf_uv_set); of those, decode
 // the ones in `decode`. A texture that cannot be used is logged as a

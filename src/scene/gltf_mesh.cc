@@ -529,52 +529,6 @@ bool has_extent(const std::vector<double> &p)
 	return false;
 }
 
-bool is_blend(const tinygltf::Model &m, int material)
-{
-	return material >= 0 && m.materials[(size_t)material].alphaMode == "BLEND";
-}
-
-// The primitives' triangles grouped by material, in the order materials
-// are first used: one range for every opaque or masked material (one draw
-// each, however many primitives share it), one per primitive for a
-// blended one (ordered back to front as the model turns). slot[k] is the
-// glTF material of out->materials[k] (-1: none), for gltf_read_material.
-int group_ranges(Builder &b, const tinygltf::Model &m, struct mesh *out)
-{
-	std::vector<int> slots;
-	std::vector<std::vector<size_t>> parts; // per slot: its primitives
-	for (size_t i = 0; i < b.ranges.size(); i++) {
-		if (!b.ranges[i].index_count)
-			continue;
-		size_t k =
-		    std::find(slots.begin(), slots.end(), b.ranges[i].material) - slots.begin();
-		if (k == slots.size()) {
-			slots.push_back(b.ranges[i].material);
-			parts.emplace_back();
-		}
-		parts[k].push_back(i);
-	}
-	size_t count = 0;
-	for (size_t k = 0; k < slots.size(); k++)
-		count += is_blend(m, slots[k]) ? parts[k].size() : 1;
-	if (mesh_alloc_ranges(out, (uint32_t)count, (uint32_t)slots.size()))
-		return -ENOMEM;
-	uint32_t at = 0, r = 0;
-	for (size_t k = 0; k < slots.size(); k++)
-		for (size_t j = 0; j < parts[k].size(); j++) {
-			const Range &p = b.ranges[parts[k][j]];
-			if (j == 0 || is_blend(m, slots[k]))
-				out->ranges[r++] = {at, 0, (uint32_t)k, {0, 0, 0}};
-			std::memcpy(out->indices + at, b.indices.data() + p.first_index,
-				    p.index_count * sizeof(uint32_t));
-			at += p.index_count;
-			out->ranges[r - 1].index_count += p.index_count;
-		}
-	b.slots = slots;
-	mesh_range_centers(out);
-	return 0;
-}
-
 int finish_mesh(Builder &b, const tinygltf::Model &m, struct mesh *out)
 {
 	uint32_t nv = (uint32_t)(b.positions.size() / 3);
@@ -593,7 +547,10 @@ int finish_mesh(Builder &b, const tinygltf::Model &m, struct mesh *out)
 	mesh_fit_positions(b.positions.data(), nv, out->positions);
 	std::memcpy(out->normals, b.normals.data(), b.normals.size() * sizeof(float));
 	std::memcpy(out->indices, b.indices.data(), b.indices.size() * sizeof(uint32_t));
-	if (group_ranges(b, m, out)) {
+	std::vector<GltfPart> parts;
+	for (const Range &r : b.ranges)
+		parts.push_back({r.first_index, r.index_count, r.material});
+	if (gltf_group_ranges(m, parts, b.indices.data(), out, &b.slots)) {
 		mesh_release(out);
 		return -ENOMEM;
 	}
