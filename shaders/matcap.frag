@@ -72,6 +72,11 @@ void main()
 #else
 	SHADE_P vec3 n = safe_normalize(v_normal);
 	SHADE_P vec3 e = safe_normalize(v_eye);
+#ifdef DOUBLE_SIDED
+	// A back face shows its other side: its normal turned, as glTF says.
+	if (!gl_FrontFacing)
+		n = -n;
+#endif
 #ifdef DETAIL_NORMAL
 	n = detail_normal(n, v_tangent, detail.rg);
 #endif

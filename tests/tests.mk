@@ -37,10 +37,11 @@ $(BUILD)/tests/test_%: tests/unit/test_%.c tests/tools/gltf_write.c tests/tools/
 
 unit-tests: $(UNIT_TESTS:%=$(BUILD)/tests/test_%)
 
-$(TOOLS_DIR)/mkmodels: tests/tools/mkmodels.c tests/tools/gltf_write.c tests/tools/maps.c $(LIB_OBJS)
+$(TOOLS_DIR)/mkmodels: tests/tools/mkmodels.c tests/tools/gltf_write.c tests/tools/maps.c \
+		tests/tools/gltf_parts.c tests/tools/parts_models.c $(LIB_OBJS)
 	@mkdir -p $(@D)
-	$(CC) $(TEST_CFLAGS) -o $@ $< tests/tools/gltf_write.c tests/tools/maps.c $(LIB_OBJS) \
-		$(TEST_LIBS)
+	$(CC) $(TEST_CFLAGS) -o $@ $< tests/tools/gltf_write.c tests/tools/maps.c \
+		tests/tools/gltf_parts.c tests/tools/parts_models.c $(LIB_OBJS) $(TEST_LIBS)
 
 $(TOOLS_DIR)/imgdiff: tests/tools/imgdiff.c $(BUILD)/util/image.o $(BUILD)/util/log.o
 	@mkdir -p $(@D)

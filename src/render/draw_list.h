@@ -47,6 +47,13 @@ int draw_list_build(struct draw_list *l, const struct mesh_range *ranges, uint32
 		    const struct material_surface *surfaces, uint32_t surface_count, bool wide);
 void draw_list_release(struct draw_list *l);
 
+/* The renderer's program variant an item draws with: its alpha mode, + 3
+ * when double sided. */
+static inline int draw_item_variant(const struct draw_item *it)
+{
+	return it->alpha_mode + (it->double_sided ? 3 : 0);
+}
+
 /* The blended items back to front for this model-view (column-major): the
  * farthest center (most negative eye-space z) first. */
 void draw_list_sort_blended(struct draw_list *l, const float modelview[16]);

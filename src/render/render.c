@@ -100,7 +100,7 @@ static int upload_indices(struct renderer *r, const struct mesh_packed *m)
 		return ret;
 	memset(r->variant_used, 0, sizeof(r->variant_used));
 	for (uint32_t i = 0; i < l->count; i++)
-		r->variant_used[l->items[i].alpha_mode] = true;
+		r->variant_used[draw_item_variant(&l->items[i])] = true;
 	gl->BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->ibo);
 	gl->BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)l->index_count * (l->wide ? 4 : 2),
 		       l->wide ? (const void *)l->indices32 : (const void *)l->indices16,
@@ -391,7 +391,12 @@ static void find_uniforms(const struct gl *gl, struct program *p)
  * program that fails to build is not kept, so the next call tries again
  * and the one in use stays. */
 /* A range's program variant by its alphaMode (enum mesh_alpha). */
-static const unsigned variant_features[VARIANTS] = {0, MATERIAL_ALPHA_MASK, MATERIAL_ALPHA_BLEND};
+static const unsigned variant_features[VARIANTS] = {0,
+						    MATERIAL_ALPHA_MASK,
+						    MATERIAL_ALPHA_BLEND,
+						    MATERIAL_DOUBLE_SIDED,
+						    MATERIAL_DOUBLE_SIDED | MATERIAL_ALPHA_MASK,
+						    MATERIAL_DOUBLE_SIDED | MATERIAL_ALPHA_BLEND};
 
 static struct program *program_get(struct renderer *r, enum shading_mode mode, bool ortho, bool lit,
 				   int variant)
@@ -407,6 +412,7 @@ static struct program *program_get(struct renderer *r, enum shading_mode mode, b
 	    shader_program_build(r->gl, &src, &id))
 		return NULL;
 	p->id = id;
+	p->features = r->mat.features | variant_features[variant];
 	find_uniforms(r->gl, p);
 	return p;
 }
@@ -424,10 +430,12 @@ static void prepare_variants(struct renderer *r)
 		bool alpha = p[side] && !lit && (r->mat.features & MATERIAL_BASE_COLOR);
 
 		for (int v = 0; v < VARIANTS; v++) {
+			/* The lit mode has no alpha: its sides only. */
+			int want = alpha ? v : v / 3 * 3;
 			struct program *q = NULL;
 
-			if (v && alpha && r->variant_used[v])
-				q = program_get(r, r->mode, r->ortho, false, v);
+			if (want && p[side] && r->variant_used[v])
+				q = program_get(r, r->mode, r->ortho, lit, want);
 			r->variants[side][v] = q ? q : (struct program *)p[side];
 		}
 	}

@@ -116,8 +116,8 @@ static void draw_item(struct renderer *r, struct draw_state *st, int side,
 		      const struct draw_item *it)
 {
 	const struct gl *gl = r->gl;
-	const struct program *p = r->variants[side][it->alpha_mode];
-	bool blend = it->alpha_mode == MESH_ALPHA_BLEND && p != r->variants[side][0];
+	const struct program *p = r->variants[side][draw_item_variant(it)];
+	bool blend = (p->features & MATERIAL_ALPHA_BLEND) != 0;
 
 	if (p != st->program)
 		use_program(r, st, p);

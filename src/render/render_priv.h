@@ -12,11 +12,13 @@
 
 enum { UNIT_MATCAP, UNIT_DETAIL, UNIT_RAMP, UNIT_BASE };
 
-/* A range's program variant by its alphaMode (enum mesh_alpha). */
-enum { VARIANTS = 3 };
+/* A range's program variant: its alphaMode (enum mesh_alpha), + 3 when
+ * double sided. */
+enum { VARIANTS = 6 };
 
 struct program {
 	GLuint id;
+	unsigned features; /* enum material_feature and material_variant bits */
 	GLint modelview, projection, normal_matrix, matcap, detail, ramp, base_map, base_transform;
 	GLint iridescence, hsv, light, base_color, shininess, alpha;
 };

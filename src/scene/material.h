@@ -28,8 +28,9 @@ enum material_feature {
 /* Not settings: the renderer's program variants for a range's alphaMode
  * (shaders/matcap.frag), never in material.features. */
 enum material_variant {
-	MATERIAL_ALPHA_MASK = 1u << 8,	/* discard below the cutoff */
-	MATERIAL_ALPHA_BLEND = 1u << 9, /* alpha out, blended */
+	MATERIAL_ALPHA_MASK = 1u << 8,	  /* discard below the cutoff */
+	MATERIAL_ALPHA_BLEND = 1u << 9,	  /* alpha out, blended */
+	MATERIAL_DOUBLE_SIDED = 1u << 10, /* a back face's normal turned */
 };
 
 enum material_switch { MATERIAL_AUTO, MATERIAL_OFF, MATERIAL_ON };

@@ -17,6 +17,7 @@ scenes="$scenes sphere-normal sphere-view sphere-sem-vertex sphere-sem-fragment"
 scenes="$scenes knot-iridescence knot-iridescence-ramp knot-detail-map sphere-detail-gltf"
 scenes="$scenes sphere-beetle-gltf sphere-displaced sphere-lit sphere-lit-beside"
 scenes="$scenes sphere-vertex-color sphere-base-map sphere-base-map-off"
+scenes="$scenes parts-textures parts-mask parts-blend parts-leaf"
 mkdir -p "$out" "$models"
 "$TOOLS/mkmodels" "$models" >/dev/null
 
@@ -76,6 +77,13 @@ render() {
 		;;
 	sphere-base-map-off)
 		$k -c matcaps/pearl.png --model "$m/sphere-base-map.glb" --base-color off --output "$o"
+		;;
+	# Several materials (tests/tools/parts_models.c): two halves each
+	# with its own base map; a label cut by alpha MASK in front of a
+	# body; two BLEND panes in front of an opaque body, the nearer over
+	# the farther; a leaf seen from its hollow, shown by doubleSided.
+	parts-textures | parts-mask | parts-blend | parts-leaf)
+		$k -c matcaps/pearl.png --model "$m/$1.glb" --output "$o"
 		;;
 	*)
 		echo "golden.sh: no scene named $1 (scenes: $scenes)" >&2
