@@ -10,7 +10,7 @@ UNIT_TESTS  := options mesh image gltf gltf_ext shading app button content servi
 UNIT_TESTS  += tangent subdivide material mesh_cache
 UNIT_TESTS  += camera_math camera_proto camera_texture
 UNIT_TESTS  += stability fp16 lod
-UNIT_TESTS  += base_color
+UNIT_TESTS  += base_color draw_list
 UNIT_TESTS  += drm gesture touch_decode schedule power cec backlight
 UNIT_TESTS  += touch_device app_touch
 UNIT_TESTS  += model_list
@@ -31,9 +31,11 @@ $(BUILD)/oracle/%.o: tests/oracle/%.c
 
 -include $(wildcard $(BUILD)/oracle/*.d)
 
-$(BUILD)/tests/test_%: tests/unit/test_%.c tests/tools/gltf_write.c tests/tools/gltf_write.h $(LIB_OBJS) $(ORACLE_OBJS)
+$(BUILD)/tests/test_%: tests/unit/test_%.c tests/tools/gltf_write.c tests/tools/gltf_write.h \
+		tests/tools/gltf_parts.c tests/tools/gltf_parts.h $(LIB_OBJS) $(ORACLE_OBJS)
 	@mkdir -p $(@D)
-	$(CC) $(TEST_CFLAGS) $(LDFLAGS) -o $@ $< tests/tools/gltf_write.c $(LIB_OBJS) $(ORACLE_OBJS) $(TEST_LIBS)
+	$(CC) $(TEST_CFLAGS) $(LDFLAGS) -o $@ $< tests/tools/gltf_write.c tests/tools/gltf_parts.c \
+		$(LIB_OBJS) $(ORACLE_OBJS) $(TEST_LIBS)
 
 unit-tests: $(UNIT_TESTS:%=$(BUILD)/tests/test_%)
 
