@@ -380,7 +380,17 @@ static int displace(const struct material *m, struct mesh *mesh, int width, int 
 		ret = subdivide_mesh(mesh, n, &fine);
 		if (ret)
 			return ret;
+		/* Triangle t became n x n triangles at t n n: each range
+		 * keeps its material over its own, n n times as many. */
 		fine.material = mesh->material;
+		fine.ranges = mesh->ranges, fine.range_count = mesh->range_count;
+		fine.materials = mesh->materials, fine.material_count = mesh->material_count;
+		for (uint32_t r = 0; r < fine.range_count; r++) {
+			fine.ranges[r].first_index *= (uint32_t)(n * n);
+			fine.ranges[r].index_count *= (uint32_t)(n * n);
+		}
+		mesh->ranges = NULL, mesh->range_count = 0;
+		mesh->materials = NULL, mesh->material_count = 0;
 		mesh_material_default(&mesh->material);
 		mesh_release(mesh);
 		*mesh = fine;
@@ -389,6 +399,7 @@ static int displace(const struct material *m, struct mesh *mesh, int width, int 
 	if (ret)
 		return ret;
 	refit(mesh);
+	mesh_range_centers(mesh);
 	/* The surface has moved: its tangents are made again from the UVs. */
 	free(mesh->tangents);
 	mesh->tangents = NULL;
