@@ -613,9 +613,13 @@ void read_materials(const Builder &b, const tinygltf::Model &m, unsigned texture
 		out->material.images_decoded += out->materials[k].images_decoded;
 		out->material.has_base_map |= out->materials[k].has_base_map;
 	}
+	unsigned mapped = 0;
+	for (uint32_t k = 0; k < out->material_count; k++)
+		mapped += out->materials[k].base_map.width > 0;
 	if (b.slots.size() > 1)
-		log_info("%s: %zu materials, %u draw ranges", gltf_ext::escape(b.name).c_str(),
-			 b.slots.size(), out->range_count);
+		log_info("%s: %zu materials (%u with a base map shown), %u draw ranges",
+			 gltf_ext::escape(b.name).c_str(), b.slots.size(), mapped,
+			 out->range_count);
 }
 
 } // namespace
