@@ -163,6 +163,7 @@ bench: $(KIOSK) test-tools
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench.sh
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_startup.sh
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_gltf.sh
+	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_parts.sh
 	KIOSK=./$(KIOSK) sh tests/bench/bench_camera.sh
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_materials.sh
 	KIOSK=./$(KIOSK) sh tests/bench/bench_input.sh
