@@ -31,6 +31,9 @@ check "installed: the unit and the udev rule where this release looks" sh -c "
 		2>/dev/null | grep -q . &&
 	ls $root/lib/udev/rules.d/60-matcap-kiosk-gpio.rules \
 		$root/usr/lib/udev/rules.d/60-matcap-kiosk-gpio.rules 2>/dev/null | grep -q ."
+check "installed: the folder for drop-in settings" test -d "$root/etc/matcap-kiosk/kiosk.ini.d"
+check "the installed settings check valid (--check-config: every file named loads)" in_root \
+	/usr/bin/matcap-kiosk --check-config --config /etc/matcap-kiosk/kiosk.ini
 check "the config is a conffile" sh -c \
 	"chroot $root dpkg-query -W -f='\${Conffiles}' matcap-kiosk | grep -q /etc/matcap-kiosk/kiosk.ini"
 check "the service's user and groups exist" sh -c "grep -q '^matcap-kiosk:' $root/etc/passwd &&
