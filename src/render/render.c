@@ -333,8 +333,15 @@ static int set_surfaces(struct renderer *r, const struct material *m)
 		}
 		r->surfaces[k] = *s;
 		memset(&r->surfaces[k].base_map, 0, sizeof(struct image));
-		if (!ret && maps && s->base_map.width)
+		if (!ret && maps && s->base_map.width) {
+			static const GLint wrap[] = {GL_REPEAT, GL_CLAMP_TO_EDGE,
+						     GL_MIRRORED_REPEAT};
+
 			ret = upload_texture(r->gl, &r->base_maps[k], &s->base_map, true, true);
+			/* Its sampler's wrap (upload_texture left it bound). */
+			r->gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap[s->wrap[0]]);
+			r->gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap[s->wrap[1]]);
+		}
 	}
 	return ret;
 }

@@ -59,6 +59,7 @@ struct material_config {
 struct material_surface {
 	struct image base_map;	 /* sRGB as stored; power-of-two sides; empty: none */
 	float base_transform[6]; /* mesh_material.base_transform */
+	int wrap[2];		 /* mesh_material.base_wrap */
 	int alpha_mode;		 /* enum mesh_alpha; opaque when base colour is off */
 	float alpha, alpha_cutoff;
 	bool double_sided;

@@ -16,6 +16,8 @@ extern "C" {
 
 /* glTF's alphaMode. */
 enum mesh_alpha { MESH_ALPHA_OPAQUE, MESH_ALPHA_MASK, MESH_ALPHA_BLEND };
+/* A sampler's wrapS or wrapT (glTF's default: repeat). */
+enum mesh_wrap { MESH_WRAP_REPEAT, MESH_WRAP_CLAMP, MESH_WRAP_MIRROR };
 
 /* What a glTF material says (src/scene/material.c decides what a scene
  * uses of it). Its textures are decoded only for a feature the scene asked
@@ -53,6 +55,7 @@ struct mesh_material {
 	unsigned images_decoded;
 	struct image base_map;
 	float base_transform[6];
+	int base_wrap[2]; /* its sampler's wrapS, wrapT: enum mesh_wrap */
 };
 
 /* A part of the index array drawn with one material. center: the middle

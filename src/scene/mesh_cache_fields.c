@@ -37,6 +37,7 @@ static const struct mesh_cache_field material_fields[] = {
     FIELD(mesh_material, color, float, MESH_FIELD_FLOAT, 0),
     FIELD(mesh_material, images_decoded, unsigned, MESH_FIELD_U32, 0),
     FIELD(mesh_material, base_transform, float, MESH_FIELD_FLOAT, 0),
+    FIELD(mesh_material, base_wrap, int, MESH_FIELD_INT, MESH_WRAP_MIRROR),
     /* Images are not stored: an entry is written only for a scene that
      * decodes none (src/app/content.c), and read back with none. */
     FIELD(mesh_material, normal_map, struct image, MESH_FIELD_NONE, 0),
