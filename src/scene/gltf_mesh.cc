@@ -613,13 +613,21 @@ void read_materials(const Builder &b, const tinygltf::Model &m, unsigned texture
 		out->material.images_decoded += out->materials[k].images_decoded;
 		out->material.has_base_map |= out->materials[k].has_base_map;
 	}
-	unsigned mapped = 0;
-	for (uint32_t k = 0; k < out->material_count; k++)
-		mapped += out->materials[k].base_map.width > 0;
+	unsigned mapped = 0, detailed = 0;
+	for (uint32_t k = 0; k < out->material_count; k++) {
+		const struct mesh_material *g = &out->materials[k];
+		mapped += g->base_map.width > 0;
+		detailed += b.slots[k] != b.material && (g->has_normal_map || g->has_occlusion_map);
+	}
+	std::string shown = gltf_ext::escape(b.name);
 	if (b.slots.size() > 1)
 		log_info("%s: %zu materials (%u with a base map shown), %u draw ranges",
-			 gltf_ext::escape(b.name).c_str(), b.slots.size(), mapped,
-			 out->range_count);
+			 shown.c_str(), b.slots.size(), mapped, out->range_count);
+	// One detail map per model (src/scene/material.c): say whose it is.
+	if (detailed && (t & (GLTF_TEXTURE_NORMAL | GLTF_TEXTURE_OCCLUSION)))
+		log_info("%s: %u other materials have normal or occlusion textures; the first "
+			 "part's material's are shown over every part",
+			 shown.c_str(), detailed);
 }
 
 } // namespace
