@@ -6,6 +6,7 @@
 #   make deps       install the packages this Debian release names them
 #                   (12 bookworm or 13 trixie; through sudo unless root)
 #   make test-trixie  make deps and make test in a Debian 13 chroot
+#   make test-ansible the Ansible role (contrib/ansible) applied to a fresh root
 
 VERSION    := 0.1.0
 PREFIX     ?= /usr/local
@@ -62,8 +63,8 @@ LDLIBS    = $(PKG_LIBS) -lmeshoptimizer -ldl -lm
 # The program's sources, minus app/main.c (tests link the same objects),
 # one folder per layer: each includes only the layers listed after it
 # (tests/tools/layers.sh checks that).
-SRC_APP     := app/kiosk_models app/kiosk app/reload app/signals
-SRC_OPS     := ops/check ops/import ops/import_ini ops/screen ops/service ops/status
+SRC_APP     := app/kiosk_models app/kiosk app/kiosk_report app/reload app/signals
+SRC_OPS     := ops/check ops/import ops/import_ini ops/metrics ops/screen ops/service ops/status
 SRC_CONTENT := content/content content/matcap_set content/model_list content/model_loader
 SRC_CONFIG  := config/options config/settings config/settings_origin
 SRC_STATE   := state/app state/power state/schedule
@@ -130,6 +131,7 @@ run: matcap-kiosk
 include tests/tests.mk
 -include tests/vm/vm.mk
 -include tests/cross/cross.mk
+-include tests/cross/ansible.mk
 
 # Package names differ between releases: clang (and its runtime for the
 # fuzzers) is 14 on Debian 12 and 19 on Debian 13; OSMesa only while Mesa
@@ -154,6 +156,9 @@ DEBIAN_PACKAGES += libdraco-dev draco gltfpack assimp-testmodels
 DEBIAN_PACKAGES += dosfstools mtools e2fsprogs
 # Content by sync (tests/e2e/sync.sh): real rsync into a live kiosk's folder.
 DEBIAN_PACKAGES += rsync
+# [status] metrics scraped from a real node_exporter (tests/e2e/metrics.sh);
+# the Ansible role applied to a fresh root (tests/cross/ansible.sh).
+DEBIAN_PACKAGES += prometheus-node-exporter curl ansible mmdebstrap
 
 deps:
 	$(APT_GET) update -qq

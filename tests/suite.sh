@@ -325,6 +325,22 @@ test_hands() {
 	results hands "$out/hands.log"
 }
 
+# [status] metrics scraped from a real node_exporter (tests/e2e/metrics.sh):
+# the live kiosk's values, escaped labels, no textfile parse error; the
+# exporter on 127.0.0.1 only, stopped at the end.
+test_metrics() {
+	need_models
+	if ! command -v prometheus-node-exporter >/dev/null || ! command -v curl >/dev/null; then
+		ko "metrics: prometheus-node-exporter and curl are not installed (make deps)"
+		return
+	fi
+	sh tests/e2e/metrics.sh "$ASAN_KIOSK" "$out/models/sphere.glb" "$out/metrics" \
+		>"$out/metrics.log" 2>&1
+	grep -q "^ok every step ran" "$out/metrics.log" ||
+		echo "not ok the scenario stopped early" >>"$out/metrics.log"
+	results metrics "$out/metrics.log" "$out/metrics/stderr"
+}
+
 # Content by sync (tests/e2e/sync.sh): real rsync, slowed down, and
 # Syncthing's temporary names, into the model folder of a live kiosk
 # (the ASan build): nothing is tried before it is whole.

@@ -14,7 +14,7 @@ UNIT_TESTS  += base_color draw_list
 UNIT_TESTS  += drm gesture touch_decode schedule power cec backlight
 UNIT_TESTS  += touch_device app_touch
 UNIT_TESTS  += model_list gltf_words settings_files
-UNIT_TESTS  += status poster file
+UNIT_TESTS  += status poster file metrics
 TOOLS_DIR   := $(BUILD)/tools
 ASAN_BUILD  := $(BUILD)/asan
 SANITIZE    := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all \

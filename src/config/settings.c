@@ -25,6 +25,8 @@ const struct options_section_rule options_sections[OPTIONS_SECTIONS] = {
 		       "at once; the screen's power is decided again if this section changed"},
     [OPTIONS_TOUCH] = {"touch", OPTIONS_REOPEN, NULL,
 		       "at once; the touchscreens are opened again if this section changed"},
+    [OPTIONS_STATUS] = {"status", OPTIONS_LIVE, NULL,
+			"at once; a metrics file no longer named is removed"},
 };
 
 static const char *const backend_names[] = {"auto", "kms", "osmesa", "egl-headless", NULL};
@@ -246,6 +248,9 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "bad setting, 66 a named file missing or broken)"},
     {"import", 0, OPTION_CLI, NULL, K_STRING, AT(import), 0, 0, 0, NULL, "DIR",
      "copy a USB stick's matcap-kiosk/ folder into the content folder, checked first; exit"},
+    {"metrics", 0, OPTIONS_STATUS, "metrics", K_STRING, AT(metrics), 0, 0, 0, NULL, "FILE",
+     "write the state every 5 s as a Prometheus text file (FILE.prom, for node_exporter's "
+     "textfile collector)"},
 };
 
 const char *backend_name(enum backend_kind kind)

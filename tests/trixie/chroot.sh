@@ -9,8 +9,10 @@
 # COMMAND runs in the copy instead of the tests (e.g. -- bash for a shell).
 # Knobs: TRIXIE_ROOT, DEBIAN_MIRROR, MAKE_TEST (the make arguments for the
 # tests, default "test"), JOBS (make -j, default 2), VM_E2E=0 (no virtual
-# board), TRIXIE_DEB=0 (no package built and installed after the tests). The board boots Debian 12's kernel (tests/vm/build.sh makes it on
-# this host, which must then be Debian 12) with Debian 13's libgpiod 2,
+# board), TRIXIE_DEB=0 (no package built and installed after the tests, and
+# no Ansible role applied with it, tests/cross/ansible.sh). The board boots
+# Debian 12's kernel (tests/vm/build.sh makes it on this host, which must
+# then be Debian 12) with Debian 13's libgpiod 2,
 # libcamera 0.4 and Mesa 25 inside: the GPIO and camera tests on those.
 # /proc, /sys and /dev are mounted inside only while this runs; every exit
 # path unmounts them. Each step's time is printed as "trixie: STEP N s".
@@ -129,6 +131,10 @@ if [ "${TRIXIE_DEB:-1}" != 0 ]; then
 		sh "$TOP/tests/cross/deb-install.sh" \
 			"$ROOT$SRC"/build/deb/matcap-kiosk_*_"$(dpkg --print-architecture)".deb \
 			"$TOP/build/deb-root-trixie" trixie || rc=1
+		# The Ansible role, with that package, on a fresh Debian 13 root.
+		sh "$TOP/tests/cross/ansible.sh" \
+			"$ROOT$SRC"/build/deb/matcap-kiosk_*_"$(dpkg --print-architecture)".deb \
+			"$TOP/build/ansible-root-trixie" trixie || rc=1
 	else
 		tail -20 "$ROOT.deb.log"
 		echo "0 passed, 1 failed (make deb in the chroot, see $ROOT.deb.log)"
