@@ -47,14 +47,14 @@ struct renderer {
 	GLuint matcap_override; /* another's texture as the matcap (the camera's); 0: none */
 	long attr_bytes[SHADER_ATTR_COUNT]; /* 0: not uploaded */
 	GLenum index_type;
-	enum vertex_format format; /* for the next renderer_set_mesh */
-	enum vertex_format drawn;  /* of the arrays uploaded */
-	float position_scale;	   /* int16 positions: the model units of 1.0 */
-	int matcap_filter;	   /* enum matcap_filter (render.h) */
-	bool matcap_mippable;	   /* the image texture's size can have a chain */
-	bool matcap_has_mips;	   /* it has its mipmap chain */
-	int matcap_side;	   /* its shorter side, texels */
-	bool matcap_mipmapped;	   /* its minifying filter now reads the chain */
+	enum vertex_format format;     /* for the next renderer_set_mesh */
+	enum vertex_format drawn;      /* of the arrays uploaded */
+	float position_scale;	       /* int16 positions: the model units of 1.0 */
+	int matcap_filter;	       /* enum matcap_filter (render.h) */
+	bool matcap_mippable;	       /* the image texture's size can have a chain */
+	bool matcap_has_mips;	       /* it has its mipmap chain */
+	int matcap_side;	       /* its shorter side, texels */
+	bool matcap_mipmapped;	       /* its minifying filter now reads the chain */
 	struct background *background; /* NULL: the view's clear colour */
 };
 
