@@ -11,7 +11,7 @@ UNIT_TESTS  := options mesh image gltf gltf_ext shading app button content servi
 UNIT_TESTS  += tangent subdivide material mesh_cache
 UNIT_TESTS  += camera_math camera_proto camera_texture
 UNIT_TESTS  += stability fp16 lod
-UNIT_TESTS  += base_color
+UNIT_TESTS  += base_color draw_list
 UNIT_TESTS  += drm gesture touch_decode schedule power cec backlight
 UNIT_TESTS  += touch_device app_touch
 UNIT_TESTS  += model_list gltf_words settings_files
@@ -37,16 +37,19 @@ $(BUILD)/oracle/%.o: tests/oracle/%.c
 
 -include $(wildcard $(BUILD)/oracle/*.d)
 
-$(BUILD)/tests/test_%: tests/unit/test_%.c tests/tools/gltf_write.c tests/tools/gltf_write.h $(LIB_OBJS) $(ORACLE_OBJS)
+$(BUILD)/tests/test_%: tests/unit/test_%.c tests/tools/gltf_write.c tests/tools/gltf_write.h \
+		tests/tools/gltf_parts.c tests/tools/gltf_parts.h $(LIB_OBJS) $(ORACLE_OBJS)
 	@mkdir -p $(@D)
-	$(CC) $(TEST_CFLAGS) $(LDFLAGS) -o $@ $< tests/tools/gltf_write.c $(LIB_OBJS) $(ORACLE_OBJS) $(TEST_LIBS)
+	$(CC) $(TEST_CFLAGS) $(LDFLAGS) -o $@ $< tests/tools/gltf_write.c tests/tools/gltf_parts.c \
+		$(LIB_OBJS) $(ORACLE_OBJS) $(TEST_LIBS)
 
 unit-tests: $(UNIT_TESTS:%=$(BUILD)/tests/test_%)
 
-$(TOOLS_DIR)/mkmodels: tests/tools/mkmodels.c tests/tools/gltf_write.c tests/tools/maps.c $(LIB_OBJS)
+$(TOOLS_DIR)/mkmodels: tests/tools/mkmodels.c tests/tools/gltf_write.c tests/tools/maps.c \
+		tests/tools/gltf_parts.c tests/tools/parts_models.c $(LIB_OBJS)
 	@mkdir -p $(@D)
-	$(CC) $(TEST_CFLAGS) -o $@ $< tests/tools/gltf_write.c tests/tools/maps.c $(LIB_OBJS) \
-		$(TEST_LIBS)
+	$(CC) $(TEST_CFLAGS) -o $@ $< tests/tools/gltf_write.c tests/tools/maps.c \
+		tests/tools/gltf_parts.c tests/tools/parts_models.c $(LIB_OBJS) $(TEST_LIBS)
 
 $(TOOLS_DIR)/imgdiff: tests/tools/imgdiff.c $(BUILD)/util/image.o $(BUILD)/util/log.o
 	@mkdir -p $(@D)
@@ -180,6 +183,7 @@ bench: $(KIOSK) test-tools
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench.sh
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_startup.sh
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_gltf.sh
+	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_parts.sh
 	KIOSK=./$(KIOSK) sh tests/bench/bench_camera.sh
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_materials.sh
 	KIOSK=./$(KIOSK) sh tests/bench/bench_input.sh

@@ -70,7 +70,9 @@ static int content_cache_lookup(struct content *s, const struct content_config *
 		return ret;
 	/* An entry is written only for a model whose material decodes no
 	 * texture: its factors are all material_load needs. */
-	s->mesh.material = *mesh_cache_entry_material(s->cached);
+	ret = mesh_copy_factors(&s->mesh, mesh_cache_entry_materials(s->cached));
+	if (ret)
+		return ret;
 	shell_counts(s, mesh_cache_entry_mesh(s->cached));
 	/* Said by content_prepare, once it is known to be used. */
 	log_debug("%s: a prepared mesh in the cache", path);
@@ -84,10 +86,15 @@ static bool content_cache_fits(const struct content *s, int width, int height)
 	return k && k->width == (uint32_t)width && k->height == (uint32_t)height;
 }
 
-static bool decoded_images(const struct mesh_material *m)
+static bool decoded_images(const struct mesh *mesh)
 {
-	return m->normal_map.width || m->occlusion_map.width || m->thickness_map.width ||
-	       m->base_map.width;
+	const struct mesh_material *m = &mesh->material;
+	bool any = m->normal_map.width || m->occlusion_map.width || m->thickness_map.width ||
+		   m->base_map.width;
+
+	for (uint32_t k = 0; k < mesh->material_count; k++)
+		any |= mesh->materials[k].base_map.width != 0;
+	return any;
 }
 
 /* The prepared mesh packed as the GPU and the cache take it; the mesh's
@@ -96,15 +103,21 @@ static bool decoded_images(const struct mesh_material *m)
 static void content_cache_pack(struct content *s, int width, int height)
 {
 	struct mesh_material material = s->mesh.material;
+	struct mesh_material *materials = s->mesh.materials;
+	uint32_t material_count = s->mesh.material_count;
 
-	if (!s->cacheable || decoded_images(&material) ||
+	if (!s->cacheable || decoded_images(&s->mesh) ||
 	    mesh_pack(&s->mesh, VERTEX_COMPACT, &s->packed))
 		return;
 	s->cache_key.width = (uint32_t)width;
 	s->cache_key.height = (uint32_t)height;
 	mesh_material_default(&s->mesh.material);
+	s->mesh.materials = NULL;
+	s->mesh.material_count = 0;
 	mesh_release(&s->mesh);
 	s->mesh.material = material;
+	s->mesh.materials = materials;
+	s->mesh.material_count = material_count;
 	shell_counts(s, &s->packed);
 }
 
@@ -116,8 +129,8 @@ static void content_cache_store(struct content *s)
 
 	if (!s->packed.vertex_count || mesh_cache_dir(dir, sizeof(dir)))
 		return;
-	s->writer = mesh_cache_write_async(dir, &s->cache_key, &s->packed, &s->mesh.material,
-					   MESH_CACHE_MAX_BYTES);
+	s->writer =
+	    mesh_cache_write_async(dir, &s->cache_key, &s->packed, &s->mesh, MESH_CACHE_MAX_BYTES);
 }
 
 /* A shell whose packed mesh went to the cache: uploaded again (a reload

@@ -81,6 +81,7 @@ struct renderer_stats {
 	enum matcap_filter matcap_filter; /* renderer_set_matcap_filter */
 	bool matcap_mipmapped;		  /* the last frame read the matcap's mipmaps */
 	enum vertex_format format;	  /* of the arrays uploaded */
+	uint32_t draws;			  /* draw calls a frame makes (per half, lit = beside) */
 };
 void renderer_get_stats(const struct renderer *r, struct renderer_stats *out);
 

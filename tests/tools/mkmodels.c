@@ -6,6 +6,7 @@
  *                         and the 100k one textured, skinned and flat-shaded */
 #include "gltf_write.h"
 #include "maps.h"
+#include "parts_models.h"
 #include "scene/mesh.h"
 #include "scene/tangent.h"
 #include "util/image.h"
@@ -378,8 +379,9 @@ int main(int argc, char **argv)
 	bad |= write_look(argv[1], &s);
 	mesh_release(&s);
 	bad |= write_material_models(argv[1]);
+	bad |= parts_models_write(argv[1]);
 	bad |= write_corpus(argv[1]);
 	if (argc > 2 && strcmp(argv[2], "--bench") == 0)
-		bad |= write_bench(argv[1]);
+		bad |= write_bench(argv[1]) | parts_models_write_bench(argv[1]);
 	return bad;
 }

@@ -54,14 +54,36 @@ function fitTransform(root) {
 	return fit;
 }
 
+// The glTF material's alpha as GLTFLoader reads it (MASK: alphaTest;
+// BLEND: transparent, no depth writes), with its colour: as the kiosk,
+// alpha comes with the base colour.
 function matcapMaterial(m, matcap) {
 	const p = { matcap, side: m.side };
 	if (baseColor) {
 		p.color = m.color;
 		p.map = m.map;
 		p.vertexColors = m.vertexColors;
+		p.opacity = m.opacity;
+		p.transparent = m.transparent;
+		p.alphaTest = m.alphaTest;
+		p.depthWrite = m.depthWrite;
 	}
 	return new THREE.MeshMatcapMaterial(p);
+}
+
+// three.js orders transparent meshes by their origin's depth; the kiosk
+// (src/render/draw_list.c), and the glTF spec's advice, by each part's
+// bounding box: the farthest part first. The same rule here.
+function orderBlended(scene, camera) {
+	const v = new THREE.Vector3();
+	scene.updateMatrixWorld(true);
+	scene.traverse((o) => {
+		if (!o.isMesh || !o.material.transparent)
+			return;
+		o.geometry.computeBoundingBox();
+		o.geometry.boundingBox.getCenter(v).applyMatrix4(o.matrixWorld);
+		o.renderOrder = -v.distanceTo(camera.position);
+	});
 }
 
 async function main() {
@@ -98,6 +120,7 @@ async function main() {
 	camera.zoom = zoom;
 	camera.updateProjectionMatrix();
 
+	orderBlended(scene, camera);
 	renderer.render(scene, camera);
 	out.textContent = renderer.domElement.toDataURL('image/png');
 }
