@@ -443,14 +443,20 @@ int content_prepare(struct content *s, const struct content_config *o, int width
 }
 
 /* The glTF's decoded maps were copied into the material's own images
- * (material_load), which are what the renderer uploads: once on the GPU
+ * (material_load: the detail map, each primitive's base map), which are
+ * what the renderer uploads: once on the GPU
  * these CPU copies serve nothing (a reload decodes the file again). */
-static void release_decoded_maps(struct mesh_material *m)
+static void release_decoded_maps(struct mesh *mesh)
 {
+	struct mesh_material *m = &mesh->material;
+
 	image_release(&m->normal_map);
 	image_release(&m->occlusion_map);
 	image_release(&m->thickness_map);
 	image_release(&m->base_map);
+	/* Each primitive's base map was copied into the material's too. */
+	for (uint32_t k = 0; k < mesh->material_count; k++)
+		image_release(&mesh->materials[k].base_map);
 }
 
 int content_upload_model(struct content *s, struct renderer *r)
@@ -473,7 +479,7 @@ int content_upload_model(struct content *s, struct renderer *r)
 	if (!ret)
 		content_cache_store(s);
 	if (!ret)
-		release_decoded_maps(&s->mesh.material);
+		release_decoded_maps(&s->mesh);
 	/* The parse, the preparation and the upload freed far more than the
 	 * scene keeps; malloc holds freed heap for reuse, and a kiosk reuses
 	 * little: back to the system before the first frame. */
