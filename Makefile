@@ -64,9 +64,11 @@ LDLIBS    = $(PKG_LIBS) -lmeshoptimizer -ldl -lm
 # The program's sources, minus app/main.c (tests link the same objects),
 # one folder per layer: each includes only the layers listed after it
 # (tests/tools/layers.sh checks that).
-SRC_APP     := app/app app/content app/model_list app/model_loader app/kiosk_models app/kiosk \
-	       app/options app/settings app/power app/reload app/schedule app/screen app/service \
-	       app/status app/import app/signals
+SRC_APP     := app/kiosk_models app/kiosk app/reload app/signals
+SRC_OPS     := ops/check ops/import ops/import_ini ops/screen ops/service ops/status
+SRC_CONTENT := content/content content/matcap_set content/model_list content/model_loader
+SRC_CONFIG  := config/options config/settings config/settings_origin
+SRC_STATE   := state/app state/power state/schedule
 SRC_DISPLAY := display/backlight display/cec display/display display/display_egl display/display_kms \
 	       display/display_osmesa \
 	       display/drm display/drm_atomic display/drm_legacy display/egl_util display/hotplug \
@@ -75,15 +77,16 @@ SRC_INPUT   := input/action input/button input/gesture input/touch_decode input/
 	       input/gpio_$(GPIOD_API) input/keyboard input/touch
 SRC_CAMERA  := camera/camera_feed camera/camera_link camera/camera_math camera/camera_proto \
 	       camera/camera_texture
-SRC_RENDER  := render/bake render/gl render/matcap_set render/poster render/render render/shader \
+SRC_RENDER  := render/bake render/gl render/poster render/render render/shader \
 	       render/shading
 SRC_SCENE   := scene/lod scene/material scene/mesh scene/mesh_cache scene/mesh_cache_key scene/mesh_gen scene/mesh_pack scene/subdivide scene/tangent \
 	       scene/texture
 SRC_UTIL    := util/file util/folder_watch util/image util/log util/math3d
-LIB_C  := $(SRC_APP) $(SRC_DISPLAY) $(SRC_INPUT) $(SRC_CAMERA) $(SRC_RENDER) $(SRC_SCENE) $(SRC_UTIL)
+LIB_C  := $(SRC_APP) $(SRC_OPS) $(SRC_CONTENT) $(SRC_CONFIG) $(SRC_STATE) $(SRC_DISPLAY) $(SRC_INPUT) $(SRC_CAMERA) $(SRC_RENDER) $(SRC_SCENE) $(SRC_UTIL)
 # The C++ shims, each behind a C header (gltf_ext.h is internal to the glTF one).
 LIB_CC := scene/gltf scene/gltf_mesh scene/gltf_fs scene/gltf_material scene/gltf_ext scene/gltf_files scene/gltf_pose \
 	  scene/gltf_draco camera/camera
+LIB_CC += scene/gltf_words
 SHADERS := shaders/mapping.glsl shaders/matcap.vert shaders/matcap.frag shaders/material.glsl
 SHADERS += shaders/camera.vert shaders/camera.frag
 SHADERS += shaders/poster.vert shaders/poster.frag
@@ -150,13 +153,14 @@ DEBIAN_PACKAGES := make gcc g++ pkg-config libegl-dev libgles-dev \
 # modules, kmscube, the DRM, camera, GPIO and V4L2 tools); the model
 # corpus (Draco's and gltfpack's tools, assimp's sample files); the
 # board's USB stick images (FAT with files put in by mtools, ext2 by
-# mke2fs -d; no root or loop device needed).
+# mke2fs -d; no root or loop device needed); rsync for content by sync
+# (tests/e2e/sync.sh: real rsync into a live kiosk's folder).
 DEBIAN_TEST_PACKAGES := libcmocka-dev zlib1g-dev systemd \
 	clang-$(CLANG_VERSION) libclang-rt-$(CLANG_VERSION)-dev valgrind gnuplot-nox \
 	qemu-system-x86 busybox-static lz4 cpio kmod udev xz-utils kmscube libdrm-tests \
 	libcamera-tools gpiod v4l-utils \
 	draco gltfpack assimp-testmodels \
-	dosfstools mtools e2fsprogs
+	dosfstools mtools e2fsprogs rsync
 
 deps:
 	$(APT_GET) update -qq
@@ -193,6 +197,8 @@ install: matcap-kiosk
 	install -d $(DESTDIR)$(DATADIR)/matcaps
 	install -m 0644 matcaps/*.png $(DESTDIR)$(DATADIR)/matcaps/
 	install -D -m 0644 config/kiosk.ini $(DESTDIR)$(DATADIR)/kiosk.ini.example
+	# Settings in pieces: packages and Ansible roles drop *.ini files here.
+	install -d $(DESTDIR)$(SYSCONFDIR)/matcap-kiosk/kiosk.ini.d
 	# An edited config survives a reinstall.
 	test -e $(DESTDIR)$(SYSCONFDIR)/matcap-kiosk/kiosk.ini || \
 		install -D -m 0644 config/kiosk.ini $(DESTDIR)$(SYSCONFDIR)/matcap-kiosk/kiosk.ini

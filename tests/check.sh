@@ -12,7 +12,7 @@ set -u
 
 groups="layers unit golden egl program_check mirror_check ortho loaders bad-input corpus cli"
 groups="$groups config_doc baker live install systemd fuzz soak no-camera board hands"
-groups="$groups base_color_check"
+groups="$groups base_color_check sync"
 
 unit_names() { (cd tests/unit && ls test_*.c) | sed 's/^test_//; s/\.c$//'; }
 golden_names() { (cd tests/golden && ls ./*.png) | sed 's|^\./||; s/\.png$//'; }
@@ -87,13 +87,14 @@ needs() {
 	program_check | mirror_check | base_color_check) echo "$TOOLS/$1" ;;
 	ortho) echo "all $TOOLS/mkmodels $TOOLS/imgdiff" ;;
 	loaders) echo "all $TOOLS/mkmodels" ;;
-	cli) echo "all asan-kiosk" ;;
+	cli) echo "all asan-kiosk $TOOLS/mkmodels" ;;
 	config_doc | install | systemd | no-camera) echo all ;;
 	bad-input) echo "asan-kiosk $TOOLS/mkmodels" ;;
 	corpus) echo "asan-kiosk fuzzers $TOOLS/mkmodels $TOOLS/silhouette $TOOLS/imgdiff" ;;
 	baker) echo "$BAKE" ;;
 	live) echo "asan-kiosk $TOOLS/mkmodels $TOOLS/notify_listen" ;;
 	hands) echo "asan-kiosk $TOOLS/mkmodels $TOOLS/imgdiff $TOOLS/notify_listen" ;;
+	sync) echo "asan-kiosk $TOOLS/mkmodels" ;;
 	fuzz) echo fuzzers ;;
 	soak) echo "$TOOLS/soak" ;;
 	board) echo "all $TOOLS/imgdiff $TOOLS/hues $TOOLS/cec_power $TOOLS/clock_set $TOOLS/touch_inject $TOOLS/mkmodels" ;;

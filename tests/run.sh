@@ -43,6 +43,8 @@ test_baker
 test_live
 # 10b. Hands-off operation: --status, the poster, --import of a USB stick.
 test_hands
+# 10c. Content by sync: rsync and Syncthing's temporary names.
+test_sync
 # 11. make install honours PREFIX and DESTDIR; the systemd unit, checked
 #     offline.
 test_install

@@ -265,6 +265,26 @@ test_cli() {
 		kill -0 \$p && kill -TERM \$p && wait \$p && [ \$(grep -c ': error: ' $out/bad/gpio.log) = 1 ] &&
 		! grep -qE 'Sanitizer|runtime error' $out/bad/gpio.log &&
 		grep -q 'button left: GPIO chip nosuchchip not found.*line GPIO17' $out/bad/gpio.log"
+
+	# --check-config's cases as a user meets them (tests/e2e/config_check.sh):
+	# each file named loaded, 0/78/66, the paths rules, kiosk.ini.d/.
+	need_models
+	sh tests/e2e/config_check.sh "$ASAN_KIOSK" "$out/models" "$out/config_check" \
+		>"$out/config_check.log" 2>&1
+	grep -q "^ok every step ran" "$out/config_check.log" ||
+		echo "not ok the scenario stopped early" >>"$out/config_check.log"
+	results check-config "$out/config_check.log"
+
+	# The log says "from the cache" only when the cached mesh is drawn: the
+	# same size again, not another size (which prepares the model again).
+	check "'from the cache' only when the cached mesh is used" sh -c "
+		export XDG_CACHE_HOME=$PWD/$out/cache-used
+		r() { $KIOSK --backend $offscreen --model $out/models/sphere.glb --size \$1 \
+			--output $out/bad/cached.png 2>&1; }
+		r 64x64 >/dev/null && r 64x64 | grep -q 'sphere.glb: the prepared mesh from the cache' &&
+		r 48x48 >$out/bad/cached-other.log &&
+		! grep -q 'from the cache' $out/bad/cached-other.log &&
+		grep -q 'prepared for another screen size' $out/bad/cached-other.log"
 }
 
 # Every setting that the config file takes is documented in the example.
@@ -305,12 +325,28 @@ test_hands() {
 	results hands "$out/hands.log"
 }
 
+# Content by sync (tests/e2e/sync.sh): real rsync, slowed down, and
+# Syncthing's temporary names, into the model folder of a live kiosk
+# (the ASan build): nothing is tried before it is whole.
+test_sync() {
+	need_models
+	if ! command -v rsync >/dev/null; then
+		ko "sync: rsync is not installed (make deps)"
+		return
+	fi
+	sh tests/e2e/sync.sh "$ASAN_KIOSK" "$out/models" "$out/sync" >"$out/sync.log" 2>&1
+	grep -q "^ok every step ran" "$out/sync.log" ||
+		echo "not ok the scenario stopped early" >>"$out/sync.log"
+	results sync "$out/sync.log" "$out/sync/kiosk.log"
+}
+
 # make install honours PREFIX and DESTDIR.
 test_install() {
 	check "make install" sh -c "make -s install DESTDIR=$PWD/$out/stage PREFIX=/usr SYSCONFDIR=/etc >/dev/null &&
 		test -x $out/stage/usr/bin/matcap-kiosk &&
 		test -f $out/stage/usr/share/matcap-kiosk/matcaps/gold.png &&
-		test -f $out/stage/etc/matcap-kiosk/kiosk.ini"
+		test -f $out/stage/etc/matcap-kiosk/kiosk.ini &&
+		test -d $out/stage/etc/matcap-kiosk/kiosk.ini.d"
 	check "make install: the unit (with its paths), sysusers.d and udev rule" sh -c "
 		grep -qx 'ExecStart=/usr/bin/matcap-kiosk --config /etc/matcap-kiosk/kiosk.ini' \
 			$out/stage/usr/lib/systemd/system/matcap-kiosk.service &&

@@ -1,11 +1,11 @@
 #include "app/kiosk.h"
 #include "app/signals.h"
-#include "app/app.h"
+#include "state/app.h"
 #include "app/kiosk_models.h"
 #include "app/reload.h"
-#include "app/screen.h"
-#include "app/service.h"
-#include "app/status.h"
+#include "ops/screen.h"
+#include "ops/service.h"
+#include "ops/status.h"
 #include "camera/camera_feed.h"
 #include "input/gpio.h"
 #include "input/keyboard.h"
@@ -46,7 +46,7 @@ enum input_origin { INPUT_CALLER, INPUT_BUTTON, INPUT_KEYBOARD };
 struct kiosk {
 	struct display *display;
 	struct renderer *renderer;
-	struct content *scene; /* on screen; a reload swaps what it holds */
+	struct content *content; /* on screen; a reload swaps what it holds */
 	char **argv;
 	int argc;
 	bool camera_possible;
@@ -196,12 +196,12 @@ static void sync_matcap(struct kiosk *k, int want)
 {
 	struct image img;
 
-	if (want == k->shown_matcap || !k->scene->set)
+	if (want == k->shown_matcap || !k->content->set)
 		return;
-	if (image_load(matcap_set_path(k->scene->set, want), &img) == 0) {
+	if (image_load(matcap_set_path(k->content->set, want), &img) == 0) {
 		renderer_set_matcap(k->renderer, &img);
 		image_release(&img);
-		log_info("matcap %s", matcap_set_path(k->scene->set, want));
+		log_info("matcap %s", matcap_set_path(k->content->set, want));
 	}
 	k->shown_matcap = want;
 }
@@ -264,25 +264,26 @@ static int draw(struct kiosk *k, uint64_t now)
 static void watch_matcaps(struct kiosk *k)
 {
 	folder_watch_free(k->watch);
-	k->watch = k->scene->matcap_path ? folder_watch_new(k->scene->matcap_path) : NULL;
+	k->watch = k->content->matcap_path ? folder_watch_new(k->content->matcap_path) : NULL;
 	k->rescan_at = CLOCK_NEVER;
 }
 
 static void start_models(struct kiosk *k, uint64_t now_ns)
 {
-	struct kiosk_models_parts parts = {k->app, k->scene, k->renderer, k->display, &k->applied};
+	struct kiosk_models_parts parts = {k->app, k->content, k->renderer, k->display,
+					   &k->applied.content};
 
 	kiosk_models_free(k->models);
 	k->models = kiosk_models_new(&parts, now_ns);
 }
 
 /* The app state, the view and the matcap watch from k->applied and
- * k->scene (at the start, and after a reload). */
+ * k->content (at the start, and after a reload). */
 static int configure(struct kiosk *k, uint64_t now_ns)
 {
 	const struct options *o = &k->applied;
 	struct app_config cfg = o->app;
-	int count = k->scene->set ? matcap_set_count(k->scene->set) : 1;
+	int count = k->content->set ? matcap_set_count(k->content->set) : 1;
 	struct app_msg m = {.kind = APP_RELOADED, .reload = {&cfg, count, now_ns}};
 
 	log_set_level(o->log_level);
@@ -330,19 +331,21 @@ static void reopen_devices(struct kiosk *k, unsigned sections)
 }
 
 /* SIGHUP: the settings, model and matcaps again, swapped in only when all
- * of it loaded; on failure the scene on screen stays and the log says why. */
+ * of it loaded; on failure the content on screen stays and the log says why. */
 static void reload(struct kiosk *k, uint64_t now_ns)
 {
 	struct options fresh;
 	unsigned reopen;
 
 	service_reloading(false);
+	/* --status names this reload's failure, or none after a good one. */
+	log_clear_last_error();
 	log_info("reload: reading the settings, the model and the matcaps again");
 	if (options_parse(&fresh, k->argc, k->argv) != OPTIONS_OK) {
-		log_err("reload: the settings have errors (above); keeping the scene on screen");
+		reload_failed("the settings have errors");
 		goto out;
 	}
-	if (reload_content(k->scene, &fresh.content, k->renderer, k->display->width,
+	if (reload_content(k->content, &fresh.content, k->renderer, k->display->width,
 			   k->display->height))
 		goto out;
 	reopen = reload_reopen(&k->started, &k->applied, &fresh);
@@ -488,12 +491,12 @@ static void rescan_matcaps(struct kiosk *k)
 	char *shown;
 
 	k->rescan_at = CLOCK_NEVER;
-	if (!k->scene->set)
+	if (!k->content->set)
 		return;
-	shown = strdup(matcap_set_path(k->scene->set, app_state(k->app)->matcap));
-	if (shown && content_rescan_matcaps(k->scene) == 0) {
-		m.matcaps.count = matcap_set_count(k->scene->set);
-		m.matcaps.shown = find_matcap(k->scene->set, shown);
+	shown = strdup(matcap_set_path(k->content->set, app_state(k->app)->matcap));
+	if (shown && content_rescan_matcaps(k->content) == 0) {
+		m.matcaps.count = matcap_set_count(k->content->set);
+		m.matcaps.shown = find_matcap(k->content->set, shown);
 		app_apply(k->app, &m);
 		/* It may be the very file that was rewritten: decode it again. */
 		k->shown_matcap = -1;
@@ -545,8 +548,8 @@ static void service_status(struct kiosk *k, const struct pollfd *fds)
 	struct image frame = {0};
 	char last_error[1024];
 	struct status_report r = {
-	    .model = k->scene->model_path,
-	    .matcap = k->scene->set ? matcap_set_path(k->scene->set, st->matcap) : NULL,
+	    .model = k->content->model_path,
+	    .matcap = k->content->set ? matcap_set_path(k->content->set, st->matcap) : NULL,
 	    .mode = shading_mode_name(st->mode),
 	    .view = {st->orientation.x, st->orientation.y, st->orientation.z, st->orientation.w},
 	    .screen_on = awake(k),
@@ -636,7 +639,7 @@ struct kiosk *kiosk_new(const struct kiosk_parts *p, uint64_t now_ns)
 		return NULL;
 	k->display = p->display;
 	k->renderer = p->renderer;
-	k->scene = p->scene;
+	k->content = p->content;
 	k->argv = p->argv;
 	while (p->argv[k->argc])
 		k->argc++;

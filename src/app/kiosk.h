@@ -1,11 +1,11 @@
 /* The live loop: sleep in poll() on every descriptor (display, inputs,
  * camera, matcap folder, signals), hand what happened to the app state
- * (src/app/app.h) as messages, and draw only when the state changed. */
+ * (src/state/app.h) as messages, and draw only when the state changed. */
 #ifndef MK_KIOSK_H
 #define MK_KIOSK_H
 
-#include "app/content.h"
-#include "app/options.h"
+#include "content/content.h"
+#include "config/options.h"
 #include "display/display.h"
 #include "input/input.h"
 #include "render/render.h"
@@ -19,8 +19,8 @@
 /* What the kiosk runs on; none of it is freed by the kiosk. */
 struct kiosk_parts {
 	struct display *display;
-	struct renderer *renderer; /* already holding the scene, its first matcap and mode */
-	struct content *scene;	   /* on screen; a reload swaps what it holds */
+	struct renderer *renderer; /* already holding the content, its first matcap and mode */
+	struct content *content;   /* on screen; a reload swaps what it holds */
 	/* The settings it starts with (copied), and the command line a
 	 * reload parses again over the config file, so options still win. */
 	const struct options *options;

@@ -1,6 +1,6 @@
 #include "app/kiosk_models.h"
-#include "app/model_list.h"
-#include "app/model_loader.h"
+#include "content/model_list.h"
+#include "content/model_loader.h"
 #include "util/clock.h"
 #include "util/folder_watch.h"
 #include "util/log.h"
@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 /* A model copied in: act once the copy has been quiet this long. */
 #define MODEL_SETTLE_NS 500000000ull
@@ -30,6 +31,7 @@ struct kiosk_models {
 	uint64_t asked_ns; /* when the job under way was started, for the bench */
 	char *arrived[MAX_ARRIVED];
 	int arrived_count;
+	bool syncing; /* a sync tool is writing into the folder: said once */
 };
 
 static void tell_app(struct kiosk_models *m, int shown)
@@ -41,7 +43,7 @@ static void tell_app(struct kiosk_models *m, int shown)
 
 static void watch_models(struct kiosk_models *m)
 {
-	const char *spec = m->p.options->content.model;
+	const char *spec = m->p.config->model;
 
 	/* A list names several places: each of them is read at a reload. */
 	if (!strchr(spec, ','))
@@ -55,26 +57,26 @@ struct kiosk_models *kiosk_models_new(const struct kiosk_models_parts *parts, ui
 	(void)now_ns;
 	/* The built-in knot shown because the model failed: the list is
 	 * still watched, so the file fixed or copied in is shown. */
-	if (!parts->options->content.model)
+	if (!parts->config->model)
 		return NULL;
 	m = calloc(1, sizeof(*m));
 	if (!m)
 		return NULL;
 	m->p = *parts;
-	m->list = model_list_new(parts->options->content.model);
+	m->list = model_list_new(parts->config->model);
 	m->loader = m->list ? model_loader_new() : NULL;
 	if (!m->loader) {
 		kiosk_models_free(m);
 		return NULL;
 	}
-	m->shown = model_list_find(m->list, parts->scene->model_path);
+	m->shown = model_list_find(m->list, parts->content->model_path);
 	m->reload = -1;
 	m->rescan_at = CLOCK_NEVER;
 	watch_models(m);
 	tell_app(m, m->shown);
 	m->asked = app_state(m->p.app)->model;
 	log_info("models: %d, showing %s", model_list_count(m->list),
-		 parts->scene->model_path ? parts->scene->model_path : "the built-in knot");
+		 parts->content->model_path ? parts->content->model_path : "the built-in knot");
 	return m;
 }
 
@@ -115,17 +117,17 @@ static int show(struct kiosk_models *m, struct content *fresh, int index)
 
 	if (ret) {
 		log_err("%s: does not fit on the GPU; keeping %s", fresh->model_path,
-			m->p.scene->model_path);
+			m->p.content->model_path);
 		model_list_set_bad(m->list, index, true);
 		content_release(fresh);
-		if (content_upload_model(m->p.scene, m->p.renderer))
+		if (content_upload_model(m->p.content, m->p.renderer))
 			log_err("models: the model on screen could not be restored either");
 		return ret;
 	}
-	content_take_model(m->p.scene, fresh);
+	content_take_model(m->p.content, fresh);
 	m->shown = index;
 	log_info("model %d of %d: %s", index + 1, model_list_count(m->list),
-		 m->p.scene->model_path);
+		 m->p.content->model_path);
 	/* The frame that shows it is drawn next: what a switch costs is this
 	 * and one frame (the bench adds them). */
 	log_debug("models: swapped in %.1f ms after it was asked for",
@@ -159,7 +161,7 @@ static void start(struct kiosk_models *m, int from, int step)
 
 	m->requested = from;
 	m->asked_ns = monotonic_ns();
-	if (model_loader_start(m->loader, m->list, m->p.options, from, step, m->shown, d->width,
+	if (model_loader_start(m->loader, m->list, m->p.config, from, step, m->shown, d->width,
 			       d->height)) {
 		tell_app(m, m->shown);
 		m->asked = app_state(m->p.app)->model;
@@ -180,10 +182,10 @@ static void note_arrived(void *ctx, const char *folder, const char *name)
 {
 	struct kiosk_models *m = ctx;
 	char path[PATH_MAX];
-	bool one_file = !model_spec_is_many(m->p.options->content.model);
+	bool one_file = !model_spec_is_many(m->p.config->model);
 
 	if (one_file)
-		snprintf(path, sizeof(path), "%s", m->p.options->content.model);
+		snprintf(path, sizeof(path), "%s", m->p.config->model);
 	else
 		snprintf(path, sizeof(path), "%s/%s", folder, name);
 	if (m->arrived_count < MAX_ARRIVED && !arrived_path(m, path))
@@ -198,15 +200,16 @@ static void rescan(struct kiosk_models *m)
 {
 	int fresh;
 	struct model_list *l =
-	    model_list_rescan(m->list, m->p.options->content.model, arrived_path, m, &fresh);
+	    model_list_rescan(m->list, m->p.config->model, arrived_path, m, &fresh);
 
 	m->rescan_at = CLOCK_NEVER;
+	m->syncing = false;
 	forget_arrived(m);
 	if (!l)
 		return;
 	model_list_free(m->list);
 	m->list = l;
-	m->shown = model_list_find(l, m->p.scene->model_path);
+	m->shown = model_list_find(l, m->p.content->model_path);
 	m->reload = fresh;
 	if (fresh >= 0)
 		log_debug("models: %s arrived or changed: loading it", model_list_path(l, fresh));
@@ -228,6 +231,17 @@ void kiosk_models_service(struct kiosk_models *m, const struct pollfd fds[2], ui
 	/* The list is the job's while it runs. */
 	if (model_loader_busy(m->loader))
 		return;
+	/* rsync and Syncthing write each file under a temporary name and
+	 * rename it into place; a .gltf may land before its .bin or its
+	 * textures/: the folder is read once nothing is being written. */
+	if (now_ns >= m->rescan_at && m->watch &&
+	    folder_watch_sync_under_way(m->watch, time(NULL))) {
+		if (!m->syncing)
+			log_info("models: a sync is writing into %s: waiting until it is done",
+				 m->p.config->model);
+		m->syncing = true;
+		m->rescan_at = now_ns + MODEL_SETTLE_NS;
+	}
 	if (now_ns >= m->rescan_at)
 		rescan(m);
 	want = app_state(m->p.app)->model;

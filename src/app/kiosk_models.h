@@ -6,9 +6,9 @@
 #ifndef MK_KIOSK_MODELS_H
 #define MK_KIOSK_MODELS_H
 
-#include "app/app.h"
-#include "app/content.h"
-#include "app/settings.h"
+#include "state/app.h"
+#include "content/content.h"
+#include "config/content_config.h"
 #include "display/display.h"
 #include "render/render.h"
 
@@ -18,10 +18,10 @@
 /* What it works on; none of it is freed here, and each outlives it. */
 struct kiosk_models_parts {
 	struct app *app;
-	struct content *scene; /* on screen: its model is swapped */
+	struct content *content; /* on screen: its model is swapped */
 	struct renderer *renderer;
 	struct display *display;
-	const struct options *options; /* [scene] model and how to prepare one */
+	const struct content_config *config; /* [scene] model and how to prepare one */
 };
 
 struct kiosk_models;

@@ -7,11 +7,12 @@
 #include "app/kiosk.h"
 #include "app/signals.h"
 #include "util/log.h"
-#include "app/options.h"
+#include "config/options.h"
 #include "render/render.h"
-#include "app/content.h"
-#include "app/import.h"
-#include "app/status.h"
+#include "content/content.h"
+#include "ops/import.h"
+#include "ops/status.h"
+#include "ops/check.h"
 #include "render/poster.h"
 
 #include <errno.h>
@@ -129,7 +130,7 @@ static int run_live(const struct options *o, char **argv, struct content *s, str
 {
 	struct kiosk_parts parts = {.display = d,
 				    .renderer = r,
-				    .scene = s,
+				    .content = s,
 				    .options = o,
 				    .argv = argv,
 				    /* No EGL context (OSMesa), no camera. */
@@ -177,7 +178,8 @@ out:
 }
 
 /* The exit status: 2 for a bad command line, 78 (EX_CONFIG) for a bad
- * config file, 1 when a model, image or display fails. */
+ * config file, 1 when a model, image or display fails; --check-config
+ * says 66 (EX_NOINPUT) for a named file that is missing or broken. */
 enum exit_code {
 	EXIT_CODE_OK = 0,
 	EXIT_CODE_FAILED = 1,
@@ -203,10 +205,10 @@ static bool is_live(const struct options *o)
  * the user named does not load. The live kiosk blocks its signals instead,
  * before any thread starts (the GL driver's): the loop reads them from a
  * signalfd. */
-static int before_display(const struct options *o, struct content *scene)
+static int before_display(const struct options *o, struct content *content)
 {
 	if (!is_live(o))
-		return content_load(scene, &o->content, true);
+		return content_load(content, &o->content, true);
 	signals_block();
 	return 0;
 }
@@ -214,11 +216,11 @@ static int before_display(const struct options *o, struct content *scene)
 /* When auto found no display, the kiosk draws one PNG instead, with no
  * loop for the signals. The kiosk falls back to the built-in model and
  * matcap, and says so. */
-static int after_display(const struct options *o, bool was_live, struct content *scene)
+static int after_display(const struct options *o, bool was_live, struct content *content)
 {
 	if (was_live && !is_live(o))
 		signals_unblock();
-	return scene->mesh.index_count ? 0 : content_load(scene, &o->content, false);
+	return content->mesh.index_count ? 0 : content_load(content, &o->content, false);
 }
 
 /* Something on the screen at once, before the model loads: the poster,
@@ -249,26 +251,40 @@ static int show(struct options *o, char **argv)
 {
 	double start_ms = now_ms();
 	bool live = is_live(o);
-	struct content scene = {0};
+	struct content content = {0};
 	struct display *display = NULL;
 	int posters = 0;
-	int ret = before_display(o, &scene);
+	int ret = before_display(o, &content);
 
 	if (!ret && !(display = open_display(o)))
 		ret = -ENODEV;
 	if (!ret && live && is_live(o))
 		posters = show_poster(o, display);
 	if (!ret)
-		ret = after_display(o, live, &scene);
+		ret = after_display(o, live, &content);
 	if (!ret)
-		ret = run(o, argv, &scene, display, start_ms, posters);
+		ret = run(o, argv, &content, display, start_ms, posters);
 	display_free(display);
-	content_release(&scene);
+	content_release(&content);
 	return ret;
 }
 
-static enum exit_code parse_failed(enum options_status status)
+/* The settings did not read (each error is above); --check-config ends
+ * with its verdict, as it does when they read. */
+static enum exit_code parse_failed(enum options_status status, int argc, char **argv)
 {
+	const char *name = "the command line";
+	bool check = false;
+
+	for (int i = 1; i < argc && status == OPTIONS_CONFIG; i++) {
+		check |= !strcmp(argv[i], "--check-config");
+		if ((!strcmp(argv[i], "--config") || !strcmp(argv[i], "-C")) && i + 1 < argc)
+			name = argv[i + 1];
+		else if (!strncmp(argv[i], "--config=", 9))
+			name = argv[i] + 9;
+	}
+	if (check)
+		log_err("%s: the settings are not valid (the errors above)", name);
 	return status == OPTIONS_CONFIG ? EXIT_CODE_CONFIG : EXIT_CODE_USAGE;
 }
 
@@ -279,10 +295,8 @@ static enum exit_code tool(struct options *o)
 
 	if (o->status)
 		return status_client_run(stdout) ? EXIT_CODE_FAILED : EXIT_CODE_OK;
-	if (o->check_config) {
-		printf("%s: the settings are valid\n", o->config ? o->config : "the command line");
-		return EXIT_CODE_OK;
-	}
+	if (o->check_config)
+		return (enum exit_code)check_config_run(o, stdout);
 	ret = import_run(o);
 	return ret == -EINVAL ? EXIT_CODE_CONFIG : exit_code(ret);
 }
@@ -311,7 +325,7 @@ int main(int argc, char **argv)
 		return camera_helper_main(CAMERA_HELPER_FD);
 	status = options_parse(&opts, argc, argv);
 	log_set_level(opts.log_level);
-	ret = status == OPTIONS_OK ? start(&opts, argv) : parse_failed(status);
+	ret = status == OPTIONS_OK ? start(&opts, argv) : parse_failed(status, argc, argv);
 	options_release(&opts);
 	return ret;
 }

@@ -1,6 +1,17 @@
 #include "app/reload.h"
 #include "util/log.h"
 
+void reload_failed(const char *what)
+{
+	char cause[768];
+
+	log_last_error(cause, sizeof(cause));
+	if (cause[0])
+		log_err("reload: %s; keeping the scene on screen (%s)", what, cause);
+	else
+		log_err("reload: %s; keeping the scene on screen", what);
+}
+
 int reload_content(struct content *shown, const struct content_config *cfg, struct renderer *r,
 		   int width, int height)
 {
@@ -10,7 +21,7 @@ int reload_content(struct content *shown, const struct content_config *cfg, stru
 	if (!ret && (ret = content_prepare(&fresh, cfg, width, height)))
 		content_release(&fresh);
 	if (ret) {
-		log_err("reload: keeping the scene on screen");
+		reload_failed("the scene does not load");
 		return ret;
 	}
 	ret = content_upload(&fresh, r);

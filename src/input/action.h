@@ -1,6 +1,6 @@
 /* What an input means to the kiosk: the actions a button, a key or a
  * touch is bound to, each with the time it happened. Inputs produce
- * these; the app state (src/app/app.h) consumes them. */
+ * these; the app state (src/state/app.h) consumes them. */
 #ifndef MK_ACTION_H
 #define MK_ACTION_H
 

@@ -48,6 +48,7 @@ int load_memory(const char *name, const uint8_t *data, size_t size, const char *
 	ctx.dir = dir ? dir : "";
 	ctx.max_size = GLTF_MAX_FILE;
 	images.keep = o->textures != 0;
+	images.files = &ctx;
 	std::memset(out, 0, sizeof(*out));
 
 	if (size > GLTF_MAX_FILE || size > 0xffffffffu) {
@@ -66,10 +67,15 @@ int load_memory(const char *name, const uint8_t *data, size_t size, const char *
 		ok = parse(loader, &model, data, size, ctx, true, &err);
 	std::string required = gltf_ext::unsupported(model.extensionsRequired);
 	const std::string &version = model.asset.version;
+	std::string ours = ok ? "" : gltf_ext::file_fault(data, size);
 	if (ok && !version.empty() && version.compare(0, 2, "2.") != 0) {
 		ok = false;
-		err = "asset.version \"" + version +
-		      "\", expected 2.0 (convert glTF 1.0 files first)";
+		err = version == "1" || version.compare(0, 2, "1.") == 0
+			  ? std::string(gltf_ext::gltf1_words) + " (asset.version \"" + version +
+				"\")"
+			  : "asset.version \"" + version + "\", expected 2.0";
+	} else if (!ours.empty()) {
+		err = ours; // the parser's words would only repeat it, in its terms
 	} else if (!ok || !required.empty()) {
 		err = ok ? "extensionsRequired: " + required + " not supported"
 			 : gltf_ext::parse_fault({ctx.dir, ctx.missing, ctx.refused,

@@ -24,8 +24,8 @@ int gltf_load(const char *path, struct mesh *out);
 
 /* The same, with the first material's factors in out->material and the
  * textures named in `textures` (enum gltf_texture bits) decoded by our
- * own image.c: embedded (bufferView, data: URI) or a file beside the
- * model, by the rule buffers follow. A texture that cannot be used is a
+ * own image.c: embedded (bufferView, data: URI) or a file in the model's
+ * folder or a subfolder of it, by the rule buffers follow. A texture that cannot be used is a
  * warning and stays empty; the model still loads. */
 int gltf_load_textures(const char *path, unsigned textures, struct mesh *out);
 

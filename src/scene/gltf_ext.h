@@ -39,6 +39,10 @@ extern const char *const moved_indices;
 // after tinygltf refused the file; false when the JSON cannot be read.
 bool buffer_uris(const unsigned char *data, size_t size, std::vector<std::string> *uris, bool *glb);
 
+// A URI's %XX escapes decoded, as tinygltf decodes them before it looks
+// for the file.
+std::string percent_decoded(const std::string &uri);
+
 // What the file callbacks saw while tinygltf read the file: the model's
 // folder, the first path refused and the first missing, and the rule.
 struct FileFault {
@@ -51,6 +55,14 @@ struct FileFault {
 // another version, else tinygltf's own words.
 std::string parse_fault(const FileFault &f, const tinygltf::Model &m, const unsigned char *data,
 			size_t size, std::string err);
+
+// Our words for what a user's file is, when tinygltf refused it (in
+// gltf_words.cc): empty, a GLB cut short (declared and real lengths), glTF
+// 1.0, a JSON syntax error with its line and column; empty when none of
+// these is the fault.
+std::string file_fault(const unsigned char *data, size_t size);
+// "glTF 1.0 is not supported; re-export it as glTF 2.0"
+extern const char *const gltf1_words;
 
 // Names of the extensions in `names` that the loader does not support,
 // joined by ", "; empty when it supports them all.

@@ -68,6 +68,8 @@ std::vector<unsigned char> glb_with_json(const unsigned char *data, size_t size,
 	return out;
 }
 
+} // namespace
+
 std::string percent_decoded(const std::string &uri)
 {
 	std::string out;
@@ -83,8 +85,6 @@ std::string percent_decoded(const std::string &uri)
 	}
 	return out;
 }
-
-} // namespace
 
 const char *const moved_indices = "matcap_kiosk_indices";
 
@@ -215,10 +215,10 @@ std::string buffer_fault(const std::string &dir,
 		std::string path = (dir.empty() ? "" : dir + "/") + percent_decoded(u);
 		if (!allowed(path))
 			return what + ".uri \"" + u +
-			       "\": not a file beside the model (absolute paths and \"..\" are "
-			       "refused)";
+			       "\": lies outside the model's folder (absolute paths and \"..\" "
+			       "are refused)";
 		if (!std::ifstream(path, std::ios::binary).good())
-			return what + ".uri \"" + u + "\": no such file beside the model";
+			return what + ".uri \"" + u + "\": no such file in the model's folder";
 	}
 	return "";
 }
@@ -235,12 +235,12 @@ std::string parse_fault(const FileFault &c, const tinygltf::Model &m, const unsi
 	if (!buffer.empty())
 		return buffer;
 	if (!c.missing.empty())
-		return "buffer file \"" + c.missing + "\" does not exist beside the model";
+		return "buffer file \"" + c.missing + "\" does not exist in the model's folder";
 	if (size >= 8 && std::memcmp(data, "glTF", 4) == 0 && data[4] != 2)
 		return "GLB version " + std::to_string(data[4]) + ", expected 2 (glTF 2.0)";
 	if (!c.refused.empty())
 		return "buffer URI \"" + c.refused +
-		       "\" is not a file beside the model (absolute paths and \"..\" are refused)";
+		       "\" lies outside the model's folder (absolute paths and \"..\" are refused)";
 	if (err.empty())
 		return "not a glTF 2.0 file";
 	for (char &ch : err)

@@ -2,6 +2,10 @@
 // are read only from its own folder (or below), and what was refused or
 // missing is kept, to name it when tinygltf gives up.
 #include "scene/gltf_fs.h"
+#include "scene/gltf_ext.h"
+
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
@@ -51,6 +55,24 @@ bool gltf_read_file(const std::string &path, size_t max, std::vector<unsigned ch
 		return false;
 	}
 	return true;
+}
+
+std::string gltf_uri_fault(const GltfFiles &c, const std::string &uri)
+{
+	struct stat st;
+	std::string path = (c.dir.empty() ? "" : c.dir + "/") + gltf_ext::percent_decoded(uri);
+	if (!gltf_path_allowed(c, path))
+		return "lies outside the model's folder (absolute paths and \"..\" are refused)";
+	if (stat(path.c_str(), &st) != 0)
+		return errno == ENOENT || errno == ENOTDIR
+			   ? "is not in the model's folder (no such file)"
+			   : std::string("cannot be read: ") + std::strerror(errno);
+	if (!S_ISREG(st.st_mode))
+		return "is not a plain file";
+	if ((unsigned long long)st.st_size > c.max_size)
+		return "is larger than the limit (" + std::to_string(c.max_size >> 20) + " MiB)";
+	return access(path.c_str(), R_OK) ? std::string("cannot be read: ") + std::strerror(errno)
+					  : "could not be read";
 }
 
 namespace

@@ -16,12 +16,17 @@ struct GltfFiles {
 	size_t max_size = 0; // the largest file read
 };
 
-// A buffer URI may name a file beside the model or below it, never an
+// A URI may name a file beside the model or in a subfolder of its folder
+// (textures/wood.png, as Blender and Sketchfab write them), never an
 // absolute path or one that climbs out with "..".
 bool gltf_path_allowed(const GltfFiles &files, const std::string &path);
 // The whole file at path, refused when larger than max bytes.
 bool gltf_read_file(const std::string &path, size_t max, std::vector<unsigned char> *out,
 		    std::string *err);
+// Why the file a URI (as written, %-encoded) names in files.dir could not be
+// used, in words that follow it: "lies outside the model's folder ...", "is
+// not in the model's folder", ...
+std::string gltf_uri_fault(const GltfFiles &files, const std::string &uri);
 // The callbacks, with files as their user data (kept by the caller).
 tinygltf::FsCallbacks gltf_fs_callbacks(GltfFiles *files);
 

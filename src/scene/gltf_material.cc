@@ -3,6 +3,7 @@
 // buffers, nothing tinygltf hands back is trusted: every index, offset and
 // length is checked here before a byte is read.
 #include "scene/gltf_material.h"
+#include "scene/gltf_fs.h"
 #include "util/log.h"
 
 #include <algorithm>
@@ -80,9 +81,9 @@ bool image_bytes(const tinygltf::Model &m, int index, const GltfImages &images,
 		return true;
 	}
 	*why = img.uri.empty() ? "has no data"
-			       : "\"" + img.uri +
-				     "\" is not a readable file beside the model (absolute paths "
-				     "and \"..\" are refused)";
+			       : "\"" + img.uri + "\" " +
+				     (images.files ? gltf_uri_fault(*images.files, img.uri)
+						   : std::string("could not be read"));
 	return false;
 }
 

@@ -12,12 +12,15 @@
 #include <string>
 #include <vector>
 
-// Bytes of the images that tinygltf read from a URI (a file beside the
-// model, or a data: URI), by image index, kept by gltf_keep_image when a
-// texture may be wanted. Images in a bufferView are read from the buffer,
-// with our own bounds checks.
+struct GltfFiles;
+
+// Bytes of the images that tinygltf read from a URI (a file in the model's
+// folder or below it, or a data: URI), by image index, kept by
+// gltf_keep_image when a texture may be wanted. Images in a bufferView are
+// read from the buffer, with our own bounds checks.
 struct GltfImages {
 	bool keep = false;
+	const struct GltfFiles *files = nullptr; // to say why a URI's file was not read
 	std::vector<std::vector<unsigned char>> bytes;
 };
 

@@ -28,7 +28,7 @@ enum material_feature {
 enum material_switch { MATERIAL_AUTO, MATERIAL_OFF, MATERIAL_ON };
 enum material_lit { LIT_OFF, LIT_ON, LIT_BESIDE };
 
-/* [material] in kiosk.ini (the table in src/app/options.c). A number left NaN
+/* [material] in kiosk.ini (the table in src/config/options.c). A number left NaN
  * was not set: the glTF material, else the built-in default, decides. */
 struct material_config {
 	int iridescence; /* enum material_switch; auto: when the glTF has it */

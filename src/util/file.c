@@ -153,6 +153,11 @@ static int list_add(char ***paths, int *n, const char *dir, const char *name)
 	return 0;
 }
 
+bool file_name_is_partial(const char *name)
+{
+	return name[0] == '.' || !strncmp(name, "~syncthing~", 11);
+}
+
 int file_list_folder(const char *dir, const char *const *exts, char ***paths, int *n)
 {
 	DIR *d = opendir(dir);
@@ -164,7 +169,7 @@ int file_list_folder(const char *dir, const char *const *exts, char ***paths, in
 	if (!d)
 		return -errno;
 	while (!ret && (e = readdir(d)))
-		if (e->d_name[0] != '.' && file_name_has_ext(e->d_name, exts))
+		if (!file_name_is_partial(e->d_name) && file_name_has_ext(e->d_name, exts))
 			ret = list_add(paths, n, dir, e->d_name);
 	closedir(d);
 	if (ret) {

@@ -25,10 +25,17 @@ ssize_t file_read_at(int fd, void *buf, size_t count, off_t off);
 /* Whether name ends in "." and one of exts ("png", ..., NULL), in any case. */
 bool file_name_has_ext(const char *name, const char *const *exts);
 
+/* A name that a sync tool writes a file under until it is whole, then
+ * renames it into place: rsync's ".NAME.XXXXXX", Syncthing's
+ * ".syncthing.NAME.tmp" (hidden names, both) and "~syncthing~NAME.tmp"
+ * (where hidden names are not hidden). */
+bool file_name_is_partial(const char *name);
+
 /* The files of folder dir whose names have one of exts, hidden ones (a
- * leading dot) left out, as "dir/name" in name order: *paths (count *n),
- * each and the array malloc'd (file_list_free). Returns 0 or a negative
- * errno code (nothing to free). */
+ * leading dot) and partial ones (file_name_is_partial) left out, as
+ * "dir/name" in name order: *paths (count *n), each and the array
+ * malloc'd (file_list_free). Returns 0 or a negative errno code (nothing
+ * to free). */
 int file_list_folder(const char *dir, const char *const *exts, char ***paths, int *n);
 void file_list_free(char **paths, int n);
 

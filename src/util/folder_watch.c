@@ -1,7 +1,10 @@
 #include "util/folder_watch.h"
+#include "util/file.h"
 #include "util/log.h"
 
+#include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <libgen.h>
 #include <stdlib.h>
 #include <string.h>
@@ -14,6 +17,12 @@
  * hidden temporary file and move it over the real name. */
 #define WATCH_EVENTS                                                                               \
 	(IN_CLOSE_WRITE | IN_MOVED_TO | IN_MOVED_FROM | IN_DELETE | IN_DELETE_SELF | IN_MOVE_SELF)
+/* A partial file (file_name_is_partial) written to within this long is a
+ * sync under way; one older is what an interrupted sync left. */
+#define PARTIAL_STALE_S 60
+/* Subfolders looked into for partial files (textures/, as exporters
+ * write them; deeper is no model's layout). */
+#define PARTIAL_DEPTH 8
 
 struct folder_watch {
 	int fd;
@@ -101,7 +110,9 @@ bool folder_watch_read_names(struct folder_watch *w, folder_watch_arrived_fn arr
 
 			if (counts(w, ev)) {
 				changed = true;
-				if (arrived && ev->len &&
+				/* A partial file is not whole: it arrives when
+				 * it is renamed into place. */
+				if (arrived && ev->len && !file_name_is_partial(ev->name) &&
 				    (ev->mask & (IN_CLOSE_WRITE | IN_MOVED_TO)))
 					arrived(ctx, w->folder, ev->name);
 			}
@@ -114,4 +125,41 @@ bool folder_watch_read_names(struct folder_watch *w, folder_watch_arrived_fn arr
 bool folder_watch_read(struct folder_watch *w)
 {
 	return folder_watch_read_names(w, NULL, NULL);
+}
+
+/* A partial file written to since `since`, in the folder open as fd or in
+ * its subfolders (not through links); closes fd. */
+static bool partial_in(int fd, time_t since, int depth)
+{
+	DIR *d = fdopendir(fd);
+	struct dirent *e;
+	struct stat st;
+	bool found = false;
+
+	if (!d) {
+		close(fd);
+		return false;
+	}
+	while (!found && (e = readdir(d))) {
+		int sub;
+
+		if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..") ||
+		    fstatat(dirfd(d), e->d_name, &st, AT_SYMLINK_NOFOLLOW))
+			continue;
+		if (S_ISREG(st.st_mode) && file_name_is_partial(e->d_name))
+			found = st.st_mtime >= since;
+		else if (S_ISDIR(st.st_mode) && e->d_name[0] != '.' && depth < PARTIAL_DEPTH &&
+			 (sub = openat(dirfd(d), e->d_name,
+				       O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC)) >= 0)
+			found = partial_in(sub, since, depth + 1);
+	}
+	closedir(d);
+	return found;
+}
+
+bool folder_watch_sync_under_way(const struct folder_watch *w, time_t now)
+{
+	int fd = open(w->folder, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+
+	return fd >= 0 && partial_in(fd, now - PARTIAL_STALE_S, 0);
 }

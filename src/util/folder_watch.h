@@ -6,6 +6,7 @@
 #define MK_FOLDER_WATCH_H
 
 #include <stdbool.h>
+#include <time.h>
 
 struct folder_watch;
 
@@ -17,8 +18,14 @@ int folder_watch_fd(const struct folder_watch *w);
 /* Read what is ready; true when something of interest changed. */
 bool folder_watch_read(struct folder_watch *w);
 /* The same, and arrived(ctx, folder, name) for each file of interest that
- * was closed after writing or moved in: one that is whole now. */
+ * was closed after writing or moved in: one that is whole now (a partial
+ * name, util/file.h, never is: its file arrives when renamed into place). */
 typedef void (*folder_watch_arrived_fn)(void *ctx, const char *folder, const char *name);
 bool folder_watch_read_names(struct folder_watch *w, folder_watch_arrived_fn arrived, void *ctx);
+/* Whether a sync tool is writing into the folder (or a subfolder of it):
+ * a partial file (util/file.h: rsync's, Syncthing's temporary names)
+ * written to within the last minute (now: time(NULL)). A model whose
+ * companions (its .bin, textures/) are still on their way waits for it. */
+bool folder_watch_sync_under_way(const struct folder_watch *w, time_t now);
 
 #endif

@@ -62,6 +62,13 @@ void log_msg(enum log_level level, const char *fmt, ...)
 		fprintf(stderr, "matcap-kiosk: %s%s\n", level_word(level), line);
 }
 
+void log_clear_last_error(void)
+{
+	pthread_mutex_lock(&last_error_lock);
+	last_error[0] = '\0';
+	pthread_mutex_unlock(&last_error_lock);
+}
+
 void log_last_error(char *buf, size_t size)
 {
 	pthread_mutex_lock(&last_error_lock);

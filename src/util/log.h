@@ -23,6 +23,9 @@ void log_set_level(enum log_level max);
 enum log_level log_get_level(void);
 /* A copy of the last error logged into buf, or "" when none was. */
 void log_last_error(char *buf, size_t size);
+/* Forget it: a reload starts afresh, so that --status names a failure
+ * of this reload only, and nothing after a good one. */
+void log_clear_last_error(void);
 void log_msg(enum log_level level, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 #define log_err(...)   log_msg(LOG_ERR, __VA_ARGS__)

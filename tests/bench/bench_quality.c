@@ -21,7 +21,7 @@
 #include "scene/gltf.h"
 #include "scene/material.h"
 #include "scene/mesh.h"
-#include "app/options.h"
+#include "config/options.h"
 #include "render/render.h"
 #include "render/shading.h"
 
@@ -177,7 +177,7 @@ static int copy_mesh(const struct mesh *src, struct mesh *dst)
 	return 0;
 }
 
-/* The kiosk's resting view (src/app/content.c with the default yaw and pitch). */
+/* The kiosk's resting view (src/content/content.c with the default yaw and pitch). */
 static struct view resting_view(void)
 {
 	struct view v = {.background = {0.06f, 0.06f, 0.07f}};

@@ -22,7 +22,7 @@
 #define MAX_FRAMES    96
 
 /* The shipped matcaps' size (matcaps/README.md); the other defaults are
- * src/app/options.c's. */
+ * src/config/options.c's. */
 #define DEFAULT_MATCAP 256
 
 enum model { KNOT_16K, KNOT_100K, KNOT_1M, ENGINE };

@@ -48,6 +48,9 @@ check "installed: the units and the udev rules where this release looks" sh -c "
 		udev/rules.d/60-matcap-kiosk-gpio.rules udev/rules.d/61-matcap-kiosk-usb.rules; do
 		ls $root/lib/\$f $root/usr/lib/\$f 2>/dev/null | grep -q . || { echo missing: \$f; exit 1; }
 	done"
+check "installed: the folder for drop-in settings" test -d "$root/etc/matcap-kiosk/kiosk.ini.d"
+check "the installed settings check valid (--check-config: every file named loads)" in_root \
+	/usr/bin/matcap-kiosk --check-config --config /etc/matcap-kiosk/kiosk.ini
 check "the config is a conffile" sh -c \
 	"chroot $root dpkg-query -W -f='\${Conffiles}' matcap-kiosk | grep -q /etc/matcap-kiosk/kiosk.ini"
 check "the service's user and groups exist" sh -c "grep -q '^matcap-kiosk:' $root/etc/passwd &&

@@ -133,7 +133,9 @@ vm_check "a new frame is on the screen" wait_until 30 shows_new_frame "$fb"
 echo "USB stick appearing to its model on screen: $(($(ms) - t0)) ms"
 matcap-kiosk --status >status2.json 2>&1
 vm_check "--status names the stick's model" \
-	grep -q '"model": "/var/lib/matcap-kiosk/content/model/sphere.glb"' status2.json
+	grep -q '"model": "/var/lib/matcap-kiosk/content/model/sphere.gltf"' status2.json
+vm_check "... and its buffer was copied from the stick's subfolder" \
+	test -f /var/lib/matcap-kiosk/content/model/buffers/sphere.bin
 vm_check "the frame shows another picture than the knot" \
 	sh -c '! imgdiff --tol 8 --share 0.005 knot.png /run/matcap-kiosk/frame.png >/dev/null'
 vm_check "the prepared mesh is cached in CacheDirectory" \

@@ -188,13 +188,13 @@ for n in 'a=b.glb' 'c;d.glb' '[e].glb' ' f.glb' "$(printf 'g\001h.glb')"; do
 done
 mkdir -p "$dir/names/matcap-kiosk/matcaps"
 cp matcaps/pearl.png "$dir/names/matcap-kiosk/matcaps/"
-printf '[scene]\nmatcap = matcaps/gold.png\n[kiosk]\nturn_speed = 45\n' \
+printf '[scene]\nmatcap = matcaps/pearl.png\n[kiosk]\nturn_speed = 45\n' \
 	>"$dir/names/matcap-kiosk/kiosk.ini"
 "$kiosk" --config "$dir/kiosk.ini" --import "$dir/names/matcap-kiosk" 2>"$dir/names.err"
 step "a stick that sets [scene] matcap and brings matcaps/ is imported" [ $? -eq 0 ]
 step "... its matcap line is the only one" sh -c \
 	"[ \$(grep -c '^matcap' '$STATE_DIRECTORY/content/kiosk.ini') = 1 ] &&
-	grep -qx 'matcap = matcaps/gold.png' '$STATE_DIRECTORY/content/kiosk.ini'"
+	grep -qx 'matcap = matcaps/pearl.png' '$STATE_DIRECTORY/content/kiosk.ini'"
 step "names with ;#=[], control characters or blanks at an end are skipped" sh -c "
 	[ \$(ls '$STATE_DIRECTORY/content/model') = sphere.glb ] &&
 	grep -qx 'model = $STATE_DIRECTORY/content/model/sphere.glb' \
@@ -205,6 +205,39 @@ ln -s "$PWD/matcaps" "$dir/mlink/matcap-kiosk/matcaps"
 step "a matcaps/ that is a link is passed over" sh -c "[ $? -eq 0 ] &&
 	! test -e '$STATE_DIRECTORY/content/matcaps' &&
 	grep -q 'matcaps: not a folder (a link?): skipped' '$dir/mlink.err'"
+
+# A model folder as Sketchfab and Blender write it: scene.gltf, scene.bin,
+# textures/ (a subfolder under it too); a link to a folder and a hidden
+# folder are not taken, and a subfolder's .gltf is no model.
+sk=$dir/sketchfab/matcap-kiosk
+mkdir -p "$sk/textures/more" "$sk/.hidden" "$sk/parts"
+sed -e 's#"uri":"sphere-beetle.bin"#"uri":"scene.bin"#' \
+	-e 's#"uri":"\([a-z]*\)\.png"#"uri":"textures/\1.png"#g' \
+	"$models/sphere-beetle.gltf" >"$sk/scene.gltf"
+cp "$models/sphere-beetle.bin" "$sk/scene.bin"
+cp "$models/normal.png" "$models/occlusion.png" "$models/thickness.png" "$sk/textures/"
+cp "$models/normal.png" "$sk/textures/more/"
+cp "$models/normal.png" "$sk/.hidden/"
+cp "$models/sphere.glb" "$sk/parts/other.glb"
+ln -s /etc "$sk/etc"
+"$kiosk" --config "$dir/kiosk.ini" --import "$sk" 2>"$dir/sketchfab.err"
+step "a stick with textures/ in a subfolder is imported" [ $? -eq 0 ]
+step "... the subfolders are copied, the model loads them without a warning" sh -c "
+	test -f '$STATE_DIRECTORY/content/model/textures/normal.png' &&
+	test -f '$STATE_DIRECTORY/content/model/textures/thickness.png' &&
+	test -f '$STATE_DIRECTORY/content/model/textures/more/normal.png' &&
+	grep -qx 'model = $STATE_DIRECTORY/content/model/scene.gltf' \
+		'$STATE_DIRECTORY/content/kiosk.ini' && ! grep -q 'not used' '$dir/sketchfab.err'"
+step "... a link to a folder, a hidden folder and a subfolder's model are not taken" sh -c "
+	! test -e '$STATE_DIRECTORY/content/model/etc' &&
+	! test -e '$STATE_DIRECTORY/content/model/.hidden' &&
+	! test -e '$STATE_DIRECTORY/content/model/parts/other.glb' &&
+	grep -q 'etc: a link, not a folder: skipped' '$dir/sketchfab.err'"
+rm "$sk/textures/normal.png"
+"$kiosk" --config "$dir/kiosk.ini" --import "$sk" 2>"$dir/sketchfab2.err"
+step "a texture missing from the stick: imported, with a warning that says so" sh -c "
+	[ $? -eq 0 ] && grep -q 'textures/normal.png. is not in the model.s folder (no such file)' \
+		'$dir/sketchfab2.err'"
 
 stick_with bom
 printf '\357\273\277[scene]\npitch = 10\n' >"$dir/bom/matcap-kiosk/kiosk.ini"

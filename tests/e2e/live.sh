@@ -9,11 +9,12 @@ set -u
 offscreen=${OFFSCREEN_BACKEND:-osmesa} # egl-headless where Mesa has no OSMesa
 kiosk=$1
 listen=$2
-model=$3
+model=$(cd "$(dirname "$3")" && pwd)/$(basename "$3") # a path in kiosk.ini is the file's folder's
 dir=$4
 rm -rf "$dir"
-mkdir -p "$dir/mc"
+mkdir -p "$dir/mc" "$dir/run"
 dir=$(cd "$dir" && pwd) # NOTIFY_SOCKET must be an absolute path
+export RUNTIME_DIRECTORY="$dir/run" # --status's socket
 cp matcaps/gold.png matcaps/pearl.png "$dir/mc/"
 printf '[scene]\nmode = view\n' >"$dir/kiosk.ini"
 
@@ -98,7 +99,30 @@ step "a bad config is reported with its line" wait_for "$dir/stderr" "kiosk.ini:
 step "... and says the scene stays" wait_for "$dir/stderr" "settings have errors"
 printf '[scene]\nmodel = %s/no-such-model.glb\n' "$dir" >"$dir/kiosk.ini"
 kill -HUP $kiosk_pid
-step "a missing model keeps the scene" wait_for "$dir/stderr" "reload: keeping the scene on screen"
+step "a missing model keeps the scene" wait_for "$dir/stderr" "keeping the scene on screen ($dir/no-such-model.glb: cannot open"
+# --status's last error names the failed reload's cause; a good reload clears it.
+step "--status names the cause of the failed reload" sh -c "
+	ASAN_OPTIONS=detect_leaks=0 '$kiosk' --status 2>&1 | tee '$dir/status-bad.json' |
+	grep -qF '\"last_error\": \"reload: the scene does not load; keeping the scene on screen ($dir/no-such-model.glb: cannot open: No such file or directory)\"'"
+printf '[scene]\nmode = view\n' >"$dir/kiosk.ini"
+kill -HUP $kiosk_pid
+step "a good reload after it" wait_for "$dir/stderr" "reload: done" 4
+step "... clears --status's last error" sh -c "
+	ASAN_OPTIONS=detect_leaks=0 '$kiosk' --status 2>&1 | tee '$dir/status-good.json' |
+	grep -qF '\"last_error\": \"\"'"
+# A drop-in (kiosk.ini.d/*.ini) is read again by a reload, over kiosk.ini.
+mkdir -p "$dir/kiosk.ini.d"
+printf '[scene]\nmode = sem-vertex\n' >"$dir/kiosk.ini.d/10-fleet.ini"
+kill -HUP $kiosk_pid
+step "a reload reads a drop-in put in kiosk.ini.d/" wait_for "$dir/stderr" "mode sem-vertex"
+rm -r "$dir/kiosk.ini.d"
+printf '[scene]\nmode = phong\n' >"$dir/kiosk.ini"
+kill -HUP $kiosk_pid
+step "a reload with a bad setting" wait_for "$dir/stderr" "settings have errors" 2
+step "... --status names its file and line" sh -c "
+	ASAN_OPTIONS=detect_leaks=0 '$kiosk' --status 2>&1 | tee '$dir/status-setting.json' |
+	grep -F 'the settings have errors; keeping the scene on screen ($dir/kiosk.ini:2: [scene] mode = ' |
+	grep -qF 'is not valid'"
 
 # 400 ms watchdog: a ping every 200 ms from the loop, even when idle.
 sleep 1.2

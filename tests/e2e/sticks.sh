@@ -1,15 +1,18 @@
 #!/bin/sh
 # The USB sticks of tests/e2e/hands-board.sh, made without root or a loop
 # device: GOOD, FAT as sticks come (mkfs.vfat and mcopy: dosfstools and
-# mtools; ext2 where they are missing, said on stderr), carries a model and
-# a kiosk.ini in matcap-kiosk/; BROKEN, ext2 (mke2fs -d: e2fsprogs), a
+# mtools; ext2 where they are missing, said on stderr), carries a model whose
+# buffer lies in a subfolder (buffers/, as Blender and Sketchfab lay out
+# their files) and a kiosk.ini in matcap-kiosk/; BROKEN, ext2 (mke2fs -d: e2fsprogs), a
 # truncated model. Prints the tests/vm/run.sh options that plug them in.
 #   sticks.sh DIR
 set -eu
 dir=$1
 rm -rf "$dir"
-mkdir -p "$dir/good/matcap-kiosk" "$dir/broken/matcap-kiosk"
-cp tests/fuzz/corpus/gltf/sphere.glb "$dir/good/matcap-kiosk/"
+mkdir -p "$dir/good/matcap-kiosk/buffers" "$dir/broken/matcap-kiosk"
+sed 's#"uri":"sphere-external.bin"#"uri":"buffers/sphere.bin"#' \
+	tests/fuzz/corpus/gltf/sphere-external.gltf >"$dir/good/matcap-kiosk/sphere.gltf"
+cp tests/fuzz/corpus/gltf/sphere-external.bin "$dir/good/matcap-kiosk/buffers/sphere.bin"
 printf '[scene]\nyaw = 30\n' >"$dir/good/matcap-kiosk/kiosk.ini"
 head -c 500 tests/fuzz/corpus/gltf/sphere.glb >"$dir/broken/matcap-kiosk/sphere.glb"
 ext2() { mke2fs -q -F -t ext2 -L "$1" -d "$dir/$1" "$dir/$1.img" 2M >/dev/null; }

@@ -1,7 +1,7 @@
 /* libFuzzer: the config file reader (inih and our table) on any bytes, as
  * /etc/matcap-kiosk/kiosk.ini would hand them over, over the defaults. */
 #include "util/log.h"
-#include "app/options.h"
+#include "config/options.h"
 
 #include <stdint.h>
 

@@ -22,9 +22,9 @@
 #include "app/signals.h"
 #include "util/log.h"
 #include "scene/mesh.h"
-#include "app/options.h"
+#include "config/options.h"
 #include "render/render.h"
-#include "app/content.h"
+#include "content/content.h"
 
 #include <dlfcn.h>
 #include <errno.h>
@@ -48,7 +48,7 @@ struct soak_opts {
 struct script {
 	struct input_source base; /* first: the loop hands this back */
 	struct kiosk *k;
-	const struct content *scene; /* the kiosk's: a reload swaps what it holds */
+	const struct content *content; /* the kiosk's: a reload swaps what it holds */
 	const struct soak_opts *o;
 	long last_frame;
 	long next_reload;     /* frame */
@@ -102,14 +102,15 @@ static int write_text(const char *path, const char *text)
 static void write_variant(struct script *s, int i)
 {
 	static const char *const text[VARIANTS] = {
-	    "[scene]\nmode = normal\nmodel = %s/sphere.glb\n",
+	    /* Relative: from kiosk.ini's folder, which is o->dir. */
+	    "[scene]\nmode = normal\nmodel = sphere.glb\n",
 	    "[scene]\nmode = sem-fragment\n",
-	    "[scene]\nmodel = %s/no-such-model.glb\n",
+	    "[scene]\nmodel = no-such-model.glb\n",
 	    "[scene]\nmode = phong\n",
 	};
 	char path[4096], body[4096];
 
-	snprintf(body, sizeof(body), text[i % VARIANTS], s->o->dir);
+	snprintf(body, sizeof(body), "%s", text[i % VARIANTS]);
 	path_in(path, sizeof(path), s->o, "kiosk.ini");
 	if (write_text(path, body)) {
 		fprintf(stderr, "soak: cannot write %s\n", path);
@@ -138,7 +139,7 @@ static void change_folder(const struct script *s, int i)
  * and the sphere's must be another. */
 static void check_previous(struct script *s, int i)
 {
-	const struct content *sc = s->scene;
+	const struct content *sc = s->content;
 	int v = (i - 1) % VARIANTS;
 	bool knot = sc->mesh.vertex_count == s->knot_vertices;
 	int matcaps = s->base_matcaps + ((i - 1) % 2 == 0 ? 1 : 0);
@@ -297,36 +298,36 @@ static int report(const struct script *s, double seconds)
 static int run(const struct soak_opts *so, char **kiosk_argv, int kiosk_argc, struct script *s)
 {
 	struct options o;
-	struct content scene;
+	struct content content;
 	struct display_config cfg = {.width = so->size, .height = so->size};
 	struct display *d = NULL;
 	struct renderer *r = NULL;
-	struct kiosk_parts parts = {.scene = &scene, .options = &o, .argv = kiosk_argv};
+	struct kiosk_parts parts = {.content = &content, .options = &o, .argv = kiosk_argv};
 	struct kiosk *k;
 	double start;
 	int ret;
 
 	ret = options_parse(&o, kiosk_argc, kiosk_argv);
 	if (!ret)
-		ret = content_load(&scene, &o.content, true);
+		ret = content_load(&content, &o.content, true);
 	if (ret)
 		goto out_opts;
-	s->base_matcaps = matcap_set_count(scene.set);
+	s->base_matcaps = matcap_set_count(content.set);
 #ifdef MK_HAVE_OSMESA
 	d = display_osmesa_new(&cfg);
 #else /* Mesa without OSMesa: the same renders through EGL */
 	d = display_egl_new(&cfg);
 #endif
 	r = d ? renderer_new(&d->gl, NULL) : NULL;
-	ret = r ? content_prepare(&scene, &o.content, d->width, d->height) : -ENODEV;
+	ret = r ? content_prepare(&content, &o.content, d->width, d->height) : -ENODEV;
 	if (!ret)
-		ret = content_upload(&scene, r);
+		ret = content_upload(&content, r);
 	if (!ret)
 		ret = renderer_set_mode(r, o.content.mode, o.content.ortho);
 	if (ret)
 		goto out;
-	s->knot_vertices = scene.mesh.vertex_count;
-	s->scene = &scene;
+	s->knot_vertices = content.mesh.vertex_count;
+	s->content = &content;
 	parts.display = d;
 	parts.renderer = r;
 	k = kiosk_new(&parts, 0);
@@ -342,7 +343,7 @@ static int run(const struct soak_opts *so, char **kiosk_argv, int kiosk_argc, st
 out:
 	renderer_free(r);
 	display_free(d);
-	content_release(&scene);
+	content_release(&content);
 out_opts:
 	options_release(&o);
 	return ret;

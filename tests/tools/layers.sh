@@ -1,7 +1,11 @@
 #!/bin/sh
 # The layers of src/, checked from its #include lines alone. Top to bottom:
 #
-#   app
+#   app                          the loop: main, poll(), model switching, reload, signals
+#   ops                          operator services: import, status, screen power, systemd
+#   content                      the asset pipeline: content, model list and loader, matcap set
+#   config                       the settings: one table, options, plain config structs
+#   state                        pure decisions: app state, power, schedule
 #   display   input   camera     (peers: none of the three includes another)
 #   render
 #   scene
@@ -36,10 +40,14 @@ fi
 awk -v src="$src" -v max_lines="$max_lines" '
 BEGIN {
 	rank["app"] = 0
-	rank["display"] = 1; rank["input"] = 1; rank["camera"] = 1
-	rank["render"] = 2
-	rank["scene"] = 3
-	rank["util"] = 4
+	rank["ops"] = 1
+	rank["content"] = 2
+	rank["config"] = 3
+	rank["state"] = 4
+	rank["display"] = 5; rank["input"] = 5; rank["camera"] = 5
+	rank["render"] = 6
+	rank["scene"] = 7
+	rank["util"] = 8
 	bad = 0
 }
 function offence(where, what) {
@@ -83,7 +91,7 @@ FNR == 1 {
 	module = rel
 	sub(/\.(c|cc|h)$/, "", module)
 	if (!(own in rank))
-		offence(file ":1", "not in a layer folder (app, display, input, camera, render, scene, util)")
+		offence(file ":1", "not in a layer folder (app, ops, content, config, state, display, input, camera, render, scene, util)")
 }
 { lines = FNR }
 /^[ \t]*#[ \t]*include[ \t]*"/ {

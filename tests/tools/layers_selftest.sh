@@ -15,16 +15,22 @@ failed=0
 # A clean tree: every layer, each file including its own layer and lower ones.
 clean() {
 	rm -rf "$tmp/src"
-	for d in app display input camera render scene util; do mkdir -p "$tmp/src/$d"; done
+	for d in app ops content config state display input camera render scene util; do
+		mkdir -p "$tmp/src/$d"
+	done
 	printf '/* the bottom layer */\n' >"$tmp/src/util/log.h"
 	printf '#include "util/log.h"\n' >"$tmp/src/scene/mesh.h"
 	printf '#include "scene/mesh.h"\n#include "util/log.h"\n' >"$tmp/src/render/render.h"
 	printf '#include "render/render.h"\n' >"$tmp/src/display/display.h"
 	printf '#include "render/render.h"\n' >"$tmp/src/input/button.h"
 	printf '#include "render/render.h"\n' >"$tmp/src/camera/camera.h"
-	printf '#include "app/app.h"\n#include "display/display.h"\n#include "input/button.h"\n' \
+	printf '#include "input/button.h"\n' >"$tmp/src/state/app.h"
+	printf '#include "state/app.h"\n#include "display/display.h"\n' >"$tmp/src/config/settings.h"
+	printf '#include "config/settings.h"\n' >"$tmp/src/content/content.h"
+	printf '#include "content/content.h"\n#include "camera/camera.h"\n' >"$tmp/src/ops/import.h"
+	printf '#include "ops/import.h"\n#include "app/kiosk.h"\n#include "state/app.h"\n' \
 		>"$tmp/src/app/main.c"
-	printf '#include "camera/camera.h"\n' >"$tmp/src/app/app.h"
+	printf '#include "content/content.h"\n' >"$tmp/src/app/kiosk.h"
 }
 # expect pass|fail NAME [PATTERN]: run the checker on the tree; on a failure
 # its output must contain PATTERN (the file and line of the offence).
@@ -47,6 +53,10 @@ printf '#include "util/log.h"\n#include "render/render.h"\n' >"$tmp/src/scene/lo
 expect fail "an upward include fails" "src/scene/lod.c:2: #include \"render/render.h\" goes up"
 rm "$tmp/src/scene/lod.c"
 expect pass "the same tree without it passes again"
+
+clean
+printf '#include "content/content.h"\n' >>"$tmp/src/config/settings.h"
+expect fail "configuration including content fails" "src/config/settings.h:3: #include \"content/content.h\" goes up"
 
 clean
 printf '#include "input/button.h"\n' >>"$tmp/src/display/display.h"

@@ -1,6 +1,6 @@
 /* The app state with made-up timestamps: turning, taps, attract mode,
  * matcap cycling, and a rotation that stays a rotation. */
-#include "app/app.h"
+#include "state/app.h"
 
 #include <math.h>
 #include <setjmp.h>

@@ -2,7 +2,7 @@
  * as the arrows do, a pinch zooms within bounds, a double tap resets, a
  * long press does what it is set to; nothing that changes nothing asks
  * for a frame. And the zoom as the renderer applies it. */
-#include "app/app.h"
+#include "state/app.h"
 #include "render/render.h"
 
 #include <math.h>

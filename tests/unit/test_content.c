@@ -2,8 +2,8 @@
  * the command line that a reload does, and the matcap folder watch. */
 #include "util/folder_watch.h"
 #include "util/log.h"
-#include "app/options.h"
-#include "app/content.h"
+#include "config/options.h"
+#include "content/content.h"
 
 #include <errno.h>
 #include <poll.h>
@@ -13,6 +13,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 #include <cmocka.h>
 
@@ -116,7 +118,12 @@ static void second_parse_sees_the_new_file(void **state)
 	assert_int_equal(a.content.mode, SHADING_NORMAL);
 	assert_int_equal(b.content.mode, SHADING_NORMAL);
 	assert_int_equal(b.log_level, LOG_WARN);
-	assert_string_equal(b.content.model, "m.glb");
+	{ /* a relative path: the file's folder's */
+		char want[160];
+
+		snprintf(want, sizeof(want), "%s/m.glb", dir);
+		assert_string_equal(b.content.model, want);
+	}
 	options_release(&a);
 	options_release(&b);
 	write_text(ini, "[scene]\nyaw = east\n");
@@ -169,6 +176,47 @@ static void watch_of_one_file_ignores_the_others(void **state)
 	assert_null(folder_watch_new("/nonexistent/folder"));
 }
 
+static void note(void *ctx, const char *folder, const char *name)
+{
+	(void)folder;
+	strcat(ctx, name);
+	strcat(ctx, " ");
+}
+
+/* rsync and Syncthing write under a temporary name, then rename it into
+ * place: the rename is the arrival, never the temporary file; while one
+ * is being written, in the folder or below, a sync is under way. */
+static void watch_takes_synced_files_once_renamed(void **state)
+{
+	struct folder_watch *w = folder_watch_new(dir);
+	char tmp[128], sub[128], done[128], seen[512] = "";
+	struct pollfd p = {.fd = w ? folder_watch_fd(w) : -1, .events = POLLIN};
+
+	(void)state;
+	assert_non_null(w);
+	assert_false(folder_watch_sync_under_way(w, time(NULL)));
+	snprintf(tmp, sizeof(tmp), "%s/.model.glb.x8Yz1Q", dir);
+	write_text(tmp, "half");
+	assert_true(folder_watch_sync_under_way(w, time(NULL)));
+	/* One left by a sync cut short a while ago is not a sync under way. */
+	assert_false(folder_watch_sync_under_way(w, time(NULL) + 120));
+	snprintf(done, sizeof(done), "%s/model.glb", dir);
+	assert_int_equal(rename(tmp, done), 0);
+	assert_false(folder_watch_sync_under_way(w, time(NULL)));
+	snprintf(sub, sizeof(sub), "%s/textures", dir);
+	assert_int_equal(mkdir(sub, 0755), 0);
+	snprintf(tmp, sizeof(tmp), "%s/textures/~syncthing~wood.png.tmp", dir);
+	write_text(tmp, "half");
+	assert_true(folder_watch_sync_under_way(w, time(NULL)));
+	unlink(tmp);
+	rmdir(sub);
+	assert_true(poll(&p, 1, 1000) > 0);
+	assert_true(folder_watch_read_names(w, note, seen));
+	assert_string_equal(seen, "model.glb ");
+	unlink(done);
+	folder_watch_free(w);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -178,6 +226,8 @@ int main(void)
 	    cmocka_unit_test_setup_teardown(watch_reports_written_and_moved_files, make_dir,
 					    remove_dir),
 	    cmocka_unit_test_setup_teardown(watch_of_one_file_ignores_the_others, make_dir,
+					    remove_dir),
+	    cmocka_unit_test_setup_teardown(watch_takes_synced_files_once_renamed, make_dir,
 					    remove_dir),
 	};
 

@@ -114,7 +114,9 @@ static void read_refuses(void **state)
 static void lists_a_folder(void **state)
 {
 	static const char *const exts[] = {"png", "jpg", NULL};
-	static const char *const names[] = {"b.PNG", "a.jpg", ".hidden.png", "c.txt", "d.png.part"};
+	static const char *const names[] = {
+	    "b.PNG",	  "a.jpg",	   ".hidden.png",      "c.txt",
+	    "d.png.part", ".e.png.x8Yz1Q", "~syncthing~f.png", ".syncthing.g.png.tmp"};
 	const char *dir = *state;
 	char path[128], **paths;
 	int n;
@@ -131,6 +133,12 @@ static void lists_a_folder(void **state)
 	assert_string_equal(paths[1], path);
 	file_list_free(paths, n);
 	assert_true(file_name_has_ext("x.JPG", exts));
+	/* rsync's, Syncthing's (Linux, and where dot files are not hidden). */
+	assert_true(file_name_is_partial(".model.glb.x8Yz1Q"));
+	assert_true(file_name_is_partial(".syncthing.model.glb.tmp"));
+	assert_true(file_name_is_partial("~syncthing~model.glb.tmp"));
+	assert_false(file_name_is_partial("model.glb"));
+	assert_false(file_name_is_partial("syncthing.glb"));
 	assert_false(file_name_has_ext("png", exts));
 	assert_int_equal(file_list_folder("/nonexistent", exts, &paths, &n), -ENOENT);
 	assert_null(paths);

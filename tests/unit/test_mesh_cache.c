@@ -1,7 +1,7 @@
 /* The prepared-mesh cache: what is written reads back the same, and an
  * entry that is truncated, flipped, stale or of another key is never
  * trusted. Also the compact vertex format it stores. */
-#include "app/content.h"
+#include "content/content.h"
 #include "display/display.h"
 #include "gltf_write.h"
 #include "scene/mesh.h"

@@ -2,7 +2,7 @@
  * cycling, passing over models that do not load (once logged, then
  * silently until the file changes), and a rescan that takes a new file
  * only once it arrived whole. The loader is a fake: no model is parsed. */
-#include "app/model_list.h"
+#include "content/model_list.h"
 
 #include <setjmp.h>
 #include <stdarg.h>

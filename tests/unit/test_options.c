@@ -1,5 +1,5 @@
-#include "app/options.h"
-#include "app/settings.h"
+#include "config/options.h"
+#include "config/settings.h"
 #include "app/reload.h"
 
 #include <math.h>
@@ -103,7 +103,8 @@ static void config_file_then_command_line(void **state)
 	assert_int_equal(parse(&o, 5, argv), 0);
 	assert_int_equal(o.backend, BACKEND_OSMESA);
 	assert_int_equal(o.content.rotation, 180);
-	assert_string_equal(o.content.model, "a.glb");
+	/* From the file's folder, not the current one. */
+	assert_string_equal(o.content.model, "/tmp/a.glb");
 	assert_true(o.content.ortho);
 	assert_int_equal(o.log_level, LOG_DEBUG);
 	/* The command line wins over the file, wherever --config stands. */
@@ -319,6 +320,32 @@ static void copy_is_deep(void **state)
 	options_release(&c);
 }
 
+/* The content part alone, as the model worker copies it: deep too, its
+ * material file names included, and nothing outside it touched. */
+static void content_copy_is_deep(void **state)
+{
+	const char *argv[] = {"mk",   "--model", "m.glb", "--matcap", "mc", "--iridescence-ramp",
+			      "r.png"};
+	struct options o;
+	struct content_config c;
+
+	(void)state;
+	assert_int_equal(parse(&o, 7, argv), OPTIONS_OK);
+	assert_int_equal(content_config_copy(&c, &o.content), 0);
+	assert_ptr_not_equal(c.model, o.content.model);
+	assert_ptr_not_equal(c.matcap, o.content.matcap);
+	assert_ptr_not_equal(c.material.ramp, o.content.material.ramp);
+	assert_null(c.model_scene);
+	assert_int_equal(c.mode, o.content.mode);
+	options_release(&o);
+	assert_string_equal(c.model, "m.glb");
+	assert_string_equal(c.matcap, "mc");
+	assert_string_equal(c.material.ramp, "r.png");
+	content_config_release(&c);
+	assert_null(c.model);
+	assert_null(c.material.ramp);
+}
+
 static unsigned changed_by(const char *arg)
 {
 	const char *base[] = {"mk"}, *argv[] = {"mk", arg};
@@ -449,6 +476,7 @@ int main(void)
 	    cmocka_unit_test(sections_into_module_configs),
 	    cmocka_unit_test(module_defaults),
 	    cmocka_unit_test(copy_is_deep),
+	    cmocka_unit_test(content_copy_is_deep),
 	    cmocka_unit_test(reload_table),
 	    cmocka_unit_test(reload_reopens_what_changed),
 	    cmocka_unit_test(attract_settings),

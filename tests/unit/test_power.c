@@ -1,7 +1,7 @@
 /* The screen's power state machine with a clock the test controls:
  * schedules, blank_after, waking by input, an unsynchronised clock, and a
  * whole week minute by minute. */
-#include "app/power.h"
+#include "state/power.h"
 
 #include <setjmp.h>
 #include <stdarg.h>

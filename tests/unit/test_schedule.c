@@ -1,6 +1,6 @@
 /* [power] schedule: the parser's words for bad input, and which minutes of
  * the week are inside, across midnight and across DST changes. */
-#include "app/schedule.h"
+#include "state/schedule.h"
 
 #include <setjmp.h>
 #include <stdarg.h>

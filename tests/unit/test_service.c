@@ -2,7 +2,7 @@
  * READY=1 once, the watchdog's cadence, and no ping while the display is
  * stuck, so systemd restarts the service. */
 #include "util/log.h"
-#include "app/service.h"
+#include "ops/service.h"
 
 #include <poll.h>
 #include <setjmp.h>

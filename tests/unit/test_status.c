@@ -2,7 +2,7 @@
  * escaped), the same text lands in state.json, a second kiosk does not
  * take a running one's socket, a dead one's is taken over, and the client
  * fails with a clear line when nobody answers. */
-#include "app/status.h"
+#include "ops/status.h"
 #include "util/log.h"
 
 #include <setjmp.h>

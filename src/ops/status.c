@@ -1,4 +1,4 @@
-#include "app/status.h"
+#include "ops/status.h"
 #include "util/clock.h"
 #include "util/file.h"
 #include "util/log.h"

@@ -1,5 +1,5 @@
-#include "app/content.h"
-#include "app/model_list.h"
+#include "content/content.h"
+#include "content/model_list.h"
 #include "render/bake.h"
 #include "scene/gltf.h"
 #include "scene/lod.h"
@@ -64,8 +64,8 @@ static int content_cache_lookup(struct content *s, const struct content_config *
 	 * texture: its factors are all material_load needs. */
 	s->mesh.material = *mesh_cache_entry_material(s->cached);
 	shell_counts(s, mesh_cache_entry_mesh(s->cached));
-	log_info("%s: the prepared mesh from the cache (%u triangles)", path,
-		 s->mesh.index_count / 3);
+	/* Said by content_prepare, once it is known to be used. */
+	log_debug("%s: a prepared mesh in the cache", path);
 	return 0;
 }
 
@@ -131,7 +131,7 @@ static int content_cache_reopen(struct content *s)
 	return ret;
 }
 
-static const char *default_matcaps(void)
+const char *content_default_matcaps(void)
 {
 	/* Installed data first; the source tree's folder when run from it. */
 	if (access(MK_MATCAP_DIR, R_OK) == 0)
@@ -141,7 +141,7 @@ static const char *default_matcaps(void)
 
 static int load_matcap(const struct content_config *o, bool strict, struct content *s)
 {
-	const char *path = o->matcap ? o->matcap : default_matcaps();
+	const char *path = o->matcap ? o->matcap : content_default_matcaps();
 	int ret = -ENOENT;
 
 	s->set = path ? matcap_set_open(path) : NULL;
@@ -286,10 +286,15 @@ int content_prepare(struct content *s, const struct content_config *o, int width
 	bool displaced = s->material.features & MATERIAL_DISPLACEMENT;
 	int ret = 0;
 
-	if (content_cache_fits(s, width, height))
+	if (content_cache_fits(s, width, height)) {
+		log_info("%s: the prepared mesh from the cache (%u triangles)", s->model_path,
+			 s->mesh.index_count / 3);
 		return 0;
+	}
 	if (s->cached) {
 		/* Cached for another display: its level of detail is another. */
+		log_info("%s: the cache holds it prepared for another screen size: prepared again",
+			 s->model_path);
 		mesh_cache_entry_free(s->cached);
 		s->cached = NULL;
 		mesh_release(&s->mesh);

@@ -1,9 +1,9 @@
 /* Reading the settings: the command line and kiosk.ini, through the
- * table of src/app/settings.h, into struct options. */
+ * table of src/config/settings.h, into struct options. */
 #ifndef MK_OPTIONS_H
 #define MK_OPTIONS_H
 
-#include "app/settings.h"
+#include "config/settings.h"
 
 #include <stdbool.h>
 #include <stdio.h>
@@ -19,8 +19,12 @@ enum options_status {
  * line and key, and what is accepted. opts is to be released whatever
  * the status. */
 enum options_status options_parse(struct options *opts, int argc, char **argv);
-/* Read one INI file over opts. */
+/* Read an INI file over opts: the file, its drop-ins (PATH.d/ *.ini in
+ * name order) and its include. A relative path in a file is taken from
+ * that file's folder. */
 enum options_status options_read_file(struct options *opts, const char *path);
+/* The same without the include: what is installed. */
+enum options_status options_read_installed(struct options *opts, const char *path);
 /* The same from memory (for the fuzzer); name is used in messages only. */
 enum options_status options_read_memory(struct options *opts, const char *name, const char *text,
 					size_t size);

@@ -35,7 +35,7 @@ struct app_config {
 #define APP_ZOOM_MIN 0.5
 #define APP_ZOOM_MAX 4.0
 
-/* What a frame shows: read-only outside src/app/app.c. */
+/* What a frame shows: read-only outside src/state/app.c. */
 struct app_state {
 	struct quat orientation;
 	int matcap;	/* index into the image matcaps */

@@ -1,5 +1,5 @@
-#include "app/screen.h"
-#include "app/power.h"
+#include "ops/screen.h"
+#include "state/power.h"
 #include "display/backlight.h"
 #include "display/cec.h"
 #include "util/log.h"

@@ -2,19 +2,19 @@
  * structs of the modules that use the settings, plus the command line's
  * own), the one table that names each setting's option, its [section]
  * key, its type, range and help, and the reload rules of each section.
- * src/app/options.c reads the command line and kiosk.ini through it, so
+ * src/config/options.c reads the command line and kiosk.ini through it, so
  * the two sources cannot drift apart. */
 #ifndef MK_SETTINGS_H
 #define MK_SETTINGS_H
 
-#include "app/app.h"
-#include "app/content.h"
-#include "app/screen.h"
 #include "camera/camera_feed.h"
+#include "config/content_config.h"
+#include "config/screen_config.h"
 #include "display/display.h"
 #include "input/gpio.h"
 #include "input/keyboard.h"
 #include "input/touch.h"
+#include "state/app.h"
 #include "util/log.h"
 
 #include <stdbool.h>
@@ -39,7 +39,7 @@ enum options_section {
 /* What a reload does with a section's settings. */
 enum options_reload {
 	OPTIONS_AT_START, /* read once (the display is opened once): a restart applies them */
-	OPTIONS_LIVE,	  /* applied with the new scene and a fresh app state */
+	OPTIONS_LIVE,	  /* applied with the new content and a fresh app state */
 	OPTIONS_REOPEN,	  /* applied live: its devices are opened again when they changed */
 };
 
@@ -74,6 +74,11 @@ struct options {
 	struct touch_config touch;
 	char *poster;  /* [display] poster */
 	char *include; /* [kiosk] include */
+	/* Where each setting came from (file and line), and the files read,
+	 * for --check-config and the messages; NULL: none recorded. Owned;
+	 * options_copy does not copy it (a copy has none). */
+	struct options_origins *origins;
+	bool include_ignored; /* the include had errors: the installed files alone */
 	/* the command line only */
 	char *config;
 	char *import;
@@ -120,9 +125,31 @@ bool option_set_value(struct options *o, const struct option_def *d, const char 
 /* A deep copy; 0 or -ENOMEM (dst then holds nothing to release). */
 int options_copy(struct options *dst, const struct options *src);
 void options_release(struct options *opts);
+/* The same for the content part alone (struct options' content), for
+ * whoever needs only that, such as the model worker. */
+int content_config_copy(struct content_config *dst, const struct content_config *src);
+void content_config_release(struct content_config *c);
 /* Bit (1u << enum options_section) for each section whose settings
  * differ; an at-start section's live_key is not counted. */
 unsigned options_changed(const struct options *a, const struct options *b);
 const char *backend_name(enum backend_kind kind);
+
+/* One setting's origin: a file and line, "the command line" (line 0), or
+ * NULL when it has its default. */
+struct options_origin {
+	const char *file;
+	int line;
+};
+
+/* The origin of d's value in o (files as they were named). */
+struct options_origin options_origin(const struct options *o, const struct option_def *d);
+/* Note that d was set by file at line (file NULL: the command line). */
+int options_origin_set(struct options *o, const struct option_def *d, const char *file, int line);
+/* Add file to the list of those read; its copy, or NULL on -ENOMEM. */
+const char *options_origin_file(struct options *o, const char *file);
+/* The files read, in order: the count, and each through *files. */
+int options_files_read(const struct options *o, const char *const **files);
+/* options_release does this; for a reader that starts over. */
+void options_origins_free(struct options *o);
 
 #endif

@@ -1,4 +1,4 @@
-/* The screen's power in the live loop: src/app/power.c decides from the
+/* The screen's power in the live loop: src/state/power.c decides from the
  * schedule, blank_after and the inputs; this puts the decision on the
  * display (KMS sleep), the panel's backlight and, with cec = on, the TV.
  * It reads the wall clock (local time, and whether the kernel says it is
@@ -6,18 +6,11 @@
 #ifndef MK_SCREEN_H
 #define MK_SCREEN_H
 
+#include "config/screen_config.h"
 #include "display/display.h"
 
 #include <stdbool.h>
 #include <stdint.h>
-
-/* [power] in kiosk.ini. */
-struct screen_config {
-	char *schedule;	    /* "Mon-Fri 08:00-20:00, ..."; NULL or "": always on */
-	double blank_after; /* minutes without input; 0: never */
-	bool cec;	    /* also tell an HDMI-CEC TV */
-	char *cec_device;   /* NULL: /dev/cec0 */
-};
 
 struct screen;
 

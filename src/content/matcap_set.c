@@ -1,4 +1,4 @@
-#include "render/matcap_set.h"
+#include "content/matcap_set.h"
 #include "util/file.h"
 #include "util/log.h"
 

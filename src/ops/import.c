@@ -1,6 +1,7 @@
-#include "app/import.h"
-#include "app/content.h"
-#include "app/options.h"
+#include "ops/import.h"
+#include "ops/import_ini.h"
+#include "content/content.h"
+#include "config/options.h"
 #include "util/file.h"
 #include "util/log.h"
 
@@ -24,6 +25,9 @@
 #define IMPORT_MAX_TOTAL (2048ll * 1024 * 1024)
 /* A settings file, not a way to fill memory. */
 #define IMPORT_MAX_INI (64 * 1024)
+/* Subfolders below the model's (textures/, as Blender and Sketchfab
+ * write them): deeper ones are no model's layout, and are not followed. */
+#define IMPORT_MAX_DEPTH 8
 
 struct import {
 	const char *from;	  /* the stick's folder */
@@ -41,6 +45,8 @@ struct import {
 static const char *const model_exts[] = {"gltf", "glb", NULL};
 static const char *const content_exts[] = {"gltf", "glb", "bin", "png", "jpg", "jpeg", NULL};
 static const char *const image_exts[] = {"png", "jpg", "jpeg", NULL};
+/* In a subfolder: what a model names by URI, never a model itself. */
+static const char *const asset_exts[] = {"bin", "png", "jpg", "jpeg", NULL};
 
 /* A name goes into the generated kiosk.ini (model = .../NAME): one that
  * INI syntax would read otherwise (a comment, a key, a section, blanks
@@ -104,7 +110,7 @@ static int copy_fd(int in, int out, off_t size)
 
 /* A link, a device or a pipe on the stick is not a file to copy: 1
  * (skipped, and said); else 0 with the file open in *fd, or -errno. */
-static int open_plain(const struct import *im, int dir, const char *name, int *fd, struct stat *st)
+static int open_plain(const char *shown, int dir, const char *name, int *fd, struct stat *st)
 {
 	*fd = openat(dir, name, O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
 	if (*fd < 0 && errno != ELOOP && errno != ENXIO && errno != ENODEV)
@@ -114,21 +120,22 @@ static int open_plain(const struct import *im, int dir, const char *name, int *f
 	if (*fd >= 0)
 		close(*fd);
 	*fd = -1;
-	log_warn("%s/%s: not a plain file: skipped", im->from, name);
+	log_warn("%s/%s: not a plain file: skipped", shown, name);
 	return 1;
 }
 
 /* Counted against the budget first; then replaced whole and synced
  * (util/file.h). */
-static int copy_file(struct import *im, int from_dir, const char *name, const char *to_dir)
+static int copy_file(struct import *im, const char *shown, int from_dir, const char *name,
+		     const char *to_dir)
 {
 	char dst[PATH_MAX];
 	struct file_atomic a;
 	struct stat st;
-	int in, ret = open_plain(im, from_dir, name, &in, &st);
+	int in, ret = open_plain(shown, from_dir, name, &in, &st);
 
 	if (ret < 0)
-		log_err("%s/%s: cannot open: %s", im->from, name, strerror(-ret));
+		log_err("%s/%s: cannot open: %s", shown, name, strerror(-ret));
 	if (ret)
 		return ret;
 	snprintf(dst, sizeof(dst), "%s/%s", to_dir, name);
@@ -144,7 +151,7 @@ static int copy_file(struct import *im, int from_dir, const char *name, const ch
 	if (!ret)
 		ret = file_atomic_end(&a, copy_fd(in, a.fd, st.st_size), true);
 	if (ret) {
-		log_err("%s/%s: cannot copy into %s: %s", im->from, name, to_dir,
+		log_err("%s/%s: cannot copy into %s: %s", shown, name, to_dir,
 			ret == -ESTALE ? "it changed while it was copied" : strerror(-ret));
 	}
 out:
@@ -200,25 +207,77 @@ static int list_folder(int fd, char ***names, size_t *n)
 	return ret;
 }
 
+static int copy_folder(struct import *im, int fd, const char *shown, const char *to,
+		       const char *const *exts, int depth, int *count);
+
+/* A subfolder of the model's folder, by the same rules: not a link, no
+ * hidden name, files by asset_exts, under the same budget. 0 when it is
+ * passed over (said), else copy_folder's result. */
+static int copy_subfolder(struct import *im, int fd, const char *shown, const char *name,
+			  const char *to, int depth, int *count)
+{
+	char sub_shown[PATH_MAX], sub_to[PATH_MAX];
+	int sub = openat(fd, name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC), ret;
+
+	if (sub < 0 && (errno == ELOOP || errno == ENOTDIR)) {
+		log_warn("%s/%s: a link, not a folder: skipped", shown, name);
+		return 0;
+	}
+	if (sub < 0) {
+		ret = -errno;
+		log_err("%s/%s: cannot open: %s", shown, name, strerror(-ret));
+		return ret;
+	}
+	if (snprintf(sub_shown, sizeof(sub_shown), "%s/%s", shown, name) >=
+		(int)sizeof(sub_shown) ||
+	    snprintf(sub_to, sizeof(sub_to), "%s/%s", to, name) >= (int)sizeof(sub_to)) {
+		log_warn("%s/%s: the path is too long: skipped", shown, name);
+		close(sub);
+		return 0;
+	}
+	if (depth >= IMPORT_MAX_DEPTH) {
+		log_warn("%s: more than %d folders deep: skipped", sub_shown, IMPORT_MAX_DEPTH);
+		close(sub);
+		return 0;
+	}
+	ret = copy_folder(im, sub, sub_shown, sub_to, asset_exts, depth + 1, count);
+	close(sub);
+	return ret;
+}
+
+/* A folder, or a link to one (which copy_subfolder names and passes over). */
+static bool is_folder(int fd, const char *name)
+{
+	struct stat st;
+
+	return !fstatat(fd, name, &st, 0) && S_ISDIR(st.st_mode);
+}
+
 /* The files of one folder of the stick that exts allows, copied into to;
- * *count: how many. */
-static int copy_folder(struct import *im, int fd, const char *to, const char *const *exts,
-		       int *count)
+ * *count: how many. The model's folder (depth 0) brings its subfolders but
+ * matcaps/ (copied on its own), and only its top-level files are models. */
+static int copy_folder(struct import *im, int fd, const char *shown, const char *to,
+		       const char *const *exts, int depth, int *count)
 {
 	char **names = NULL;
 	size_t n = 0;
 	int ret = list_folder(fd, &names, &n), r;
+	bool model_folder = exts == content_exts;
 
 	if (!ret && mkdir(to, 0755))
 		ret = -errno;
 	for (size_t i = 0; i < n; i++) {
 		const char *name = names[i];
 
-		if (!ret && file_name_has_ext(name, exts) && name_usable(im, name)) {
-			r = copy_file(im, fd, name, to);
+		if (!ret && exts != image_exts && is_folder(fd, name)) {
+			if (!model_folder || strcmp(name, "matcaps"))
+				ret = copy_subfolder(im, fd, shown, name, to, depth, count);
+		} else if (!ret && file_name_has_ext(name, exts) &&
+			   (!model_folder || name_usable(im, name))) {
+			r = copy_file(im, shown, fd, name, to);
 			ret = r < 0 ? r : 0;
 			*count += !r;
-			if (!r && exts == content_exts && !im->model[0] &&
+			if (!r && model_folder && !im->model[0] &&
 			    file_name_has_ext(name, model_exts))
 				snprintf(im->model, sizeof(im->model), "%s", name);
 		}
@@ -244,7 +303,7 @@ static int copy_matcaps(struct import *im)
 	if (fd < 0)
 		return -errno;
 	snprintf(to, sizeof(to), "%s/matcaps", im->staging);
-	ret = copy_folder(im, fd, to, image_exts, &im->matcaps);
+	ret = copy_folder(im, fd, im->from, to, image_exts, 0, &im->matcaps);
 	close(fd);
 	return ret;
 }
@@ -300,7 +359,7 @@ struct stick_scan {
 	int line, errors;
 };
 
-/* As src/app/options.c reads a file (leading blanks dropped), so that the
+/* As src/config/options.c reads a file (leading blanks dropped), so that the
  * lines counted are the ones it names. */
 static char *scan_line(char *str, int num, void *stream)
 {
@@ -390,7 +449,8 @@ static int scan_stick_ini(struct import *im)
 
 /* kiosk.ini in the content folder: the model and matcaps copied, for the
  * keys the stick's own file does not set (a key may be set once), then
- * that file as it was read. */
+ * that file as it was read, its relative paths made the content folder's
+ * (the files are in model/ there). */
 static int write_ini(struct import *im)
 {
 	char path[PATH_MAX + 16], head[3 * PATH_MAX];
@@ -408,8 +468,15 @@ static int write_ini(struct import *im)
 	if ((fd = open(path, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644)) < 0)
 		return -errno;
 	ret = write_all(fd, head, n);
-	if (!ret && im->ini)
-		ret = write_all(fd, im->ini, im->ini_size);
+	if (!ret && im->ini) {
+		char *rebased = NULL;
+		size_t size = 0;
+
+		ret = import_ini_rebase(im->ini, im->ini_size, &rebased, &size);
+		if (!ret)
+			ret = write_all(fd, rebased, size);
+		free(rebased);
+	}
 	if (!ret && fsync(fd))
 		ret = -errno;
 	if (close(fd) && !ret)
@@ -432,18 +499,25 @@ static char *staged(const struct import *im, const char *path)
 	return path ? strdup(path) : NULL;
 }
 
-/* What the kiosk would do with it: the settings over its own, then the
- * model and the matcaps loaded, strictly (no built-in stand-in). */
+/* What the kiosk would do with it: the settings over the installed ones
+ * (kiosk.ini and kiosk.ini.d/; options on the command line are not the
+ * service's), then the model and the matcaps loaded, strictly (no
+ * built-in stand-in). */
 static int check(const struct import *im, const struct options *o)
 {
 	char ini[PATH_MAX + 16], name[PATH_MAX + 16];
 	struct options t;
 	struct content s;
 	char *model, *matcap;
-	int ret = options_copy(&t, o);
+	int ret = 0;
 
-	if (ret)
-		return ret;
+	/* The installed files alone: o holds what the content folder's
+	 * kiosk.ini (the include) set, and that is what is replaced. */
+	option_defaults(&t);
+	if (o->config && options_read_installed(&t, o->config) != OPTIONS_OK) {
+		ret = -EINVAL;
+		goto out;
+	}
 	free(t.include);
 	t.include = NULL; /* the installed fragment is replaced, not read */
 	/* The stick's file alone first, so that a mistake is named by its
@@ -548,7 +622,7 @@ static int stage(struct import *im)
 		ret = scan_stick_ini(im);
 	snprintf(to, sizeof(to), "%s/model", im->staging);
 	if (!ret)
-		ret = copy_folder(im, im->from_fd, to, content_exts, &im->files);
+		ret = copy_folder(im, im->from_fd, im->from, to, content_exts, 0, &im->files);
 	if (!ret)
 		ret = copy_matcaps(im);
 	if (!ret)

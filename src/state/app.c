@@ -1,4 +1,4 @@
-#include "app/app.h"
+#include "state/app.h"
 
 #include <math.h>
 #include <stdlib.h>

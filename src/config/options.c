@@ -1,16 +1,19 @@
 /* Reading the settings: the config file (inih) and the command line
- * (getopt_long), both through the table in src/app/settings.c, and
+ * (getopt_long), both through the table in src/config/settings.c, and
  * --help from it. */
-#include "app/options.h"
-#include "app/schedule.h"
-#include "app/settings.h"
+#include "config/options.h"
+#include "state/schedule.h"
+#include "config/settings.h"
+#include "util/file.h"
 #include "util/log.h"
 
 #include <errno.h>
 #include <getopt.h>
 #include <ini.h>
+#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 /* The file: inih parses, a line reader of ours counts lines so that
@@ -18,6 +21,7 @@
 struct file_state {
 	struct options *opts;
 	const char *path;
+	const char *dir; /* relative paths are taken from here; NULL: as written */
 	FILE *f;
 	int line;
 	int seen_line[OPTION_DEFS];
@@ -79,13 +83,110 @@ static void list_sections(char *buf, size_t n)
 					options_sections[i].name);
 }
 
+/* The settings that name files: read from the folder of the file that
+ * names them. (Devices are absolute, under /dev.) */
+static bool names_files(const struct option_def *d)
+{
+	static const char *const keys[] = {
+	    "model",	  "matcap",	      "poster",		  "include",
+	    "detail_map", "displacement_map", "iridescence_ramp", NULL};
+
+	if (d->kind != K_STRING || d->section == OPTION_CLI)
+		return false;
+	for (const char *const *k = keys; *k; k++)
+		if (!strcmp(d->key, *k))
+			return true;
+	return false;
+}
+
+static bool quoted(const char *v)
+{
+	size_t n = strlen(v);
+
+	return n >= 2 && (v[0] == '"' || v[0] == '\'') && v[n - 1] == v[0];
+}
+
+/* A refused line still counts as the key's first, so that a second line
+ * for it is reported too. */
+static void seen(struct file_state *st, const struct option_def *d)
+{
+	if (!st->seen_line[d - option_defs])
+		st->seen_line[d - option_defs] = st->line;
+}
+
+/* A value of a setting that names files, its relative paths taken from
+ * dir: each of a list's (model = a, b) too. "~" is not the service's home
+ * (it has none): refused. NULL with *why set, or the value (malloc'd). */
+static char *resolve_paths(const char *value, const char *dir, bool list, const char **why)
+{
+	size_t cap = strlen(value) * 2 + 1, len = 0;
+	char *out = NULL, *copy = strdup(value), *save = NULL;
+	const char *sep = list ? "," : "";
+
+	*why = "out of memory";
+	if (!copy)
+		return NULL;
+	for (char *t = list ? strtok_r(copy, sep, &save) : copy; t;
+	     t = list ? strtok_r(NULL, sep, &save) : NULL) {
+		char *grown;
+		bool rel;
+
+		t += strspn(t, " \t");
+		rel = dir && *t && *t != '/';
+		if (*t == '~') {
+			*why =
+			    "'~' is not expanded here (the service has no home folder); write the "
+			    "full path, e.g. /srv/matcap-kiosk/model.glb";
+			goto fail;
+		}
+		cap += rel ? strlen(dir) + 1 : 0;
+		if (!(grown = realloc(out, cap)))
+			goto fail;
+		out = grown;
+		len += (size_t)snprintf(out + len, cap - len, "%s%s%s%s", len ? ", " : "",
+					rel ? dir : "", rel ? "/" : "", t);
+	}
+	free(copy);
+	return out ? out : strdup("");
+fail:
+	free(copy);
+	free(out);
+	return NULL;
+}
+
+static void dir_of(const char *path, char *dir, size_t n)
+{
+	const char *slash = strrchr(path, '/');
+
+	if (!slash)
+		dir[0] = '\0';
+	else
+		snprintf(dir, n, "%.*s", slash == path ? 1 : (int)(slash - path), path);
+}
+
 static int on_key(void *user, const char *section, const char *key, const char *value)
 {
 	struct file_state *st = user;
 	const struct option_def *d = find_key(section, key);
-	char what[256];
+	char what[256], *resolved = NULL;
+	const char *why = NULL;
 
 	st->errors++;
+	if (d && quoted(value)) {
+		log_err("%s:%d: [%s] %s = %s: the quotes would be part of the value; write it "
+			"without them (blanks inside a path are fine)",
+			st->path, st->line, section, key, value);
+		seen(st, d);
+		return 1;
+	}
+	if (d && names_files(d) &&
+	    !(resolved = resolve_paths(value, st->dir, !strcmp(key, "model"), &why))) {
+		log_err("%s:%d: [%s] %s = '%s': %s", st->path, st->line, section, key, value, why);
+		seen(st, d);
+		return 1;
+	}
+	if (resolved)
+		value = resolved;
 	if (!d) {
 		list_keys(section, what, sizeof(what));
 		if (what[0]) {
@@ -105,12 +206,15 @@ static int on_key(void *user, const char *section, const char *key, const char *
 		st->seen_line[d - option_defs] = st->line;
 		if (option_set_value(st->opts, d, value)) {
 			st->errors--;
+			if (options_origin_set(st->opts, d, st->path, st->line))
+				st->errors++;
 		} else {
 			option_accepted(d, what, sizeof(what));
 			log_err("%s:%d: [%s] %s = '%s' is not valid; expected %s", st->path,
 				st->line, section, key, value, what);
 		}
 	}
+	free(resolved);
 	return 1; /* go on, so every error in the file is reported at once */
 }
 
@@ -196,11 +300,15 @@ static void check_schedule(struct file_state *st)
 		st->path, at, text, err);
 }
 
-static enum options_status read_stream(struct options *o, const char *path, FILE *f)
+static enum options_status read_stream(struct options *o, const char *path, const char *dir,
+				       FILE *f)
 {
-	struct file_state st = {.opts = o, .path = path, .f = f};
-	int ret = ini_parse_stream(read_line, &st, on_key, &st);
+	struct file_state st = {.opts = o, .path = path, .dir = dir, .f = f};
+	int ret;
 
+	if (!options_origin_file(o, path))
+		return OPTIONS_CONFIG;
+	ret = ini_parse_stream(read_line, &st, on_key, &st);
 	check_lines(&st);
 	check_schedule(&st);
 	if (ret > 0)
@@ -213,22 +321,58 @@ static enum options_status read_path(struct options *o, const char *path)
 {
 	FILE *f = fopen(path, "r");
 	enum options_status ret;
+	char dir[PATH_MAX];
+	struct stat sb;
 
 	if (!f) {
 		log_err("%s: cannot open config file: %s", path, strerror(errno));
 		return OPTIONS_CONFIG;
 	}
-	ret = read_stream(o, path, f);
+	if (fstat(fileno(f), &sb) == 0 && !S_ISREG(sb.st_mode)) {
+		log_err("%s: is %s, not a settings file; expected an INI file like "
+			"/etc/matcap-kiosk/kiosk.ini",
+			path, S_ISDIR(sb.st_mode) ? "a folder" : "not a plain file");
+		fclose(f);
+		return OPTIONS_CONFIG;
+	}
+	dir_of(path, dir, sizeof(dir));
+	ret = read_stream(o, path, dir[0] ? dir : NULL, f);
 	fclose(f);
 	return ret;
 }
 
-/* The file, then the one its include names where that exists: a USB
- * stick's settings (--import writes them) go over the installed ones. The
- * included file's own include is not followed. */
+/* The file, then its drop-ins: PATH.d/ *.ini in name order (the systemd and
+ * Debian convention: what a package or Ansible role drops in). A key set
+ * by a later file overrides an earlier one; within one file it is set once.
+ * Every file is read, so all errors are reported at once. */
+enum options_status options_read_installed(struct options *o, const char *path)
+{
+	static const char *const ini[] = {"ini", NULL};
+	enum options_status ret = read_path(o, path);
+	char dropins[PATH_MAX];
+	char **files = NULL;
+	int n = 0, err;
+
+	if (snprintf(dropins, sizeof(dropins), "%s.d", path) >= (int)sizeof(dropins))
+		return ret;
+	err = file_list_folder(dropins, ini, &files, &n);
+	if (err && err != -ENOENT && err != -ENOTDIR) {
+		log_err("%s: cannot read the folder of drop-in files: %s", dropins, strerror(-err));
+		return OPTIONS_CONFIG;
+	}
+	for (int i = 0; i < n; i++)
+		if (read_path(o, files[i]) != OPTIONS_OK)
+			ret = OPTIONS_CONFIG;
+	file_list_free(files, n);
+	return ret;
+}
+
+/* The file and its drop-ins, then the one its include names where that
+ * exists: a USB stick's settings (--import writes them) go over the
+ * installed ones. The included file's own include is not followed. */
 enum options_status options_read_file(struct options *o, const char *path)
 {
-	enum options_status ret = read_path(o, path);
+	enum options_status ret = options_read_installed(o, path);
 	char *inc;
 
 	if (ret || !o->include || !*o->include || !strcmp(o->include, path))
@@ -244,15 +388,16 @@ enum options_status options_read_file(struct options *o, const char *path)
 	if (ret == OPTIONS_CONFIG && inc) {
 		/* A stick's settings that do not read (a key a later version
 		 * renamed, a broken file) must not keep the kiosk down: the
-		 * installed file alone, as if nothing were included. path is
+		 * installed files alone, as if nothing were included. path is
 		 * the caller's, never one of o's strings. */
 		log_err("%s: ignored, for the error above; the settings of %s alone are used", inc,
 			path);
 		options_release(o);
 		option_defaults(o);
-		ret = read_path(o, path);
+		ret = options_read_installed(o, path);
 		free(o->include);
 		o->include = NULL;
+		o->include_ignored = true;
 	}
 	return ret;
 }
@@ -270,7 +415,7 @@ enum options_status options_read_memory(struct options *o, const char *name, con
 		log_err("%s: cannot read the config: %s", name, strerror(errno));
 		return OPTIONS_CONFIG;
 	}
-	ret = read_stream(o, name, f);
+	ret = read_stream(o, name, NULL, f);
 	fclose(f);
 	return ret;
 }
@@ -318,8 +463,9 @@ static enum options_status apply_arg(struct options *o, int c, const char *arg)
 	}
 	if (!d)
 		return OPTIONS_USAGE; /* getopt has said what was wrong */
+	/* A path on the command line stays relative to the current folder. */
 	if (option_set_value(o, d, d->kind == K_FLAG ? "true" : arg))
-		return OPTIONS_OK;
+		return options_origin_set(o, d, NULL, 0) ? OPTIONS_USAGE : OPTIONS_OK;
 	option_accepted(d, what, sizeof(what));
 	log_err("--%s: '%s' is not valid; expected %s", d->name, arg, what);
 	return OPTIONS_USAGE;
@@ -393,7 +539,10 @@ void options_usage(FILE *out)
 {
 	fputs("Usage: matcap-kiosk [OPTION]...\n"
 	      "Show a glTF model shaded with a matcap, fullscreen on DRM/KMS or offscreen.\n"
-	      "Settings marked [section] key can also be set in the config file.\n\n",
+	      "Settings marked [section] key can also be set in the config file, and in\n"
+	      "FILE.d/*.ini beside it (read in name order after it; a later file's key\n"
+	      "overrides). A relative path in a file is taken from that file's folder; on\n"
+	      "the command line, from the current folder.\n\n",
 	      out);
 	for (size_t i = 0; i < OPTION_DEFS; i++) {
 		const struct option_def *d = &option_defs[i];

@@ -6,9 +6,9 @@
 #ifndef MK_MODEL_LOADER_H
 #define MK_MODEL_LOADER_H
 
-#include "app/content.h"
-#include "app/model_list.h"
-#include "app/settings.h"
+#include "config/content_config.h"
+#include "content/content.h"
+#include "content/model_list.h"
 
 #include <stdbool.h>
 
@@ -24,10 +24,12 @@ bool model_loader_busy(const struct model_loader *l);
 /* Pick, load and prepare the first model that loads from index from in
  * steps of step (model_list_pick), for a width x height display; step 0:
  * that one model alone (a file that changed). The list
- * is the job's until model_loader_finish; o is copied. 0, or a negative
- * errno (busy, or no thread). */
-int model_loader_start(struct model_loader *l, struct model_list *list, const struct options *o,
-		       int from, int step, int shown, int width, int height);
+ * is the job's until model_loader_finish; c (the content settings, how to
+ * load and prepare a model) is copied. 0, or a negative errno (busy, no
+ * memory, or no thread). */
+int model_loader_start(struct model_loader *l, struct model_list *list,
+		       const struct content_config *c, int from, int step, int shown, int width,
+		       int height);
 /* Once model_loader_fd is readable: the index picked (-1: none loaded;
  * shown: every other one failed) and, for another index, its model in
  * out. Returns -EAGAIN while the job runs. */

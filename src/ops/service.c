@@ -1,4 +1,4 @@
-#include "app/service.h"
+#include "ops/service.h"
 #include "util/log.h"
 
 #include <systemd/sd-daemon.h>

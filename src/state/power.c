@@ -1,4 +1,4 @@
-#include "app/power.h"
+#include "state/power.h"
 
 #define NS_PER_S 1000000000.0
 

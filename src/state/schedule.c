@@ -1,4 +1,4 @@
-#include "app/schedule.h"
+#include "state/schedule.h"
 
 #include <ctype.h>
 #include <errno.h>

@@ -1,4 +1,4 @@
-#include "app/model_list.h"
+#include "content/model_list.h"
 #include "util/file.h"
 #include "util/log.h"
 

@@ -14,7 +14,7 @@
 #ifndef MK_IMPORT_H
 #define MK_IMPORT_H
 
-#include "app/settings.h"
+#include "config/settings.h"
 
 /* o: the settings the kiosk runs with (the stick's go over them). Returns
  * 0 (also when DIR is not there: a stick of other files), or a negative

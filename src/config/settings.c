@@ -2,7 +2,7 @@
  * where it is kept in struct options, and what is done with one setting
  * (parse, copy, compare, release). The reload rules are the second
  * table here. */
-#include "app/settings.h"
+#include "config/settings.h"
 
 #include <errno.h>
 #include <math.h>
@@ -237,11 +237,13 @@ const struct option_def option_defs[OPTION_DEFS] = {
     {"poster", 0, OPTIONS_DISPLAY, "poster", K_STRING, AT(poster), 0, 0, 0, NULL, "FILE",
      "a PNG/JPEG shown from the start until the model is ready (default: the background)"},
     {"include", 0, OPTIONS_KIOSK, "include", K_STRING, AT(include), 0, 0, 0, NULL, "FILE",
-     "a second INI file read over this one where it exists (a USB stick's, from --import)"},
+     "a second INI file read over this one and its .d/ files where it exists (a USB stick's, "
+     "from --import)"},
     {"status", 0, OPTION_CLI, NULL, K_FLAG, AT(status), 0, 0, 0, NULL, NULL,
      "ask the running kiosk for its frame (PNG) and state (JSON), print the JSON, exit"},
     {"check-config", 0, OPTION_CLI, NULL, K_FLAG, AT(check_config), 0, 0, 0, NULL, NULL,
-     "read the settings, say what is wrong, and exit (0, or 78 for a bad file)"},
+     "read the settings, load every file they name, say what is wrong, and exit (0 valid, 78 a "
+     "bad setting, 66 a named file missing or broken)"},
     {"import", 0, OPTION_CLI, NULL, K_STRING, AT(import), 0, 0, 0, NULL, "DIR",
      "copy a USB stick's matcap-kiosk/ folder into the content folder, checked first; exit"},
 };
@@ -322,6 +324,7 @@ void options_release(struct options *o)
 			free(get_string(field_of(o, &option_defs[i])));
 			put_string(field_of(o, &option_defs[i]), NULL);
 		}
+	options_origins_free(o);
 }
 
 int options_copy(struct options *dst, const struct options *src)
@@ -329,6 +332,7 @@ int options_copy(struct options *dst, const struct options *src)
 	int ret = 0;
 
 	*dst = *src;
+	dst->origins = NULL;
 	for (size_t i = 0; i < OPTION_DEFS; i++)
 		if (option_defs[i].kind == K_STRING)
 			put_string(field_of(dst, &option_defs[i]), NULL);
@@ -346,6 +350,55 @@ int options_copy(struct options *dst, const struct options *src)
 	}
 	if (ret)
 		options_release(dst);
+	return ret;
+}
+
+/* The content part's strings: the table's string settings whose field lies
+ * inside struct options' content, at their offset within it. */
+static bool in_content(const struct option_def *d)
+{
+	size_t at = offsetof(struct options, content);
+
+	return d->kind == K_STRING && d->offset >= at &&
+	       d->offset < at + sizeof(struct content_config);
+}
+
+static size_t content_offset(const struct option_def *d)
+{
+	return d->offset - offsetof(struct options, content);
+}
+
+void content_config_release(struct content_config *c)
+{
+	for (size_t i = 0; i < OPTION_DEFS; i++)
+		if (in_content(&option_defs[i])) {
+			free(get_string((char *)c + content_offset(&option_defs[i])));
+			put_string((char *)c + content_offset(&option_defs[i]), NULL);
+		}
+}
+
+int content_config_copy(struct content_config *dst, const struct content_config *src)
+{
+	int ret = 0;
+
+	*dst = *src;
+	for (size_t i = 0; i < OPTION_DEFS; i++)
+		if (in_content(&option_defs[i]))
+			put_string((char *)dst + content_offset(&option_defs[i]), NULL);
+	for (size_t i = 0; i < OPTION_DEFS && !ret; i++) {
+		char *s;
+
+		if (!in_content(&option_defs[i]))
+			continue;
+		s = get_string((const char *)src + content_offset(&option_defs[i]));
+		if (!s)
+			continue;
+		s = strdup(s);
+		put_string((char *)dst + content_offset(&option_defs[i]), s);
+		ret = s ? 0 : -ENOMEM;
+	}
+	if (ret)
+		content_config_release(dst);
 	return ret;
 }
 

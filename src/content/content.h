@@ -1,12 +1,13 @@
 /* What the kiosk shows, loaded from the settings: the mesh, the matcaps
  * and the first matcap decoded. The start and a reload (SIGHUP) both build
- * a complete new scene here; a reload swaps it in only once every part of
+ * complete new content here; a reload swaps it in only once every part of
  * it loaded and uploaded, so a broken model or folder keeps the old one. */
 #ifndef MK_CONTENT_H
 #define MK_CONTENT_H
 
+#include "config/content_config.h"
 #include "util/image.h"
-#include "render/matcap_set.h"
+#include "content/matcap_set.h"
 #include "scene/material.h"
 #include "scene/mesh.h"
 #include "scene/mesh_cache.h"
@@ -14,20 +15,6 @@
 #include "render/shading.h"
 
 #include <stdbool.h>
-
-/* [scene] in kiosk.ini, with [display] rotation and [material]: what is
- * shown, and how it is seen. */
-struct content_config {
-	char *model;	   /* a file, folder or list (model_list.h); NULL: the built-in knot */
-	char *model_scene; /* the glTF scene by index or name; NULL: the file's */
-	char *matcap;	   /* a file or a folder; NULL: the shipped folder */
-	enum shading_mode mode;
-	bool ortho;
-	double yaw, pitch; /* degrees, the resting orientation */
-	double lod_pixels; /* simplify to this error on the display; 0: off */
-	int rotation;	   /* the panel's, degrees */
-	struct material_config material;
-};
 
 struct content {
 	char *model_path; /* the file the mesh came from; NULL: the built-in knot */
@@ -74,5 +61,8 @@ struct view content_view(const struct content_config *c);
 /* The matcap folder was changed: open the set again. Returns 0 and
  * replaces s->set, or a negative errno (after logging) and keeps it. */
 int content_rescan_matcaps(struct content *s);
+/* The matcaps shown when none is named: the installed folder, else
+ * ./matcaps (the source tree); NULL: none (the built-in clay). */
+const char *content_default_matcaps(void);
 
 #endif

@@ -14,7 +14,7 @@
 #ifndef MK_POWER_H
 #define MK_POWER_H
 
-#include "app/schedule.h"
+#include "state/schedule.h"
 #include "util/clock.h"
 
 #include <stdbool.h>

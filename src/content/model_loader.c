@@ -1,4 +1,5 @@
-#include "app/model_loader.h"
+#include "content/model_loader.h"
+#include "config/settings.h"
 #include "util/log.h"
 
 #include <errno.h>
@@ -15,7 +16,7 @@ struct model_loader {
 	pthread_t thread;
 	/* The job: read by the thread alone while busy. */
 	struct model_list *list;
-	struct options options;
+	struct content_config config;
 	int from, step, shown, width, height;
 	/* Its result. */
 	struct content result;
@@ -46,7 +47,7 @@ static void join(struct model_loader *l)
 	pthread_join(l->thread, NULL);
 	if (read(l->fd, &n, sizeof(n)) < 0 && errno != EAGAIN)
 		log_debug("models: eventfd: %s", strerror(errno));
-	options_release(&l->options);
+	content_config_release(&l->config);
 	l->busy = false;
 }
 
@@ -74,7 +75,7 @@ static int try_load(void *ctx, const char *path)
 {
 	struct model_loader *l = ctx;
 
-	return content_load_model(&l->result, &l->options.content, path, l->width, l->height);
+	return content_load_model(&l->result, &l->config, path, l->width, l->height);
 }
 
 static void *run(void *arg)
@@ -93,14 +94,15 @@ static void *run(void *arg)
 	return NULL;
 }
 
-int model_loader_start(struct model_loader *l, struct model_list *list, const struct options *o,
-		       int from, int step, int shown, int width, int height)
+int model_loader_start(struct model_loader *l, struct model_list *list,
+		       const struct content_config *c, int from, int step, int shown, int width,
+		       int height)
 {
 	int ret;
 
 	if (l->busy)
 		return -EBUSY;
-	if (options_copy(&l->options, o))
+	if (content_config_copy(&l->config, c))
 		return -ENOMEM;
 	content_release(&l->result);
 	l->list = list;
@@ -113,7 +115,7 @@ int model_loader_start(struct model_loader *l, struct model_list *list, const st
 	ret = -pthread_create(&l->thread, NULL, run, l);
 	if (ret) {
 		log_err("models: no thread to load the next one: %s", strerror(-ret));
-		options_release(&l->options);
+		content_config_release(&l->config);
 		return ret;
 	}
 	l->busy = true;
@@ -127,7 +129,7 @@ int model_loader_finish(struct model_loader *l, struct content *out, int *picked
 	if (!l->busy || read(l->fd, &n, sizeof(n)) != sizeof(n))
 		return -EAGAIN;
 	pthread_join(l->thread, NULL);
-	options_release(&l->options);
+	content_config_release(&l->config);
 	l->busy = false;
 	*picked = l->picked;
 	*out = l->result;

@@ -1,0 +1,24 @@
+/* [scene] in kiosk.ini, with [display] rotation and [material]: what is
+ * shown, and how it is seen. Plain data, so that the settings need not
+ * know the content pipeline (src/content/) that reads it. */
+#ifndef MK_CONTENT_CONFIG_H
+#define MK_CONTENT_CONFIG_H
+
+#include "render/shading.h"
+#include "scene/material.h"
+
+#include <stdbool.h>
+
+struct content_config {
+	char *model;	   /* a file, folder or list (model_list.h); NULL: the built-in knot */
+	char *model_scene; /* the glTF scene by index or name; NULL: the file's */
+	char *matcap;	   /* a file or a folder; NULL: the shipped folder */
+	enum shading_mode mode;
+	bool ortho;
+	double yaw, pitch; /* degrees, the resting orientation */
+	double lod_pixels; /* simplify to this error on the display; 0: off */
+	int rotation;	   /* the panel's, degrees */
+	struct material_config material;
+};
+
+#endif

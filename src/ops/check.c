@@ -1,0 +1,192 @@
+/* --check-config: what the settings name, loaded as the kiosk loads it.
+ * A problem is one line: where the setting came from (file:line), the
+ * setting, its value and the loader's own reason. */
+#include "ops/check.h"
+#include "content/content.h"
+#include "content/model_list.h"
+#include "content/matcap_set.h"
+#include "util/image.h"
+#include "util/log.h"
+
+#include <errno.h>
+#include <string.h>
+#include <unistd.h>
+
+struct check {
+	const struct options *o;
+	FILE *out;
+	int bad_files;
+};
+
+static const struct option_def *def_of(const char *section, const char *key)
+{
+	for (size_t i = 0; i < OPTION_DEFS; i++) {
+		const struct option_def *d = &option_defs[i];
+
+		if (d->section != OPTION_CLI &&
+		    !strcmp(options_sections[d->section].name, section) && !strcmp(d->key, key))
+			return d;
+	}
+	return NULL;
+}
+
+static void where(const struct options *o, const struct option_def *d, char *buf, size_t n)
+{
+	struct options_origin at = options_origin(o, d);
+
+	if (at.file && at.line)
+		snprintf(buf, n, "%s:%d", at.file, at.line);
+	else
+		snprintf(buf, n, "%s", at.file ? at.file : "the default");
+}
+
+/* ret: what the load returned; the cause is the last error it logged. */
+static void found(struct check *c, const char *section, const char *key, const char *value, int ret)
+{
+	const struct option_def *d = def_of(section, key);
+	char at[512], cause[768];
+
+	where(c->o, d, at, sizeof(at));
+	if (!ret) {
+		fprintf(c->out, "  [%s] %s = %s (%s): loads\n", section, key, value, at);
+		return;
+	}
+	log_last_error(cause, sizeof(cause));
+	if (!cause[0])
+		snprintf(cause, sizeof(cause), "%s", strerror(ret < 0 ? -ret : ret));
+	log_err("%s: [%s] %s = '%s': %s", at, section, key, value, cause);
+	c->bad_files++;
+}
+
+static int load_image(const char *path)
+{
+	struct image img = {0};
+	int ret;
+
+	log_clear_last_error();
+	ret = image_load(path, &img);
+	image_release(&img);
+	return ret;
+}
+
+static void check_image(struct check *c, const char *section, const char *key, const char *path)
+{
+	if (path && *path)
+		found(c, section, key, path, load_image(path));
+}
+
+/* A folder's or list's models each (the kiosk passes over one that fails,
+ * with a line in the journal, but it was named to be shown). */
+static void check_models(struct check *c, const struct content_config *cfg)
+{
+	const char *spec = cfg->model;
+	struct model_list *l;
+	struct content s;
+
+	if (!spec || !*spec)
+		return; /* the built-in knot */
+	log_clear_last_error();
+	l = model_list_new(spec);
+	if (!l) {
+		found(c, "scene", "model", spec, -ENOENT);
+		return;
+	}
+	for (int i = 0; i < model_list_count(l); i++) {
+		const char *path = model_list_path(l, i);
+		int ret;
+
+		log_clear_last_error();
+		ret = content_load_model(&s, cfg, path, c->o->display.width, c->o->display.height);
+		if (!ret)
+			content_release(&s);
+		found(c, "scene", "model", path, ret);
+	}
+	model_list_free(l);
+}
+
+static void check_matcaps(struct check *c)
+{
+	const char *named = c->o->content.matcap, *path = named;
+	struct matcap_set *set;
+	int loaded = 0;
+
+	if (!path && !(path = content_default_matcaps())) {
+		log_err("[scene] matcap: none named, and no matcaps installed: the kiosk would "
+			"show the built-in clay");
+		c->bad_files++;
+		return;
+	}
+	log_clear_last_error();
+	set = matcap_set_open(path);
+	if (!set) {
+		found(c, "scene", "matcap", path, -ENOENT);
+		return;
+	}
+	/* Every one: the kiosk cycles through them all. */
+	for (int i = 0; i < matcap_set_count(set); i++) {
+		const char *file = matcap_set_path(set, i);
+		int ret = load_image(file);
+
+		if (ret)
+			found(c, "scene", "matcap", file, ret);
+		else
+			loaded++;
+	}
+	if (loaded == matcap_set_count(set) && loaded > 1) {
+		char at[512];
+
+		where(c->o, def_of("scene", "matcap"), at, sizeof(at));
+		fprintf(c->out, "  [scene] matcap = %s (%s): its %d matcaps load\n", path, at,
+			loaded);
+	} else if (loaded == 1) {
+		found(c, "scene", "matcap", path, 0);
+	}
+	matcap_set_free(set);
+}
+
+static void list_files(struct check *c)
+{
+	const char *const *files;
+	int n = options_files_read(c->o, &files);
+
+	for (int i = 0; i < n; i++)
+		fprintf(c->out, "  read %s\n", files[i]);
+	if (c->o->include && *c->o->include && access(c->o->include, F_OK))
+		fprintf(c->out, "  [kiosk] include = %s: none there (nothing to read over it)\n",
+			c->o->include);
+}
+
+int check_config_run(const struct options *o, FILE *out)
+{
+	struct check c = {.o = o, .out = out};
+	const char *name = o->config ? o->config : "the command line";
+	struct content_config cfg = o->content;
+	int maps;
+
+	list_files(&c);
+	if (o->include_ignored) {
+		log_err("%s: the settings are not valid: an included file has errors (above)",
+			name);
+		return CHECK_BAD_SETTINGS;
+	}
+	check_image(&c, "material", "iridescence_ramp", cfg.material.ramp);
+	check_image(&c, "material", "detail_map", cfg.material.detail_map);
+	check_image(&c, "material", "displacement_map", cfg.material.height_map);
+	maps = c.bad_files;
+	if (maps) /* each model alone, not once more for the maps */
+		cfg.material.ramp = cfg.material.detail_map = cfg.material.height_map = NULL;
+	check_models(&c, &cfg);
+	check_matcaps(&c);
+	check_image(&c, "display", "poster", o->poster);
+	/* Per-model settings files do not exist yet: nothing more to load. */
+	if (c.bad_files) {
+		log_err("%s: the settings read, but %d file%s they name %s not load (above): the "
+			"kiosk would show a stand-in (the knot, the clay matcap, the background) "
+			"or, drawing offscreen, stop",
+			name, c.bad_files, c.bad_files == 1 ? "" : "s",
+			c.bad_files == 1 ? "does" : "do");
+		return CHECK_BAD_FILE;
+	}
+	fprintf(out, "%s: the settings are valid, and every file they name loads\n", name);
+	return 0;
+}

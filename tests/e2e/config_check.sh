@@ -1,0 +1,122 @@
+#!/bin/sh
+# --check-config as a user meets it, and the paths rules and drop-ins it
+# reports: each case's output (stdout and stderr, as the user sees them)
+# is kept in DIR/NAME.out, and checked for its exit status and its words.
+#   config_check.sh KIOSK MODELS DIR
+# Prints one "ok NAME" or "not ok NAME" line per step; the last line is
+# "ok every step ran" when the scenario got to its end.
+set -u
+kiosk=$1
+case $kiosk in /*) ;; *) kiosk=$PWD/$kiosk ;; esac # the cases run in another folder
+models=$2
+dir=$3
+rm -rf "$dir"
+mkdir -p "$dir/etc/kiosk.ini.d" "$dir/srv/mc" "$dir/empty" "$dir/elsewhere"
+dir=$(cd "$dir" && pwd)
+models=$(cd "$models" && pwd)
+cp matcaps/gold.png matcaps/pearl.png "$dir/srv/mc/"
+cp "$models/sphere.glb" "$dir/srv/"
+mc="--matcap $dir/srv/mc"
+# Leaks: see tests/e2e/live.sh (OSMesa's, at unload); nothing here draws,
+# but the ASan build is the one under test.
+export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
+
+# case NAME STATUS PATTERN INI [ARGS...]: --check-config --config INI
+# exits STATUS and prints a line matching PATTERN.
+case_() {
+	name=$1 status=$2 pattern=$3 ini=$4
+	shift 4
+	(cd "$dir/elsewhere" && "$kiosk" --check-config --config "$ini" "$@") >"$dir/$name.out" 2>&1
+	rc=$?
+	if [ $rc -eq "$status" ] && grep -q -- "$pattern" "$dir/$name.out"; then
+		echo "ok $name (exit $rc)"
+	else
+		echo "not ok $name (exit $rc, expected $status and '$pattern'):"
+		sed 's/^/    /' "$dir/$name.out"
+	fi
+}
+w() { printf "$@"; } # w FORMAT ARGS... >FILE
+
+w '[scene]\nmodel = %s/srv/sphere.glb\n' "$dir" >"$dir/good.ini"
+case_ good 0 "good.ini: the settings are valid, and every file they name loads" "$dir/good.ini" $mc
+case_ good-lists-origins 0 "model = $dir/srv/sphere.glb ($dir/good.ini:2): loads" "$dir/good.ini" $mc
+
+w '[scene]\nmodel = /srv/kiosk/model.glb\n' >"$dir/missing.ini"
+case_ missing-model 66 "missing.ini:2: \[scene\] model = '/srv/kiosk/model.glb': .*cannot open" \
+	"$dir/missing.ini" $mc
+case_ missing-model-verdict 66 "1 file they name does not load" "$dir/missing.ini" $mc
+
+w '[scene]\nmatcap = /etc/passwd\n' >"$dir/passwd.ini"
+case_ passwd-matcap 66 "passwd.ini:2: \[scene\] matcap = '/etc/passwd': .*not a PNG or JPEG" \
+	"$dir/passwd.ini"
+
+w '[scene]\nmodel = "/srv/with spaces.glb"\n' >"$dir/quoted.ini"
+case_ quoted-path 78 "quoted.ini:2: \[scene\] model = \"/srv/with spaces.glb\": the quotes would be part" \
+	"$dir/quoted.ini" $mc
+case_ quoted-path-verdict 78 "quoted.ini: the settings are not valid" "$dir/quoted.ini" $mc
+
+w '[scene]\nmodel = ~/model.glb\n' >"$dir/tilde.ini"
+case_ tilde 78 "tilde.ini:2: \[scene\] model = '~/model.glb': '~' is not expanded" "$dir/tilde.ini" $mc
+
+case_ folder-as-config 78 "empty: is a folder, not a settings file" "$dir/empty" $mc
+
+w '[scene]\nmodel = %s/empty\n' "$dir" >"$dir/nomodels.ini"
+case_ folder-without-models 66 "nomodels.ini:2: \[scene\] model = '$dir/empty': .*no .gltf or .glb" \
+	"$dir/nomodels.ini" $mc
+
+w '[kiosk]\ninclude = typo.ini\n' >"$dir/inc.ini"
+w '[scene]\nmodle = x.glb\n' >"$dir/typo.ini"
+case_ include-with-errors 78 "typo.ini:2: unknown key 'modle'" "$dir/inc.ini" $mc
+case_ include-with-errors-not-valid 78 "inc.ini: the settings are not valid: an included file has errors" \
+	"$dir/inc.ini" $mc
+step_no_valid() {
+	grep -q "not valid" "$dir/include-with-errors.out" && ! grep -q "are valid" "$dir/include-with-errors.out"
+}
+if step_no_valid; then echo "ok include-with-errors never says valid"; else echo "not ok include-with-errors says valid"; fi
+
+w '[material]\ndetail_map = %s/corrupt.png\n' "$models" >"$dir/map.ini"
+case_ broken-map 66 "map.ini:2: \[material\] detail_map = '$models/corrupt.png'" "$dir/map.ini" $mc
+
+w '[display]\nposter = nothere.png\n' >"$dir/poster.ini"
+case_ missing-poster 66 "poster.ini:2: \[display\] poster = '$dir/nothere.png'" "$dir/poster.ini" $mc
+
+# Paths: a relative path is read from the file's folder, wherever the
+# kiosk runs; an included file's from its own; the command line's from
+# the current folder.
+w '[scene]\nmodel = srv/sphere.glb\nmatcap = srv/mc\n' >"$dir/rel.ini"
+case_ relative-from-the-file 0 "model = $dir/srv/sphere.glb ($dir/rel.ini:2): loads" "$dir/rel.ini"
+mkdir -p "$dir/stick"
+cp "$models/knot.glb" "$dir/stick/"
+w '[scene]\nmodel = knot.glb\n' >"$dir/stick/kiosk.ini"
+w '[kiosk]\ninclude = stick/kiosk.ini\n' >"$dir/increl.ini"
+case_ relative-in-an-include 0 "model = $dir/stick/knot.glb ($dir/stick/kiosk.ini:2): loads" \
+	"$dir/increl.ini" $mc
+cp "$models/sphere.glb" "$dir/elsewhere/cwd.glb"
+case_ command-line-from-cwd 0 "model = cwd.glb (the command line): loads" "$dir/good.ini" $mc \
+	--model cwd.glb
+
+# Drop-ins: kiosk.ini.d/*.ini in name order after kiosk.ini, a later key
+# overriding (a relative path from the drop-in's own folder); other names
+# are not read; each value names its file.
+w '[scene]\nmodel = nothere.glb\nmode = view\n' >"$dir/etc/kiosk.ini"
+w '[scene]\nmodel = ../../srv/knot-missing.glb\n' >"$dir/etc/kiosk.ini.d/10-first.ini"
+w '[scene]\nmodel = ../../srv/sphere.glb\n' >"$dir/etc/kiosk.ini.d/20-second.ini"
+w '[scene]\nmodel = /nothing.glb\n' >"$dir/etc/kiosk.ini.d/30-off.ini.dpkg-old"
+w '[scene]\nmodel = /nothing.glb\n' >"$dir/etc/kiosk.ini.d/.hidden.ini"
+case_ dropins-last-wins 0 "model = $dir/etc/kiosk.ini.d/../../srv/sphere.glb ($dir/etc/kiosk.ini.d/20-second.ini:2): loads" \
+	"$dir/etc/kiosk.ini" $mc
+if sed -n 's/^  read //p' "$dir/dropins-last-wins.out" | tr '\n' ' ' |
+	grep -qx "$dir/etc/kiosk.ini $dir/etc/kiosk.ini.d/10-first.ini $dir/etc/kiosk.ini.d/20-second.ini "; then
+	echo "ok dropins read in name order, other names left out"
+else
+	echo "not ok dropins read in name order, other names left out:"
+	sed 's/^/    /' "$dir/dropins-last-wins.out"
+fi
+w '[scene]\nmode = view\nmode = normal\n' >"$dir/etc/kiosk.ini.d/40-dup.ini"
+case_ dropin-duplicate-in-one-file 78 "40-dup.ini:3: \[scene\] mode is set again (first on line 2)" \
+	"$dir/etc/kiosk.ini" $mc
+rm "$dir/etc/kiosk.ini.d/40-dup.ini"
+w '[scene]\nmode = sideways\n' >"$dir/etc/kiosk.ini.d/50-bad.ini"
+case_ dropin-error-names-its-file 78 "50-bad.ini:2: \[scene\] mode = 'sideways' is not valid" \
+	"$dir/etc/kiosk.ini" $mc
+echo "ok every step ran"
