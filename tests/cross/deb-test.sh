@@ -25,6 +25,8 @@ passed=0
 failed=0
 failures=
 times=
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
 
 # part LABEL COMMAND...: run it, its output shown as it comes (its own
 # "N passed, N failed" indented, so that only the total below is counted
@@ -36,10 +38,10 @@ part() {
 	t0=$(date +%s)
 	{
 		"$@"
-		echo $? >build/deb-part.rc
-	} 2>&1 | tee build/deb-part.log | sed 's/^[0-9]* passed, [0-9]* failed/  (&)/'
-	rc=$(cat build/deb-part.rc)
-	line=$(sed -n 's/^\([0-9]*\) passed, \([0-9]*\) failed.*/\1 \2/p' build/deb-part.log | tail -1)
+		echo $? >"$tmp/rc"
+	} 2>&1 | tee "$tmp/log" | sed 's/^[0-9]* passed, [0-9]* failed/  (&)/'
+	rc=$(cat "$tmp/rc")
+	line=$(sed -n 's/^\([0-9]*\) passed, \([0-9]*\) failed.*/\1 \2/p' "$tmp/log" | tail -1)
 	if [ -n "$line" ]; then
 		passed=$((passed + ${line% *}))
 		failed=$((failed + ${line#* }))
