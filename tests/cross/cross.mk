@@ -96,10 +96,11 @@ test-cross: cross-build $(KIOSK) $(TOOLS_DIR)/mkmodels $(TOOLS_DIR)/imgdiff
 #                               Debian's recipe in a fresh Debian 13 root that has only the
 #                               Build-Depends (DEB_SUITE=bookworm: Debian 12, into
 #                               build/deb/bookworm/), lintian there (tests/cross/deb-build.sh)
-#   make test-deb               amd64, arm64 and armhf built that way on Debian 13 and 12,
-#                               each installed into a fresh root of its own architecture and
-#                               run there (qemu-user binfmt); ARCH=arm64 (or armhf) for one
-#                               (tests/cross/deb-test.sh)
+#   make test-deb               amd64, arm64 and armhf built that way on Debian 13 and 12
+#                               (one root per release), the Debian 13 ones and Debian 12's
+#                               amd64 installed into fresh roots of their own architecture
+#                               and run there (qemu-user binfmt); ARCH=arm64 (or armhf) for
+#                               one, DEB_SUITES=trixie for one release (tests/cross/deb-test.sh)
 # Roots are made by mmdebstrap as root; the host gets no foreign
 # architecture. Downloaded packages are kept in build/deb-cache for the
 # next root.
