@@ -8,6 +8,7 @@
 #                   through sudo unless root)
 #   make deps-test  add the test bench (make test says so when it is missing)
 #   make test-trixie  make deps, make deps-test and make test in a Debian 13 chroot
+#   make test-ansible the Ansible role (contrib/ansible) applied to a fresh root
 
 VERSION    := 0.1.0
 PREFIX     ?= /usr/local
@@ -64,8 +65,8 @@ LDLIBS    = $(PKG_LIBS) -lmeshoptimizer -ldl -lm
 # The program's sources, minus app/main.c (tests link the same objects),
 # one folder per layer: each includes only the layers listed after it
 # (tests/tools/layers.sh checks that).
-SRC_APP     := app/kiosk_models app/kiosk app/reload app/signals
-SRC_OPS     := ops/check ops/import ops/import_ini ops/screen ops/service ops/status
+SRC_APP     := app/kiosk_models app/kiosk app/kiosk_report app/reload app/signals
+SRC_OPS     := ops/check ops/import ops/import_ini ops/metrics ops/screen ops/service ops/status
 SRC_CONTENT := content/content content/matcap_set content/model_list content/model_loader
 SRC_CONFIG  := config/options config/settings config/settings_origin
 SRC_STATE   := state/app state/power state/schedule
@@ -77,9 +78,9 @@ SRC_INPUT   := input/action input/button input/gesture input/touch_decode input/
 	       input/gpio_$(GPIOD_API) input/keyboard input/touch
 SRC_CAMERA  := camera/camera_feed camera/camera_link camera/camera_math camera/camera_proto \
 	       camera/camera_texture
-SRC_RENDER  := render/bake render/gl render/poster render/render render/shader \
-	       render/shading
-SRC_SCENE   := scene/lod scene/material scene/mesh scene/mesh_cache scene/mesh_cache_key scene/mesh_gen scene/mesh_pack scene/subdivide scene/tangent \
+SRC_RENDER  := render/background render/bake render/draw_list render/framing render/gl render/poster \
+	       render/render render/render_draw render/shader render/shading
+SRC_SCENE   := scene/lod scene/material scene/mesh scene/mesh_cache scene/mesh_cache_fields scene/mesh_cache_key scene/mesh_gen scene/mesh_pack scene/subdivide scene/tangent \
 	       scene/texture
 SRC_UTIL    := util/file util/folder_watch util/image util/log util/math3d
 LIB_C  := $(SRC_APP) $(SRC_OPS) $(SRC_CONTENT) $(SRC_CONFIG) $(SRC_STATE) $(SRC_DISPLAY) $(SRC_INPUT) $(SRC_CAMERA) $(SRC_RENDER) $(SRC_SCENE) $(SRC_UTIL)
@@ -90,6 +91,7 @@ LIB_CC += scene/gltf_words
 SHADERS := shaders/mapping.glsl shaders/matcap.vert shaders/matcap.frag shaders/material.glsl
 SHADERS += shaders/camera.vert shaders/camera.frag
 SHADERS += shaders/poster.vert shaders/poster.frag
+SHADERS += shaders/background.vert shaders/background.frag
 
 LIB_OBJS := $(LIB_C:%=$(BUILD)/%.o) $(LIB_CC:%=$(BUILD)/%.o) $(BUILD)/shaders_embedded.o
 
@@ -132,6 +134,7 @@ run: matcap-kiosk
 include tests/tests.mk
 -include tests/vm/vm.mk
 -include tests/cross/cross.mk
+-include tests/cross/ansible.mk
 
 # Package names differ between releases: clang (and its runtime for the
 # fuzzers) is 14 on Debian 12 and 19 on Debian 13; OSMesa only while Mesa
@@ -154,13 +157,16 @@ DEBIAN_PACKAGES := make gcc g++ pkg-config libegl-dev libgles-dev \
 # corpus (Draco's and gltfpack's tools, assimp's sample files); the
 # board's USB stick images (FAT with files put in by mtools, ext2 by
 # mke2fs -d; no root or loop device needed); rsync for content by sync
-# (tests/e2e/sync.sh: real rsync into a live kiosk's folder).
+# (tests/e2e/sync.sh: real rsync into a live kiosk's folder); [status]
+# metrics scraped from a real node_exporter (tests/e2e/metrics.sh); the
+# Ansible role applied to a fresh root (tests/cross/ansible.sh).
 DEBIAN_TEST_PACKAGES := libcmocka-dev zlib1g-dev systemd \
 	clang-$(CLANG_VERSION) libclang-rt-$(CLANG_VERSION)-dev valgrind gnuplot-nox \
 	qemu-system-x86 busybox-static lz4 cpio kmod udev xz-utils kmscube libdrm-tests \
 	libcamera-tools gpiod v4l-utils \
 	draco gltfpack assimp-testmodels \
-	dosfstools mtools e2fsprogs rsync
+	dosfstools mtools e2fsprogs rsync \
+	prometheus-node-exporter curl ansible mmdebstrap
 
 deps:
 	$(APT_GET) update -qq

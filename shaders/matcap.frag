@@ -45,6 +45,9 @@ varying vec2 v_base_uv;
 #endif
 uniform sampler2D u_base_map;
 #endif
+#if defined(ALPHA_MASK) || defined(ALPHA_BLEND)
+uniform vec2 u_alpha; // the material's alpha factor, and its alphaCutoff
+#endif
 #ifdef IRIDESCENCE
 uniform SHADE_P vec4 u_iridescence; // hue range, hue average, hue shift, opacity
 #ifdef IRIDESCENCE_RAMP
@@ -69,6 +72,11 @@ void main()
 #else
 	SHADE_P vec3 n = safe_normalize(v_normal);
 	SHADE_P vec3 e = safe_normalize(v_eye);
+#ifdef DOUBLE_SIDED
+	// A back face shows its other side: its normal turned, as glTF says.
+	if (!gl_FrontFacing)
+		n = -n;
+#endif
 #ifdef DETAIL_NORMAL
 	n = detail_normal(n, v_tangent, detail.rg);
 #endif
@@ -102,14 +110,27 @@ void main()
 #endif
 #ifdef BASE_COLOR
 #ifdef BASE_MAP
-	vec3 base_map = texture2D(u_base_map, v_base_uv).rgb;
+	vec4 base_map = texture2D(u_base_map, v_base_uv);
 #else
-	vec3 base_map = vec3(1.0);
+	vec4 base_map = vec4(1.0);
 #endif
-	color = base_color(color, v_color, base_map);
+	color = base_color(color, v_color, base_map.rgb);
 #endif
 #ifdef DETAIL_MAP
 	color *= detail.b; // ambient occlusion
 #endif
+#if defined(ALPHA_MASK) || defined(ALPHA_BLEND)
+	// glTF's alpha: baseColorFactor's times the map's, where the vertex
+	// reads its material's map (v_color.a, src/scene/mesh.h).
+	float alpha = u_alpha.x * mix(1.0, base_map.a, v_color.a);
+#endif
+#ifdef ALPHA_MASK
+	if (alpha < u_alpha.y)
+		discard;
+#endif
+#ifdef ALPHA_BLEND
+	gl_FragColor = vec4(color, alpha);
+#else
 	gl_FragColor = vec4(color, 1.0);
+#endif
 }

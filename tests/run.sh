@@ -45,6 +45,8 @@ test_live
 test_hands
 # 10c. Content by sync: rsync and Syncthing's temporary names.
 test_sync
+# 10d. Metrics for Prometheus, scraped from a real node_exporter.
+test_metrics
 # 11. make install honours PREFIX and DESTDIR; the systemd unit, checked
 #     offline.
 test_install

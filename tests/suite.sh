@@ -102,6 +102,7 @@ test_unit() {
 # renders them and compared with the golden images' tolerance.
 test_golden() {
 	need_models
+	all=$#
 	if [ $# -eq 0 ]; then
 		check "golden scenes rendered" sh tests/golden/golden.sh "$out/render"
 		for g in tests/golden/*.png; do set -- "$@" "$(basename "$g" .png)"; done
@@ -111,6 +112,12 @@ test_golden() {
 	for g in "$@"; do
 		check "golden $g.png" imgdiff_golden "tests/golden/$g.png" "$out/render/$g.png"
 	done
+	# The README's first picture is what `make run` draws: no settings.
+	[ "$all" -eq 0 ] || return 0
+	check "README's first picture: the defaults render" "$KIOSK" -q --backend "$offscreen" \
+		--output "$out/render/readme-first.png"
+	check "README's first picture is what make run shows (tests/readme/first.png)" \
+		imgdiff_golden tests/readme/first.png "$out/render/readme-first.png"
 }
 
 # The same scenes through EGL headless agree with OSMesa.
@@ -148,8 +155,10 @@ test_mirror_check() {
 test_ortho() {
 	need_models
 	for m in gold chrome-studio; do
+		# --zoom 1: the unit sphere's own framing, where it fills the
+		# frame (not [scene] fit's margin), so it is the matcap's disc.
 		check "ortho sphere renders ($m)" "$KIOSK" -q --backend $offscreen --size 256x256 --ortho \
-			--mode normal --pitch 0 --yaw 0 --model "$out/models/sphere.glb" \
+			--zoom 1 --mode normal --pitch 0 --yaw 0 --model "$out/models/sphere.glb" \
 			--matcap matcaps/$m.png --output "$out/render/ortho-$m.png"
 		check "ortho sphere reproduces the matcap ($m)" "$TOOLS/imgdiff" --disk --rim 3 \
 			--tol 8 --share 0.002 "matcaps/$m.png" "$out/render/ortho-$m.png"
@@ -230,6 +239,10 @@ test_bad_input() {
 	bad_input "missing model" --model "$out/bad/no-such-model.glb"
 	bad_input "bad detail map" --detail-map "$out/models/corrupt.png"
 	bad_input "missing height map" --displacement-map "$out/bad/no-such-height.png"
+	for f in truncated.png text.jpg; do
+		bad_input "bad background $f" --background "$out/bad/$f"
+	done
+	bad_input "missing background" --background "$out/bad/no-such-background.jpg"
 }
 
 # The command line itself, and config errors that stop the program.
@@ -323,6 +336,22 @@ test_hands() {
 	grep -q "^ok every step ran" "$out/hands.log" ||
 		echo "not ok the scenario stopped early" >>"$out/hands.log"
 	results hands "$out/hands.log"
+}
+
+# [status] metrics scraped from a real node_exporter (tests/e2e/metrics.sh):
+# the live kiosk's values, escaped labels, no textfile parse error; the
+# exporter on 127.0.0.1 only, stopped at the end.
+test_metrics() {
+	need_models
+	if ! command -v prometheus-node-exporter >/dev/null || ! command -v curl >/dev/null; then
+		ko "metrics: prometheus-node-exporter and curl are not installed (make deps)"
+		return
+	fi
+	sh tests/e2e/metrics.sh "$ASAN_KIOSK" "$out/models/sphere.glb" "$out/metrics" \
+		>"$out/metrics.log" 2>&1
+	grep -q "^ok every step ran" "$out/metrics.log" ||
+		echo "not ok the scenario stopped early" >>"$out/metrics.log"
+	results metrics "$out/metrics.log" "$out/metrics/stderr"
 }
 
 # Content by sync (tests/e2e/sync.sh): real rsync, slowed down, and

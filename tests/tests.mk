@@ -3,18 +3,19 @@
 #                      N failed" line; VM_E2E=0 leaves the virtual board out
 #   make unit          the unit tests alone, built with ASan and UBSan
 #   make check T=NAME  one test or group by name (tests/check.sh; T= lists them)
-#   make golden        regenerate tests/golden/*.png on purpose (then look at them)
+#   make golden        regenerate tests/golden/*.png and tests/readme/first.png on
+#                      purpose (then look at them)
 #   make bench         speed figures (printed, never asserted); make report
 
 UNIT_TESTS  := options mesh image gltf gltf_ext shading app button content service
 UNIT_TESTS  += tangent subdivide material mesh_cache
 UNIT_TESTS  += camera_math camera_proto camera_texture
 UNIT_TESTS  += stability fp16 lod
-UNIT_TESTS  += base_color
+UNIT_TESTS  += base_color draw_list
 UNIT_TESTS  += drm gesture touch_decode schedule power cec backlight
 UNIT_TESTS  += touch_device app_touch
 UNIT_TESTS  += model_list gltf_words settings_files
-UNIT_TESTS  += status poster file
+UNIT_TESTS  += status poster file metrics background framing
 TOOLS_DIR   := $(BUILD)/tools
 ASAN_BUILD  := $(BUILD)/asan
 SANITIZE    := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all \
@@ -31,16 +32,19 @@ $(BUILD)/oracle/%.o: tests/oracle/%.c
 
 -include $(wildcard $(BUILD)/oracle/*.d)
 
-$(BUILD)/tests/test_%: tests/unit/test_%.c tests/tools/gltf_write.c tests/tools/gltf_write.h $(LIB_OBJS) $(ORACLE_OBJS)
+$(BUILD)/tests/test_%: tests/unit/test_%.c tests/tools/gltf_write.c tests/tools/gltf_write.h \
+		tests/tools/gltf_parts.c tests/tools/gltf_parts.h $(LIB_OBJS) $(ORACLE_OBJS)
 	@mkdir -p $(@D)
-	$(CC) $(TEST_CFLAGS) $(LDFLAGS) -o $@ $< tests/tools/gltf_write.c $(LIB_OBJS) $(ORACLE_OBJS) $(TEST_LIBS)
+	$(CC) $(TEST_CFLAGS) $(LDFLAGS) -o $@ $< tests/tools/gltf_write.c tests/tools/gltf_parts.c \
+		$(LIB_OBJS) $(ORACLE_OBJS) $(TEST_LIBS)
 
 unit-tests: $(UNIT_TESTS:%=$(BUILD)/tests/test_%)
 
-$(TOOLS_DIR)/mkmodels: tests/tools/mkmodels.c tests/tools/gltf_write.c tests/tools/maps.c $(LIB_OBJS)
+$(TOOLS_DIR)/mkmodels: tests/tools/mkmodels.c tests/tools/gltf_write.c tests/tools/maps.c \
+		tests/tools/gltf_parts.c tests/tools/parts_models.c $(LIB_OBJS)
 	@mkdir -p $(@D)
-	$(CC) $(TEST_CFLAGS) -o $@ $< tests/tools/gltf_write.c tests/tools/maps.c $(LIB_OBJS) \
-		$(TEST_LIBS)
+	$(CC) $(TEST_CFLAGS) -o $@ $< tests/tools/gltf_write.c tests/tools/maps.c \
+		tests/tools/gltf_parts.c tests/tools/parts_models.c $(LIB_OBJS) $(TEST_LIBS)
 
 $(TOOLS_DIR)/imgdiff: tests/tools/imgdiff.c $(BUILD)/util/image.o $(BUILD)/util/log.o
 	@mkdir -p $(@D)
@@ -150,8 +154,14 @@ check:
 
 golden: $(KIOSK) test-tools
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/golden/golden.sh tests/golden
+	$(MAKE) readme
 
-.PHONY: unit-tests test-tools asan asan-kiosk asan-unit test unit check golden
+# The README's first picture: what `make run` draws with no settings on a
+# machine with no display (the frame it writes), through the offscreen backend.
+readme: $(KIOSK)
+	./$(KIOSK) -q --backend $(OFFSCREEN_BACKEND) --output tests/readme/first.png
+
+.PHONY: unit-tests test-tools asan asan-kiosk asan-unit test unit check golden readme
 
 include tests/fuzz/fuzz.mk
 include tests/soak/soak.mk
@@ -160,6 +170,7 @@ bench: $(KIOSK) test-tools
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench.sh
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_startup.sh
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_gltf.sh
+	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_parts.sh
 	KIOSK=./$(KIOSK) sh tests/bench/bench_camera.sh
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_materials.sh
 	KIOSK=./$(KIOSK) sh tests/bench/bench_input.sh

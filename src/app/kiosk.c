@@ -1,4 +1,6 @@
 #include "app/kiosk.h"
+#include "app/kiosk_report.h"
+#include "app/kiosk_state.h"
 #include "app/signals.h"
 #include "state/app.h"
 #include "app/kiosk_models.h"
@@ -37,43 +39,6 @@ enum {
 	FD_MODELS,
 	FD_MODEL_WATCH,
 	FD_INPUTS
-};
-
-/* Where an input source came from: a reload opens the buttons or the
- * keyboards again, and leaves the others alone. */
-enum input_origin { INPUT_CALLER, INPUT_BUTTON, INPUT_KEYBOARD };
-
-struct kiosk {
-	struct display *display;
-	struct renderer *renderer;
-	struct content *content; /* on screen; a reload swaps what it holds */
-	char **argv;
-	int argc;
-	bool camera_possible;
-	struct options started; /* [display] stays as it was at the start */
-	struct options applied; /* the settings in use, from the last reload */
-	struct app *app;	/* the one owner of the state; changed by messages */
-	struct view view;
-	struct input_source *inputs[KIOSK_MAX_INPUTS];
-	enum input_origin origins[KIOSK_MAX_INPUTS];
-	int input_count;
-	/* What the renderer holds now. */
-	int shown_matcap; /* the image in the texture, -1 for none */
-	bool shown_ortho;
-	enum shading_mode shown_mode;
-	long frames_drawn;
-	uint64_t input_drawn_ns;    /* the last input a drawn frame shows */
-	struct folder_watch *watch; /* the matcap folder, NULL when not watched */
-	uint64_t rescan_at;	    /* act on matcap changes then; CLOCK_NEVER: none */
-	uint64_t waiting_since;	    /* when the pending page flip was queued */
-	bool display_absent;	    /* the last draw found no display to show it on */
-	struct service service;
-	struct camera_feed *camera;   /* the live camera; NULL: none */
-	struct screen *screen;	      /* its power; NULL: always on */
-	struct status_server *status; /* --status; NULL: not reachable */
-	uint64_t started_ns;
-	struct touch *touch;	     /* the touchscreens; NULL: off */
-	struct kiosk_models *models; /* a folder or list of models; NULL: one, unwatched */
 };
 
 static void tell_app(struct kiosk *k, enum app_msg_kind kind)
@@ -236,7 +201,8 @@ static int draw(struct kiosk *k, uint64_t now)
 	sync_mode(k, st->mode);
 	sync_matcap(k, st->matcap);
 	k->view.orientation = st->orientation;
-	k->view.zoom = (float)st->zoom;
+	/* Pinching scales the fitted picture ([scene] fit). */
+	k->view.zoom = (float)(st->zoom * (k->content->zoom > 0 ? k->content->zoom : 1.0));
 	/* Not connected, or waiting for the display: stay dirty, the display
 	 * asks for a redraw through dispatch() when it is back. */
 	k->display_absent = true;
@@ -270,8 +236,8 @@ static void watch_matcaps(struct kiosk *k)
 
 static void start_models(struct kiosk *k, uint64_t now_ns)
 {
-	struct kiosk_models_parts parts = {k->app, k->content, k->renderer, k->display,
-					   &k->applied.content};
+	struct kiosk_models_parts parts = {k->app,     k->content,	    k->renderer,
+					   k->display, &k->applied.content, &k->counts};
 
 	kiosk_models_free(k->models);
 	k->models = kiosk_models_new(&parts, now_ns);
@@ -336,6 +302,7 @@ static void reload(struct kiosk *k, uint64_t now_ns)
 {
 	struct options fresh;
 	unsigned reopen;
+	bool done = false;
 
 	service_reloading(false);
 	/* --status names this reload's failure, or none after a good one. */
@@ -348,6 +315,7 @@ static void reload(struct kiosk *k, uint64_t now_ns)
 	if (reload_content(k->content, &fresh.content, k->renderer, k->display->width,
 			   k->display->height))
 		goto out;
+	metrics_follow(&k->metrics, fresh.metrics);
 	reopen = reload_reopen(&k->started, &k->applied, &fresh);
 	options_release(&k->applied);
 	k->applied = fresh;
@@ -357,7 +325,9 @@ static void reload(struct kiosk *k, uint64_t now_ns)
 		touch_set_rotation(k->touch, k->applied.content.rotation);
 	reopen_devices(k, reopen);
 	log_info("reload: done");
+	done = true;
 out:
+	*(done ? &k->counts.reloads : &k->counts.reload_failures) += 1;
 	options_release(&fresh);
 	service_reloading(true);
 }
@@ -541,33 +511,6 @@ static int service_display(struct kiosk *k, const struct pollfd *fds)
 	return 0;
 }
 
-/* --status asked: the state, and the frame on screen read back now. */
-static void service_status(struct kiosk *k, const struct pollfd *fds)
-{
-	const struct app_state *st = app_state(k->app);
-	struct image frame = {0};
-	char last_error[1024];
-	struct status_report r = {
-	    .model = k->content->model_path,
-	    .matcap = k->content->set ? matcap_set_path(k->content->set, st->matcap) : NULL,
-	    .mode = shading_mode_name(st->mode),
-	    .view = {st->orientation.x, st->orientation.y, st->orientation.z, st->orientation.w},
-	    .screen_on = awake(k),
-	    .camera_on = st->camera_on,
-	    .uptime_s = (double)(monotonic_ns() - k->started_ns) / 1e9,
-	    .frames_drawn = k->frames_drawn,
-	    .last_error = last_error};
-	bool have;
-
-	if (!(fds[FD_STATUS].revents & POLLIN) || !status_server_accept(k->status))
-		return;
-	log_last_error(last_error, sizeof(last_error));
-	have = k->frames_drawn > 0 && status_server_wants_frame(k->status) &&
-	       k->display->read_frame(k->display, &frame) == 0;
-	status_server_answer(k->status, &r, have ? &frame : NULL);
-	image_release(&frame);
-}
-
 /* One pass: draw when the state changed, sleep until something happens,
  * and hand it on. Returns 1 to stop, 0 to go on, or a negative errno. */
 static int loop_once(struct kiosk *k, int sig_fd)
@@ -589,7 +532,7 @@ static int loop_once(struct kiosk *k, int sig_fd)
 	if (k->screen)
 		next = earliest(next, screen_deadline(k->screen, now), CLOCK_NEVER);
 	next = earliest(next, k->rescan_at, service_deadline(&k->service));
-	next = earliest(next, kiosk_models_deadline(k->models), CLOCK_NEVER);
+	next = earliest(next, kiosk_models_deadline(k->models), metrics_deadline(k->metrics));
 	n = fill_fds(k, fds, sig_fd);
 	if (poll(fds, (nfds_t)n, poll_timeout_ms(k, next, now)) < 0 && errno != EINTR)
 		return -errno;
@@ -602,7 +545,9 @@ static int loop_once(struct kiosk *k, int sig_fd)
 	if ((ret = service_display(k, fds)))
 		return ret;
 	service_camera(k, fds[FD_CAMERA].revents);
-	service_status(k, fds);
+	if (fds[FD_STATUS].revents & POLLIN)
+		kiosk_report_status(k);
+	kiosk_report_metrics(k, monotonic_ns(), false);
 	service_matcaps(k, fds, monotonic_ns());
 	service_inputs(k, fds, monotonic_ns());
 	service_touch(k, fds, monotonic_ns());
@@ -622,9 +567,11 @@ int kiosk_run(struct kiosk *k)
 	}
 	service_init(&k->service, monotonic_ns());
 	k->status = status_server_new();
+	metrics_follow(&k->metrics, k->applied.metrics);
 	while (!(ret = loop_once(k, sig_fd)))
 		;
 	service_stopping();
+	kiosk_report_metrics(k, monotonic_ns(), true);
 	status_server_free(k->status);
 	k->status = NULL;
 	close(sig_fd);
@@ -645,6 +592,7 @@ struct kiosk *kiosk_new(const struct kiosk_parts *p, uint64_t now_ns)
 		k->argc++;
 	k->camera_possible = p->camera_possible;
 	k->started_ns = now_ns;
+	k->started_at = (double)clock_ns(CLOCK_REALTIME) / 1e9;
 	/* The renderer already holds the mode. */
 	k->shown_mode = p->options->content.mode;
 	k->shown_ortho = p->options->content.ortho;
@@ -669,6 +617,7 @@ void kiosk_free(struct kiosk *k)
 	screen_free(k->screen);
 	folder_watch_free(k->watch);
 	kiosk_models_free(k->models);
+	metrics_free(k->metrics);
 	app_free(k->app);
 	options_release(&k->started);
 	options_release(&k->applied);

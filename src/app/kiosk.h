@@ -14,8 +14,6 @@
 #include <stdint.h>
 #include <stdio.h>
 
-#define KIOSK_MAX_INPUTS 16
-
 /* What the kiosk runs on; none of it is freed by the kiosk. */
 struct kiosk_parts {
 	struct display *display;

@@ -116,6 +116,7 @@ static int show(struct kiosk_models *m, struct content *fresh, int index)
 	int ret = content_upload_model(fresh, m->p.renderer);
 
 	if (ret) {
+		m->p.counts->model_load_failures++;
 		log_err("%s: does not fit on the GPU; keeping %s", fresh->model_path,
 			m->p.content->model_path);
 		model_list_set_bad(m->list, index, true);
@@ -126,6 +127,7 @@ static int show(struct kiosk_models *m, struct content *fresh, int index)
 	}
 	content_take_model(m->p.content, fresh);
 	m->shown = index;
+	m->p.counts->model_loads++;
 	log_info("model %d of %d: %s", index + 1, model_list_count(m->list),
 		 m->p.content->model_path);
 	/* The frame that shows it is drawn next: what a switch costs is this
@@ -144,6 +146,8 @@ static void finish(struct kiosk_models *m)
 		return;
 	if (picked >= 0 && fresh.model_path)
 		show(m, &fresh, picked);
+	else /* none loaded, or only the one on screen */
+		m->p.counts->model_load_failures++;
 	content_release(&fresh);
 	/* The user may have stepped on meanwhile: that step stands, and is
 	 * acted on next. A file that arrived is shown whatever was wanted. */

@@ -9,6 +9,7 @@
 #include "state/app.h"
 #include "content/content.h"
 #include "config/content_config.h"
+#include "ops/status.h"
 #include "display/display.h"
 #include "render/render.h"
 
@@ -22,6 +23,7 @@ struct kiosk_models_parts {
 	struct renderer *renderer;
 	struct display *display;
 	const struct content_config *config; /* [scene] model and how to prepare one */
+	struct status_counts *counts;	     /* model loads counted here */
 };
 
 struct kiosk_models;

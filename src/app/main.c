@@ -81,8 +81,8 @@ static void print_stats(double *times, int n, double first_frame_ms)
 	       times[n / 2], times[(n * 9) / 10], first_frame_ms, ru.ru_maxrss);
 }
 
-static int render_frames(const struct options *o, struct display *d, struct renderer *r,
-			 double start_ms)
+static int render_frames(const struct options *o, const struct content *s, struct display *d,
+			 struct renderer *r, double start_ms)
 {
 	struct view v = content_view(&o->content);
 	double *times = calloc((size_t)o->frames, sizeof(double));
@@ -91,6 +91,7 @@ static int render_frames(const struct options *o, struct display *d, struct rend
 
 	if (!times)
 		return -ENOMEM;
+	v.zoom = (float)s->zoom;
 	for (int i = 0; i < o->frames && !ret; i++) {
 		double t = now_ms();
 
@@ -166,7 +167,7 @@ static int run(const struct options *o, char **argv, struct content *s, struct d
 	if (ret)
 		goto out;
 	if (o->output || o->frames > 1) {
-		ret = render_frames(o, d, r, start_ms);
+		ret = render_frames(o, s, d, r, start_ms);
 		if (!ret && o->output)
 			ret = write_output(o, d);
 	} else {
@@ -225,24 +226,43 @@ static int after_display(const struct options *o, bool was_live, struct content 
 
 /* Something on the screen at once, before the model loads: the poster,
  * or the background. A failure here is logged and passed over. */
+/* The background the model will have ([display] background), for the
+ * poster; a plain colour where it cannot be drawn. */
+static struct background *poster_background(const struct options *o, struct display *d)
+{
+	struct background_spec spec;
+	struct image img;
+	struct background *bg;
+
+	content_load_background(&o->content, false, &spec, &img);
+	bg = background_new(&d->gl, &spec, &img);
+	image_release(&img);
+	if (!bg) {
+		background_spec_default(&spec);
+		bg = background_new(&d->gl, &spec, NULL);
+	}
+	return bg;
+}
+
 static int show_poster(const struct options *o, struct display *d)
 {
-	struct view v = content_view(&o->content);
 	struct image img = {0};
 	bool have = o->poster && *o->poster && image_load(o->poster, &img) == 0;
+	struct background *bg = NULL;
 	int shown = 0;
 
 	if (o->poster && *o->poster && !have)
 		log_warn("[display] poster %s does not load: the background instead", o->poster);
-	if (d->begin_frame(d) == 0) {
+	if (d->begin_frame(d) == 0 && (bg = poster_background(o, d))) {
 		if (poster_draw(&d->gl, have ? &img : NULL, d->width, d->height,
-				o->content.rotation, v.background))
+				o->content.rotation, bg))
 			log_warn("[display] poster %s cannot be drawn: the background instead",
 				 o->poster);
 		if (d->present(d) == 0 && ++shown)
 			log_info("poster: %s on the screen while the model loads",
 				 have ? o->poster : "the background");
 	}
+	background_free(bg);
 	image_release(&img);
 	return shown;
 }

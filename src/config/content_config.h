@@ -1,5 +1,5 @@
-/* [scene] in kiosk.ini, with [display] rotation and [material]: what is
- * shown, and how it is seen. Plain data, so that the settings need not
+/* [scene] in kiosk.ini, with [display] rotation and background, and
+ * [material]: what is shown, and how it is seen. Plain data, so that the settings need not
  * know the content pipeline (src/content/) that reads it. */
 #ifndef MK_CONTENT_CONFIG_H
 #define MK_CONTENT_CONFIG_H
@@ -9,10 +9,18 @@
 
 #include <stdbool.h>
 
+/* [scene] fit when it is not set: the model fills most of the frame and
+ * leaves it a margin. */
+#define CONTENT_FIT_DEFAULT 0.85
+
 struct content_config {
-	char *model;	   /* a file, folder or list (model_list.h); NULL: the built-in knot */
-	char *model_scene; /* the glTF scene by index or name; NULL: the file's */
-	char *matcap;	   /* a file or a folder; NULL: the shipped folder */
+	char *model;	    /* a file, folder or list (model_list.h); NULL: the built-in knot */
+	char *model_scene;  /* the glTF scene by index or name; NULL: the file's */
+	char *matcap;	    /* a file or a folder; NULL: the shipped folder */
+	char *matcap_first; /* the folder's matcap shown first; NULL: see load_matcap */
+	char *background;   /* render/background.h's text; NULL: the default */
+	double fit;	    /* render/framing.h: the share of the frame the model fills */
+	double zoom;	    /* --zoom: this scale instead of the fit's; 0: the fit's */
 	enum shading_mode mode;
 	bool ortho;
 	double yaw, pitch; /* degrees, the resting orientation */

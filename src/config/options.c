@@ -4,6 +4,7 @@
 #include "config/options.h"
 #include "state/schedule.h"
 #include "config/settings.h"
+#include "render/background.h"
 #include "util/file.h"
 #include "util/log.h"
 
@@ -85,7 +86,8 @@ static void list_sections(char *buf, size_t n)
 
 /* The settings that name files: read from the folder of the file that
  * names them. (Devices are absolute, under /dev.) */
-static bool names_files(const struct option_def *d)
+/* value: [display] background names a file when it is a picture's name. */
+static bool names_files(const struct option_def *d, const char *value)
 {
 	static const char *const keys[] = {
 	    "model",	  "matcap",	      "poster",		  "include",
@@ -93,6 +95,8 @@ static bool names_files(const struct option_def *d)
 
 	if (d->kind != K_STRING || d->section == OPTION_CLI)
 		return false;
+	if (!strcmp(d->key, "background"))
+		return background_names_image(value);
 	for (const char *const *k = keys; *k; k++)
 		if (!strcmp(d->key, *k))
 			return true;
@@ -179,7 +183,7 @@ static int on_key(void *user, const char *section, const char *key, const char *
 		seen(st, d);
 		return 1;
 	}
-	if (d && names_files(d) &&
+	if (d && names_files(d, value) &&
 	    !(resolved = resolve_paths(value, st->dir, !strcmp(key, "model"), &why))) {
 		log_err("%s:%d: [%s] %s = '%s': %s", st->path, st->line, section, key, value, why);
 		seen(st, d);
@@ -300,6 +304,22 @@ static void check_schedule(struct file_state *st)
 		st->path, at, text, err);
 }
 
+/* Counts an error when this file set a background that does not parse
+ * (an image that does not decode is the scene's to say, as a model's). */
+static void check_background(struct file_state *st)
+{
+	const char *text = st->opts->content.background;
+	int at = st->seen_line[find_key("display", "background") - option_defs];
+	struct background_spec spec;
+	char err[200];
+
+	if (!at || !background_parse(text, &spec, err, sizeof(err)))
+		return;
+	st->errors++;
+	log_err("%s:%d: [display] background = '%s' is not valid: %s; expected %s", st->path, at,
+		text, err, BACKGROUND_EXPECTED);
+}
+
 static enum options_status read_stream(struct options *o, const char *path, const char *dir,
 				       FILE *f)
 {
@@ -311,6 +331,7 @@ static enum options_status read_stream(struct options *o, const char *path, cons
 	ret = ini_parse_stream(read_line, &st, on_key, &st);
 	check_lines(&st);
 	check_schedule(&st);
+	check_background(&st);
 	if (ret > 0)
 		log_err("%s:%d: not an INI line; expected [section], key = value or a comment",
 			path, ret);
@@ -492,7 +513,8 @@ static enum options_status read_config_first(struct options *o, int argc, char *
 static enum options_status check_command_line(const struct options *o, int argc, char **argv)
 {
 	struct schedule sch;
-	char err[160];
+	struct background_spec bg;
+	char err[200];
 	int first, second;
 
 	if (optind < argc) {
@@ -510,6 +532,11 @@ static enum options_status check_command_line(const struct options *o, int argc,
 	if (o->power.schedule && *o->power.schedule &&
 	    schedule_parse(&sch, o->power.schedule, err, sizeof(err))) {
 		log_err("--schedule: '%s' is not valid: %s", o->power.schedule, err);
+		return OPTIONS_USAGE;
+	}
+	if (background_parse(o->content.background, &bg, err, sizeof(err))) {
+		log_err("--background: '%s' is not valid: %s; expected %s", o->content.background,
+			err, BACKGROUND_EXPECTED);
 		return OPTIONS_USAGE;
 	}
 	return OPTIONS_OK;

@@ -25,6 +25,8 @@ const struct options_section_rule options_sections[OPTIONS_SECTIONS] = {
 		       "at once; the screen's power is decided again if this section changed"},
     [OPTIONS_TOUCH] = {"touch", OPTIONS_REOPEN, NULL,
 		       "at once; the touchscreens are opened again if this section changed"},
+    [OPTIONS_STATUS] = {"status", OPTIONS_LIVE, NULL,
+			"at once; a metrics file no longer named is removed"},
 };
 
 static const char *const backend_names[] = {"auto", "kms", "osmesa", "egl-headless", NULL};
@@ -37,7 +39,8 @@ static const char *const switch_names[] = {"auto", "off", "on", NULL}; /* enum m
 static const char *const lit_names[] = {"off", "on", "beside", NULL};  /* enum material_lit */
 static const char *const camera_names[] = {"off", "on", NULL};	       /* enum camera_feed_use */
 static const char *const import_names[] = {"auto", "off", NULL};       /* enum camera_feed_import */
-static const char *const base_color_names[] = {"auto", "off", NULL};   /* enum material_switch */
+static const char *const antialias_names[] = {"auto", "off", "2", "4", "8", NULL};
+static const char *const base_color_names[] = {"auto", "off", NULL}; /* enum material_switch */
 
 /* A field's place and size: the size tells a bool from an enum, and the
  * copy, the comparison and the release go by it. */
@@ -57,7 +60,8 @@ _Static_assert(sizeof(enum backend_kind) == sizeof(int) &&
 		   sizeof(enum button_active) == sizeof(int) &&
 		   sizeof(enum button_bias) == sizeof(int) &&
 		   sizeof(enum camera_feed_use) == sizeof(int) &&
-		   sizeof(enum camera_feed_import) == sizeof(int),
+		   sizeof(enum camera_feed_import) == sizeof(int) &&
+		   sizeof(enum display_antialias) == sizeof(int),
 	       "enums are ints");
 
 const struct option_def option_defs[OPTION_DEFS] = {
@@ -246,6 +250,26 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "bad setting, 66 a named file missing or broken)"},
     {"import", 0, OPTION_CLI, NULL, K_STRING, AT(import), 0, 0, 0, NULL, "DIR",
      "copy a USB stick's matcap-kiosk/ folder into the content folder, checked first; exit"},
+    {"metrics", 0, OPTIONS_STATUS, "metrics", K_STRING, AT(metrics), 0, 0, 0, NULL, "FILE",
+     "write the state every 5 s as a Prometheus text file (FILE.prom, for node_exporter's "
+     "textfile collector)"},
+    {"background", 0, OPTIONS_DISPLAY, "background", K_STRING, AT(content.background), 0, 0, 0,
+     NULL, "WHAT",
+     "behind the model: a colour #rrggbb, a vertical gradient '#top, #bottom', or a PNG/JPEG "
+     "scaled to cover the screen (default: dark grey)"},
+    {"antialias", 0, OPTIONS_DISPLAY, "antialias", K_CHOICE, AT(display.antialias), 0, 0, 0,
+     antialias_names, "N",
+     "smooth edges by multisampling: auto (4 samples on a GPU, off on a software rasteriser), "
+     "off, 2, 4 or 8"},
+    {"matcap-first", 0, OPTIONS_SCENE, "matcap_first", K_STRING, AT(content.matcap_first), 0, 0, 0,
+     NULL, "NAME",
+     "the matcap of the folder shown first, by file name (default: the shipped folder "
+     "starts at gold, another at its first by name)"},
+    {"zoom", 0, OPTION_CLI, NULL, K_DOUBLE, AT(content.zoom), 0.05, 20, 0, NULL, "Z",
+     "draw at this scale of the sphere's framing instead of the one [scene] fit chose (logged "
+     "at debug), so stills of other views keep one size"},
+    {"fit", 0, OPTIONS_SCENE, "fit", K_DOUBLE, AT(content.fit), 0.1, 1, 0, NULL, "SHARE",
+     "the share of the frame the model fills at its start view; it stays inside as it turns"},
 };
 
 const char *backend_name(enum backend_kind kind)
@@ -273,6 +297,7 @@ void option_defaults(struct options *o)
 	o->content.pitch = 20.0;
 	o->content.yaw = -30.0;
 	o->content.lod_pixels = 4.0;
+	o->content.fit = CONTENT_FIT_DEFAULT;
 	material_config_defaults(&o->content.material);
 	o->log_level = LOG_INFO;
 	o->app.attract_after_s = 60;

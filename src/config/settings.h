@@ -33,6 +33,7 @@ enum options_section {
 	OPTIONS_CAMERA,
 	OPTIONS_POWER,
 	OPTIONS_TOUCH,
+	OPTIONS_STATUS,
 	OPTIONS_SECTIONS
 };
 
@@ -74,6 +75,7 @@ struct options {
 	struct touch_config touch;
 	char *poster;  /* [display] poster */
 	char *include; /* [kiosk] include */
+	char *metrics; /* [status] metrics */
 	/* Where each setting came from (file and line), and the files read,
 	 * for --check-config and the messages; NULL: none recorded. Owned;
 	 * options_copy does not copy it (a copy has none). */
@@ -113,7 +115,7 @@ struct option_def {
 
 /* The table's length: the compiler refuses an entry more, and
  * tests/unit/test_options.c one less. */
-#define OPTION_DEFS 85
+#define OPTION_DEFS 91
 extern const struct option_def option_defs[OPTION_DEFS];
 
 void option_defaults(struct options *o);

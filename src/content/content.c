@@ -1,6 +1,7 @@
 #include "content/content.h"
 #include "content/model_list.h"
 #include "render/bake.h"
+#include "render/framing.h"
 #include "scene/gltf.h"
 #include "scene/lod.h"
 #include "util/log.h"
@@ -52,6 +53,13 @@ static int content_cache_lookup(struct content *s, const struct content_config *
 	if (!ret && c->model_scene)
 		s->cache_key.settings =
 		    mesh_cache_hash(c->model_scene, strlen(c->model_scene), s->cache_key.settings);
+	/* The fit's zoom (or --zoom) sets the level of detail's pixels. */
+	if (!ret)
+		s->cache_key.settings =
+		    mesh_cache_hash(&c->fit, sizeof(c->fit), s->cache_key.settings);
+	if (!ret)
+		s->cache_key.settings =
+		    mesh_cache_hash(&c->zoom, sizeof(c->zoom), s->cache_key.settings);
 
 	if (!ret)
 		ret = mesh_cache_dir(dir, sizeof(dir));
@@ -62,7 +70,9 @@ static int content_cache_lookup(struct content *s, const struct content_config *
 		return ret;
 	/* An entry is written only for a model whose material decodes no
 	 * texture: its factors are all material_load needs. */
-	s->mesh.material = *mesh_cache_entry_material(s->cached);
+	ret = mesh_copy_factors(&s->mesh, mesh_cache_entry_materials(s->cached));
+	if (ret)
+		return ret;
 	shell_counts(s, mesh_cache_entry_mesh(s->cached));
 	/* Said by content_prepare, once it is known to be used. */
 	log_debug("%s: a prepared mesh in the cache", path);
@@ -76,10 +86,15 @@ static bool content_cache_fits(const struct content *s, int width, int height)
 	return k && k->width == (uint32_t)width && k->height == (uint32_t)height;
 }
 
-static bool decoded_images(const struct mesh_material *m)
+static bool decoded_images(const struct mesh *mesh)
 {
-	return m->normal_map.width || m->occlusion_map.width || m->thickness_map.width ||
-	       m->base_map.width;
+	const struct mesh_material *m = &mesh->material;
+	bool any = m->normal_map.width || m->occlusion_map.width || m->thickness_map.width ||
+		   m->base_map.width;
+
+	for (uint32_t k = 0; k < mesh->material_count; k++)
+		any |= mesh->materials[k].base_map.width != 0;
+	return any;
 }
 
 /* The prepared mesh packed as the GPU and the cache take it; the mesh's
@@ -88,15 +103,21 @@ static bool decoded_images(const struct mesh_material *m)
 static void content_cache_pack(struct content *s, int width, int height)
 {
 	struct mesh_material material = s->mesh.material;
+	struct mesh_material *materials = s->mesh.materials;
+	uint32_t material_count = s->mesh.material_count;
 
-	if (!s->cacheable || decoded_images(&material) ||
+	if (!s->cacheable || decoded_images(&s->mesh) ||
 	    mesh_pack(&s->mesh, VERTEX_COMPACT, &s->packed))
 		return;
 	s->cache_key.width = (uint32_t)width;
 	s->cache_key.height = (uint32_t)height;
 	mesh_material_default(&s->mesh.material);
+	s->mesh.materials = NULL;
+	s->mesh.material_count = 0;
 	mesh_release(&s->mesh);
 	s->mesh.material = material;
+	s->mesh.materials = materials;
+	s->mesh.material_count = material_count;
 	shell_counts(s, &s->packed);
 }
 
@@ -108,8 +129,8 @@ static void content_cache_store(struct content *s)
 
 	if (!s->packed.vertex_count || mesh_cache_dir(dir, sizeof(dir)))
 		return;
-	s->writer = mesh_cache_write_async(dir, &s->cache_key, &s->packed, &s->mesh.material,
-					   MESH_CACHE_MAX_BYTES);
+	s->writer =
+	    mesh_cache_write_async(dir, &s->cache_key, &s->packed, &s->mesh, MESH_CACHE_MAX_BYTES);
 }
 
 /* A shell whose packed mesh went to the cache: uploaded again (a reload
@@ -139,12 +160,36 @@ const char *content_default_matcaps(void)
 	return access("matcaps", R_OK) == 0 ? "matcaps" : NULL;
 }
 
+/* The shipped folder starts with a bright matcap that reads on the
+ * default background (README.md, "The first picture"); another folder in
+ * name order, unless [scene] matcap_first names where. */
+#define MATCAP_FIRST_SHIPPED "gold"
+
+static const char *first_matcap(const struct content_config *o)
+{
+	if (o->matcap_first && *o->matcap_first)
+		return o->matcap_first;
+	return o->matcap ? NULL : MATCAP_FIRST_SHIPPED;
+}
+
+static struct matcap_set *open_matcaps(const struct content_config *o, const char *path)
+{
+	struct matcap_set *set = matcap_set_open(path);
+	const char *first = first_matcap(o);
+
+	if (set && first && matcap_set_start_at(set, first) && o->matcap_first)
+		log_warn("[scene] matcap_first = %s: no such matcap in %s; expected one of its "
+			 "file names, with or without the extension; starting at %s",
+			 first, path, matcap_set_path(set, 0));
+	return set;
+}
+
 static int load_matcap(const struct content_config *o, bool strict, struct content *s)
 {
 	const char *path = o->matcap ? o->matcap : content_default_matcaps();
 	int ret = -ENOENT;
 
-	s->set = path ? matcap_set_open(path) : NULL;
+	s->set = path ? open_matcaps(o, path) : NULL;
 	if (s->set)
 		ret = image_load(matcap_set_path(s->set, 0), &s->matcap);
 	if (ret && strict && o->matcap)
@@ -156,6 +201,8 @@ static int load_matcap(const struct content_config *o, bool strict, struct conte
 		return bake_matcap(BAKE_CLAY_RED, 256, &s->matcap);
 	}
 	s->matcap_path = strdup(path);
+	if (first_matcap(o) && !(s->matcap_first = strdup(first_matcap(o))))
+		return -ENOMEM;
 	return s->matcap_path ? 0 : -ENOMEM;
 }
 
@@ -216,12 +263,34 @@ static int load_the_model(struct content *s, const struct content_config *o, boo
 	return ret;
 }
 
+int content_load_background(const struct content_config *o, bool strict,
+			    struct background_spec *spec, struct image *img)
+{
+	char err[200];
+	int ret = background_parse(o->background, spec, err, sizeof(err));
+
+	memset(img, 0, sizeof(*img));
+	if (ret) /* the settings checked it: a caller that did not */
+		log_err("[display] background = '%s' is not valid: %s; expected %s", o->background,
+			err, BACKGROUND_EXPECTED);
+	if (!ret && spec->kind == BACKGROUND_IMAGE)
+		ret = image_load(spec->path, img);
+	spec->path = NULL; /* it pointed into o's text */
+	if (!ret || strict)
+		return ret;
+	log_warn("[display] background: the default instead");
+	background_spec_default(spec);
+	return 0;
+}
+
 int content_load(struct content *s, const struct content_config *o, bool strict)
 {
 	int ret;
 
 	memset(s, 0, sizeof(*s));
 	ret = load_the_model(s, o, strict);
+	if (!ret)
+		ret = content_load_background(o, strict, &s->background, &s->background_image);
 	if (!ret)
 		ret = load_matcap(o, strict, s);
 	if (!ret)
@@ -268,7 +337,11 @@ void content_take_model(struct content *shown, struct content *fresh)
 	shown->matcap = kept.matcap;
 	shown->set = kept.set;
 	shown->matcap_path = kept.matcap_path;
-	/* fresh had no matcaps of its own: nothing of it is left to free. */
+	shown->matcap_first = kept.matcap_first;
+	shown->background = kept.background;
+	shown->background_image = kept.background_image;
+	/* fresh had no matcaps or background of its own: nothing of it is
+	 * left to free. */
 	memset(fresh, 0, sizeof(*fresh));
 }
 
@@ -276,9 +349,54 @@ void content_release(struct content *s)
 {
 	release_model(s);
 	image_release(&s->matcap);
+	image_release(&s->background_image);
 	matcap_set_free(s->set);
 	free(s->matcap_path);
+	free(s->matcap_first);
 	memset(s, 0, sizeof(*s));
+}
+
+/* Positions of the prepared mesh as the GPU gets them: the mesh's own, or
+ * the packed arrays (float32, or int16 in units of position_scale). */
+static void frame_packed(struct framing *f, const struct mesh_packed *m)
+{
+	const void *a = m->arrays[MESH_POSITIONS];
+	bool int16 = mesh_array_int16(m->format, MESH_POSITIONS);
+
+	for (uint32_t i = 0; a && i < m->vertex_count; i++) {
+		double p[3];
+
+		for (int c = 0; c < 3; c++)
+			p[c] = int16 ? fmax(((const int16_t *)a)[3 * i + c] / 32767.0, -1.0) *
+					   m->position_scale
+				     : ((const float *)a)[3 * i + c];
+		framing_add(f, p);
+	}
+}
+
+/* [scene] fit: the zoom at which this model fills its share of a width x
+ * height frame at the start view (render/framing.h). */
+static void content_frame(struct content *s, const struct content_config *o, int width, int height)
+{
+	struct view v = content_view(o);
+	struct framing f;
+
+	framing_begin(&f, &v, width, height);
+	if (s->cached)
+		frame_packed(&f, mesh_cache_entry_mesh(s->cached));
+	else if (s->packed.vertex_count)
+		frame_packed(&f, &s->packed);
+	for (uint32_t i = 0; s->mesh.positions && i < s->mesh.vertex_count; i++) {
+		const float *q = s->mesh.positions + 3 * (size_t)i;
+		double p[3] = {q[0], q[1], q[2]};
+
+		framing_add(&f, p);
+	}
+	s->zoom =
+	    o->zoom > 0 ? o->zoom : framing_zoom(&f, o->fit > 0 ? o->fit : CONTENT_FIT_DEFAULT);
+	log_debug("framing: zoom %.6f (at the start %.2f x %.2f, over a turn %.2f x %.2f of the "
+		  "half-frame)",
+		  s->zoom, f.start_x, f.start_y, f.turn_x, f.turn_y);
 }
 
 int content_prepare(struct content *s, const struct content_config *o, int width, int height)
@@ -289,6 +407,7 @@ int content_prepare(struct content *s, const struct content_config *o, int width
 	if (content_cache_fits(s, width, height)) {
 		log_info("%s: the prepared mesh from the cache (%u triangles)", s->model_path,
 			 s->mesh.index_count / 3);
+		content_frame(s, o, width, height);
 		return 0;
 	}
 	if (s->cached) {
@@ -302,11 +421,18 @@ int content_prepare(struct content *s, const struct content_config *o, int width
 	}
 	if (!ret)
 		ret = material_prepare_mesh(&s->material, &s->mesh, width, height);
+	/* The fit magnifies the picture: the level of detail judges its
+	 * pixels as drawn (the zoom of the whole mesh, then of the simplified
+	 * one, which a start from the cache finds too). */
 	if (!ret)
-		ret = lod_prepare_mesh(&s->mesh, displaced ? 0.0 : o->lod_pixels, width, height,
-				       NULL);
+		content_frame(s, o, width, height);
+	if (!ret)
+		ret = lod_prepare_mesh(&s->mesh, displaced ? 0.0 : o->lod_pixels / s->zoom, width,
+				       height, NULL);
 	if (!ret)
 		content_cache_pack(s, width, height);
+	if (!ret)
+		content_frame(s, o, width, height);
 	return ret;
 }
 
@@ -340,13 +466,20 @@ int content_upload(struct content *s, struct renderer *r)
 {
 	int ret = content_upload_model(s, r);
 
+	if (!ret)
+		ret = renderer_set_background(r, &s->background, &s->background_image);
 	return ret ? ret : renderer_set_matcap(r, &s->matcap);
 }
 
 struct view content_view(const struct content_config *o)
 {
-	struct view v = {
-	    .ortho = o->ortho, .rotation = o->rotation, .background = {0.06f, 0.06f, 0.07f}};
+	struct view v = {.ortho = o->ortho, .rotation = o->rotation};
+	struct background_spec bg;
+	char err[200];
+
+	if (background_parse(o->background, &bg, err, sizeof(err)))
+		background_spec_default(&bg);
+	background_clear_color(&bg, v.background);
 
 	v.orientation = quat_multiply(quat_from_axis_angle(1, 0, 0, o->pitch * M_PI / 180),
 				      quat_from_axis_angle(0, 1, 0, o->yaw * M_PI / 180));
@@ -365,6 +498,10 @@ int content_rescan_matcaps(struct content *s)
 			 matcap_set_count(s->set));
 		return -ENOENT;
 	}
+	/* The cycle starts where the settings said ([scene] matcap_first),
+	 * while that one is there. */
+	if (s->matcap_first)
+		matcap_set_start_at(set, s->matcap_first);
 	matcap_set_free(s->set);
 	s->set = set;
 	log_info("%s: %d matcaps", s->matcap_path, matcap_set_count(set));

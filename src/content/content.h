@@ -8,6 +8,7 @@
 #include "config/content_config.h"
 #include "util/image.h"
 #include "content/matcap_set.h"
+#include "render/background.h"
 #include "scene/material.h"
 #include "scene/mesh.h"
 #include "scene/mesh_cache.h"
@@ -29,7 +30,11 @@ struct content {
 	struct image matcap;	  /* the first one shown */
 	struct matcap_set *set;	  /* NULL: the built-in clay only */
 	char *matcap_path;	  /* the file or folder set came from; NULL with set */
+	char *matcap_first;	  /* where set's cycle starts (a rescan too); NULL: the first */
 	struct material material; /* the optional features ([material]) */
+	struct background_spec background; /* its path is NULL once decoded */
+	struct image background_image;	   /* decoded once, when it is an image */
+	double zoom; /* the fit (render/framing.h) on the display prepared for; 0: none */
 };
 
 /* strict: every file the settings name must load (a one-shot render is
@@ -56,8 +61,15 @@ int content_load_model(struct content *s, const struct content_config *c, const 
 void content_take_model(struct content *shown, struct content *fresh);
 /* Hand the mesh alone (and its material) to the renderer. */
 int content_upload_model(struct content *s, struct renderer *r);
-/* The camera and panel the settings ask for, at the resting orientation. */
+/* The camera and panel the settings ask for, at the resting orientation,
+ * with the clear colour of the background. */
 struct view content_view(const struct content_config *c);
+/* Parse c's background and decode its image into spec and img (left
+ * empty for a colour or a gradient). strict: a background that does not
+ * load fails; otherwise it is replaced by the default, and the journal
+ * says so. */
+int content_load_background(const struct content_config *c, bool strict,
+			    struct background_spec *spec, struct image *img);
 /* The matcap folder was changed: open the set again. Returns 0 and
  * replaces s->set, or a negative errno (after logging) and keeps it. */
 int content_rescan_matcaps(struct content *s);

@@ -90,3 +90,41 @@ const char *matcap_set_path(const struct matcap_set *s, int index)
 {
 	return s->paths[((index % s->count) + s->count) % s->count];
 }
+
+/* The file name of path without its folder and, where it has one, its
+ * extension: what [scene] matcap_first names. */
+static bool names(const char *path, const char *name)
+{
+	const char *base = strrchr(path, '/');
+	const char *dot;
+	size_t len;
+
+	base = base ? base + 1 : path;
+	if (!strcmp(base, name))
+		return true;
+	dot = strrchr(base, '.');
+	len = dot ? (size_t)(dot - base) : strlen(base);
+	return strlen(name) == len && !strncmp(base, name, len);
+}
+
+int matcap_set_start_at(struct matcap_set *s, const char *name)
+{
+	char **turned;
+	int at = 0;
+
+	while (at < s->count && !names(s->paths[at], name))
+		at++;
+	if (at == s->count)
+		return -ENOENT;
+	if (at == 0)
+		return 0;
+	turned = malloc(sizeof(*turned) * (size_t)s->count);
+	if (!turned)
+		return -ENOMEM;
+	/* Turned, not moved: the name order goes on from the one named. */
+	for (int i = 0; i < s->count; i++)
+		turned[i] = s->paths[(at + i) % s->count];
+	free(s->paths);
+	s->paths = turned;
+	return 0;
+}

@@ -31,6 +31,22 @@ int display_read_rgba(struct display *d, struct image *out)
 	return 0;
 }
 
+int display_antialias_samples(int antialias, bool software)
+{
+	switch (antialias) {
+	case DISPLAY_AA_AUTO:
+		return software ? 0 : 4;
+	case DISPLAY_AA_2:
+		return 2;
+	case DISPLAY_AA_4:
+		return 4;
+	case DISPLAY_AA_8:
+		return 8;
+	default:
+		return 0;
+	}
+}
+
 int display_no_fd(struct display *d)
 {
 	(void)d;

@@ -16,17 +16,32 @@ struct display_config {
 	const char *device;    /* KMS: /dev/dri/cardN, NULL to discover */
 	const char *connector; /* KMS: HDMI-A-1, NULL for the first connected */
 	const char *mode;      /* KMS: WxH or WxH@Hz, NULL for the preferred */
-	int samples;	       /* MSAA samples where the backend supports it, 0 off */
+	int antialias;	       /* enum display_antialias */
 	bool exit_when_busy;   /* KMS: exit when another program holds the display */
 	int kms_api;	       /* KMS: 0 auto, 1 atomic, 2 legacy (enum drm_api) */
 	bool quiet;	       /* KMS: probing for auto, say nothing when absent */
 };
+
+/* [display] antialias, in the settings' order. */
+enum display_antialias {
+	DISPLAY_AA_AUTO,
+	DISPLAY_AA_OFF,
+	DISPLAY_AA_2,
+	DISPLAY_AA_4,
+	DISPLAY_AA_8
+};
+
+/* The samples per pixel asked for: auto is 4 on a GPU and none on a
+ * software rasteriser, where they cost more than they give (the figures:
+ * tests/bench/report/speed-error.md). 0: off. */
+int display_antialias_samples(int antialias, bool software);
 
 struct display {
 	const char *name;
 	int width; /* of the image the renderer draws, before any rotation */
 	int height;
 	struct gl gl;
+	int samples; /* multisampled with this many samples per pixel; 0: not */
 	/* A presented frame has not reached the screen yet (a page flip is
 	 * pending): draw nothing new until dispatch() clears it. */
 	bool waiting;

@@ -6,14 +6,31 @@
 #include "util/log.h"
 
 #include <errno.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+/* OpenGL ES 3.0's multisampling, loaded where the context has it (the
+ * table of render/gl.h is ES 2.0's). */
+#define GL_READ_FRAMEBUFFER 0x8CA8
+#define GL_DRAW_FRAMEBUFFER 0x8CA9
+#define GL_MAX_SAMPLES	    0x8D57
+#define GL_RGBA8	    0x8058
+#define GL_DEPTH24	    0x81A6 /* DEPTH_COMPONENT24(_OES) */
+typedef void (*storage_multisample_fn)(GLenum, GLsizei, GLenum, GLsizei, GLsizei);
+typedef void (*blit_fn)(GLint, GLint, GLint, GLint, GLint, GLint, GLint, GLint, GLbitfield, GLenum);
+typedef void (*texture_multisample_fn)(GLenum, GLenum, GLenum, GLuint, GLint, GLsizei);
 
 struct display_egl {
 	struct display base;
 	EGLDisplay dpy;
 	EGLContext ctx;
 	GLuint fbo, color, depth;
+	/* Multisampled: drawn into msaa_fbo and resolved into fbo at
+	 * present (ES 3.0), or resolved by the GPU as the texture is written
+	 * (EXT_multisampled_render_to_texture: fbo alone, no copy). */
+	GLuint msaa_fbo, msaa_color, msaa_depth;
+	blit_fn blit;
 };
 
 /* A hardware device if there is one, since glvnd would otherwise hand the
@@ -90,12 +107,127 @@ static int egl_make_context(struct display_egl *e)
 	return 0;
 }
 
+/* The context's OpenGL ES major version, from "OpenGL ES 3.2 Mesa ...". */
+static int es_major(const struct gl *gl)
+{
+	const char *v = (const char *)gl->GetString(GL_VERSION);
+	int major = 2;
+
+	if (v && sscanf(v, "OpenGL ES %d", &major) != 1)
+		major = 2;
+	return major;
+}
+
+static int samples_allowed(const struct gl *gl, int samples)
+{
+	GLint max = 0;
+
+	gl->GetIntegerv(GL_MAX_SAMPLES, &max);
+	if (gl->GetError() != GL_NO_ERROR || max < 1)
+		return 0;
+	return samples < max ? samples : max;
+}
+
+/* The multisampled colour and depth that ES 3.0 resolves into fbo. */
+static int make_msaa_es3(struct display_egl *e, int samples)
+{
+	struct gl *gl = &e->base.gl;
+	storage_multisample_fn storage =
+	    (storage_multisample_fn)eglGetProcAddress("glRenderbufferStorageMultisample");
+	GLsizei w = e->base.width, h = e->base.height;
+
+	e->blit = (blit_fn)eglGetProcAddress("glBlitFramebuffer");
+	if (!storage || !e->blit)
+		return -ENOSYS;
+	gl->GenRenderbuffers(1, &e->msaa_color);
+	gl->BindRenderbuffer(GL_RENDERBUFFER, e->msaa_color);
+	storage(GL_RENDERBUFFER, samples, GL_RGBA8, w, h);
+	gl->GenRenderbuffers(1, &e->msaa_depth);
+	gl->BindRenderbuffer(GL_RENDERBUFFER, e->msaa_depth);
+	storage(GL_RENDERBUFFER, samples, GL_DEPTH24, w, h);
+	gl->GenFramebuffers(1, &e->msaa_fbo);
+	gl->BindFramebuffer(GL_FRAMEBUFFER, e->msaa_fbo);
+	gl->FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+				    e->msaa_color);
+	gl->FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+				    e->msaa_depth);
+	return gl->CheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE ? 0 : -EIO;
+}
+
+/* The frame's own texture and depth, multisampled where the GPU resolves
+ * them as it writes them out (tilers: Mali, Adreno, PowerVR). */
+static int make_msaa_ext(struct display_egl *e, int samples)
+{
+	struct gl *gl = &e->base.gl;
+	storage_multisample_fn storage =
+	    (storage_multisample_fn)eglGetProcAddress("glRenderbufferStorageMultisampleEXT");
+	texture_multisample_fn texture =
+	    (texture_multisample_fn)eglGetProcAddress("glFramebufferTexture2DMultisampleEXT");
+
+	if (!storage || !texture)
+		return -ENOSYS;
+	gl->BindFramebuffer(GL_FRAMEBUFFER, e->fbo);
+	texture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, e->color, 0, samples);
+	gl->BindRenderbuffer(GL_RENDERBUFFER, e->depth);
+	storage(GL_RENDERBUFFER, samples, gl->caps.depth24 ? GL_DEPTH24 : GL_DEPTH_COMPONENT16,
+		e->base.width, e->base.height);
+	gl->FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, e->depth);
+	return gl->CheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE ? 0 : -EIO;
+}
+
+static void drop_msaa(struct display_egl *e)
+{
+	struct gl *gl = &e->base.gl;
+
+	if (e->msaa_fbo)
+		gl->DeleteFramebuffers(1, &e->msaa_fbo);
+	if (e->msaa_color)
+		gl->DeleteRenderbuffers(1, &e->msaa_color);
+	if (e->msaa_depth)
+		gl->DeleteRenderbuffers(1, &e->msaa_depth);
+	e->msaa_fbo = e->msaa_color = e->msaa_depth = 0;
+	e->blit = NULL;
+}
+
+/* [display] antialias: the first way the context offers, else none
+ * (said once). */
+static void egl_make_msaa(struct display_egl *e, int antialias)
+{
+	struct gl *gl = &e->base.gl;
+	const char *ext = (const char *)gl->GetString(GL_EXTENSIONS);
+	int want = display_antialias_samples(antialias, gl->caps.software);
+	int samples = want ? samples_allowed(gl, want) : 0;
+	const char *how = NULL;
+
+	if (!want)
+		return;
+	if (samples && gl_extension_listed(ext, "GL_EXT_multisampled_render_to_texture") &&
+	    make_msaa_ext(e, samples) == 0)
+		how = "resolved as it is written (EXT_multisampled_render_to_texture)";
+	else if (samples && es_major(gl) >= 3 && make_msaa_es3(e, samples) == 0)
+		how = "resolved by a blit (OpenGL ES 3.0)";
+	if (how) {
+		GLint got = 0;
+
+		/* What the driver made: llvmpipe makes 4 for 2. */
+		gl->BindFramebuffer(GL_FRAMEBUFFER, e->msaa_fbo ? e->msaa_fbo : e->fbo);
+		gl->GetIntegerv(GL_SAMPLES, &got);
+		e->base.samples = samples = got > 0 ? got : samples;
+		log_info("egl-headless: antialias %d samples (%d asked), %s", samples, want, how);
+		return;
+	}
+	drop_msaa(e);
+	log_warn("egl-headless: no multisampling in this context (OpenGL ES %d, %d samples at "
+		 "most): drawing without",
+		 es_major(gl), samples);
+}
+
 static int egl_make_fbo(struct display_egl *e)
 {
 	struct gl *gl = &e->base.gl;
 	/* 16-bit depth is all core ES2 promises; take 24 where offered so the
 	 * result matches the software reference more closely. */
-	GLenum depth_format = gl->caps.depth24 ? 0x81A6 /* DEPTH24_OES */ : GL_DEPTH_COMPONENT16;
+	GLenum depth_format = gl->caps.depth24 ? GL_DEPTH24 : GL_DEPTH_COMPONENT16;
 
 	gl->GenTextures(1, &e->color);
 	gl->BindTexture(GL_TEXTURE_2D, e->color);
@@ -121,13 +253,28 @@ static int egl_begin_frame(struct display *d)
 {
 	struct display_egl *e = (struct display_egl *)d;
 
-	d->gl.BindFramebuffer(GL_FRAMEBUFFER, e->fbo);
+	/* Another context may be current in this thread (the bench draws on
+	 * several displays in turn); making one current that is costs nothing. */
+	if (eglGetCurrentContext() != e->ctx &&
+	    !eglMakeCurrent(e->dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, e->ctx))
+		return -EIO;
+	d->gl.BindFramebuffer(GL_FRAMEBUFFER, e->msaa_fbo ? e->msaa_fbo : e->fbo);
 	d->gl.Viewport(0, 0, d->width, d->height);
 	return 0;
 }
 
 static int egl_present(struct display *d)
 {
+	struct display_egl *e = (struct display_egl *)d;
+
+	/* The samples resolved into the frame read_frame reads. */
+	if (e->msaa_fbo) {
+		d->gl.BindFramebuffer(GL_READ_FRAMEBUFFER, e->msaa_fbo);
+		d->gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, e->fbo);
+		e->blit(0, 0, d->width, d->height, 0, 0, d->width, d->height, GL_COLOR_BUFFER_BIT,
+			GL_NEAREST);
+		d->gl.BindFramebuffer(GL_FRAMEBUFFER, e->fbo);
+	}
 	d->gl.Finish();
 	return 0;
 }
@@ -137,6 +284,7 @@ static void egl_destroy(struct display *d)
 	struct display_egl *e = (struct display_egl *)d;
 
 	if (e->ctx != EGL_NO_CONTEXT) {
+		drop_msaa(e);
 		if (e->fbo) {
 			d->gl.DeleteFramebuffers(1, &e->fbo);
 			d->gl.DeleteRenderbuffers(1, &e->depth);
@@ -177,8 +325,7 @@ struct display *display_egl_new(const struct display_config *cfg)
 	egl_read_caps(e->dpy, &e->base.gl.caps);
 	if (egl_make_fbo(e))
 		goto fail;
-	if (cfg->samples > 0)
-		log_warn("egl-headless: OpenGL ES 2.0 FBOs have no MSAA, drawing without");
+	egl_make_msaa(e, cfg->antialias);
 	log_info("egl-headless: %s, %s, %dx%d", (const char *)e->base.gl.GetString(GL_RENDERER),
 		 (const char *)e->base.gl.GetString(GL_VERSION), e->base.width, e->base.height);
 	return &e->base;

@@ -33,6 +33,7 @@ struct display_kms {
 	int gpu_fd;
 	char *connector, *mode;
 	bool exit_when_busy;
+	int antialias; /* enum display_antialias */
 	enum drm_api api;
 	struct gbm_device *gbm;
 	struct gbm_surface *surface;
@@ -58,8 +59,9 @@ static struct display_kms *from_drm(struct drm *drm)
 /* An EGL config whose native visual is the GBM format (otherwise the
  * colours come out in the wrong channels, or the surface is refused), and
  * with a depth buffer: without one the depth test passes everywhere and
- * the far side of the model shows through the near side. */
-static bool find_config(struct display_kms *k, EGLint depth)
+ * the far side of the model shows through the near side. samples: at
+ * least that many samples per pixel ([display] antialias), 0: none. */
+static bool find_config(struct display_kms *k, EGLint depth, EGLint samples)
 {
 	/* Pairs: attribute, value. */
 	const EGLint attribs[] = {EGL_SURFACE_TYPE,
@@ -72,6 +74,10 @@ static bool find_config(struct display_kms *k, EGLint depth)
 				  8,
 				  EGL_DEPTH_SIZE,
 				  depth,
+				  EGL_SAMPLE_BUFFERS,
+				  samples ? 1 : 0,
+				  EGL_SAMPLES,
+				  samples,
 				  EGL_RENDERABLE_TYPE,
 				  EGL_OPENGL_ES2_BIT,
 				  EGL_NONE};
@@ -85,6 +91,7 @@ static bool find_config(struct display_kms *k, EGLint depth)
 		if (!gbm_device_is_format_supported(k->gbm, formats[f],
 						    GBM_BO_USE_SCANOUT | GBM_BO_USE_RENDERING))
 			continue;
+		/* Sorted by samples, fewest first: the first that scans out. */
 		for (EGLint i = 0; i < n; i++) {
 			EGLint id = 0;
 
@@ -99,37 +106,55 @@ static bool find_config(struct display_kms *k, EGLint depth)
 	return false;
 }
 
-static int choose_config(struct display_kms *k)
+/* The most samples any window config with a depth buffer offers, for
+ * the log when the one asked for is not there. */
+static EGLint most_samples(struct display_kms *k)
 {
-	EGLint depth = 0;
+	const EGLint attribs[] = {EGL_SURFACE_TYPE,    EGL_WINDOW_BIT,	   EGL_DEPTH_SIZE, 16,
+				  EGL_RENDERABLE_TYPE, EGL_OPENGL_ES2_BIT, EGL_NONE};
+	EGLConfig configs[256];
+	EGLint n = 0, most = 0;
 
+	if (!eglChooseConfig(k->dpy, attribs, configs, 256, &n))
+		return 0;
+	for (EGLint i = 0; i < n; i++) {
+		EGLint s = 0;
+
+		eglGetConfigAttrib(k->dpy, configs[i], EGL_SAMPLES, &s);
+		if (s > most)
+			most = s;
+	}
+	return most;
+}
+
+static int choose_config(struct display_kms *k, EGLint samples)
+{
+	EGLint depth = 0, got = 0;
+
+	if (samples && !find_config(k, 24, samples) && !find_config(k, 16, samples)) {
+		log_warn("kms: [display] antialias = %d: no EGL config with %d samples scans out "
+			 "(the driver offers %d at most): drawing without",
+			 samples, samples, most_samples(k));
+		samples = 0;
+	}
 	/* 24 bits as the offscreen backends have; 16 where that is all. */
-	if (!find_config(k, 24) && !find_config(k, 16)) {
+	if (!samples && !find_config(k, 24, 0) && !find_config(k, 16, 0)) {
 		log_err("kms: no EGL config with a depth buffer scans out as XRGB8888 or "
 			"ARGB8888");
 		return -ENODEV;
 	}
 	eglGetConfigAttrib(k->dpy, k->config, EGL_DEPTH_SIZE, &depth);
-	log_debug("kms: EGL config %.4s with a %d-bit depth buffer", (const char *)&k->format,
-		  depth);
+	eglGetConfigAttrib(k->dpy, k->config, EGL_SAMPLES, &got);
+	k->base.samples = got;
+	log_debug("kms: EGL config %.4s with a %d-bit depth buffer, %d samples",
+		  (const char *)&k->format, depth, got);
 	return 0;
 }
 
-static int egl_init(struct display_kms *k)
+static int make_context(struct display_kms *k)
 {
 	static const EGLint ctx_attribs[] = {EGL_CONTEXT_CLIENT_VERSION, 2, EGL_NONE};
-	PFNEGLGETPLATFORMDISPLAYEXTPROC get_display =
-	    (PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
-	EGLint major, minor;
 
-	k->dpy = get_display ? get_display(EGL_PLATFORM_GBM_KHR, k->gbm, NULL) : EGL_NO_DISPLAY;
-	if (k->dpy == EGL_NO_DISPLAY || !eglInitialize(k->dpy, &major, &minor) ||
-	    !eglBindAPI(EGL_OPENGL_ES_API)) {
-		log_err("kms: EGL on GBM is not available: %s", egl_error_string(eglGetError()));
-		return -ENODEV;
-	}
-	if (choose_config(k))
-		return -ENODEV;
 	k->ctx = eglCreateContext(k->dpy, k->config, EGL_NO_CONTEXT, ctx_attribs);
 	/* Current without a surface until a display is connected, so the
 	 * renderer can load the scene while the kiosk waits for a screen. */
@@ -143,6 +168,54 @@ static int egl_init(struct display_kms *k)
 		return -ENOSYS;
 	egl_read_caps(k->dpy, &k->base.gl.caps);
 	return 0;
+}
+
+/* antialias = auto: whether the GPU is a software rasteriser is known
+ * only from a context; on a real one the context is made again on a
+ * multisampled config, where there is one (said, as for a number). */
+static int antialias_auto(struct display_kms *k)
+{
+	EGLConfig plain = k->config;
+	uint32_t format = k->format;
+	int samples = display_antialias_samples(DISPLAY_AA_AUTO, k->base.gl.caps.software);
+
+	if (!samples || (!find_config(k, 24, samples) && !find_config(k, 16, samples))) {
+		k->config = plain;
+		k->format = format;
+		log_info("kms: antialias = auto: off (%s)",
+			 samples ? "no multisampled config scans out" : "a software rasteriser");
+		return 0;
+	}
+	eglMakeCurrent(k->dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+	eglDestroyContext(k->dpy, k->ctx);
+	return choose_config(k, samples) ? -ENODEV : make_context(k);
+}
+
+static int egl_init(struct display_kms *k)
+{
+	PFNEGLGETPLATFORMDISPLAYEXTPROC get_display =
+	    (PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
+	EGLint major, minor;
+	int ret;
+
+	k->dpy = get_display ? get_display(EGL_PLATFORM_GBM_KHR, k->gbm, NULL) : EGL_NO_DISPLAY;
+	if (k->dpy == EGL_NO_DISPLAY || !eglInitialize(k->dpy, &major, &minor) ||
+	    !eglBindAPI(EGL_OPENGL_ES_API)) {
+		log_err("kms: EGL on GBM is not available: %s", egl_error_string(eglGetError()));
+		return -ENODEV;
+	}
+	/* auto: a plain config first; antialias_auto decides once the
+	 * context says what the GPU is. */
+	if (choose_config(k, k->antialias == DISPLAY_AA_AUTO
+				 ? 0
+				 : display_antialias_samples(k->antialias, false)))
+		return -ENODEV;
+	ret = make_context(k);
+	if (!ret && k->antialias == DISPLAY_AA_AUTO)
+		ret = antialias_auto(k);
+	if (!ret && k->base.samples)
+		log_info("kms: antialias %d samples", k->base.samples);
+	return ret;
 }
 
 static void on_flip(int fd, unsigned int frame, unsigned int sec, unsigned int usec, void *data)
@@ -557,6 +630,7 @@ static void init_base(struct display_kms *k, const struct display_config *cfg)
 	k->connector = cfg->connector ? strdup(cfg->connector) : NULL;
 	k->mode = cfg->mode ? strdup(cfg->mode) : NULL;
 	k->exit_when_busy = cfg->exit_when_busy;
+	k->antialias = cfg->antialias;
 	k->api = (enum drm_api)cfg->kms_api;
 }
 

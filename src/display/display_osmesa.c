@@ -137,8 +137,11 @@ struct display *display_osmesa_new(const struct display_config *cfg)
 	o->base.get_fd = display_no_fd;
 	o->base.dispatch = display_no_dispatch;
 	o->base.destroy = osmesa_destroy;
-	if (cfg->samples > 0)
-		log_warn("osmesa: no multisampling offscreen, drawing without MSAA");
+	/* auto is off on a software rasteriser, which OSMesa always is. */
+	if (cfg->antialias > DISPLAY_AA_OFF)
+		log_warn("osmesa: [display] antialias = %d: OSMesa has no multisampling, drawing "
+			 "without",
+			 display_antialias_samples(cfg->antialias, false));
 	if (osmesa_bind(o))
 		goto fail;
 	o->pixels = malloc((size_t)o->base.width * (size_t)o->base.height * 4);

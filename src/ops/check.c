@@ -5,6 +5,7 @@
 #include "content/content.h"
 #include "content/model_list.h"
 #include "content/matcap_set.h"
+#include "render/background.h"
 #include "util/image.h"
 #include "util/log.h"
 
@@ -178,6 +179,8 @@ int check_config_run(const struct options *o, FILE *out)
 	check_models(&c, &cfg);
 	check_matcaps(&c);
 	check_image(&c, "display", "poster", o->poster);
+	if (o->content.background && background_names_image(o->content.background))
+		check_image(&c, "display", "background", o->content.background);
 	/* Per-model settings files do not exist yet: nothing more to load. */
 	if (c.bad_files) {
 		log_err("%s: the settings read, but %d file%s they name %s not load (above): the "

@@ -13,7 +13,15 @@
 #include <stdbool.h>
 #include <stdio.h>
 
-/* What state.json says. */
+/* What happened since the start, counted where it happens (the metrics,
+ * src/app/metrics.h, report them). */
+struct status_counts {
+	long reloads, reload_failures; /* SIGHUP: done, or the scene kept */
+	long model_loads,
+	    model_load_failures; /* a model of the folder or list swapped in, or not */
+};
+
+/* What state.json says (and the metrics, with the rest). */
 struct status_report {
 	const char *model;  /* NULL: the built-in knot */
 	const char *matcap; /* the image shown; NULL: the built-in clay */
@@ -24,6 +32,9 @@ struct status_report {
 	double uptime_s;
 	long frames_drawn;
 	const char *last_error; /* "" when none */
+	double last_error_at;	/* seconds since the epoch; 0: none */
+	double started_at;	/* seconds since the epoch */
+	struct status_counts counts;
 };
 
 struct status_server;

@@ -18,6 +18,7 @@
 	X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer)                                               \
 	X(PFNGLBINDRENDERBUFFERPROC, BindRenderbuffer)                                             \
 	X(PFNGLBINDTEXTUREPROC, BindTexture)                                                       \
+	X(PFNGLBLENDFUNCSEPARATEPROC, BlendFuncSeparate)                                           \
 	X(PFNGLBUFFERDATAPROC, BufferData)                                                         \
 	X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus)                                 \
 	X(PFNGLCLEARPROC, Clear)                                                                   \
@@ -32,6 +33,7 @@
 	X(PFNGLDELETERENDERBUFFERSPROC, DeleteRenderbuffers)                                       \
 	X(PFNGLDELETESHADERPROC, DeleteShader)                                                     \
 	X(PFNGLDELETETEXTURESPROC, DeleteTextures)                                                 \
+	X(PFNGLDEPTHMASKPROC, DepthMask)                                                           \
 	X(PFNGLDISABLEPROC, Disable)                                                               \
 	X(PFNGLDISABLEVERTEXATTRIBARRAYPROC, DisableVertexAttribArray)                             \
 	X(PFNGLDRAWARRAYSPROC, DrawArrays)                                                         \

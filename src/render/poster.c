@@ -1,4 +1,5 @@
 #include "render/poster.h"
+#include "render/background.h"
 #include "render/shader.h"
 #include "scene/texture.h"
 #include "util/log.h"
@@ -81,7 +82,7 @@ static int fit_texture_size(const struct gl *gl, const struct image **img, struc
 }
 
 int poster_draw(const struct gl *gl, const struct image *img, int width, int height, int rotation,
-		const float background[3])
+		const struct background *bg)
 {
 	struct shader_source src = {.precision = "precision mediump float;\n",
 				    .vertex = {"poster.vert"},
@@ -92,8 +93,7 @@ int poster_draw(const struct gl *gl, const struct image *img, int width, int hei
 	int ret = 0;
 
 	gl->Viewport(0, 0, width, height);
-	gl->ClearColor(background[0], background[1], background[2], 1);
-	gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+	background_draw(bg, width, height, rotation);
 	if (!img)
 		return 0;
 	gl->Disable(GL_DEPTH_TEST);

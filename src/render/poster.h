@@ -7,10 +7,12 @@
 #include "render/gl.h"
 #include "util/image.h"
 
-/* Clear to background, then draw img (NULL: none) fitted inside
+struct background;
+
+/* Draw the background (render/background.h), then img (NULL: none) fitted inside
  * width x height, turned by rotation degrees (the panel's). Returns 0,
  * or a negative errno after logging (the background is drawn anyway). */
 int poster_draw(const struct gl *gl, const struct image *img, int width, int height, int rotation,
-		const float background[3]);
+		const struct background *bg);
 
 #endif

@@ -1,5 +1,7 @@
 #include "render/render.h"
+#include "render/render_priv.h"
 #include "util/log.h"
+#include "render/draw_list.h"
 #include "render/shader.h"
 #include "scene/texture.h"
 
@@ -8,44 +10,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-/* The lit mode's light, fixed to the camera, from where the shipped
- * matcaps' key light is (src/render/bake.c), so that the two read alike. */
-static const float light_dir[3] = {-0.5499f, 0.6198f, 0.5599f};
-
-enum { UNIT_MATCAP, UNIT_DETAIL, UNIT_RAMP, UNIT_BASE };
-
-struct program {
-	GLuint id;
-	GLint modelview, projection, normal_matrix, matcap, detail, ramp, base_map, base_transform;
-	GLint iridescence, hsv, light, base_color, shininess;
-};
-
-struct renderer {
-	const struct gl *gl;
-	const char *shader_dir;
-	struct program programs[SHADING_MODE_COUNT][2][2]; /* [mode][ortho][lit] */
-	struct program *current; /* the matcap program, or the lit one alone */
-	struct program *beside;	 /* lit = beside: the lit program, drawn right */
-	enum shading_mode mode;
-	bool ortho, mode_set;
-	bool highp;	     /* every float highp (PRECISION_HIGHP): see renderer_new */
-	struct material mat; /* the features and their numbers; no images */
-	GLuint vbo[SHADER_ATTR_COUNT], ibo, matcap, detail, ramp, base_map;
-	GLuint matcap_override; /* another's texture as the matcap (the camera's); 0: none */
-	long attr_bytes[SHADER_ATTR_COUNT]; /* 0: not uploaded */
-	GLenum index_type;
-	GLsizei draw_count;
-	bool indexed;
-	enum vertex_format format; /* for the next renderer_set_mesh */
-	enum vertex_format drawn;  /* of the arrays uploaded */
-	float position_scale;	   /* int16 positions: the model units of 1.0 */
-	enum matcap_filter matcap_filter;
-	bool matcap_mippable;  /* the image texture's size can have a chain */
-	bool matcap_has_mips;  /* it has its mipmap chain */
-	int matcap_side;       /* its shorter side, texels */
-	bool matcap_mipmapped; /* its minifying filter now reads the chain */
-};
 
 struct renderer *renderer_new(const struct gl *gl, const char *shader_dir)
 {
@@ -73,14 +37,18 @@ struct renderer *renderer_new(const struct gl *gl, const char *shader_dir)
 
 static void drop_programs(struct renderer *r)
 {
-	struct program *p = &r->programs[0][0][0];
+	struct program *p = &r->programs[0][0][0][0];
 
 	for (size_t i = 0; i < sizeof(r->programs) / sizeof(*p); i++)
 		if (p[i].id)
 			r->gl->DeleteProgram(p[i].id);
 	memset(r->programs, 0, sizeof(r->programs));
+	memset(r->variants, 0, sizeof(r->variants));
 	r->current = r->beside = NULL;
 }
+
+static void drop_surfaces(struct renderer *r);
+static void prepare_variants(struct renderer *r);
 
 static void drop_texture(const struct gl *gl, GLuint *tex)
 {
@@ -99,63 +67,76 @@ void renderer_free(struct renderer *r)
 	r->gl->DeleteTextures(1, &r->matcap);
 	drop_texture(r->gl, &r->detail);
 	drop_texture(r->gl, &r->ramp);
-	drop_texture(r->gl, &r->base_map);
+	drop_surfaces(r);
+	draw_list_release(&r->list);
+	background_free(r->background);
 	free(r);
 }
 
+static void drop_surfaces(struct renderer *r)
+{
+	for (uint32_t k = 0; r->base_maps && k < r->surface_count; k++)
+		drop_texture(r->gl, &r->base_maps[k]);
+	free(r->base_maps);
+	free(r->surfaces);
+	r->base_maps = NULL;
+	r->surfaces = NULL;
+	r->surface_count = 0;
+}
+
 /* Core GLES2 indexes with 16 bits; 32-bit indices need an extension that
- * some SBC GPUs lack, and then the mesh is drawn unindexed. */
+ * some SBC GPUs lack, and then the draw list cuts the ranges into 16-bit
+ * chunks, each drawn from its own first vertex. */
 static int upload_indices(struct renderer *r, const struct mesh_packed *m)
 {
 	const struct gl *gl = r->gl;
+	struct draw_list *l = &r->list;
+	int ret;
 
-	r->indexed = true;
-	r->draw_count = (GLsizei)m->index_count;
+	draw_list_release(l);
+	ret = draw_list_build(l, m->ranges, m->range_count, m->indices, m->index_count,
+			      m->vertex_count, r->surfaces, r->surface_count,
+			      gl->caps.element_index_uint);
+	if (ret)
+		return ret;
+	memset(r->variant_used, 0, sizeof(r->variant_used));
+	for (uint32_t i = 0; i < l->count; i++)
+		r->variant_used[draw_item_variant(&l->items[i])] = true;
 	gl->BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->ibo);
-	if (m->vertex_count <= 65536) {
-		uint16_t *idx16 = malloc((size_t)m->index_count * 2 + 1);
-
-		if (!idx16)
-			return -ENOMEM;
-		for (uint32_t i = 0; i < m->index_count; i++)
-			idx16[i] = (uint16_t)m->indices[i];
-		gl->BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)m->index_count * 2, idx16,
-			       GL_STATIC_DRAW);
-		free(idx16);
-		r->index_type = GL_UNSIGNED_SHORT;
-		return 0;
-	}
-	if (gl->caps.element_index_uint) {
-		gl->BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)m->index_count * 4, m->indices,
-			       GL_STATIC_DRAW);
-		r->index_type = GL_UNSIGNED_INT;
-		return 0;
-	}
-	r->indexed = false;
+	gl->BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)l->index_count * (l->wide ? 4 : 2),
+		       l->wide ? (const void *)l->indices32 : (const void *)l->indices16,
+		       GL_STATIC_DRAW);
+	r->index_type = l->wide ? GL_UNSIGNED_INT : GL_UNSIGNED_SHORT;
+	/* Uploaded: only the draws are kept. */
+	free(l->indices16);
+	l->indices16 = NULL;
+	l->indices32 = NULL;
 	return 0;
 }
 
-/* One attribute array: as it is when indexed, else one entry per index. */
+/* One attribute array: as it is, or each 16-bit chunk's vertices
+ * gathered (struct draw_list). */
 static int upload_attribute(struct renderer *r, const struct mesh_packed *m, int a)
 {
 	const struct gl *gl = r->gl;
+	const struct draw_list *l = &r->list;
 	size_t stride = mesh_array_stride(m->format, (enum mesh_array)a);
-	size_t count = r->indexed ? m->vertex_count : m->index_count;
+	size_t count = l->gather ? l->gather_count : m->vertex_count;
 	const char *src = m->arrays[a];
-	char *flat = NULL;
+	char *gathered = NULL;
 
-	if (!r->indexed) {
-		flat = malloc(count * stride + 1);
-		if (!flat)
+	if (l->gather) {
+		gathered = malloc(count * stride + 1);
+		if (!gathered)
 			return -ENOMEM;
-		for (uint32_t i = 0; i < m->index_count; i++)
-			memcpy(flat + i * stride, src + (size_t)m->indices[i] * stride, stride);
+		for (size_t i = 0; i < count; i++)
+			memcpy(gathered + i * stride, src + (size_t)l->gather[i] * stride, stride);
 	}
 	r->attr_bytes[a] = (long)(count * stride);
 	gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo[a]);
-	gl->BufferData(GL_ARRAY_BUFFER, r->attr_bytes[a], flat ? (const void *)flat : src,
+	gl->BufferData(GL_ARRAY_BUFFER, r->attr_bytes[a], gathered ? gathered : src,
 		       GL_STATIC_DRAW);
-	free(flat);
+	free(gathered);
 	return 0;
 }
 
@@ -184,6 +165,8 @@ int renderer_set_packed(struct renderer *r, const struct mesh_packed *m)
 
 	r->drawn = m->format;
 	r->position_scale = m->position_scale;
+	if (!ret && r->mode_set)
+		prepare_variants(r);
 	/* Colours without an array are one constant (material vertex_color). */
 	if ((uvs && !m->arrays[MESH_UVS]) || (tangents && !m->arrays[MESH_TANGENTS]))
 		log_warn("render: the mesh lacks the UVs or tangents its material needs");
@@ -197,6 +180,8 @@ int renderer_set_packed(struct renderer *r, const struct mesh_packed *m)
 			r->attr_bytes[a] = 0;
 		}
 	}
+	free(r->list.gather); /* uploaded: only the draws are kept */
+	r->list.gather = NULL;
 	if (!ret && r->gl->GetError() == GL_OUT_OF_MEMORY) {
 		log_err("render: out of GPU memory for %u vertices", m->vertex_count);
 		ret = -ENOMEM;
@@ -276,6 +261,18 @@ int renderer_set_matcap(struct renderer *r, const struct image *img)
 	return ret;
 }
 
+int renderer_set_background(struct renderer *r, const struct background_spec *s,
+			    const struct image *img)
+{
+	struct background *b = background_new(r->gl, s, img);
+
+	if (!b)
+		return -EINVAL;
+	background_free(r->background);
+	r->background = b;
+	return 0;
+}
+
 void renderer_set_matcap_filter(struct renderer *r, enum matcap_filter filter)
 {
 	r->matcap_filter = filter;
@@ -294,7 +291,7 @@ bool matcap_filter_mipmaps(enum matcap_filter filter, int side, int width, int h
 	return 2.0 * sphere_fit_pixels_per_unit(width, height) <= (double)side;
 }
 
-static void matcap_choose_filter(struct renderer *r, const int vp[4])
+void render_matcap_choose_filter(struct renderer *r, const int vp[4])
 {
 	bool mip = r->matcap_mippable &&
 		   matcap_filter_mipmaps(r->matcap_filter, r->matcap_side, vp[2], vp[3]);
@@ -325,6 +322,43 @@ int renderer_set_precision(struct renderer *r, bool highp)
 	return r->mode_set ? renderer_set_mode(r, r->mode, r->ortho) : 0;
 }
 
+/* Each material's sides, alpha and base map (uploaded only where the
+ * programs drawn read it). */
+static int set_surfaces(struct renderer *r, const struct material *m)
+{
+	uint32_t n = m->surface_count ? m->surface_count : 1;
+	bool maps = drawn_features(m) & MATERIAL_BASE_MAP;
+	int ret = 0;
+
+	drop_surfaces(r);
+	r->surfaces = calloc(n, sizeof(*r->surfaces));
+	r->base_maps = calloc(n, sizeof(*r->base_maps));
+	if (!r->surfaces || !r->base_maps)
+		return -ENOMEM;
+	r->surface_count = n;
+	for (uint32_t k = 0; k < n; k++) {
+		const struct material_surface *s = m->surface_count ? &m->surfaces[k] : NULL;
+
+		if (!s) {
+			r->surfaces[k] = (struct material_surface){.alpha = 1.0f};
+			r->surfaces[k].base_transform[0] = r->surfaces[k].base_transform[3] = 1.0f;
+			continue;
+		}
+		r->surfaces[k] = *s;
+		memset(&r->surfaces[k].base_map, 0, sizeof(struct image));
+		if (!ret && maps && s->base_map.width) {
+			static const GLint wrap[] = {GL_REPEAT, GL_CLAMP_TO_EDGE,
+						     GL_MIRRORED_REPEAT};
+
+			ret = upload_texture(r->gl, &r->base_maps[k], &s->base_map, true, true);
+			/* Its sampler's wrap (upload_texture left it bound). */
+			r->gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap[s->wrap[0]]);
+			r->gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap[s->wrap[1]]);
+		}
+	}
+	return ret;
+}
+
 int renderer_set_material(struct renderer *r, const struct material *m)
 {
 	bool changed = m->features != r->mat.features || m->lit != r->mat.lit;
@@ -334,8 +368,10 @@ int renderer_set_material(struct renderer *r, const struct material *m)
 	memset(&r->mat.detail, 0, sizeof(r->mat.detail));
 	memset(&r->mat.ramp, 0, sizeof(r->mat.ramp));
 	memset(&r->mat.height, 0, sizeof(r->mat.height));
-	memset(&r->mat.base_map, 0, sizeof(r->mat.base_map));
-	if (m->features & MATERIAL_DETAIL)
+	r->mat.surfaces = NULL;
+	r->mat.surface_count = 0;
+	ret = set_surfaces(r, m);
+	if (!ret && (m->features & MATERIAL_DETAIL))
 		ret = upload_texture(r->gl, &r->detail, &m->detail, true, true);
 	else
 		drop_texture(r->gl, &r->detail);
@@ -343,10 +379,6 @@ int renderer_set_material(struct renderer *r, const struct material *m)
 		ret = upload_texture(r->gl, &r->ramp, &m->ramp, false, false);
 	else if (!ret)
 		drop_texture(r->gl, &r->ramp);
-	if (!ret && (drawn_features(m) & MATERIAL_BASE_MAP))
-		ret = upload_texture(r->gl, &r->base_map, &m->base_map, true, true);
-	else if (!ret)
-		drop_texture(r->gl, &r->base_map);
 	if (ret)
 		log_err("render: cannot upload the material's textures");
 	if (!ret && changed) {
@@ -372,26 +404,61 @@ static void find_uniforms(const struct gl *gl, struct program *p)
 	p->light = gl->GetUniformLocation(p->id, "u_light");
 	p->base_color = gl->GetUniformLocation(p->id, "u_base_color");
 	p->shininess = gl->GetUniformLocation(p->id, "u_shininess");
+	p->alpha = gl->GetUniformLocation(p->id, "u_alpha");
 }
 
 /* Lit programs do not depend on the mapping mode: one per camera. A
  * program that fails to build is not kept, so the next call tries again
  * and the one in use stays. */
-static struct program *program_get(struct renderer *r, enum shading_mode mode, bool ortho, bool lit)
+/* A range's program variant by its alphaMode (enum mesh_alpha). */
+static const unsigned variant_features[VARIANTS] = {0,
+						    MATERIAL_ALPHA_MASK,
+						    MATERIAL_ALPHA_BLEND,
+						    MATERIAL_DOUBLE_SIDED,
+						    MATERIAL_DOUBLE_SIDED | MATERIAL_ALPHA_MASK,
+						    MATERIAL_DOUBLE_SIDED | MATERIAL_ALPHA_BLEND};
+
+static struct program *program_get(struct renderer *r, enum shading_mode mode, bool ortho, bool lit,
+				   int variant)
 {
-	struct program *p = &r->programs[lit ? SHADING_VIEW : mode][ortho][lit];
+	struct program *p = &r->programs[lit ? SHADING_VIEW : mode][ortho][lit][variant];
 	struct shader_source src;
 	GLuint id;
 
 	if (p->id)
 		return p;
-	if (shader_source_matcap(&src, r->shader_dir, r->mat.features, mode, ortho, lit,
-				 r->highp) ||
+	if (shader_source_matcap(&src, r->shader_dir, r->mat.features | variant_features[variant],
+				 mode, ortho, lit, r->highp) ||
 	    shader_program_build(r->gl, &src, &id))
 		return NULL;
 	p->id = id;
+	p->features = r->mat.features | variant_features[variant];
 	find_uniforms(r->gl, p);
 	return p;
+}
+
+/* The masked and blended programs the ranges need, built with the opaque
+ * one (never on a frame). The lit mode keeps its own grey and no alpha:
+ * its ranges all draw opaque. One that fails to build: its ranges draw
+ * with the opaque program. */
+static void prepare_variants(struct renderer *r)
+{
+	const struct program *p[2] = {r->current, r->beside};
+
+	for (int side = 0; side < 2; side++) {
+		bool lit = p[side] && (side == 1 || r->mat.lit == LIT_ON);
+		bool alpha = p[side] && !lit && (r->mat.features & MATERIAL_BASE_COLOR);
+
+		for (int v = 0; v < VARIANTS; v++) {
+			/* The lit mode has no alpha: its sides only. */
+			int want = alpha ? v : v / 3 * 3;
+			struct program *q = NULL;
+
+			if (want && p[side] && r->variant_used[v])
+				q = program_get(r, r->mode, r->ortho, lit, want);
+			r->variants[side][v] = q ? q : (struct program *)p[side];
+		}
+	}
 }
 
 int renderer_set_mode(struct renderer *r, enum shading_mode mode, bool ortho)
@@ -399,10 +466,10 @@ int renderer_set_mode(struct renderer *r, enum shading_mode mode, bool ortho)
 	struct program *first = NULL, *second = NULL;
 	int lit = r->mat.lit;
 
-	if (lit != LIT_ON && !(first = program_get(r, mode, ortho, false)))
+	if (lit != LIT_ON && !(first = program_get(r, mode, ortho, false, 0)))
 		return -EINVAL;
 	if (lit != LIT_OFF &&
-	    !(*(lit == LIT_ON ? &first : &second) = program_get(r, mode, ortho, true)))
+	    !(*(lit == LIT_ON ? &first : &second) = program_get(r, mode, ortho, true, 0)))
 		return -EINVAL;
 	if (mode == SHADING_SEM_VERTEX && lit != LIT_ON &&
 	    (r->mat.features & (MATERIAL_IRIDESCENCE | MATERIAL_DETAIL_NORMAL)))
@@ -413,6 +480,7 @@ int renderer_set_mode(struct renderer *r, enum shading_mode mode, bool ortho)
 	r->mode = mode;
 	r->ortho = ortho;
 	r->mode_set = true;
+	prepare_variants(r);
 	return 0;
 }
 
@@ -441,134 +509,6 @@ void render_matrices(const struct view *v, int width, int height, float modelvie
 	mat4_multiply(projection, panel, proj);
 }
 
-static void bind_texture(const struct gl *gl, GLint uniform, int unit, GLuint tex)
-{
-	if (uniform < 0)
-		return;
-	gl->ActiveTexture(GL_TEXTURE0 + (GLenum)unit);
-	gl->BindTexture(GL_TEXTURE_2D, tex);
-	gl->Uniform1i(uniform, unit);
-}
-
-static void set_uniforms(const struct renderer *r, const struct program *p)
-{
-	const struct gl *gl = r->gl;
-	const struct material *m = &r->mat;
-
-	bind_texture(gl, p->matcap, UNIT_MATCAP,
-		     r->matcap_override ? r->matcap_override : r->matcap);
-	bind_texture(gl, p->detail, UNIT_DETAIL, r->detail);
-	bind_texture(gl, p->ramp, UNIT_RAMP, r->ramp);
-	bind_texture(gl, p->base_map, UNIT_BASE, r->base_map);
-	if (p->base_transform >= 0) {
-		const float *t = m->base_transform;
-		const float m3[9] = {t[0], t[1], 0, t[2], t[3], 0, t[4], t[5], 1};
-
-		gl->UniformMatrix3fv(p->base_transform, 1, GL_FALSE, m3);
-	}
-	if (p->iridescence >= 0)
-		gl->Uniform4f(p->iridescence, m->hue_range, m->hue_average, m->hue_shift,
-			      m->opacity);
-	if (p->hsv >= 0)
-		gl->Uniform2f(p->hsv, m->saturation, m->value);
-	if (p->light >= 0)
-		gl->Uniform3f(p->light, light_dir[0], light_dir[1], light_dir[2]);
-	if (p->base_color >= 0)
-		gl->Uniform3f(p->base_color, m->base_color[0], m->base_color[1], m->base_color[2]);
-	if (p->shininess >= 0)
-		gl->Uniform1f(p->shininess, m->shininess);
-}
-
-static const GLenum gl_types[] = {
-    [MESH_FLOAT32] = GL_FLOAT, [MESH_SNORM16] = GL_SHORT, [MESH_UNORM8] = GL_UNSIGNED_BYTE};
-
-static void draw_with(struct renderer *r, const struct program *p, const struct view *v,
-		      const int vp[4])
-{
-	const struct gl *gl = r->gl;
-	float mv[16], proj[16], nm[9];
-
-	gl->Viewport(vp[0], vp[1], vp[2], vp[3]);
-	matcap_choose_filter(r, vp);
-	render_matrices(v, vp[2], vp[3], mv, proj);
-	/* The model-view is a rotation and a translation: its upper 3x3 is
-	 * already the inverse transpose. Scales and mirrors were baked into
-	 * the mesh in double precision at load time. */
-	mat3_from_mat4(nm, mv);
-	/* int16 positions are in units of the mesh's largest coordinate:
-	 * the model-view scales them back (the normals' matrix stays). */
-	for (int i = 0; i < 12; i++)
-		mv[i] *= r->position_scale;
-	gl->UseProgram(p->id);
-	gl->UniformMatrix4fv(p->modelview, 1, GL_FALSE, mv);
-	gl->UniformMatrix4fv(p->projection, 1, GL_FALSE, proj);
-	gl->UniformMatrix3fv(p->normal_matrix, 1, GL_FALSE, nm);
-	set_uniforms(r, p);
-	for (int a = 0; a < SHADER_ATTR_COUNT; a++) {
-		enum mesh_component c = mesh_array_component(r->drawn, (enum mesh_array)a);
-
-		if (!r->attr_bytes[a]) {
-			/* A disabled array reads the constant: a model of one
-			 * colour needs no colour per vertex. */
-			gl->DisableVertexAttribArray((GLuint)a);
-			if (a == SHADER_ATTR_COLOR)
-				gl->VertexAttrib4fv((GLuint)a, r->mat.vertex_color);
-			continue;
-		}
-		gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo[a]);
-		gl->VertexAttribPointer((GLuint)a, mesh_array_components((enum mesh_array)a),
-					gl_types[c], c != MESH_FLOAT32 ? GL_TRUE : GL_FALSE, 0,
-					NULL);
-		gl->EnableVertexAttribArray((GLuint)a);
-	}
-	if (r->indexed) {
-		gl->BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->ibo);
-		gl->DrawElements(GL_TRIANGLES, r->draw_count, r->index_type, NULL);
-	} else {
-		gl->DrawArrays(GL_TRIANGLES, 0, r->draw_count);
-	}
-}
-
-/* lit = beside: the matcap on the panel's left half, the lit mode on its
- * right. The picture is turned by the panel's rotation, so the panel's
- * left is the frame's left (0), bottom (90), right (180) or top (270). */
-static void half_viewport(int rotation, int w, int h, bool left, int vp[4])
-{
-	bool low = (rotation == 0 || rotation == 90) == left;
-
-	if (rotation == 90 || rotation == 270) {
-		vp[0] = 0, vp[2] = w;
-		vp[1] = low ? 0 : h / 2, vp[3] = low ? h / 2 : h - h / 2;
-	} else {
-		vp[1] = 0, vp[3] = h;
-		vp[0] = low ? 0 : w / 2, vp[2] = low ? w / 2 : w - w / 2;
-	}
-}
-
-void renderer_draw(struct renderer *r, const struct view *v, int width, int height)
-{
-	const struct gl *gl = r->gl;
-	int vp[4] = {0, 0, width, height};
-
-	gl->ClearColor(v->background[0], v->background[1], v->background[2], 1.0f);
-	gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-	if (!r->current || !r->draw_count)
-		return;
-	gl->Enable(GL_DEPTH_TEST);
-	gl->Enable(GL_CULL_FACE);
-	gl->CullFace(GL_BACK);
-	gl->FrontFace(GL_CCW);
-	if (r->beside) {
-		half_viewport(v->rotation, width, height, true, vp);
-		draw_with(r, r->current, v, vp);
-		half_viewport(v->rotation, width, height, false, vp);
-		draw_with(r, r->beside, v, vp);
-		gl->Viewport(0, 0, width, height);
-	} else {
-		draw_with(r, r->current, v, vp);
-	}
-}
-
 void renderer_get_stats(const struct renderer *r, struct renderer_stats *out)
 {
 	const struct program *p[2] = {r->current, r->beside};
@@ -593,4 +533,5 @@ void renderer_get_stats(const struct renderer *r, struct renderer_stats *out)
 	out->matcap_filter = r->matcap_filter;
 	out->matcap_mipmapped = r->matcap_mipmapped;
 	out->format = r->drawn;
+	out->draws = r->list.count;
 }

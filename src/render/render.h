@@ -2,6 +2,7 @@
 #ifndef MK_RENDER_H
 #define MK_RENDER_H
 
+#include "render/background.h"
 #include "render/gl.h"
 #include "util/image.h"
 #include "scene/material.h"
@@ -17,7 +18,7 @@ struct view {
 	bool ortho;		 /* orthographic: the unit sphere fills the short side */
 	int rotation;		 /* of the panel: 0, 90, 180 or 270 degrees */
 	float zoom;		 /* the picture's scale about its centre; 0 or 1: as fitted */
-	float background[3];
+	float background[3];	 /* the clear colour, without renderer_set_background */
 };
 
 struct renderer;
@@ -34,6 +35,12 @@ int renderer_set_mesh(struct renderer *r, const struct mesh *m);
 /* The same from arrays already in the GPU's format (a mapped cache entry),
  * uploaded as they are; m may be unmapped once it returns. */
 int renderer_set_packed(struct renderer *r, const struct mesh_packed *m);
+
+/* What is drawn behind the model from now on (img: s's image, decoded;
+ * uploaded here, once). Returns 0, or a negative errno after logging, and
+ * then the one before stays. */
+int renderer_set_background(struct renderer *r, const struct background_spec *s,
+			    const struct image *img);
 
 /* How renderer_set_mesh stores the vertices (scene/mesh_pack.h); the
  * default: compact. */
@@ -74,6 +81,7 @@ struct renderer_stats {
 	enum matcap_filter matcap_filter; /* renderer_set_matcap_filter */
 	bool matcap_mipmapped;		  /* the last frame read the matcap's mipmaps */
 	enum vertex_format format;	  /* of the arrays uploaded */
+	uint32_t draws;			  /* draw calls a frame makes (per half, lit = beside) */
 };
 void renderer_get_stats(const struct renderer *r, struct renderer_stats *out);
 

@@ -60,9 +60,11 @@ int shader_source_matcap(struct shader_source *s, const char *dir, unsigned feat
 		unsigned feature;
 		const char *name;
 	} feature_defines[] = {
-	    {MATERIAL_IRIDESCENCE, "IRIDESCENCE"}, {MATERIAL_RAMP, "IRIDESCENCE_RAMP"},
-	    {MATERIAL_DETAIL, "DETAIL_MAP"},	   {MATERIAL_DETAIL_NORMAL, "DETAIL_NORMAL"},
-	    {MATERIAL_BASE_COLOR, "BASE_COLOR"},   {MATERIAL_BASE_MAP, "BASE_MAP"}};
+	    {MATERIAL_IRIDESCENCE, "IRIDESCENCE"},  {MATERIAL_RAMP, "IRIDESCENCE_RAMP"},
+	    {MATERIAL_DETAIL, "DETAIL_MAP"},	    {MATERIAL_DETAIL_NORMAL, "DETAIL_NORMAL"},
+	    {MATERIAL_BASE_COLOR, "BASE_COLOR"},    {MATERIAL_BASE_MAP, "BASE_MAP"},
+	    {MATERIAL_ALPHA_MASK, "ALPHA_MASK"},    {MATERIAL_ALPHA_BLEND, "ALPHA_BLEND"},
+	    {MATERIAL_DOUBLE_SIDED, "DOUBLE_SIDED"}};
 	int ret;
 
 	/* The lit mode compares shapes: it keeps its own grey. */
@@ -79,7 +81,8 @@ int shader_source_matcap(struct shader_source *s, const char *dir, unsigned feat
 						   [SHADER_ATTR_COLOR] = "a_color"}};
 	/* These read the normal per fragment, which sem-vertex has not. */
 	if (mode == SHADING_SEM_VERTEX &&
-	    (lit || (features & (MATERIAL_IRIDESCENCE | MATERIAL_DETAIL_NORMAL))))
+	    (lit ||
+	     (features & (MATERIAL_IRIDESCENCE | MATERIAL_DETAIL_NORMAL | MATERIAL_DOUBLE_SIDED))))
 		mode = SHADING_SEM_FRAGMENT;
 	ret = shader_source_define(s, shading_mode_macro(mode));
 	if (!ret && ortho)

@@ -25,7 +25,7 @@ enum shader_attribute {
 	SHADER_ATTR_COUNT
 };
 
-#define SHADER_MAX_DEFINES 10
+#define SHADER_MAX_DEFINES 12
 #define SHADER_MAX_FILES   3
 
 /* What a program is made of. Each stage's text is the #version line, the

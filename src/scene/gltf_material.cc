@@ -7,7 +7,9 @@
 #include "util/log.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <cstdlib>
 #include <string>
 
@@ -161,9 +163,82 @@ int texture_transform(const tinygltf::ExtensionMap &ext, int tex_coord, float m[
 	return (int)number(v, "texCoord", tex_coord, 0, 1e9);
 }
 
+// alphaMode, alphaCutoff and doubleSided; an unknown mode is opaque, as
+// the spec's default, and said once per material.
+void read_alpha(const tinygltf::Material &mat, const std::string &name, struct mesh_material *out)
+{
+	if (mat.alphaMode == "MASK")
+		out->alpha_mode = MESH_ALPHA_MASK;
+	else if (mat.alphaMode == "BLEND")
+		out->alpha_mode = MESH_ALPHA_BLEND;
+	else if (!mat.alphaMode.empty() && mat.alphaMode != "OPAQUE")
+		log_warn("%s: material \"%s\": alphaMode \"%s\", expected OPAQUE, MASK or BLEND: "
+			 "drawn opaque",
+			 name.c_str(), mat.name.c_str(), mat.alphaMode.c_str());
+	if (std::isfinite(mat.alphaCutoff))
+		out->alpha_cutoff = (float)std::fmin(std::fmax(mat.alphaCutoff, 0.0), 1.0);
+	out->double_sided = mat.doubleSided;
+}
+
+// The texture's sampler's wrapS and wrapT (none: repeat, glTF's default).
+void read_wrap(const tinygltf::Model &m, int texture, int wrap[2])
+{
+	if (texture < 0 || (size_t)texture >= m.textures.size())
+		return;
+	int sampler = m.textures[(size_t)texture].sampler;
+	if (sampler < 0 || (size_t)sampler >= m.samplers.size())
+		return;
+	const int mode[2] = {m.samplers[(size_t)sampler].wrapS, m.samplers[(size_t)sampler].wrapT};
+	for (int k = 0; k < 2; k++)
+		wrap[k] = mode[k] == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE     ? MESH_WRAP_CLAMP
+			  : mode[k] == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT ? MESH_WRAP_MIRROR
+									     : MESH_WRAP_REPEAT;
+}
+
+bool is_blend(const tinygltf::Model &m, int material)
+{
+	return material >= 0 && m.materials[(size_t)material].alphaMode == "BLEND";
+}
+
 } // namespace
 
-bool gltf_primitive_base(const tinygltf::Model &m, int material, int model_material, float rgba[4])
+int gltf_group_ranges(const tinygltf::Model &m, const std::vector<GltfPart> &prims,
+		      const uint32_t *indices, struct mesh *out, std::vector<int> *slots_out)
+{
+	std::vector<int> slots;
+	std::vector<std::vector<size_t>> parts; // per slot: its primitives
+	for (size_t i = 0; i < prims.size(); i++) {
+		if (!prims[i].index_count)
+			continue;
+		size_t k = std::find(slots.begin(), slots.end(), prims[i].material) - slots.begin();
+		if (k == slots.size()) {
+			slots.push_back(prims[i].material);
+			parts.emplace_back();
+		}
+		parts[k].push_back(i);
+	}
+	size_t count = 0;
+	for (size_t k = 0; k < slots.size(); k++)
+		count += is_blend(m, slots[k]) ? parts[k].size() : 1;
+	if (mesh_alloc_ranges(out, (uint32_t)count, (uint32_t)slots.size()))
+		return -ENOMEM;
+	uint32_t at = 0, r = 0;
+	for (size_t k = 0; k < slots.size(); k++)
+		for (size_t j = 0; j < parts[k].size(); j++) {
+			const GltfPart &p = prims[parts[k][j]];
+			if (j == 0 || is_blend(m, slots[k]))
+				out->ranges[r++] = {at, 0, (uint32_t)k, {0, 0, 0}};
+			std::memcpy(out->indices + at, indices + p.first_index,
+				    p.index_count * sizeof(uint32_t));
+			at += p.index_count;
+			out->ranges[r - 1].index_count += p.index_count;
+		}
+	*slots_out = slots;
+	mesh_range_centers(out);
+	return 0;
+}
+
+bool gltf_primitive_base(const tinygltf::Model &m, int material, float rgba[4])
 {
 	rgba[0] = rgba[1] = rgba[2] = 1.0f;
 	rgba[3] = 0.0f;
@@ -177,19 +252,19 @@ bool gltf_primitive_base(const tinygltf::Model &m, int material, int model_mater
 		rgba[k] = std::isfinite(f) ? (float)std::fmin(std::fmax(f, 0.0), 1.0) : 1.0f;
 		coloured |= rgba[k] != 1.0f;
 	}
-	// The one base map shown is the model's material's: a primitive reads
-	// it when its own material names the same texture.
-	if (pbr.baseColorTexture.index >= 0 && model_material >= 0 &&
-	    (size_t)model_material < m.materials.size() &&
-	    m.materials[(size_t)model_material].pbrMetallicRoughness.baseColorTexture.index ==
-		pbr.baseColorTexture.index)
+	// Each primitive reads its own material's base map (mesh ranges).
+	if (pbr.baseColorTexture.index >= 0)
 		rgba[3] = 1.0f;
 	return coloured || pbr.baseColorTexture.index >= 0;
 }
 
 void gltf_keep_colors(struct mesh *out, const float uniform[4])
 {
-	bool plain = !out->material.base_map.width;
+	bool plain = true;
+	for (uint32_t k = 0; k < out->material_count; k++)
+		plain &= !out->materials[k].base_map.width &&
+			 out->materials[k].base_alpha == 1.0f &&
+			 out->materials[k].alpha_mode == MESH_ALPHA_OPAQUE;
 	for (size_t i = 0; plain && out->colors && i < (size_t)out->vertex_count * 4; i++)
 		plain = i % 4 == 3 || out->colors[i] == 1.0f;
 	for (int k = 0; plain && !out->colors && uniform && k < 3; k++)
@@ -232,7 +307,7 @@ bool gltf_keep_image(tinygltf::Image *image, const int index, std::string *, std
 	return true;
 }
 
-void gltf_read_material(const tinygltf::Model &m, int index, unsigned textures,
+void gltf_read_material(const tinygltf::Model &m, int index, unsigned textures, unsigned decode,
 			const GltfImages &images, const std::string &name,
 			struct mesh_material *out)
 {
@@ -243,9 +318,10 @@ void gltf_read_material(const tinygltf::Model &m, int index, unsigned textures,
 	int thickness = -1, thickness_coord = 0;
 
 	out->present = true;
-	for (size_t k = 0; k < 3 && base.size() == 4; k++)
-		out->base_color[k] =
+	for (size_t k = 0; k < 4 && base.size() == 4; k++)
+		(k < 3 ? out->base_color[k] : out->base_alpha) =
 		    std::isfinite(base[k]) ? (float)std::fmin(std::fmax(base[k], 0.0), 1.0) : 1.0f;
+	read_alpha(mat, name, out);
 	out->has_normal_map = mat.normalTexture.index >= 0;
 	out->has_occlusion_map = mat.occlusionTexture.index >= 0;
 	if (std::isfinite(mat.normalTexture.scale))
@@ -262,16 +338,17 @@ void gltf_read_material(const tinygltf::Model &m, int index, unsigned textures,
 	// The mesh's UVs are this set when it was chosen for the map.
 	if (base_coord == gltf_uv_set(m, index, textures))
 		base_coord = 0;
-	if ((textures & GLTF_TEXTURE_BASE_COLOR) && out->has_base_map)
+	read_wrap(m, base_tex.index, out->base_wrap);
+	if ((textures & decode & GLTF_TEXTURE_BASE_COLOR) && out->has_base_map)
 		read_texture(m, base_tex.index, base_coord, images, name, "baseColorTexture",
 			     &out->base_map, out->images_decoded);
-	if ((textures & GLTF_TEXTURE_NORMAL) && out->has_normal_map)
+	if ((textures & decode & GLTF_TEXTURE_NORMAL) && out->has_normal_map)
 		read_texture(m, mat.normalTexture.index, mat.normalTexture.texCoord, images, name,
 			     "normalTexture", &out->normal_map, out->images_decoded);
-	if ((textures & GLTF_TEXTURE_OCCLUSION) && out->has_occlusion_map)
+	if ((textures & decode & GLTF_TEXTURE_OCCLUSION) && out->has_occlusion_map)
 		read_texture(m, mat.occlusionTexture.index, mat.occlusionTexture.texCoord, images,
 			     name, "occlusionTexture", &out->occlusion_map, out->images_decoded);
-	if ((textures & GLTF_TEXTURE_THICKNESS) && out->has_thickness_map)
+	if ((textures & decode & GLTF_TEXTURE_THICKNESS) && out->has_thickness_map)
 		read_texture(m, thickness, thickness_coord, images, name,
 			     "iridescenceThicknessTexture", &out->thickness_map,
 			     out->images_decoded);

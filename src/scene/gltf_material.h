@@ -30,9 +30,10 @@ bool gltf_keep_image(tinygltf::Image *image, const int index, std::string *err, 
 		     void *user);
 
 // A primitive's part of the base colour (struct mesh colors): rgb its
-// material's baseColorFactor, a 1 when it reads model_material's base map.
-// Returns whether the material colours the model at all.
-bool gltf_primitive_base(const tinygltf::Model &m, int material, int model_material, float rgba[4]);
+// material's baseColorFactor, a 1 when it reads its material's base map
+// (that of its range's material). Returns whether the material colours
+// the model at all.
+bool gltf_primitive_base(const tinygltf::Model &m, int material, float rgba[4]);
 
 // Colours that change nothing (white, and no base map decoded for their
 // alpha to apply) are given back; material.has_colors says what is left.
@@ -45,10 +46,27 @@ void gltf_keep_colors(struct mesh *out, const float uniform[4]);
 // is asked for and no other texture asked for needs TEXCOORD_0; else 0.
 int gltf_uv_set(const tinygltf::Model &m, int material, unsigned textures);
 
+// A primitive's triangles in the builder's index array, and its material
+// (-1: none).
+struct GltfPart {
+	uint32_t first_index, index_count;
+	int material;
+};
+
+// The primitives' triangles into out's indices, grouped by material in the
+// order materials are first used: one range for every opaque or masked
+// material (one draw each, however many primitives share it), one per
+// primitive for a blended one (ordered back to front as the model turns).
+// slots[k]: the glTF material of out->materials[k], for gltf_read_material.
+// Returns 0 or -ENOMEM.
+int gltf_group_ranges(const tinygltf::Model &m, const std::vector<GltfPart> &parts,
+		      const uint32_t *indices, struct mesh *out, std::vector<int> *slots);
+
 // Fill out from material `index` (-1: none). textures: enum gltf_texture
-// bits to decode. A texture that cannot be used is logged as a warning
-// naming `name` and left empty.
-void gltf_read_material(const tinygltf::Model &m, int index, unsigned textures,
+// bits asked for (they chose the UV set: gltf_uv_set); of those, decode
+// the ones in `decode`. A texture that cannot be used is logged as a
+// warning naming `name` and left empty.
+void gltf_read_material(const tinygltf::Model &m, int index, unsigned textures, unsigned decode,
 			const GltfImages &images, const std::string &name,
 			struct mesh_material *out);
 

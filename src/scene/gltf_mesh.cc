@@ -20,10 +20,12 @@
 namespace
 {
 
-// One primitive's vertices and indices, as appended to the builder.
+// One primitive's vertices and indices, as appended to the builder, and
+// the glTF material it names (-1: none).
 struct Range {
 	uint32_t first_vertex, vertex_count, first_index, index_count;
 	bool has_normals, has_tangents;
+	int material;
 };
 
 struct Builder {
@@ -38,13 +40,13 @@ struct Builder {
 	std::vector<Range> ranges;
 	bool any_uvs = false;
 	int material = -1; // the first primitive's with one: the model's
-	bool other_materials = false;
 	bool want_colors = false, any_colors = false;
 	// While colors is empty: the one colour of every vertex so far
 	// (mesh_material.color), so a model of one material costs no array.
 	float uniform[4] = {1, 1, 1, 0};
 	bool uniform_set = false;
 	unsigned textures = 0;	  // enum gltf_texture: what is asked, for the UV set
+	std::vector<int> slots;	  // the glTF material of each of out->materials
 	size_t not_triangles = 0; // primitives of points or lines, left out
 };
 
@@ -408,7 +410,7 @@ bool read_vertices(Builder &b, const tinygltf::Model &m, const tinygltf::Primiti
 	double nm[9];
 	double det = normal_matrix(world, nm);
 	float base[4];
-	bool coloured = gltf_primitive_base(m, p.material, b.material, base);
+	bool coloured = gltf_primitive_base(m, p.material, base);
 	r->has_normals = a.nrm.count > 0 && det != 0.0;
 	r->has_tangents = a.tan.count > 0 && r->has_normals;
 	bool per_vertex = colors_per_vertex(b, base, a.col.count > 0, b.positions.size() / 3);
@@ -443,8 +445,7 @@ bool add_primitive(Builder &b, const tinygltf::Model &m, const tinygltf::Primiti
 	Range r = {};
 	if (p.material >= 0 && b.material < 0)
 		b.material = p.material;
-	else if (p.material != b.material)
-		b.other_materials = true;
+	r.material = p.material >= 0 && (size_t)p.material < m.materials.size() ? p.material : -1;
 	r.first_vertex = (uint32_t)(b.positions.size() / 3);
 	r.first_index = (uint32_t)b.indices.size();
 	std::vector<uint32_t> idx;
@@ -528,7 +529,7 @@ bool has_extent(const std::vector<double> &p)
 	return false;
 }
 
-int finish_mesh(Builder &b, struct mesh *out)
+int finish_mesh(Builder &b, const tinygltf::Model &m, struct mesh *out)
 {
 	uint32_t nv = (uint32_t)(b.positions.size() / 3);
 	if (b.indices.empty()) {
@@ -546,6 +547,13 @@ int finish_mesh(Builder &b, struct mesh *out)
 	mesh_fit_positions(b.positions.data(), nv, out->positions);
 	std::memcpy(out->normals, b.normals.data(), b.normals.size() * sizeof(float));
 	std::memcpy(out->indices, b.indices.data(), b.indices.size() * sizeof(uint32_t));
+	std::vector<GltfPart> parts;
+	for (const Range &r : b.ranges)
+		parts.push_back({r.first_index, r.index_count, r.material});
+	if (gltf_group_ranges(m, parts, b.indices.data(), out, &b.slots)) {
+		mesh_release(out);
+		return -ENOMEM;
+	}
 	if (b.any_uvs)
 		std::memcpy(out->uvs, b.uvs.data(), b.uvs.size() * sizeof(float));
 	if (b.any_colors && b.colors.size() == (size_t)nv * 4) {
@@ -567,7 +575,7 @@ int finish_mesh(Builder &b, struct mesh *out)
 	}
 	for (const Range &r : b.ranges)
 		if (!r.has_normals &&
-		    mesh_generate_normals(out->positions, out->indices + r.first_index,
+		    mesh_generate_normals(out->positions, b.indices.data() + r.first_index,
 					  r.index_count, r.first_vertex, r.vertex_count,
 					  out->normals)) {
 			mesh_release(out);
@@ -588,6 +596,38 @@ bool prepare(tinygltf::Model &m, const char *name, Pose *pose, std::string *err)
 	    !gltf_ext::apply_morphs(m, err))
 		return false;
 	return gltf_ext::apply_skins(m, pose->worlds, &pose->mesh_source, err);
+}
+
+// The model's material for the features of the whole model (its base map
+// is each range material's), then every range's material with its base
+// map. Without UVs no texture can be placed.
+void read_materials(const Builder &b, const tinygltf::Model &m, unsigned textures,
+		    const GltfImages &images, struct mesh *out)
+{
+	unsigned t = b.any_uvs ? textures : 0;
+	gltf_read_material(m, b.material, t, ~(unsigned)GLTF_TEXTURE_BASE_COLOR, images, b.name,
+			   &out->material);
+	for (size_t k = 0; k < b.slots.size(); k++) {
+		gltf_read_material(m, b.slots[k], t, GLTF_TEXTURE_BASE_COLOR, images, b.name,
+				   &out->materials[k]);
+		out->material.images_decoded += out->materials[k].images_decoded;
+		out->material.has_base_map |= out->materials[k].has_base_map;
+	}
+	unsigned mapped = 0, detailed = 0;
+	for (uint32_t k = 0; k < out->material_count; k++) {
+		const struct mesh_material *g = &out->materials[k];
+		mapped += g->base_map.width > 0;
+		detailed += b.slots[k] != b.material && (g->has_normal_map || g->has_occlusion_map);
+	}
+	std::string shown = gltf_ext::escape(b.name);
+	if (b.slots.size() > 1)
+		log_info("%s: %zu materials (%u with a base map shown), %u draw ranges",
+			 shown.c_str(), b.slots.size(), mapped, out->range_count);
+	// One detail map per model (src/scene/material.c): say whose it is.
+	if (detailed && (t & (GLTF_TEXTURE_NORMAL | GLTF_TEXTURE_OCCLUSION)))
+		log_info("%s: %u other materials have normal or occlusion textures; the first "
+			 "part's material's are shown over every part",
+			 shown.c_str(), detailed);
 }
 
 } // namespace
@@ -612,7 +652,7 @@ int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_opti
 					roots.push_back((int)i);
 		add_scene(b, m, roots, "scenes[" + std::to_string(scene) + "]", pose);
 	}
-	ret = b.error.empty() ? finish_mesh(b, out) : -EINVAL;
+	ret = b.error.empty() ? finish_mesh(b, m, out) : -EINVAL;
 	std::string shown = gltf_ext::escape(name);
 	if (ret == -EINVAL && !b.error.empty())
 		log_err("%s: %s", shown.c_str(), gltf_ext::escape(b.error).c_str());
@@ -622,12 +662,8 @@ int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_opti
 	if (ret == 0 && b.not_triangles)
 		log_info("%s: %zu primitives of points or lines left out (only triangles show)",
 			 shown.c_str(), b.not_triangles);
-	if (ret == 0 && b.other_materials)
-		log_info("%s: primitives differ in material; the first one's is shown",
-			 shown.c_str());
 	if (ret == 0)
-		gltf_read_material(m, b.material, b.any_uvs ? o->textures : 0, images, name,
-				   &out->material); // without UVs no texture can be placed
+		read_materials(b, m, o->textures, images, out);
 	gltf_keep_colors(out,
 			 b.uniform_set && b.any_colors && b.colors.empty() ? b.uniform : nullptr);
 	return ret;

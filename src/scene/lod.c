@@ -86,8 +86,8 @@ static int remap_streams(struct mesh *m, const unsigned *remap, uint32_t unique)
  * that keeps far more than wanted, simplify_welded takes over.
  * tests/unit/test_lod.c checks that a UV sphere stays closed and no
  * triangle spans its seam. */
-static size_t simplify(const struct mesh *m, double wanted, double target, unsigned *out,
-		       float *error)
+static size_t simplify(const struct mesh *m, double wanted, double target, unsigned options,
+		       unsigned *out, float *error)
 {
 	float scale = meshopt_simplifyScale(m->positions, m->vertex_count, 3 * sizeof(float));
 	size_t n = 0;
@@ -97,7 +97,7 @@ static size_t simplify(const struct mesh *m, double wanted, double target, unsig
 	if (scale > 0.0f) {
 		n = meshopt_simplify(out, m->indices, m->index_count, m->positions, m->vertex_count,
 				     3 * sizeof(float), 3 * (size_t)wanted, (float)(target / scale),
-				     0, error);
+				     options, error);
 		*error *= scale;
 	}
 	/* A model smaller than the budget would vanish: it stays whole. */
@@ -244,7 +244,7 @@ static void unweld_triangle(const struct mesh *m, const struct wedges *w, unsign
  * across a seam), then give each corner back the attributes of its side.
  * Returns the index count, 0 when it cannot do better. */
 static size_t simplify_welded(const struct mesh *m, bool by_uv, double wanted, double target,
-			      unsigned *out, float *error)
+			      unsigned options, unsigned *out, float *error)
 {
 	float scale = meshopt_simplifyScale(m->positions, m->vertex_count, 3 * sizeof(float));
 	unsigned *welded = malloc((size_t)m->index_count * sizeof(unsigned) + 1);
@@ -268,7 +268,7 @@ static size_t simplify_welded(const struct mesh *m, bool by_uv, double wanted, d
 		for (uint32_t i = 0; i < m->index_count; i++)
 			welded[i] = id[w.rep[m->indices[i]]];
 		n = meshopt_simplify(out, welded, m->index_count, points, count, 3 * sizeof(float),
-				     3 * (size_t)wanted, (float)(target / scale), 0, error);
+				     3 * (size_t)wanted, (float)(target / scale), options, error);
 		*error *= scale;
 		for (size_t i = 0; i < n; i++)
 			out[i] = back[out[i]];
@@ -285,14 +285,14 @@ static size_t simplify_welded(const struct mesh *m, bool by_uv, double wanted, d
 
 /* The welded pass's result in idx when it has fewer triangles than the
  * n already there; returns the count kept. */
-static size_t simplify_seamless(const struct mesh *m, double wanted, double target, unsigned *idx,
-				size_t n, float *error)
+static size_t simplify_seamless(const struct mesh *m, double wanted, double target,
+				unsigned options, unsigned *idx, size_t n, float *error)
 {
 	unsigned *out = malloc((size_t)m->index_count * sizeof(unsigned) + 1);
 
 	for (int by_uv = 1; by_uv >= 0 && out && n / 3 > SEAM_SLACK * wanted; by_uv--) {
 		float welded_error = 0.0f;
-		size_t w = simplify_welded(m, by_uv, wanted, target, out, &welded_error);
+		size_t w = simplify_welded(m, by_uv, wanted, target, options, out, &welded_error);
 
 		if (w > 0 && w < n) {
 			memcpy(idx, out, w * sizeof(unsigned));
@@ -302,6 +302,84 @@ static size_t simplify_seamless(const struct mesh *m, double wanted, double targ
 	}
 	free(out);
 	return n;
+}
+
+/* One range as a mesh of its own: the vertices its triangles use
+ * (back[] maps them to m's), with what simplifying reads. */
+static int range_mesh(const struct mesh *m, const struct mesh_range *g, uint32_t *local,
+		      struct mesh *sub, uint32_t **back)
+{
+	uint32_t nv = 0;
+	int ret;
+
+	for (uint32_t i = g->first_index; i < g->first_index + g->index_count; i++)
+		local[m->indices[i]] = UINT32_MAX;
+	for (uint32_t i = g->first_index; i < g->first_index + g->index_count; i++)
+		if (local[m->indices[i]] == UINT32_MAX)
+			local[m->indices[i]] = nv++;
+	ret = mesh_alloc(sub, nv, g->index_count, m->uvs != NULL);
+	*back = malloc((size_t)nv * sizeof(uint32_t) + 1);
+	if (ret || !*back) {
+		mesh_release(sub);
+		return -ENOMEM;
+	}
+	for (uint32_t i = 0; i < g->index_count; i++) {
+		uint32_t v = m->indices[g->first_index + i], l = local[v];
+
+		sub->indices[i] = l;
+		(*back)[l] = v;
+		memcpy(sub->positions + (size_t)l * 3, m->positions + (size_t)v * 3, 12);
+		memcpy(sub->normals + (size_t)l * 3, m->normals + (size_t)v * 3, 12);
+		if (m->uvs)
+			memcpy(sub->uvs + (size_t)l * 2, m->uvs + (size_t)v * 2, 8);
+	}
+	return 0;
+}
+
+/* A model of several materials: each range simplified on its own to its
+ * share of the count wanted, its border locked (meshopt_SimplifyLockBorder).
+ * Where two parts meet, both keep every vertex of the edge between them,
+ * so no crack opens there, and every triangle keeps its range's material.
+ * idx gets the ranges one after the other; m's ranges are moved to fit. */
+static int simplify_ranges(struct mesh *m, double wanted, double target, unsigned *idx, size_t *n,
+			   float *error)
+{
+	uint32_t *local = malloc((size_t)m->vertex_count * sizeof(uint32_t) + 1);
+	uint32_t at = 0;
+	int ret = local ? 0 : -ENOMEM;
+
+	*error = 0.0f;
+	for (uint32_t r = 0; !ret && r < m->range_count; r++) {
+		struct mesh_range *g = &m->ranges[r];
+		double share = wanted * g->index_count / (double)m->index_count;
+		struct mesh sub;
+		uint32_t *back = NULL;
+		size_t k = g->index_count;
+		float e = 0.0f;
+
+		ret = range_mesh(m, g, local, &sub, &back);
+		if (ret)
+			break;
+		if (share < k / 3) {
+			k = simplify(&sub, share, target, meshopt_SimplifyLockBorder, idx + at, &e);
+			if (k / 3 > SEAM_SLACK * share)
+				k = simplify_seamless(&sub, share, target,
+						      meshopt_SimplifyLockBorder, idx + at, k, &e);
+		} else {
+			memcpy(idx + at, sub.indices, k * sizeof(unsigned));
+		}
+		for (size_t i = 0; i < k; i++)
+			idx[at + i] = back[idx[at + i]];
+		*error = fmaxf(*error, e);
+		g->first_index = at;
+		g->index_count = (uint32_t)k;
+		at += (uint32_t)k;
+		free(back);
+		mesh_release(&sub);
+	}
+	free(local);
+	*n = at;
+	return ret;
 }
 
 /* Vertices equal in every attribute (a glTF exporter's duplicates) are
@@ -348,16 +426,29 @@ int lod_prepare_mesh(struct mesh *m, double pixels, int width, int height,
 		goto out;
 	n = m->index_count;
 	r.wanted = lod_triangles_wanted(m, pixels, width, height);
-	if (r.wanted < n / 3) {
+	if (m->range_count > 1) {
+		ret = simplify_ranges(m, r.wanted, lod_model_error(pixels, width, height), idx, &n,
+				      &error);
+		if (ret)
+			goto out;
+	} else if (r.wanted < n / 3) {
 		double target = lod_model_error(pixels, width, height);
-		n = simplify(m, r.wanted, target, idx, &error);
+		n = simplify(m, r.wanted, target, 0, idx, &error);
 		if (n / 3 > SEAM_SLACK * r.wanted)
-			n = simplify_seamless(m, r.wanted, target, idx, n, &error);
+			n = simplify_seamless(m, r.wanted, target, 0, idx, n, &error);
 	} else
 		memcpy(idx, m->indices, n * sizeof(unsigned));
-	meshopt_optimizeVertexCache(idx, idx, n, m->vertex_count);
-	meshopt_optimizeOverdraw(idx, idx, n, m->positions, m->vertex_count, 3 * sizeof(float),
-				 OVERDRAW_THRESHOLD);
+	if (m->range_count == 1)
+		m->ranges[0].index_count = (uint32_t)n;
+	/* Ordered within each range: the ranges stay where they are. */
+	for (uint32_t g = 0; g < (m->range_count ? m->range_count : 1); g++) {
+		unsigned *part = idx + (m->range_count ? m->ranges[g].first_index : 0);
+		size_t count = m->range_count ? m->ranges[g].index_count : n;
+
+		meshopt_optimizeVertexCache(part, part, count, m->vertex_count);
+		meshopt_optimizeOverdraw(part, part, count, m->positions, m->vertex_count,
+					 3 * sizeof(float), OVERDRAW_THRESHOLD);
+	}
 	ret = remap_streams(
 	    m, remap, (uint32_t)meshopt_optimizeVertexFetchRemap(remap, idx, n, m->vertex_count));
 	if (ret)
@@ -365,6 +456,7 @@ int lod_prepare_mesh(struct mesh *m, double pixels, int width, int height,
 	/* n never exceeds the old count: the index array is reused. */
 	meshopt_remapIndexBuffer(m->indices, idx, n, remap);
 	m->index_count = (uint32_t)n;
+	mesh_range_centers(m);
 out:
 	r.triangles_after = m->index_count / 3;
 	r.vertices_after = m->vertex_count;

@@ -248,34 +248,73 @@ static int resolve_displacement(const struct material_config *cfg, const struct 
 	return ret;
 }
 
-/* The model's base colour, when the loader gave it (mesh colors): its map
- * needs the UVs it is placed by. */
+/* The mesh material range k draws with; a mesh without ranges (built in,
+ * made by a test) has the model's one. */
+static const struct mesh_material *mesh_surface(const struct mesh *mesh, uint32_t k)
+{
+	return mesh->material_count ? &mesh->materials[k] : &mesh->material;
+}
+
+/* One material's base map, brought to power-of-two sides to repeat. */
+static int copy_base_map(const struct image *from, struct image *to)
+{
+	int ret = image_alloc(to, from->width, from->height);
+
+	if (!ret)
+		memcpy(to->rgba, from->rgba, (size_t)from->width * (size_t)from->height * 4);
+	return ret ? ret : to_pot(to);
+}
+
+/* Every material's sides and, when base colour is drawn, its alpha and
+ * base map (placed by the mesh's UVs). */
+static int resolve_surfaces(const struct mesh *mesh, bool base, struct material *m)
+{
+	uint32_t n = mesh->material_count ? mesh->material_count : 1;
+	bool unplaced = false;
+	int ret = 0;
+
+	m->surfaces = calloc(n, sizeof(*m->surfaces));
+	if (!m->surfaces)
+		return -ENOMEM;
+	m->surface_count = n;
+	for (uint32_t k = 0; k < n && !ret; k++) {
+		const struct mesh_material *g = mesh_surface(mesh, k);
+		struct material_surface *s = &m->surfaces[k];
+
+		s->double_sided = g->double_sided;
+		s->alpha = 1.0f;
+		s->base_transform[0] = s->base_transform[3] = 1.0f;
+		if (!base)
+			continue;
+		memcpy(s->base_transform, g->base_transform, sizeof(s->base_transform));
+		memcpy(s->wrap, g->base_wrap, sizeof(s->wrap));
+		s->alpha_mode = g->alpha_mode;
+		s->alpha = g->base_alpha;
+		s->alpha_cutoff = g->alpha_cutoff;
+		unplaced |= g->base_map.width && !mesh->uvs;
+		if (g->base_map.width && mesh->uvs)
+			ret = copy_base_map(&g->base_map, &s->base_map);
+		if (!ret && s->base_map.width)
+			m->features |= MATERIAL_BASE_MAP;
+	}
+	if (unplaced)
+		log_warn("the model's baseColorTexture has no TEXCOORD_0 to place it: not used");
+	return ret;
+}
+
+/* The model's base colour, when the loader gave it (mesh colors): each
+ * material's map needs the UVs it is placed by. */
 static int resolve_base_color(const struct material_config *cfg, const struct mesh *mesh,
 			      struct material *m)
 {
 	const struct mesh_material *g = &mesh->material;
-	int ret = 0;
+	bool base = cfg->base_color != MATERIAL_OFF && (mesh->colors || g->has_colors);
 
-	if (cfg->base_color == MATERIAL_OFF || !(mesh->colors || g->has_colors))
-		return 0;
-	m->features |= MATERIAL_BASE_COLOR;
-	memcpy(m->base_transform, g->base_transform, sizeof(m->base_transform));
-	memcpy(m->vertex_color, g->color, sizeof(m->vertex_color));
-	if (!g->base_map.width)
-		return 0;
-	if (!mesh->uvs) {
-		log_warn("the model's baseColorTexture has no TEXCOORD_0 to place it: not used");
-		return 0;
+	if (base) {
+		m->features |= MATERIAL_BASE_COLOR;
+		memcpy(m->vertex_color, g->color, sizeof(m->vertex_color));
 	}
-	ret = image_alloc(&m->base_map, g->base_map.width, g->base_map.height);
-	if (!ret)
-		memcpy(m->base_map.rgba, g->base_map.rgba,
-		       (size_t)g->base_map.width * (size_t)g->base_map.height * 4);
-	if (!ret)
-		ret = to_pot(&m->base_map);
-	if (!ret)
-		m->features |= MATERIAL_BASE_MAP;
-	return ret;
+	return resolve_surfaces(mesh, base, m);
 }
 
 int material_load(struct material *out, const struct material_config *cfg, const struct mesh *mesh,
@@ -312,7 +351,9 @@ void material_release(struct material *m)
 	image_release(&m->detail);
 	image_release(&m->ramp);
 	image_release(&m->height);
-	image_release(&m->base_map);
+	for (uint32_t k = 0; m->surfaces && k < m->surface_count; k++)
+		image_release(&m->surfaces[k].base_map);
+	free(m->surfaces);
 	memset(m, 0, sizeof(*m));
 }
 
@@ -340,7 +381,17 @@ static int displace(const struct material *m, struct mesh *mesh, int width, int 
 		ret = subdivide_mesh(mesh, n, &fine);
 		if (ret)
 			return ret;
+		/* Triangle t became n x n triangles at t n n: each range
+		 * keeps its material over its own, n n times as many. */
 		fine.material = mesh->material;
+		fine.ranges = mesh->ranges, fine.range_count = mesh->range_count;
+		fine.materials = mesh->materials, fine.material_count = mesh->material_count;
+		for (uint32_t r = 0; r < fine.range_count; r++) {
+			fine.ranges[r].first_index *= (uint32_t)(n * n);
+			fine.ranges[r].index_count *= (uint32_t)(n * n);
+		}
+		mesh->ranges = NULL, mesh->range_count = 0;
+		mesh->materials = NULL, mesh->material_count = 0;
 		mesh_material_default(&mesh->material);
 		mesh_release(mesh);
 		*mesh = fine;
@@ -349,6 +400,7 @@ static int displace(const struct material *m, struct mesh *mesh, int width, int 
 	if (ret)
 		return ret;
 	refit(mesh);
+	mesh_range_centers(mesh);
 	/* The surface has moved: its tangents are made again from the UVs. */
 	free(mesh->tangents);
 	mesh->tangents = NULL;

@@ -25,6 +25,14 @@ enum material_feature {
 	MATERIAL_BASE_MAP = 1u << 6, /* ... x baseColorTexture */
 };
 
+/* Not settings: the renderer's program variants for a range's alphaMode
+ * (shaders/matcap.frag), never in material.features. */
+enum material_variant {
+	MATERIAL_ALPHA_MASK = 1u << 8,	  /* discard below the cutoff */
+	MATERIAL_ALPHA_BLEND = 1u << 9,	  /* alpha out, blended */
+	MATERIAL_DOUBLE_SIDED = 1u << 10, /* a back face's normal turned */
+};
+
 enum material_switch { MATERIAL_AUTO, MATERIAL_OFF, MATERIAL_ON };
 enum material_lit { LIT_OFF, LIT_ON, LIT_BESIDE };
 
@@ -46,6 +54,17 @@ struct material_config {
 	int base_color; /* enum material_switch, auto or off ([model] base_color) */
 };
 
+/* What one mesh material (mesh.materials[k]) draws with: its ranges'
+ * base map, how they blend and which faces they show. */
+struct material_surface {
+	struct image base_map;	 /* sRGB as stored; power-of-two sides; empty: none */
+	float base_transform[6]; /* mesh_material.base_transform */
+	int wrap[2];		 /* mesh_material.base_wrap */
+	int alpha_mode;		 /* enum mesh_alpha; opaque when base colour is off */
+	float alpha, alpha_cutoff;
+	bool double_sided;
+};
+
 /* What the renderer reads: resolved, with every texture decoded. */
 struct material {
 	unsigned features; /* enum material_feature */
@@ -58,9 +77,11 @@ struct material {
 	struct image detail; /* rg normal xy, b occlusion, a hue shift; power-of-two sides */
 	struct image ramp;
 	struct image height;
-	struct image base_map;	 /* sRGB as stored; power-of-two sides */
-	float base_transform[6]; /* mesh_material.base_transform */
-	float vertex_color[4];	 /* mesh_material.color: every vertex's without a colour array */
+	float vertex_color[4]; /* mesh_material.color: every vertex's without a colour array */
+	/* One per mesh material (one for a mesh without ranges): the
+	 * renderer draws range r with surfaces[ranges[r].material]. */
+	uint32_t surface_count;
+	struct material_surface *surfaces;
 };
 
 void material_config_defaults(struct material_config *cfg);

@@ -10,6 +10,8 @@ void mesh_material_default(struct mesh_material *mat)
 	memset(mat, 0, sizeof(*mat));
 	for (int k = 0; k < 3; k++)
 		mat->base_color[k] = mat->color[k] = 1.0f;
+	mat->base_alpha = 1.0f;
+	mat->alpha_cutoff = 0.5f;
 	mat->iridescence_ior = 1.3f;
 	mat->thickness_min = 100.0f;
 	mat->thickness_max = 400.0f;
@@ -57,11 +59,78 @@ void mesh_release(struct mesh *m)
 	free(m->tangents);
 	free(m->colors);
 	free(m->indices);
-	image_release(&m->material.normal_map);
-	image_release(&m->material.occlusion_map);
-	image_release(&m->material.thickness_map);
-	image_release(&m->material.base_map);
+	mesh_material_release(&m->material);
+	for (uint32_t i = 0; m->materials && i < m->material_count; i++)
+		mesh_material_release(&m->materials[i]);
+	free(m->materials);
+	free(m->ranges);
 	memset(m, 0, sizeof(*m));
+}
+
+void mesh_material_release(struct mesh_material *mat)
+{
+	image_release(&mat->normal_map);
+	image_release(&mat->occlusion_map);
+	image_release(&mat->thickness_map);
+	image_release(&mat->base_map);
+}
+
+int mesh_alloc_ranges(struct mesh *m, uint32_t n, uint32_t k)
+{
+	struct mesh_range *r = calloc(n ? n : 1, sizeof(*r));
+	struct mesh_material *mats = calloc(k ? k : 1, sizeof(*mats));
+
+	if (!r || !mats) {
+		free(r);
+		free(mats);
+		return -ENOMEM;
+	}
+	for (uint32_t i = 0; m->materials && i < m->material_count; i++)
+		mesh_material_release(&m->materials[i]);
+	free(m->materials);
+	free(m->ranges);
+	for (uint32_t i = 0; i < k; i++)
+		mesh_material_default(&mats[i]);
+	m->ranges = r;
+	m->range_count = n;
+	m->materials = mats;
+	m->material_count = k;
+	return 0;
+}
+
+static void drop_images(struct mesh_material *m);
+
+int mesh_set_single_range(struct mesh *m)
+{
+	int ret = mesh_alloc_ranges(m, 1, 1);
+
+	if (ret)
+		return ret;
+	m->materials[0] = m->material;
+	/* The copy owns no image: the model's material keeps its own. */
+	drop_images(&m->materials[0]);
+	m->ranges[0] = (struct mesh_range){0, m->index_count, 0, {0, 0, 0}};
+	mesh_range_centers(m);
+	return 0;
+}
+
+void mesh_range_centers(struct mesh *m)
+{
+	for (uint32_t r = 0; r < m->range_count; r++) {
+		struct mesh_range *g = &m->ranges[r];
+		float lo[3] = {INFINITY, INFINITY, INFINITY},
+		      hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+
+		for (uint32_t i = g->first_index; i < g->first_index + g->index_count; i++)
+			for (int k = 0; k < 3; k++) {
+				float x = m->positions[(size_t)m->indices[i] * 3 + k];
+
+				lo[k] = fminf(lo[k], x);
+				hi[k] = fmaxf(hi[k], x);
+			}
+		for (int k = 0; k < 3; k++)
+			g->center[k] = g->index_count ? (lo[k] + hi[k]) * 0.5f : 0.0f;
+	}
 }
 
 void mesh_fit_positions(const double *world, uint32_t count, float *out)
@@ -180,4 +249,31 @@ out:
 	free(rep);
 	free(acc);
 	return ret;
+}
+
+/* An image left out of a copy of the factors. */
+static void drop_images(struct mesh_material *m)
+{
+	memset(&m->normal_map, 0, sizeof(m->normal_map));
+	memset(&m->occlusion_map, 0, sizeof(m->occlusion_map));
+	memset(&m->thickness_map, 0, sizeof(m->thickness_map));
+	memset(&m->base_map, 0, sizeof(m->base_map));
+}
+
+int mesh_copy_factors(struct mesh *to, const struct mesh *from)
+{
+	size_t n = from->material_count;
+
+	to->material = from->material;
+	drop_images(&to->material);
+	to->materials = n ? malloc(n * sizeof(*to->materials)) : NULL;
+	to->material_count = 0;
+	if (n && !to->materials)
+		return -ENOMEM;
+	for (size_t k = 0; k < n; k++) {
+		to->materials[k] = from->materials[k];
+		drop_images(&to->materials[k]);
+	}
+	to->material_count = (uint32_t)n;
+	return 0;
 }

@@ -14,12 +14,23 @@ extern "C" {
 /* image.h has no C++ guard of its own; the glTF shim decodes textures. */
 #include "util/image.h"
 
-/* What the model's glTF material says about the optional shading features
- * (src/scene/material.c decides which a scene uses). Its textures are decoded
- * only for a feature the scene asked for; an image left out has width 0. */
+/* glTF's alphaMode. */
+enum mesh_alpha { MESH_ALPHA_OPAQUE, MESH_ALPHA_MASK, MESH_ALPHA_BLEND };
+/* A sampler's wrapS or wrapT (glTF's default: repeat). */
+enum mesh_wrap { MESH_WRAP_REPEAT, MESH_WRAP_CLAMP, MESH_WRAP_MIRROR };
+
+/* What a glTF material says (src/scene/material.c decides what a scene
+ * uses of it). Its textures are decoded only for a feature the scene asked
+ * for; an image left out has width 0. struct mesh has one of these per
+ * material its primitives use (materials[]), and one for the model's
+ * features (material): see there. */
 struct mesh_material {
 	bool present;	     /* the model names a material */
 	float base_color[3]; /* pbrMetallicRoughness.baseColorFactor */
+	float base_alpha;    /* ... its alpha */
+	int alpha_mode;	     /* enum mesh_alpha */
+	float alpha_cutoff;  /* MASK: drawn where alpha >= this (glTF default 0.5) */
+	bool double_sided;   /* both faces drawn (no culling) */
 	/* KHR_materials_iridescence */
 	bool iridescence;
 	float iridescence_factor, iridescence_ior;
@@ -44,6 +55,16 @@ struct mesh_material {
 	unsigned images_decoded;
 	struct image base_map;
 	float base_transform[6];
+	int base_wrap[2]; /* its sampler's wrapS, wrapT: enum mesh_wrap */
+};
+
+/* A part of the index array drawn with one material. center: the middle
+ * of its bounding box in model space, by which blended parts are ordered
+ * back to front. */
+struct mesh_range {
+	uint32_t first_index, index_count;
+	uint32_t material; /* into mesh.materials */
+	float center[3];
 };
 
 struct mesh {
@@ -63,7 +84,21 @@ struct mesh {
 	 * (then mesh_material.color holds it). */
 	float *colors;
 	uint32_t *indices;
+	/* The model's material for the features that apply to the whole
+	 * model (iridescence, the detail map packed from the normal and
+	 * occlusion maps, the one colour of every vertex): the first
+	 * primitive's material. Its base map is left empty: each material
+	 * of materials[] holds its own. */
 	struct mesh_material material;
+	/* Draw ranges: indices[first_index .. first_index + index_count)
+	 * drawn with materials[material]. Together they cover every index
+	 * once, in order. A model of one material has one range. */
+	uint32_t range_count;
+	struct mesh_range *ranges;
+	/* Every material the ranges use, with its base map (decoded when
+	 * asked for): base colour factor and texture, alpha, sides. */
+	uint32_t material_count;
+	struct mesh_material *materials;
 };
 
 int mesh_alloc(struct mesh *m, uint32_t vertex_count, uint32_t index_count, bool with_uvs);
@@ -71,8 +106,20 @@ int mesh_alloc(struct mesh *m, uint32_t vertex_count, uint32_t index_count, bool
 int mesh_alloc_tangents(struct mesh *m);
 /* Adds (uninitialised) colour storage to an allocated mesh. */
 int mesh_alloc_colors(struct mesh *m);
-/* Frees the arrays and the material's images. */
+/* Frees the arrays and the materials' images. */
 void mesh_release(struct mesh *m);
+/* One range over every index and one material (a copy of m->material's
+ * factors, no images): what a model of one material has. Replaces any
+ * ranges and materials m had. Returns 0 or -ENOMEM. */
+int mesh_set_single_range(struct mesh *m);
+/* Allocates n ranges and k default materials (replacing any). */
+int mesh_alloc_ranges(struct mesh *m, uint32_t n, uint32_t k);
+/* Each range's center from the positions of the triangles it draws. */
+void mesh_range_centers(struct mesh *m);
+void mesh_material_release(struct mesh_material *mat);
+/* to's material and materials from from's, their images left out (to's
+ * own materials array is not freed first). Returns 0 or -ENOMEM. */
+int mesh_copy_factors(struct mesh *to, const struct mesh *from);
 /* The material with every field at the glTF default and no image. */
 void mesh_material_default(struct mesh_material *mat);
 

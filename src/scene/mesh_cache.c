@@ -16,9 +16,8 @@
 
 /* Changed whenever the layout or the preparation changes: an entry of
  * another version is stale. */
-#define CACHE_VERSION  2
-#define CACHE_SUFFIX   ".mkmesh"
-#define MATERIAL_WORDS 20
+#define CACHE_VERSION 3
+#define CACHE_SUFFIX  ".mkmesh"
 
 static const char cache_magic[8] = {'M', 'K', 'M', 'E', 'S', 'H', '\r', '\n'};
 
@@ -32,8 +31,8 @@ struct cache_header {
 	uint32_t format; /* enum vertex_format */
 	uint32_t arrays; /* bit a: array a is present */
 	float position_scale;
-	float material[MATERIAL_WORDS];
-	uint32_t width, height, reserved;
+	uint32_t range_count, material_count; /* the model's material comes first */
+	uint32_t width, height;
 	uint64_t payload_size, payload_hash;
 	uint64_t header_hash; /* of every byte before it */
 };
@@ -45,45 +44,26 @@ struct mesh_cache_entry {
 	void *map;
 	size_t size;
 	struct mesh_packed mesh;
-	struct mesh_material material;
+	struct mesh materials; /* no arrays: the materials and ranges */
 	struct mesh_cache_key key;
 };
-
-static void material_to_words(const struct mesh_material *m, float w[MATERIAL_WORDS])
-{
-	const float v[MATERIAL_WORDS] = {
-	    m->present,	      m->base_color[0],	     m->base_color[1],	   m->base_color[2],
-	    m->iridescence,   m->iridescence_factor, m->iridescence_ior,   m->thickness_min,
-	    m->thickness_max, m->has_normal_map,     m->has_occlusion_map, m->has_thickness_map,
-	    m->normal_scale,  m->occlusion_strength, m->has_base_map,	   m->has_colors,
-	    m->color[0],      m->color[1],	     m->color[2],	   m->color[3]};
-
-	memcpy(w, v, sizeof(v));
-}
-
-static void material_from_words(const float w[MATERIAL_WORDS], struct mesh_material *m)
-{
-	mesh_material_default(m);
-	m->present = w[0] != 0;
-	memcpy(m->base_color, w + 1, sizeof(m->base_color));
-	m->iridescence = w[4] != 0;
-	m->iridescence_factor = w[5], m->iridescence_ior = w[6];
-	m->thickness_min = w[7], m->thickness_max = w[8];
-	m->has_normal_map = w[9] != 0, m->has_occlusion_map = w[10] != 0;
-	m->has_thickness_map = w[11] != 0;
-	m->normal_scale = w[12], m->occlusion_strength = w[13];
-	m->has_base_map = w[14] != 0, m->has_colors = w[15] != 0;
-	memcpy(m->color, w + 16, sizeof(m->color));
-}
 
 static size_t padded(size_t n)
 {
 	return (n + 7) & ~(size_t)7;
 }
 
-/* The payload's layout: each present array, then the indices, each
- * starting on 8 bytes. Returns its size, 0 when it would overflow. */
-static uint64_t payload_layout(const struct cache_header *h, uint64_t offset[MESH_ARRAYS + 1])
+/* The records after the indices: the model's material, each range
+ * material, each range (mesh_cache_fields.c), 32-bit words each. */
+static uint64_t record_words(const struct cache_header *h)
+{
+	return (uint64_t)(1 + h->material_count) * mesh_cache_record_words(MESH_CACHE_MATERIAL) +
+	       (uint64_t)h->range_count * mesh_cache_record_words(MESH_CACHE_RANGE);
+}
+
+/* The payload's layout: each present array, then the indices, then the
+ * records, each starting on 8 bytes. Returns its size. */
+static uint64_t payload_layout(const struct cache_header *h, uint64_t offset[MESH_ARRAYS + 2])
 {
 	uint64_t total = 0;
 
@@ -95,7 +75,8 @@ static uint64_t payload_layout(const struct cache_header *h, uint64_t offset[MES
 			    mesh_array_stride((enum vertex_format)h->format, (enum mesh_array)a));
 	}
 	offset[MESH_ARRAYS] = total;
-	return total + padded((uint64_t)h->index_count * 4);
+	offset[MESH_ARRAYS + 1] = total + padded((uint64_t)h->index_count * 4);
+	return offset[MESH_ARRAYS + 1] + padded(record_words(h) * 4);
 }
 
 static bool header_sane(const struct cache_header *h, size_t size)
@@ -106,15 +87,50 @@ static bool header_sane(const struct cache_header *h, size_t size)
 		   mesh_cache_hash(h, offsetof(struct cache_header, header_hash), 0) &&
 	       h->format <= VERTEX_COMPACT && (h->arrays & 3u) == 3u &&
 	       !(h->arrays >> MESH_ARRAYS) && h->index_count % 3 == 0 && h->index_count &&
-	       h->vertex_count && h->position_scale > 0.0f && h->position_scale <= 1e30f;
+	       h->vertex_count && h->position_scale > 0.0f && h->position_scale <= 1e30f &&
+	       h->range_count <= h->index_count / 3 && h->material_count <= h->index_count / 3 &&
+	       (h->range_count == 0) == (h->material_count == 0);
+}
+
+/* The records into materials (allocated), each checked: the ranges in
+ * order, covering every index once, each a whole number of triangles
+ * with a material that exists. */
+static int read_records(const struct cache_header *h, const uint32_t *w, struct mesh *materials)
+{
+	size_t mw = mesh_cache_record_words(MESH_CACHE_MATERIAL);
+	size_t rw = mesh_cache_record_words(MESH_CACHE_RANGE);
+	uint32_t at = 0;
+	bool ok;
+
+	memset(materials, 0, sizeof(*materials));
+	if (h->range_count && mesh_alloc_ranges(materials, h->range_count, h->material_count))
+		return -ENOMEM;
+	mesh_material_default(&materials->material);
+	ok = mesh_cache_record_read(MESH_CACHE_MATERIAL, w, &materials->material);
+	w += mw;
+	for (uint32_t k = 0; ok && k < h->material_count; k++, w += mw)
+		ok = mesh_cache_record_read(MESH_CACHE_MATERIAL, w, &materials->materials[k]);
+	for (uint32_t r = 0; ok && r < h->range_count; r++, w += rw) {
+		struct mesh_range *g = &materials->ranges[r];
+
+		ok = mesh_cache_record_read(MESH_CACHE_RANGE, w, g) && g->first_index == at &&
+		     g->index_count % 3 == 0 && g->index_count <= h->index_count - at &&
+		     g->material < h->material_count;
+		at += ok ? g->index_count : 0;
+	}
+	if (ok && (!h->range_count || at == h->index_count))
+		return 0;
+	mesh_release(materials);
+	return -EBADMSG;
 }
 
 int mesh_cache_parse(const void *data, size_t size, const struct mesh_cache_key *key,
-		     struct mesh_packed *out, struct mesh_material *material,
-		     struct mesh_cache_key *found)
+		     struct mesh_packed *out, struct mesh *materials, struct mesh_cache_key *found)
 {
 	struct cache_header h;
-	uint64_t offset[MESH_ARRAYS + 1];
+	struct mesh shell;
+	uint64_t offset[MESH_ARRAYS + 2];
+	int ret;
 	const char *payload = (const char *)data + sizeof(h);
 	const uint32_t *idx;
 
@@ -141,8 +157,20 @@ int mesh_cache_parse(const void *data, size_t size, const struct mesh_cache_key 
 	for (int a = 0; a < MESH_ARRAYS; a++)
 		out->arrays[a] = h.arrays & (1u << a) ? payload + offset[a] : NULL;
 	out->indices = idx;
-	if (material)
-		material_from_words(h.material, material);
+	ret = read_records(&h, (const uint32_t *)(const void *)(payload + offset[MESH_ARRAYS + 1]),
+			   &shell);
+	if (ret) {
+		memset(out, 0, sizeof(*out));
+		return ret;
+	}
+	out->ranges = shell.ranges;
+	out->range_count = shell.range_count;
+	if (materials)
+		*materials = shell;
+	else
+		mesh_release(&shell);
+	if (!materials)
+		out->ranges = NULL, out->range_count = 0;
 	if (found)
 		*found = (struct mesh_cache_key){h.content, h.settings, h.width, h.height};
 	return 0;
@@ -208,7 +236,7 @@ int mesh_cache_open(const char *dir, const struct mesh_cache_key *key,
 	if (!ret)
 		ret = map_entry(path, e);
 	if (!ret)
-		ret = mesh_cache_parse(e->map, e->size, key, &e->mesh, &e->material, &e->key);
+		ret = mesh_cache_parse(e->map, e->size, key, &e->mesh, &e->materials, &e->key);
 	if (ret == -EBADMSG) {
 		log_warn("%s: a damaged or stale cache entry, removed; the model is prepared again",
 			 path);
@@ -227,9 +255,9 @@ const struct mesh_packed *mesh_cache_entry_mesh(const struct mesh_cache_entry *e
 	return &e->mesh;
 }
 
-const struct mesh_material *mesh_cache_entry_material(const struct mesh_cache_entry *e)
+const struct mesh *mesh_cache_entry_materials(const struct mesh_cache_entry *e)
 {
-	return &e->material;
+	return &e->materials;
 }
 
 void mesh_cache_entry_evict(const struct mesh_cache_entry *e)
@@ -249,6 +277,7 @@ void mesh_cache_entry_free(struct mesh_cache_entry *e)
 		return;
 	if (e->map)
 		munmap(e->map, e->size);
+	mesh_release(&e->materials);
 	free(e);
 }
 
@@ -269,11 +298,25 @@ static int write_all(int fd, const void *data, size_t size)
 	return 0;
 }
 
+static void write_records(const struct cache_header *h, const struct mesh_packed *m,
+			  const struct mesh *materials, uint32_t *w)
+{
+	size_t mw = mesh_cache_record_words(MESH_CACHE_MATERIAL);
+	size_t rw = mesh_cache_record_words(MESH_CACHE_RANGE);
+
+	mesh_cache_record_write(MESH_CACHE_MATERIAL, &materials->material, w);
+	w += mw;
+	for (uint32_t k = 0; k < h->material_count; k++, w += mw)
+		mesh_cache_record_write(MESH_CACHE_MATERIAL, &materials->materials[k], w);
+	for (uint32_t r = 0; r < h->range_count; r++, w += rw)
+		mesh_cache_record_write(MESH_CACHE_RANGE, &m->ranges[r], w);
+}
+
 /* The payload in layout order, hashed as it goes. */
 static int write_payload(int fd, const struct cache_header *h, const struct mesh_packed *m,
-			 uint64_t *hash_out)
+			 const struct mesh *materials, uint64_t *hash_out)
 {
-	uint64_t offset[MESH_ARRAYS + 1];
+	uint64_t offset[MESH_ARRAYS + 2];
 	size_t size = (size_t)payload_layout(h, offset);
 	char *buf = malloc(size + 1);
 	int ret;
@@ -287,6 +330,7 @@ static int write_payload(int fd, const struct cache_header *h, const struct mesh
 			       (size_t)m->vertex_count *
 				   mesh_array_stride(m->format, (enum mesh_array)a));
 	memcpy(buf + offset[MESH_ARRAYS], m->indices, (size_t)m->index_count * 4);
+	write_records(h, m, materials, (uint32_t *)(void *)(buf + offset[MESH_ARRAYS + 1]));
 	*hash_out = mesh_cache_hash(buf, size, h->content);
 	ret = write_all(fd, buf, size);
 	free(buf);
@@ -294,9 +338,9 @@ static int write_payload(int fd, const struct cache_header *h, const struct mesh
 }
 
 static void fill_header(struct cache_header *h, const struct mesh_cache_key *key,
-			const struct mesh_packed *m, const struct mesh_material *material)
+			const struct mesh_packed *m, const struct mesh *materials)
 {
-	uint64_t offset[MESH_ARRAYS + 1];
+	uint64_t offset[MESH_ARRAYS + 2];
 
 	memset(h, 0, sizeof(*h));
 	memcpy(h->magic, cache_magic, 8);
@@ -312,7 +356,11 @@ static void fill_header(struct cache_header *h, const struct mesh_cache_key *key
 	for (int a = 0; a < MESH_ARRAYS; a++)
 		h->arrays |= m->arrays[a] ? 1u << a : 0;
 	h->position_scale = m->position_scale;
-	material_to_words(material, h->material);
+	/* Ranges and their materials come together, or neither. */
+	if (m->range_count && materials->material_count) {
+		h->range_count = m->range_count;
+		h->material_count = materials->material_count;
+	}
 	h->payload_size = payload_layout(h, offset);
 }
 
@@ -393,7 +441,7 @@ static void trim(const char *dir, uint64_t max_bytes)
 }
 
 int mesh_cache_write(const char *dir, const struct mesh_cache_key *key, const struct mesh_packed *m,
-		     const struct mesh_material *material, uint64_t max_bytes)
+		     const struct mesh *materials, uint64_t max_bytes)
 {
 	char path[PATH_MAX];
 	struct cache_header h;
@@ -406,11 +454,11 @@ int mesh_cache_write(const char *dir, const struct mesh_cache_key *key, const st
 		ret = file_atomic_begin(&a, path, 0644);
 	if (ret)
 		goto out;
-	fill_header(&h, key, m, material);
+	fill_header(&h, key, m, materials);
 	/* The header last, once the payload's checksum is known. */
 	ret = lseek(a.fd, (off_t)sizeof(h), SEEK_SET) < 0 ? -errno : 0;
 	if (!ret)
-		ret = write_payload(a.fd, &h, m, &h.payload_hash);
+		ret = write_payload(a.fd, &h, m, materials, &h.payload_hash);
 	h.header_hash = mesh_cache_hash(&h, offsetof(struct cache_header, header_hash), 0);
 	if (!ret)
 		ret = pwrite(a.fd, &h, sizeof(h), 0) == (ssize_t)sizeof(h) ? 0 : -EIO;
@@ -430,7 +478,7 @@ struct mesh_cache_writer {
 	char dir[PATH_MAX];
 	struct mesh_cache_key key;
 	struct mesh_packed mesh;
-	struct mesh_material material;
+	struct mesh materials; /* a copy: factors only, no arrays, no images */
 	uint64_t max_bytes;
 };
 
@@ -438,30 +486,33 @@ static void *write_entry(void *arg)
 {
 	struct mesh_cache_writer *w = arg;
 
-	mesh_cache_write(w->dir, &w->key, &w->mesh, &w->material, w->max_bytes);
+	mesh_cache_write(w->dir, &w->key, &w->mesh, &w->materials, w->max_bytes);
 	mesh_packed_release(&w->mesh);
+	free(w->materials.materials);
 	return NULL;
 }
 
 struct mesh_cache_writer *mesh_cache_write_async(const char *dir, const struct mesh_cache_key *key,
 						 struct mesh_packed *m,
-						 const struct mesh_material *material,
-						 uint64_t max_bytes)
+						 const struct mesh *materials, uint64_t max_bytes)
 {
 	struct mesh_cache_writer *w = calloc(1, sizeof(*w));
 
-	if (w && snprintf(w->dir, sizeof(w->dir), "%s", dir) < (int)sizeof(w->dir)) {
+	/* The factors copied: a reload may change the caller's meanwhile. */
+	if (w && !mesh_copy_factors(&w->materials, materials) &&
+	    snprintf(w->dir, sizeof(w->dir), "%s", dir) < (int)sizeof(w->dir)) {
 		w->key = *key;
 		w->mesh = *m;
-		w->material = *material;
 		w->max_bytes = max_bytes;
 		memset(m, 0, sizeof(*m));
 		if (!pthread_create(&w->thread, NULL, write_entry, w))
 			return w;
 		*m = w->mesh;
 	}
+	if (w)
+		free(w->materials.materials);
 	free(w);
-	mesh_cache_write(dir, key, m, material, max_bytes);
+	mesh_cache_write(dir, key, m, materials, max_bytes);
 	mesh_packed_release(m);
 	return NULL;
 }

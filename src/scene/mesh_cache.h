@@ -56,9 +56,10 @@ int mesh_cache_open(const char *dir, const struct mesh_cache_key *key,
 		    struct mesh_cache_entry **out);
 /* The entry's mesh, its arrays pointing into the mapping. */
 const struct mesh_packed *mesh_cache_entry_mesh(const struct mesh_cache_entry *e);
-/* The model's material factors (no images: an entry is written only
- * for a scene that decodes none). */
-const struct mesh_material *mesh_cache_entry_material(const struct mesh_cache_entry *e);
+/* The model's material and each range's (no images: an entry is written
+ * only for a scene that decodes none), in a mesh with no arrays; its
+ * ranges are the entry mesh's. */
+const struct mesh *mesh_cache_entry_materials(const struct mesh_cache_entry *e);
 /* Once its mesh is on the GPU: the mapping's pages leave the process
  * (the file keeps them; a later read maps them in again). */
 void mesh_cache_entry_evict(const struct mesh_cache_entry *e);
@@ -67,11 +68,12 @@ const struct mesh_cache_key *mesh_cache_entry_key(const struct mesh_cache_entry 
 void mesh_cache_entry_free(struct mesh_cache_entry *e);
 
 /* Check an entry's bytes (what mesh_cache_open does once mapped): 0 and
- * out's arrays pointing into data, or -EBADMSG. key may be NULL (any);
- * found (may be NULL) gets the entry's own key. */
+ * out's arrays pointing into data, or -EBADMSG (or -ENOMEM). key may be
+ * NULL (any); found (may be NULL) gets the entry's own key. materials
+ * gets the materials and ranges (mesh_release frees them), and out's
+ * ranges point at its. */
 int mesh_cache_parse(const void *data, size_t size, const struct mesh_cache_key *key,
-		     struct mesh_packed *out, struct mesh_material *material,
-		     struct mesh_cache_key *found);
+		     struct mesh_packed *out, struct mesh *materials, struct mesh_cache_key *found);
 
 /* For the fuzzer: recompute an entry's checksums in place (what a
  * deliberate forgery would do), so that the fields behind them are what
@@ -83,7 +85,7 @@ void mesh_cache_reseal(void *data, size_t size);
  * directory is trimmed to max_bytes, oldest entries first. The directory
  * is made when missing. Returns 0 or a negative errno code. */
 int mesh_cache_write(const char *dir, const struct mesh_cache_key *key, const struct mesh_packed *m,
-		     const struct mesh_material *material, uint64_t max_bytes);
+		     const struct mesh *materials, uint64_t max_bytes);
 
 /* mesh_cache_write on a thread of its own, so that the first frame does
  * not wait for the disk: m's arrays are taken over (m is left empty) and
@@ -92,9 +94,32 @@ int mesh_cache_write(const char *dir, const struct mesh_cache_key *key, const st
 struct mesh_cache_writer;
 struct mesh_cache_writer *mesh_cache_write_async(const char *dir, const struct mesh_cache_key *key,
 						 struct mesh_packed *m,
-						 const struct mesh_material *material,
-						 uint64_t max_bytes);
+						 const struct mesh *materials, uint64_t max_bytes);
 /* Waits for the entry to be written, and frees w (NULL: nothing). */
 void mesh_cache_writer_join(struct mesh_cache_writer *w);
+
+/* The table of fields an entry keeps (src/scene/mesh_cache_fields.c):
+ * each field of struct mesh_material and struct mesh_range, stored as
+ * 32-bit words (a bool 0 or 1, an int up to max, a float finite: checked
+ * when read), or NONE: named, not stored. */
+enum mesh_cache_table { MESH_CACHE_MATERIAL, MESH_CACHE_RANGE };
+enum mesh_field_kind {
+	MESH_FIELD_NONE,
+	MESH_FIELD_BOOL,
+	MESH_FIELD_INT,
+	MESH_FIELD_U32,
+	MESH_FIELD_FLOAT
+};
+struct mesh_cache_field {
+	const char *name;
+	size_t offset, size, align;
+	int kind; /* enum mesh_field_kind */
+	uint32_t max;
+};
+const struct mesh_cache_field *mesh_cache_fields(enum mesh_cache_table t, size_t *count);
+size_t mesh_cache_record_words(enum mesh_cache_table t);
+void mesh_cache_record_write(enum mesh_cache_table t, const void *obj, uint32_t *out);
+/* false: a word out of its field's range (the entry is damaged). */
+bool mesh_cache_record_read(enum mesh_cache_table t, const uint32_t *in, void *obj);
 
 #endif

@@ -72,6 +72,15 @@ int mesh_pack(const struct mesh *m, enum vertex_format f, struct mesh_packed *ou
 	out->index_count = m->index_count;
 	out->indices = m->indices;
 	out->position_scale = 1.0f;
+	/* The ranges are copied: a packed mesh may outlive the mesh. */
+	if (m->range_count) {
+		out->owned_ranges = malloc(m->range_count * sizeof(*m->ranges));
+		if (!out->owned_ranges)
+			return -ENOMEM;
+		memcpy(out->owned_ranges, m->ranges, m->range_count * sizeof(*m->ranges));
+		out->ranges = out->owned_ranges;
+		out->range_count = m->range_count;
+	}
 	if (f == VERTEX_FLOAT32) {
 		for (int a = 0; a < MESH_ARRAYS; a++)
 			out->arrays[a] = src[a];
@@ -85,8 +94,10 @@ int mesh_pack(const struct mesh *m, enum vertex_format f, struct mesh_packed *ou
 	}
 	/* The indices too: the packed mesh outlives the mesh. */
 	block = malloc(total + (size_t)m->index_count * 4 + 1);
-	if (!block)
+	if (!block) {
+		mesh_packed_release(out);
 		return -ENOMEM;
+	}
 	out->owned = block;
 	memcpy(block + total, m->indices, (size_t)m->index_count * 4);
 	out->indices = (const uint32_t *)(const void *)(block + total);
@@ -111,5 +122,6 @@ int mesh_pack(const struct mesh *m, enum vertex_format f, struct mesh_packed *ou
 void mesh_packed_release(struct mesh_packed *p)
 {
 	free(p->owned);
+	free(p->owned_ranges);
 	memset(p, 0, sizeof(*p));
 }

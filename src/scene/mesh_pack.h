@@ -29,7 +29,12 @@ struct mesh_packed {
 	float position_scale;
 	const void *arrays[MESH_ARRAYS]; /* NULL: the mesh has none */
 	const uint32_t *indices;
+	/* The mesh's draw ranges (struct mesh ranges); none: one range over
+	 * every index with the model's material. */
+	uint32_t range_count;
+	const struct mesh_range *ranges;
 	void *owned; /* what mesh_packed_release frees; NULL: borrowed */
+	void *owned_ranges;
 };
 
 /* Components per vertex of an array, and bytes per vertex in a format. */

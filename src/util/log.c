@@ -4,6 +4,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <time.h>
 
 /* The level is set once from main() before anything logs; the journal check
  * is pure (it reads the environment each time), so no other state is kept. */
@@ -12,6 +13,7 @@ static enum log_level max_level = LOG_INFO;
  * other thing kept, as the level is, for the whole process. The model
  * loader's thread logs too: a lock, and the reader gets a copy. */
 static char last_error[1024];
+static double last_error_at; /* wall clock, seconds since the epoch; 0: none */
 static pthread_mutex_t last_error_lock = PTHREAD_MUTEX_INITIALIZER;
 
 const enum log_level log_levels[LOG_LEVELS] = {LOG_ERR, LOG_WARN, LOG_INFO, LOG_DEBUG};
@@ -50,8 +52,12 @@ void log_msg(enum log_level level, const char *fmt, ...)
 	vsnprintf(line, sizeof(line), fmt, ap);
 	va_end(ap);
 	if (level == LOG_ERR) {
+		struct timespec ts;
+
+		clock_gettime(CLOCK_REALTIME, &ts);
 		pthread_mutex_lock(&last_error_lock);
 		snprintf(last_error, sizeof(last_error), "%s", line);
+		last_error_at = (double)ts.tv_sec + (double)ts.tv_nsec / 1e9;
 		pthread_mutex_unlock(&last_error_lock);
 	}
 	/* systemd sets JOURNAL_STREAM when stderr goes to the journal: then
@@ -66,6 +72,7 @@ void log_clear_last_error(void)
 {
 	pthread_mutex_lock(&last_error_lock);
 	last_error[0] = '\0';
+	last_error_at = 0;
 	pthread_mutex_unlock(&last_error_lock);
 }
 
@@ -74,4 +81,14 @@ void log_last_error(char *buf, size_t size)
 	pthread_mutex_lock(&last_error_lock);
 	snprintf(buf, size, "%s", last_error);
 	pthread_mutex_unlock(&last_error_lock);
+}
+
+double log_last_error_time(void)
+{
+	double at;
+
+	pthread_mutex_lock(&last_error_lock);
+	at = last_error_at;
+	pthread_mutex_unlock(&last_error_lock);
+	return at;
 }

@@ -23,6 +23,10 @@ void log_set_level(enum log_level max);
 enum log_level log_get_level(void);
 /* A copy of the last error logged into buf, or "" when none was. */
 void log_last_error(char *buf, size_t size);
+/* When it was logged, in seconds since the epoch (wall clock, for the
+ * metrics: a dashboard compares it with other machines'); 0 when none
+ * (or since log_clear_last_error). */
+double log_last_error_time(void);
 /* Forget it: a reload starts afresh, so that --status names a failure
  * of this reload only, and nothing after a good one. */
 void log_clear_last_error(void);

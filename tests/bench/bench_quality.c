@@ -2,10 +2,11 @@
  * and error (against the same scene at the highest quality), through the
  * real renderer objects. For each scene the settings change one at a time
  * from the defaults: the mapping mode, the precision, the mesh's level of
- * detail, the matcap's size and supersampling (GLES2 FBOs and OSMesa have
- * no multisampling: the frame is drawn at 2x or 4x the size and box-
- * filtered down on the CPU, which the time leaves out: on a GPU that is
- * one more textured pass). Writes OUTDIR/speed-error.md (the tables),
+ * detail, the matcap's size, supersampling (the frame is drawn at 2x or
+ * 4x the size and box-filtered down on the CPU, which the time leaves
+ * out: on a GPU that is one more textured pass) and multisampling
+ * ([display] antialias, on EGL headless displays beside the others: OSMesa
+ * has none; the time includes the resolve). Writes OUTDIR/speed-error.md (the tables),
  * OUTDIR/speed-error.dat and -front.dat (for tests/bench/report/speed-error.gp).
  * Figures are printed, never asserted.
  *
@@ -25,6 +26,7 @@
 #include "render/render.h"
 #include "render/shading.h"
 
+#include <EGL/egl.h>
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -80,9 +82,17 @@ static int compare_double(const void *a, const void *b)
 	return (x > y) - (x < y);
 }
 
-static int ss_index(int factor)
+static const int msaa_asked[] = {DISPLAY_AA_OFF, DISPLAY_AA_2, DISPLAY_AA_4, DISPLAY_AA_8};
+
+/* Which display draws s: by its supersampling, or EGL's by its samples. */
+static int display_of(const struct bench *b, const struct setting *s)
 {
-	return factor == 4 ? 2 : factor == 2 ? 1 : 0;
+	if (s->msaa == 1)
+		return 3;
+	for (int k = 4; s->msaa && k < DISPLAYS; k++)
+		if (b->display[k] && b->display[k]->samples == s->msaa)
+			return k;
+	return s->ss == 4 ? 2 : s->ss == 2 ? 1 : 0;
 }
 
 static int matcap_index(int size)
@@ -147,6 +157,19 @@ static void plan(struct bench *b, int l)
 	for (int i = 1; i < 3; i++) {
 		snprintf(label, sizeof(label), "supersample %dx", ss_factors[i]);
 		add(b, l, label)->ss = ss_factors[i];
+	}
+	/* antialias = 2, 4, 8: one row for each count of samples the GPU
+	 * gives (it gives its most for more), after EGL headless without,
+	 * the cost's baseline (OSMesa's context is another). */
+	if (b->display[3])
+		add(b, l, "egl-headless, antialias off")->msaa = 1;
+	for (int k = 4; k < DISPLAYS; k++) {
+		int got = b->display[k] ? b->display[k]->samples : 0;
+
+		if (!got || (k > 4 && b->display[k - 1] && b->display[k - 1]->samples == got))
+			continue;
+		snprintf(label, sizeof(label), "antialias %d (msaa)", got);
+		add(b, l, label)->msaa = got;
 	}
 }
 
@@ -243,7 +266,7 @@ static void image_error(const struct image *a, const struct image *ref, const ui
 static int measure(struct bench *b, const struct look *lk, const struct material *mat,
 		   const struct mesh *mesh, struct setting *s, int n, struct image *frame)
 {
-	int k = ss_index(s->ss);
+	int k = display_of(b, s);
 	struct display *d = b->display[k];
 	struct renderer *r = b->renderer[k];
 	struct view v = resting_view();
@@ -257,6 +280,13 @@ static int measure(struct bench *b, const struct look *lk, const struct material
 	int h = lk->small ? lk->small * s->ss : d->height;
 	int ret;
 
+	/* OSMesa's displays and EGL's share Mesa's one current context per
+	 * thread, but EGL keeps its own record of it: once OSMesa has drawn,
+	 * EGL would take its context for current still. Released here, EGL's
+	 * begin_frame makes its own current again. */
+	if (k != b->last_display && eglGetCurrentContext() != EGL_NO_CONTEXT)
+		eglMakeCurrent(eglGetCurrentDisplay(), EGL_NO_SURFACE, EGL_NO_SURFACE,
+			       EGL_NO_CONTEXT);
 	renderer_set_vertex_format(r, s->format);
 	renderer_set_matcap_filter(r, s->filter);
 	ret = d->begin_frame(d);
@@ -324,7 +354,7 @@ static bool same_drawing(const struct look *lk, const struct setting *a, const s
 {
 	return a->triangles == b->triangles && a->mode == b->mode && a->highp == b->highp &&
 	       (lk->lit || (a->matcap == b->matcap && a->mipmapped == b->mipmapped)) &&
-	       a->ss == b->ss && a->format == b->format;
+	       a->ss == b->ss && a->msaa == b->msaa && a->format == b->format;
 }
 
 int bench_rounds_frames(const struct bench *b)
@@ -390,11 +420,11 @@ static int run_look(struct bench *b, int l)
 			if (s[k].same_as < 0 && same_drawing(lk, &s[k], &s[i]))
 				s[i].same_as = k;
 	}
-	/* Each round by display size, the reference (4x) last. */
+	/* Each round by display, the reference (4x) after the plain ones. */
 	for (int round = 0; round < ROUNDS && !ret; round++)
-		for (int k = 0; k < 3; k++)
+		for (int k = 0; k < DISPLAYS; k++)
 			for (int i = 0; i < n && !ret; i++)
-				if (s[i].same_as < 0 && s[i].ss == ss_factors[k])
+				if (s[i].same_as < 0 && display_of(b, &s[i]) == k)
 					ret = measure(b, lk, &mat, &m[mesh_of[i]], &s[i],
 						      bench_rounds_frames(b),
 						      round ? NULL : &frames[i]);
@@ -484,6 +514,24 @@ static int open_displays(struct bench *b)
 		if (!b->renderer[k])
 			return -ENOMEM;
 	}
+	/* EGL headless beside them: plain, and multisampled where it can be. */
+	for (int k = 3; k < DISPLAYS; k++) {
+		struct display_config cfg = {
+		    .width = b->width, .height = b->height, .antialias = msaa_asked[k - 3]};
+
+		b->display[k] = display_egl_new(&cfg);
+		if (k > 3 && b->display[k] && !b->display[k]->samples) {
+			display_free(b->display[k]);
+			b->display[k] = NULL;
+		}
+		if (!b->display[k])
+			continue;
+		b->display[k]->begin_frame(b->display[k]);
+		b->renderer[k] = renderer_new(&b->display[k]->gl, NULL);
+		if (!b->renderer[k])
+			return -ENOMEM;
+	}
+	b->display[0]->begin_frame(b->display[0]);
 	renderer_get_stats(b->renderer[0], &stats);
 	b->highp_default = stats.highp;
 	/* The renderer's own defaults, as the kiosk draws. */
@@ -523,7 +571,7 @@ int main(int argc, char **argv)
 	read_load(b.load[1], sizeof(b.load[1]));
 	if (!ret)
 		ret = bench_write_report(&b);
-	for (int k = 0; k < 3; k++) {
+	for (int k = 0; k < DISPLAYS; k++) {
 		if (b.display[k])
 			b.display[k]->begin_frame(b.display[k]);
 		renderer_free(b.renderer[k]);

@@ -20,6 +20,7 @@
 #define WARMUP_SWITCH 6	   /* ... when the display before was another */
 #define ROUNDS	      3	   /* interleaved rounds over a scene's settings */
 #define MAX_FRAMES    96
+#define DISPLAYS      7
 
 /* The shipped matcaps' size (matcaps/README.md); the other defaults are
  * src/config/options.c's. */
@@ -52,6 +53,9 @@ struct setting {
 	long vertex_bytes;	   /* measured: renderer_get_stats */
 	double lod;
 	int matcap, ss;
+	/* EGL headless: 1 without multisampling, else the samples per pixel;
+	 * 0: the bench's own backend */
+	int msaa;
 	/* measured */
 	int same_as; /* an earlier setting that drew exactly this, or -1 */
 	uint32_t triangles;
@@ -65,8 +69,10 @@ struct bench {
 	const char *out, *scratch;
 	int width, height, frames;
 	bool egl;
-	struct display *display[3]; /* 1x, 2x, 4x */
-	struct renderer *renderer[3];
+	/* 1x, 2x, 4x; then EGL headless at 1x, plain and multisampled with 2,
+	 * 4 and 8 samples asked (NULL where there is none) */
+	struct display *display[DISPLAYS];
+	struct renderer *renderer[DISPLAYS];
 	struct image matcap[5];
 	char detail_path[512];
 	struct setting settings[LOOKS][MAX_SETTINGS];

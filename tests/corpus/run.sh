@@ -33,6 +33,22 @@ clean() {
 said() {
 	tr '\n' ' ' <"$out/stderr" | cut -c1-400
 }
+# A model of several materials says so (src/scene/gltf_mesh.cc): each
+# part drawn with its own. TextureTransformTest's nine materials all have
+# a base map: every tile must show its own.
+several() { # NAME
+	line=$(grep -o '[0-9]* materials ([0-9]* with a base map shown), [0-9]* draw ranges' \
+		"$out/stderr") || return 0
+	echo "ok several materials: $1 shows each part with its own: $line"
+	case $1 in
+	*TextureTransformTest*)
+		case $line in
+		"9 materials (9 with a base map shown)"*) echo "ok every tile of $1 shows its texture" ;;
+		*) echo "not ok every tile of $1 shows its texture: $line" ;;
+		esac
+		;;
+	esac
+}
 fuzz_once() { # FILE
 	[ -x "${FUZZ_GLTF:-}" ] || return 0
 	FUZZ_GLTF_DIR=$(cd "$(dirname "$1")" && pwd) "$FUZZ_GLTF" "$1" >"$out/fuzz.log" 2>&1 &&
@@ -48,6 +64,7 @@ shows() { # NAME FILE [OPTION]...
 	if [ $status -eq 0 ] && clean && fig=$("$tools/silhouette" "$png"); then
 		shown=$((shown + 1))
 		echo "ok shows $_name ($fig)"
+		several "$_name"
 	else
 		echo "not ok shows $_name (status $status: $(said) ${fig:-})"
 	fi
@@ -157,4 +174,7 @@ for f in knot-quantized.glb knot-noq.glb knot-meshopt.glb knot-meshopt-cc.gltf k
 done >"$out/made.log"
 cat "$out/made.log"
 made=$(grep -c '^ok shows' "$out/made.log")
-echo "ok the corpus: $((shown + made)) files shown ($made made here), $refused refused as expected"
+several=$(grep -c '^ok several materials' "$out/list.log" "$out/made.log" |
+	awk -F: '{ n += $2 } END { print n }')
+echo "ok the corpus: $((shown + made)) files shown ($made made here, $several of several" \
+	"materials, each part in its own), $refused refused as expected"

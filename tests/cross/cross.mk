@@ -90,8 +90,9 @@ test-cross: cross-build $(KIOSK) $(TOOLS_DIR)/mkmodels $(TOOLS_DIR)/imgdiff
 
 # The Debian package, from config/debian (debhelper):
 #   make deps-deb               what the package targets need on this machine
-#   make deb                    build/deb/matcap-kiosk_VERSION_ARCH.deb for this machine,
-#                               built here, then lintian (no error allowed)
+#   make deb                    matcap-kiosk_VERSION_ARCH.deb for this machine, built
+#                               here, then lintian (no error allowed): in build/deb/ on
+#                               Debian 13, build/deb/bookworm/ on 12
 #   make deb ARCH=arm64         the same for arm64 (or armhf, or amd64), cross-built by
 #                               Debian's recipe in a fresh Debian 13 root that has only the
 #                               Build-Depends (DEB_SUITE=bookworm: Debian 12, into
@@ -115,7 +116,9 @@ DEB_ARCHS   ?= $(or $(ARCH),arm64 armhf)
 # root costs minutes of CI).
 DEB_INSTALL ?= $(foreach a,$(DEB_ARCHS),trixie:$(a))
 DEB_HOST_ARCH := $(shell dpkg --print-architecture 2>/dev/null)
+# build/deb/ holds Debian 13's packages, build/deb/SUITE/ another release's.
 DEB_OUT     := $(if $(filter trixie,$(DEB_SUITE)),$(DEB_BUILD),$(DEB_BUILD)/$(DEB_SUITE))
+DEB_HOST_OUT = $(if $(filter trixie,$(OS_CODENAME)),$(DEB_BUILD),$(DEB_BUILD)/$(OS_CODENAME))
 DEB_SUDO_ROOT := $(if $(filter 0,$(shell id -u)),,sudo)
 
 # systemd.pc and udev.pc (where units and rules go) are in systemd-dev from
@@ -143,9 +146,9 @@ deb-src:
 deb: deb-src
 ifeq ($(ARCH),)
 	cd $(DEB_SRC) && dpkg-buildpackage --build=binary --no-sign
-	mkdir -p $(DEB_BUILD)
-	mv $(dir $(DEB_SRC))matcap-kiosk*_$(VERSION)_$(DEB_HOST_ARCH).deb $(DEB_BUILD)/
-	lintian --fail-on error $(DEB_BUILD)/matcap-kiosk_$(VERSION)_$(DEB_HOST_ARCH).deb
+	mkdir -p $(DEB_HOST_OUT)
+	mv $(dir $(DEB_SRC))matcap-kiosk*_$(VERSION)_$(DEB_HOST_ARCH).deb $(DEB_HOST_OUT)/
+	lintian --fail-on error $(DEB_HOST_OUT)/matcap-kiosk_$(VERSION)_$(DEB_HOST_ARCH).deb
 else
 	$(if $(filter 0,$(shell id -u)),,sudo) sh tests/cross/deb-build.sh $(DEB_SUITE) $(ARCH) \
 		$(DEB_SRC) $(DEB_OUT)

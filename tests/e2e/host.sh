@@ -38,8 +38,21 @@ ref() { # NAME SIZE [ARGS]...
 ref knot-1024x768 1024x768
 ref knot-1024x768-rot90 1024x768 --rotate 90
 ref knot-800x600 800x600
-ref knot-800x600-pitch65 800x600 --pitch 65
-ref knot-800x600-rot90-pitch65 800x600 --rotate 90 --pitch 65
+# A drag turns the model and keeps the scale [scene] fit chose at the start
+# view (pitch 20): the turned references are drawn at that scale.
+fit_zoom() { # SIZE [ARGS]...
+	size=$1
+	shift
+	$kiosk -v --backend $offscreen --size "$size" --matcap matcaps/gold.png --lod-pixels 0 "$@" \
+		--output "$out/zoom.png" 2>&1 | sed -n 's/.*framing: zoom \([0-9.]*\).*/\1/p' | head -n 1
+}
+ref knot-800x600-pitch65 800x600 --pitch 65 --zoom "$(fit_zoom 800x600)"
+ref knot-800x600-rot90-pitch65 800x600 --rotate 90 --pitch 65 \
+	--zoom "$(fit_zoom 800x600 --rotate 90)"
+# antialias = 4 (kms.sh): multisampled by EGL headless, on llvmpipe too.
+$kiosk -q --backend egl-headless --size 1024x768 --matcap matcaps/gold.png --lod-pixels 0 \
+	--antialias 4 --output "$out/ref/knot-1024x768-aa4.png" ||
+	echo "not ok reference knot-1024x768-aa4 rendered"
 
 complete=1
 for script in "$@"; do

@@ -24,7 +24,7 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
 static unsigned check(const void *data, size_t size)
 {
 	struct mesh_packed m;
-	struct mesh_material mat;
+	struct mesh mat;
 	unsigned sum = 0;
 
 	if (mesh_cache_parse(data, size, NULL, &m, &mat, NULL))
@@ -39,6 +39,12 @@ static unsigned check(const void *data, size_t size)
 	for (uint32_t i = 0; i < m.index_count; i++)
 		if (m.indices[i] >= m.vertex_count)
 			abort();
+	/* The ranges it accepted cover the indices, each material there. */
+	for (uint32_t r = 0, at = 0; r < m.range_count; at += m.ranges[r++].index_count)
+		if (m.ranges[r].first_index != at || m.ranges[r].material >= mat.material_count ||
+		    (r + 1 == m.range_count && at + m.ranges[r].index_count != m.index_count))
+			abort();
+	mesh_release(&mat);
 	return sum;
 }
 

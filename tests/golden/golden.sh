@@ -17,6 +17,8 @@ scenes="$scenes sphere-normal sphere-view sphere-sem-vertex sphere-sem-fragment"
 scenes="$scenes knot-iridescence knot-iridescence-ramp knot-detail-map sphere-detail-gltf"
 scenes="$scenes sphere-beetle-gltf sphere-displaced sphere-lit sphere-lit-beside"
 scenes="$scenes sphere-vertex-color sphere-base-map sphere-base-map-off"
+scenes="$scenes background-color background-gradient background-image fit-long fit-long-half"
+scenes="$scenes parts-textures parts-mask parts-blend parts-leaf"
 mkdir -p "$out" "$models"
 "$TOOLS/mkmodels" "$models" >/dev/null
 
@@ -76,6 +78,32 @@ render() {
 		;;
 	sphere-base-map-off)
 		$k -c matcaps/pearl.png --model "$m/sphere-base-map.glb" --base-color off --output "$o"
+		;;
+	# [display] background and [scene] fit: a colour (the clear alone), a
+	# gradient and an image (wider than the frame: cropped left and right,
+	# its top and bottom borders showing), and a long model filling 0.85
+	# (the default) and 0.5 of the frame's width.
+	background-color)
+		$k -c matcaps/gold.png --background '#203a5c' --output "$o"
+		;;
+	background-gradient)
+		$k -c matcaps/gold.png --background '#f2ead8, #5a4a3a' --output "$o"
+		;;
+	background-image)
+		$k -c matcaps/gold.png --background "$m/backdrop.png" --output "$o"
+		;;
+	fit-long)
+		$k -c matcaps/gold.png --model "$m/long.glb" --output "$o"
+		;;
+	fit-long-half)
+		$k -c matcaps/gold.png --model "$m/long.glb" --fit 0.5 --output "$o"
+		;;
+	# Several materials (tests/tools/parts_models.c): two halves each
+	# with its own base map; a label cut by alpha MASK in front of a
+	# body; two BLEND panes in front of an opaque body, the nearer over
+	# the farther; a leaf seen from its hollow, shown by doubleSided.
+	parts-textures | parts-mask | parts-blend | parts-leaf)
+		$k -c matcaps/pearl.png --model "$m/$1.glb" --output "$o"
 		;;
 	*)
 		echo "golden.sh: no scene named $1 (scenes: $scenes)" >&2

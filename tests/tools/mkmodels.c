@@ -6,11 +6,13 @@
  *                         and the 100k one textured, skinned and flat-shaded */
 #include "gltf_write.h"
 #include "maps.h"
+#include "parts_models.h"
 #include "scene/mesh.h"
 #include "scene/tangent.h"
 #include "util/image.h"
 
 #include <math.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -277,6 +279,58 @@ static int write_bench(const char *dir)
 	return bad;
 }
 
+/* [scene] fit and [display] background: a long model (the sphere
+ * stretched four times along x, its normals with it) and a backdrop
+ * image, wider than the golden frame, in four coloured quarters with a
+ * white border, so a crop shows. */
+static int write_look(const char *dir, const struct mesh *sphere)
+{
+	struct gltf_write_opts o = {.index_bytes = 2, .with_normals = 1, .bad_index = -1};
+	struct mesh m = *sphere;
+	struct image img;
+	char path[4096];
+	size_t n = (size_t)sphere->vertex_count * 3;
+	int bad = 0;
+
+	m.positions = malloc(n * sizeof(float));
+	m.normals = malloc(n * sizeof(float));
+	if (!m.positions || !m.normals || image_alloc(&img, 200, 80)) {
+		free(m.positions);
+		free(m.normals);
+		return 1;
+	}
+	for (size_t i = 0; i < n; i += 3) {
+		double nx = sphere->normals[i] / 4.0, ny = sphere->normals[i + 1],
+		       nz = sphere->normals[i + 2], len = sqrt(nx * nx + ny * ny + nz * nz);
+
+		m.positions[i] = sphere->positions[i] * 4.0f;
+		m.positions[i + 1] = sphere->positions[i + 1];
+		m.positions[i + 2] = sphere->positions[i + 2];
+		m.normals[i] = (float)(nx / len);
+		m.normals[i + 1] = (float)(ny / len);
+		m.normals[i + 2] = (float)(nz / len);
+	}
+	bad |= put(dir, "long.glb", &m, o);
+	for (int y = 0; y < img.height; y++)
+		for (int x = 0; x < img.width; x++) {
+			uint8_t *p = img.rgba + ((size_t)y * (size_t)img.width + (size_t)x) * 4;
+			bool border = x < 4 || y < 4 || x >= img.width - 4 || y >= img.height - 4;
+			int q = (x >= img.width / 2) + 2 * (y >= img.height / 2);
+			static const uint8_t quarter[4][3] = {
+			    {200, 60, 50}, {60, 150, 70}, {50, 80, 180}, {210, 180, 60}};
+
+			for (int c = 0; c < 3; c++)
+				p[c] = border ? 255 : quarter[q][c];
+			p[3] = 255;
+		}
+	snprintf(path, sizeof(path), "%s/backdrop.png", dir);
+	bad |= image_write_png(path, &img) != 0;
+	image_release(&img);
+	free(m.positions);
+	free(m.normals);
+	return bad;
+}
+
 int main(int argc, char **argv)
 {
 	struct mesh s;
@@ -322,10 +376,12 @@ int main(int argc, char **argv)
 	o.extra_nodes = "{\"mesh\":0,\"translation\":[2.5,0,0]}";
 	o.scenes = "{\"name\":\"one\",\"nodes\":[0]},{\"name\":\"pair\",\"nodes\":[0,1]}";
 	bad |= put(argv[1], "scenes.glb", &s, o);
+	bad |= write_look(argv[1], &s);
 	mesh_release(&s);
 	bad |= write_material_models(argv[1]);
+	bad |= parts_models_write(argv[1]);
 	bad |= write_corpus(argv[1]);
 	if (argc > 2 && strcmp(argv[2], "--bench") == 0)
-		bad |= write_bench(argv[1]);
+		bad |= write_bench(argv[1]) | parts_models_write_bench(argv[1]);
 	return bad;
 }

@@ -3,6 +3,7 @@
  * off, and what a model without colour costs (nothing). The colours on
  * screen: tests/oracle/base_color_check.c and the golden images. */
 #include "scene/gltf.h"
+#include "gltf_parts.h"
 #include "gltf_write.h"
 #include "scene/lod.h"
 #include "scene/material.h"
@@ -106,14 +107,19 @@ static void factor_colour_map_and_transform(void **state)
 					 factor[k] * f->sphere.colors[v * 4 + k]) < 1e-6);
 		assert_true(m.colors[v * 4 + 3] == 1.0f); /* the map applies */
 	}
-	assert_int_equal(m.material.base_map.width, 6);
+	/* The map is its range's material's (one here). */
+	assert_int_equal(m.range_count, 1);
+	assert_int_equal(m.material_count, 1);
+	assert_int_equal(m.materials[0].base_map.width, 6);
 	for (int k = 0; k < 6; k++)
-		assert_true(fabs(m.material.base_transform[k] - want[k]) < 1e-6);
+		assert_true(fabs(m.materials[0].base_transform[k] - want[k]) < 1e-6);
 	assert_int_equal(material_load(&mat, &cfg, &m, true), 0);
 	assert_int_equal(mat.features, MATERIAL_BASE_COLOR | MATERIAL_BASE_MAP);
-	assert_int_equal(mat.base_map.width, 8); /* power-of-two sides, to repeat */
-	assert_int_equal(mat.base_map.height, 4);
-	assert_true(mat.base_transform[4] == 0.25f && mat.base_transform[5] == -0.5f);
+	assert_int_equal(mat.surface_count, 1);
+	assert_int_equal(mat.surfaces[0].base_map.width, 8); /* power-of-two sides, to repeat */
+	assert_int_equal(mat.surfaces[0].base_map.height, 4);
+	assert_true(mat.surfaces[0].base_transform[4] == 0.25f &&
+		    mat.surfaces[0].base_transform[5] == -0.5f);
 	material_release(&mat);
 	mesh_release(&m);
 	/* Off: neither the colours nor the map are read, nothing is on. */
@@ -121,7 +127,7 @@ static void factor_colour_map_and_transform(void **state)
 	assert_int_equal(material_gltf_textures(&cfg) & GLTF_TEXTURE_BASE_COLOR, 0);
 	assert_int_equal(gltf_load_textures(path, material_gltf_textures(&cfg), &m), 0);
 	assert_null(m.colors);
-	assert_true(m.material.has_base_map && !m.material.base_map.width);
+	assert_true(m.material.has_base_map && !m.materials[0].base_map.width);
 	assert_int_equal(material_load(&mat, &cfg, &m, true), 0);
 	assert_int_equal(mat.features, 0);
 	material_release(&mat);
@@ -214,7 +220,7 @@ static void tex_coord_picks_the_uv_set(void **state)
 	assert_int_equal(gltf_load_textures(path, GLTF_TEXTURE_BASE_COLOR, &m), 0);
 	assert_non_null(m.uvs);
 	assert_memory_equal(m.uvs, f->sphere.uvs, (size_t)m.vertex_count * 8);
-	assert_int_equal(m.material.base_map.width, 6);
+	assert_int_equal(m.materials[0].base_map.width, 6);
 	mesh_release(&m);
 	/* Without the base colour, TEXCOORD_0 is what is read: none here. */
 	assert_int_equal(gltf_load_textures(path, 0, &m), 0);
@@ -227,7 +233,7 @@ static void tex_coord_picks_the_uv_set(void **state)
 	assert_true(m.material.has_colors);
 	assert_true(fabsf(m.material.color[0] - 0.8f) < 1e-6f);
 	assert_null(m.uvs);
-	assert_int_equal(m.material.base_map.width, 0);
+	assert_int_equal(m.materials[0].base_map.width, 0);
 	mesh_release(&m);
 	/* A normal map asked for needs TEXCOORD_0: it wins, the base map on
 	 * TEXCOORD_1 is left out (a warning). */
@@ -237,7 +243,7 @@ static void tex_coord_picks_the_uv_set(void **state)
 	    gltf_load_textures(path, GLTF_TEXTURE_BASE_COLOR | GLTF_TEXTURE_NORMAL, &m), 0);
 	assert_non_null(m.uvs);
 	assert_int_equal(m.material.normal_map.width, 6);
-	assert_int_equal(m.material.base_map.width, 0);
+	assert_int_equal(m.materials[0].base_map.width, 0);
 	mesh_release(&m);
 }
 
@@ -413,6 +419,83 @@ static void one_colour_is_a_constant(void **state)
 	mesh_release(&m);
 }
 
+/* Every primitive keeps its own material: its base map, factor and
+ * alpha, its sides. Primitives of one opaque or masked material share one
+ * range; a blended material's primitives stay ranges of their own (each
+ * ordered by depth). */
+static void each_primitive_keeps_its_material(void **state)
+{
+	struct fixture *f = *state;
+	struct gltf_part p[4] = {
+	    {&f->sphere,
+	     {1, 0.5, 0.25, 1},
+	     f->png,
+	     "\"alphaMode\":\"MASK\",\"alphaCutoff\":0.3,"
+	     "\"doubleSided\":true",
+	     NULL,
+	     1},
+	    {&f->sphere, {0.2, 0.4, 1, 0.5}, NULL, "\"alphaMode\":\"BLEND\"", NULL, 1},
+	    {&f->sphere, {0, 0, 0, 1}, NULL, NULL, NULL, 0}, /* the BLEND one again */
+	    {&f->sphere,
+	     {1, 1, 1, 1},
+	     f->png,
+	     NULL,
+	     "\"extensions\":{\"KHR_texture_transform\":{\"offset\":[0.5,0]}}",
+	     1}};
+	struct material_config cfg;
+	struct material mat;
+	char path[256];
+	struct mesh m;
+	uint32_t tris = f->sphere.index_count;
+
+	snprintf(path, sizeof(path), "%s/parts.glb", f->dir);
+	assert_int_equal(gltf_write_parts(path, p, 4), 0);
+	material_config_defaults(&cfg);
+	assert_int_equal(gltf_load_textures(path, material_gltf_textures(&cfg), &m), 0);
+	assert_int_equal(m.material_count, 3);
+	assert_int_equal(m.range_count, 4);
+	/* Material 0: masked, double sided, its own map. */
+	assert_int_equal(m.materials[0].alpha_mode, MESH_ALPHA_MASK);
+	assert_true(fabsf(m.materials[0].alpha_cutoff - 0.3f) < 1e-6f);
+	assert_true(m.materials[0].double_sided);
+	assert_int_equal(m.materials[0].base_map.width, 6);
+	assert_true(m.materials[0].base_color[1] == 0.5f);
+	/* Material 1: blended, alpha 0.5, no map, two ranges. */
+	assert_int_equal(m.materials[1].alpha_mode, MESH_ALPHA_BLEND);
+	assert_true(m.materials[1].base_alpha == 0.5f && !m.materials[1].double_sided);
+	assert_int_equal(m.materials[1].base_map.width, 0);
+	/* Material 2: opaque, its own map with its own transform. */
+	assert_int_equal(m.materials[2].alpha_mode, MESH_ALPHA_OPAQUE);
+	assert_int_equal(m.materials[2].base_map.width, 6);
+	assert_true(m.materials[2].base_transform[4] == 0.5f);
+	assert_true(m.materials[0].base_transform[4] == 0.0f);
+	for (uint32_t r = 0; r < 4; r++) {
+		static const uint32_t material[4] = {0, 1, 1, 2};
+
+		assert_int_equal(m.ranges[r].material, material[r]);
+		assert_int_equal(m.ranges[r].first_index, r * tris);
+		assert_int_equal(m.ranges[r].index_count, tris);
+	}
+	/* The vertices of a part without a map read none (alpha 0). */
+	assert_non_null(m.colors);
+	assert_true(m.colors[m.indices[0] * 4 + 3] == 1.0f);
+	assert_true(m.colors[m.indices[tris] * 4 + 3] == 0.0f);
+	/* Resolved: one surface per material, its map and alpha. */
+	assert_int_equal(material_load(&mat, &cfg, &m, true), 0);
+	assert_int_equal(mat.surface_count, 3);
+	assert_int_equal(mat.surfaces[0].alpha_mode, MESH_ALPHA_MASK);
+	assert_true(mat.surfaces[0].double_sided && mat.surfaces[0].base_map.width == 8);
+	assert_true(mat.surfaces[1].alpha == 0.5f && !mat.surfaces[1].base_map.width);
+	material_release(&mat);
+	/* Base colour off: no alpha, the sides stay. */
+	cfg.base_color = MATERIAL_OFF;
+	assert_int_equal(material_load(&mat, &cfg, &m, true), 0);
+	assert_int_equal(mat.surfaces[1].alpha_mode, MESH_ALPHA_OPAQUE);
+	assert_true(mat.surfaces[0].double_sided);
+	material_release(&mat);
+	mesh_release(&m);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -423,6 +506,7 @@ int main(void)
 	    cmocka_unit_test(packed_and_simplified),
 	    cmocka_unit_test(decodes_only_what_is_used),
 	    cmocka_unit_test(one_colour_is_a_constant),
+	    cmocka_unit_test(each_primitive_keeps_its_material),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);
 }

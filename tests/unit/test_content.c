@@ -75,6 +75,58 @@ static void falls_back_unless_strict(void **state)
 	assert_null(s.matcap.rgba);
 }
 
+static void ends_with(const char *path, const char *tail)
+{
+	size_t n = strlen(path), t = strlen(tail);
+
+	if (n < t || strcmp(path + n - t, tail))
+		fail_msg("%s does not end with %s", path, tail);
+}
+
+/* [scene] matcap_first: where a folder's cycle starts, the rest in name
+ * order and round; a name that is not there starts at the first (and
+ * says so); a rescan starts there again. The shipped folder starts at
+ * gold, where nothing is set. */
+static void matcap_first(void **state)
+{
+	struct content_config o = {.matcap = dir};
+	struct content s;
+	char path[128];
+
+	(void)state;
+	copy_matcap("gold.png", "a.png");
+	copy_matcap("pearl.png", "b.png");
+	copy_matcap("skin.png", "c.png");
+	assert_int_equal(content_load(&s, &o, true), 0);
+	ends_with(matcap_set_path(s.set, 0), "/a.png");
+	content_release(&s);
+	o.matcap_first = "c";
+	assert_int_equal(content_load(&s, &o, true), 0);
+	ends_with(matcap_set_path(s.set, 0), "/c.png");
+	ends_with(matcap_set_path(s.set, 1), "/a.png");
+	ends_with(matcap_set_path(s.set, 2), "/b.png");
+	copy_matcap("clay-red.png", "0.png");
+	assert_int_equal(content_rescan_matcaps(&s), 0);
+	ends_with(matcap_set_path(s.set, 0), "/c.png");
+	ends_with(matcap_set_path(s.set, 1), "/0.png");
+	content_release(&s);
+	snprintf(path, sizeof(path), "%s/0.png", dir);
+	unlink(path);
+	o.matcap_first = "b.png";
+	assert_int_equal(content_load(&s, &o, true), 0);
+	ends_with(matcap_set_path(s.set, 0), "/b.png");
+	content_release(&s);
+	o.matcap_first = "nothing-called-this";
+	assert_int_equal(content_load(&s, &o, true), 0);
+	ends_with(matcap_set_path(s.set, 0), "/a.png");
+	content_release(&s);
+	/* The shipped folder (the tests run from the source tree). */
+	o = (struct content_config){0};
+	assert_int_equal(content_load(&s, &o, true), 0);
+	ends_with(matcap_set_path(s.set, 0), "/gold.png");
+	content_release(&s);
+}
+
 static void rescans_the_folder(void **state)
 {
 	struct content_config o = {.matcap = dir};
@@ -222,6 +274,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(falls_back_unless_strict),
 	    cmocka_unit_test_setup_teardown(rescans_the_folder, make_dir, remove_dir),
+	    cmocka_unit_test_setup_teardown(matcap_first, make_dir, remove_dir),
 	    cmocka_unit_test_setup_teardown(second_parse_sees_the_new_file, make_dir, remove_dir),
 	    cmocka_unit_test_setup_teardown(watch_reports_written_and_moved_files, make_dir,
 					    remove_dir),

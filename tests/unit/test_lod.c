@@ -360,6 +360,97 @@ static void keeps_seams_and_attributes(void **state)
 	mesh_release(&sphere);
 }
 
+/* The sphere as four parts (quarters by longitude), each with vertices of
+ * its own, as four glTF primitives are: range k, material k, every vertex
+ * of part k coloured k / 4. */
+static void four_parts(const struct mesh *s, struct mesh *m)
+{
+	uint32_t *local = malloc(s->vertex_count * sizeof(uint32_t));
+	uint32_t nv = 0, ni = 0, tris = s->index_count / 3, *part = malloc(tris * 4);
+
+	for (uint32_t t = 0; t < tris; t++) {
+		double x = 0, z = 0;
+
+		for (int k = 0; k < 3; k++)
+			x += s->positions[s->indices[t * 3 + k] * 3],
+			    z += s->positions[s->indices[t * 3 + k] * 3 + 2];
+		part[t] = (uint32_t)((atan2(x, z) + M_PI) / (M_PI / 2)) % 4;
+	}
+	assert_int_equal(mesh_alloc(m, s->index_count, s->index_count, true), 0);
+	assert_int_equal(mesh_alloc_colors(m), 0);
+	assert_int_equal(mesh_alloc_ranges(m, 4, 4), 0);
+	for (uint32_t k = 0; k < 4; k++) {
+		memset(local, 0xff, s->vertex_count * sizeof(uint32_t));
+		m->ranges[k].first_index = ni;
+		m->ranges[k].material = k;
+		for (uint32_t t = 0; t < tris; t++)
+			for (int j = 0; j < 3 && part[t] == k; j++) {
+				uint32_t v = s->indices[t * 3 + j];
+
+				if (local[v] == UINT32_MAX) {
+					local[v] = nv;
+					memcpy(m->positions + nv * 3, s->positions + v * 3, 12);
+					memcpy(m->normals + nv * 3, s->normals + v * 3, 12);
+					memcpy(m->uvs + nv * 2, s->uvs + v * 2, 8);
+					for (int c = 0; c < 4; c++)
+						m->colors[nv * 4 + c] = k / 4.0f;
+					nv++;
+				}
+				m->indices[ni++] = local[v];
+			}
+		m->ranges[k].index_count = ni - m->ranges[k].first_index;
+	}
+	m->vertex_count = nv;
+	m->index_count = ni;
+	free(local);
+	free(part);
+}
+
+/* Simplified, a model of four materials keeps each triangle in its part's
+ * range (all its corners of that part) and opens no crack between parts:
+ * every directed edge, by position, still has its reverse, across the
+ * parts' borders too. */
+static void several_materials_keep_their_triangles_and_no_crack(void **state)
+{
+	struct mesh sphere, m;
+	struct lod_result r;
+	uint32_t at = 0;
+
+	(void)state;
+	assert_int_equal(mesh_uv_sphere(&sphere, 64, 32), 0);
+	four_parts(&sphere, &m);
+	assert_int_equal(lod_prepare_mesh(&m, 4.0, 160, 90, &r), 0);
+	assert_true(r.triangles_after < r.triangles_before / 2);
+	assert_int_equal(m.range_count, 4);
+	for (uint32_t k = 0; k < 4; k++) {
+		assert_int_equal(m.ranges[k].first_index, at);
+		assert_int_equal(m.ranges[k].material, k);
+		assert_true(m.ranges[k].index_count > 0);
+		for (uint32_t i = at; i < at + m.ranges[k].index_count; i++)
+			assert_true(m.colors[m.indices[i] * 4] == k / 4.0f);
+		at += m.ranges[k].index_count;
+	}
+	assert_int_equal(at, m.index_count);
+	for (uint32_t t = 0; t < m.index_count; t++) {
+		const float *a = vec_at(m.positions, m.indices[t], 3);
+		const float *b = vec_at(m.positions, m.indices[t - t % 3 + (t + 1) % 3], 3);
+		int found = 0;
+
+		if (same_point(a, b))
+			continue;
+		for (uint32_t u = 0; u < m.index_count && !found; u++) {
+			const float *c = vec_at(m.positions, m.indices[u], 3);
+			const float *d = vec_at(m.positions, m.indices[u - u % 3 + (u + 1) % 3], 3);
+
+			found = same_point(c, b) && same_point(d, a);
+		}
+		if (!found)
+			fail_msg("triangle %u: its edge has no neighbour: a crack", t / 3);
+	}
+	mesh_release(&m);
+	mesh_release(&sphere);
+}
+
 static int compare_triangle(const void *a, const void *b)
 {
 	return memcmp(a, b, 36);
@@ -437,6 +528,7 @@ int main(void)
 	    cmocka_unit_test(follows_the_display),
 	    cmocka_unit_test(surface_and_normals_within_bounds),
 	    cmocka_unit_test(keeps_seams_and_attributes),
+	    cmocka_unit_test(several_materials_keep_their_triangles_and_no_crack),
 	    cmocka_unit_test(creases_do_not_stop_it),
 	    cmocka_unit_test(zero_budget_only_reorders),
 	    cmocka_unit_test(degenerate_meshes),

@@ -33,7 +33,6 @@ struct fixture {
 	char dir[64];
 	struct mesh mesh;
 	struct mesh_packed packed;
-	struct mesh_material material;
 	struct mesh_cache_key key;
 };
 
@@ -45,10 +44,20 @@ static int setup(void **state)
 	snprintf(f->dir, sizeof(f->dir), "/tmp/mk-cache-XXXXXX");
 	assert_non_null(mkdtemp(f->dir));
 	assert_int_equal(mesh_uv_sphere(&f->mesh, 24, 12), 0);
+	f->mesh.material.present = true;
+	f->mesh.material.base_color[1] = 0.25f;
+	/* Two parts: the upper half opaque, the lower blended, double sided. */
+	assert_int_equal(mesh_alloc_ranges(&f->mesh, 2, 2), 0);
+	f->mesh.ranges[0] = (struct mesh_range){0, f->mesh.index_count / 6 * 3, 0, {0, 0, 0}};
+	f->mesh.ranges[1] = (struct mesh_range){f->mesh.ranges[0].index_count,
+						f->mesh.index_count - f->mesh.ranges[0].index_count,
+						1,
+						{0, 0, 0}};
+	mesh_range_centers(&f->mesh);
+	f->mesh.materials[1].alpha_mode = MESH_ALPHA_BLEND;
+	f->mesh.materials[1].base_alpha = 0.5f;
+	f->mesh.materials[1].double_sided = true;
 	assert_int_equal(mesh_pack(&f->mesh, VERTEX_COMPACT, &f->packed), 0);
-	mesh_material_default(&f->material);
-	f->material.present = true;
-	f->material.base_color[1] = 0.25f;
 	f->key = (struct mesh_cache_key){.content = 0x1234, .settings = 0x5678};
 	log_set_level(LOG_ERR);
 	*state = f;
@@ -113,7 +122,7 @@ static void an_entry_reads_back_as_written(void **state)
 
 	assert_int_equal(mesh_cache_open(f->dir, &f->key, &e), -ENOENT);
 	assert_int_equal(
-	    mesh_cache_write(f->dir, &f->key, &f->packed, &f->material, MESH_CACHE_MAX_BYTES), 0);
+	    mesh_cache_write(f->dir, &f->key, &f->packed, &f->mesh, MESH_CACHE_MAX_BYTES), 0);
 	assert_int_equal(mesh_cache_open(f->dir, &f->key, &e), 0);
 	m = mesh_cache_entry_mesh(e);
 	assert_int_equal(m->vertex_count, f->packed.vertex_count);
@@ -122,7 +131,17 @@ static void an_entry_reads_back_as_written(void **state)
 	assert_memory_equal(m->arrays[MESH_POSITIONS], f->packed.arrays[MESH_POSITIONS], bytes);
 	assert_memory_equal(m->indices, f->packed.indices, f->packed.index_count * 4);
 	assert_null(m->arrays[MESH_TANGENTS]);
-	assert_true(mesh_cache_entry_material(e)->base_color[1] == 0.25f);
+	assert_true(mesh_cache_entry_materials(e)->material.base_color[1] == 0.25f);
+	/* The ranges and their materials, as written. */
+	assert_int_equal(m->range_count, 2);
+	assert_memory_equal(m->ranges, f->mesh.ranges, 2 * sizeof(struct mesh_range));
+	assert_int_equal(mesh_cache_entry_materials(e)->material_count, 2);
+	{
+		const struct mesh_material *b = &mesh_cache_entry_materials(e)->materials[1];
+
+		assert_int_equal(b->alpha_mode, MESH_ALPHA_BLEND);
+		assert_true(b->base_alpha == 0.5f && b->double_sided && b->alpha_cutoff == 0.5f);
+	}
 	mesh_cache_entry_free(e);
 }
 
@@ -132,14 +151,15 @@ static void a_damaged_entry_is_refused(void **state)
 {
 	struct fixture *f = *state;
 	struct mesh_packed out;
-	struct mesh_material mat;
+	struct mesh mat;
 	size_t size;
 	unsigned char *data;
 
 	assert_int_equal(
-	    mesh_cache_write(f->dir, &f->key, &f->packed, &f->material, MESH_CACHE_MAX_BYTES), 0);
+	    mesh_cache_write(f->dir, &f->key, &f->packed, &f->mesh, MESH_CACHE_MAX_BYTES), 0);
 	data = read_entry(f, &size);
 	assert_int_equal(mesh_cache_parse(data, size, &f->key, &out, &mat, NULL), 0);
+	mesh_release(&mat);
 	for (size_t n = 0; n < size; n += n < 512 ? 1 : 97)
 		assert_int_equal(mesh_cache_parse(data, n, &f->key, &out, &mat, NULL), -EBADMSG);
 	for (size_t i = 0; i < size; i += i < 256 ? 1 : 13)
@@ -163,10 +183,36 @@ static void a_resealed_entry_is_still_checked(void **state)
 	uint32_t bad;
 
 	assert_int_equal(
-	    mesh_cache_write(f->dir, &f->key, &f->packed, &f->material, MESH_CACHE_MAX_BYTES), 0);
+	    mesh_cache_write(f->dir, &f->key, &f->packed, &f->mesh, MESH_CACHE_MAX_BYTES), 0);
 	data = read_entry(f, &size);
+	/* The records (materials, then ranges) end the payload, 8-aligned;
+	 * the last index is before them. */
+	size_t records = (3 * mesh_cache_record_words(MESH_CACHE_MATERIAL) +
+			  2 * mesh_cache_record_words(MESH_CACHE_RANGE)) *
+			 4;
+	size_t last_index =
+	    size - ((records + 7) & ~(size_t)7) - 4 - (f->packed.index_count % 2 ? 4 : 0);
+	size_t range1 = size - ((records + 7) & ~(size_t)7) + records -
+			mesh_cache_record_words(MESH_CACHE_RANGE) * 4;
+
 	bad = f->packed.vertex_count;
-	memcpy(data + size - 4 - (f->packed.index_count % 2 ? 4 : 0), &bad, 4);
+	memcpy(data + last_index, &bad, 4);
+	mesh_cache_reseal(data, size);
+	assert_int_equal(mesh_cache_parse(data, size, NULL, &out, NULL, NULL), -EBADMSG);
+	memcpy(data + last_index, f->packed.indices + f->packed.index_count - 1, 4);
+	mesh_cache_reseal(data, size);
+	assert_int_equal(mesh_cache_parse(data, size, NULL, &out, NULL, NULL), 0);
+	/* The second range starting one triangle late (a gap), then with a
+	 * material that does not exist: refused. */
+	memcpy(&bad, data + range1, 4);
+	bad += 3;
+	memcpy(data + range1, &bad, 4);
+	mesh_cache_reseal(data, size);
+	assert_int_equal(mesh_cache_parse(data, size, NULL, &out, NULL, NULL), -EBADMSG);
+	bad -= 3;
+	memcpy(data + range1, &bad, 4);
+	bad = 2;
+	memcpy(data + range1 + 8, &bad, 4);
 	mesh_cache_reseal(data, size);
 	assert_int_equal(mesh_cache_parse(data, size, NULL, &out, NULL, NULL), -EBADMSG);
 	/* A size that does not match the layout, resealed. */
@@ -185,7 +231,7 @@ static void another_key_or_version_is_a_miss(void **state)
 	unsigned char *data;
 
 	assert_int_equal(
-	    mesh_cache_write(f->dir, &f->key, &f->packed, &f->material, MESH_CACHE_MAX_BYTES), 0);
+	    mesh_cache_write(f->dir, &f->key, &f->packed, &f->mesh, MESH_CACHE_MAX_BYTES), 0);
 	data = read_entry(f, &size);
 	assert_int_equal(mesh_cache_parse(data, size, &other, &out, NULL, NULL), -EBADMSG);
 	assert_int_equal(mesh_cache_open(f->dir, &other, &e), -ENOENT);
@@ -211,7 +257,7 @@ static void the_directory_stays_under_its_bound(void **state)
 	void *data;
 
 	assert_int_equal(
-	    mesh_cache_write(f->dir, &f->key, &f->packed, &f->material, MESH_CACHE_MAX_BYTES), 0);
+	    mesh_cache_write(f->dir, &f->key, &f->packed, &f->mesh, MESH_CACHE_MAX_BYTES), 0);
 	data = read_entry(f, &size);
 	free(data);
 	/* Room for two: the third write removes the oldest. */
@@ -219,8 +265,7 @@ static void the_directory_stays_under_its_bound(void **state)
 		struct mesh_cache_key key = {.content = k, .settings = 0};
 
 		assert_int_equal(
-		    mesh_cache_write(f->dir, &key, &f->packed, &f->material, 2 * size + size / 2),
-		    0);
+		    mesh_cache_write(f->dir, &key, &f->packed, &f->mesh, 2 * size + size / 2), 0);
 		usleep(20000); /* distinct times, coarse file systems too */
 	}
 	{
@@ -273,6 +318,49 @@ static void the_key_follows_the_bytes(void **state)
 		assert_true(a == mesh_cache_hash(bytes, n, 1));
 		free(bytes);
 	}
+}
+
+static int by_offset(const void *a, const void *b)
+{
+	const struct mesh_cache_field *x = a, *y = b;
+
+	return (x->offset > y->offset) - (x->offset < y->offset);
+}
+
+/* Every byte of the struct is a field of the table or the padding the
+ * next field's alignment makes: a field added to the struct and not to
+ * the table (stored, or named as not stored) leaves a hole and fails. */
+static void check_table(enum mesh_cache_table t, size_t struct_size, size_t struct_align)
+{
+	size_t n, end = 0;
+	const struct mesh_cache_field *table = mesh_cache_fields(t, &n);
+	struct mesh_cache_field *f = malloc(n * sizeof(*f));
+
+	memcpy(f, table, n * sizeof(*f));
+	qsort(f, n, sizeof(*f), by_offset);
+	for (size_t i = 0; i < n; i++) {
+		size_t expected = (end + f[i].align - 1) / f[i].align * f[i].align;
+
+		if (f[i].offset != expected)
+			fail_msg("%s: a field of %zu bytes before it has no entry in the cache's "
+				 "table (src/scene/mesh_cache_fields.c)",
+				 f[i].name, f[i].offset - end);
+		end = f[i].offset + f[i].size;
+	}
+	if ((end + struct_align - 1) / struct_align * struct_align != struct_size)
+		fail_msg("a field after %s has no entry in the cache's table", f[n - 1].name);
+	free(f);
+}
+
+static void every_field_is_in_the_cache_table(void **state)
+{
+	(void)state;
+	check_table(MESH_CACHE_MATERIAL, sizeof(struct mesh_material),
+		    _Alignof(struct mesh_material));
+	check_table(MESH_CACHE_RANGE, sizeof(struct mesh_range), _Alignof(struct mesh_range));
+	/* Stored: every field but the four images. */
+	assert_int_equal(mesh_cache_record_words(MESH_CACHE_RANGE), 6);
+	assert_int_equal(mesh_cache_record_words(MESH_CACHE_MATERIAL), 33);
 }
 
 static void the_directory_is_named_as_systemd_and_xdg_say(void **state)
@@ -363,6 +451,7 @@ int main(void)
 	    cmocka_unit_test_setup_teardown(the_key_follows_the_bytes, setup, teardown),
 	    cmocka_unit_test_setup_teardown(content_maps_a_model_prepared_before, setup, teardown),
 	    cmocka_unit_test(the_directory_is_named_as_systemd_and_xdg_say),
+	    cmocka_unit_test(every_field_is_in_the_cache_table),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

@@ -3,6 +3,7 @@
  * turned for a portrait panel the way the renderer turns the model
  * (mat4_rotate_z), so its top-left lands where the model's would. */
 #include "display/display.h"
+#include "render/background.h"
 #include "render/poster.h"
 #include "util/log.h"
 
@@ -17,7 +18,7 @@
 #define W 96
 #define H 64
 
-static const float background[3] = {0, 1, 0}; /* green */
+static const struct background_spec green = {BACKGROUND_COLOR, {0, 1, 0}, {0, 1, 0}, NULL};
 
 static int setup(void **state)
 {
@@ -76,11 +77,15 @@ static char colour_at(const struct image *frame, int x, int y)
 
 static void draw(struct display *d, int w, int h, int rotation, struct image *frame)
 {
+	struct background *bg;
 	struct image img;
 
 	make_picture(&img, w, h);
 	assert_int_equal(d->begin_frame(d), 0);
-	assert_int_equal(poster_draw(&d->gl, &img, W, H, rotation, background), 0);
+	bg = background_new(&d->gl, &green, NULL);
+	assert_non_null(bg);
+	assert_int_equal(poster_draw(&d->gl, &img, W, H, rotation, bg), 0);
+	background_free(bg);
 	assert_int_equal(d->present(d), 0);
 	assert_int_equal(d->read_frame(d, frame), 0);
 	image_release(&img);
@@ -125,10 +130,13 @@ static void turned(void **state)
 static void background_only(void **state)
 {
 	struct display *d = *state;
+	struct background *bg = background_new(&d->gl, &green, NULL);
 	struct image frame;
 
+	assert_non_null(bg);
 	assert_int_equal(d->begin_frame(d), 0);
-	assert_int_equal(poster_draw(&d->gl, NULL, W, H, 0, background), 0);
+	assert_int_equal(poster_draw(&d->gl, NULL, W, H, 0, bg), 0);
+	background_free(bg);
 	assert_int_equal(d->present(d), 0);
 	assert_int_equal(d->read_frame(d, &frame), 0);
 	assert_int_equal(colour_at(&frame, W / 2, H / 2), 'g');

@@ -17,6 +17,9 @@ const height = parseInt(q.get('h') || '240', 10);
 const yaw = parseFloat(q.get('yaw') || '-30');
 const pitch = parseFloat(q.get('pitch') || '20');
 const baseColor = (q.get('basecolor') || 'auto') !== 'off';
+// [scene] fit's scale of the picture, as the kiosk logged it: three.js's
+// camera zoom scales the frustum exactly as the kiosk's clip space.
+const zoom = parseFloat(q.get('zoom') || '1');
 const out = document.getElementById('out');
 
 function fitDistance(aspect) {
@@ -51,14 +54,36 @@ function fitTransform(root) {
 	return fit;
 }
 
+// The glTF material's alpha as GLTFLoader reads it (MASK: alphaTest;
+// BLEND: transparent, no depth writes), with its colour: as the kiosk,
+// alpha comes with the base colour.
 function matcapMaterial(m, matcap) {
 	const p = { matcap, side: m.side };
 	if (baseColor) {
 		p.color = m.color;
 		p.map = m.map;
 		p.vertexColors = m.vertexColors;
+		p.opacity = m.opacity;
+		p.transparent = m.transparent;
+		p.alphaTest = m.alphaTest;
+		p.depthWrite = m.depthWrite;
 	}
 	return new THREE.MeshMatcapMaterial(p);
+}
+
+// three.js orders transparent meshes by their origin's depth; the kiosk
+// (src/render/draw_list.c), and the glTF spec's advice, by each part's
+// bounding box: the farthest part first. The same rule here.
+function orderBlended(scene, camera) {
+	const v = new THREE.Vector3();
+	scene.updateMatrixWorld(true);
+	scene.traverse((o) => {
+		if (!o.isMesh || !o.material.transparent)
+			return;
+		o.geometry.computeBoundingBox();
+		o.geometry.boundingBox.getCenter(v).applyMatrix4(o.matrixWorld);
+		o.renderOrder = -v.distanceTo(camera.position);
+	});
 }
 
 async function main() {
@@ -92,7 +117,10 @@ async function main() {
 	const dist = fitDistance(aspect);
 	const camera = new THREE.PerspectiveCamera(FOV_Y_DEGREES, aspect, dist - 1.5, dist + 1.5);
 	camera.position.set(0, 0, dist);
+	camera.zoom = zoom;
+	camera.updateProjectionMatrix();
 
+	orderBlended(scene, camera);
 	renderer.render(scene, camera);
 	out.textContent = renderer.domElement.toDataURL('image/png');
 }

@@ -1,0 +1,61 @@
+/* The draws of one mesh: its ranges (struct mesh_range) as the renderer
+ * issues them, grouped so that programs and textures change as rarely as
+ * possible (opaque, then masked, each by material), then the blended ones
+ * farthest first. Without 32-bit indices (OES_element_index_uint) a range
+ * over more than 65536 vertices is cut into chunks of 16-bit indices,
+ * each relative to its own first vertex (the attribute arrays are bound
+ * from there), not expanded into unindexed triangles: each chunk's
+ * vertices are gathered into the arrays uploaded (only those chunks share
+ * are copied twice). Pure logic: no GL. */
+#ifndef MK_DRAW_LIST_H
+#define MK_DRAW_LIST_H
+
+#include "scene/material.h"
+#include "scene/mesh.h"
+
+#include <stdbool.h>
+#include <stdint.h>
+
+struct draw_item {
+	uint32_t first, count; /* into the index buffer uploaded, in indices */
+	uint32_t base_vertex;  /* added to each index (16-bit chunks), else 0 */
+	uint32_t surface;      /* material.surfaces[] */
+	int alpha_mode;	       /* enum mesh_alpha */
+	bool double_sided;
+	float center[3]; /* model space: blended items are ordered by it */
+};
+
+struct draw_list {
+	struct draw_item *items;
+	uint32_t count;
+	uint32_t blend_first; /* items[blend_first..count) blend */
+	bool wide;	      /* 32-bit indices in indices32; else indices16 */
+	uint16_t *indices16;
+	const uint32_t *indices32; /* borrowed: the mesh's own */
+	uint32_t index_count;	   /* in indices16 or indices32 */
+	/* Chunked: the arrays to upload are vertex gather[i] for each i
+	 * (base_vertex counts in these); NULL: the arrays as they are. */
+	uint32_t *gather;
+	uint32_t gather_count;
+};
+
+/* ranges NULL (range_count 0): one range over every index with surface 0.
+ * surfaces give each range's alpha mode and sides (NULL: opaque, one
+ * sided). wide: the GPU takes 32-bit indices. Returns 0 or -ENOMEM. */
+int draw_list_build(struct draw_list *l, const struct mesh_range *ranges, uint32_t range_count,
+		    const uint32_t *indices, uint32_t index_count, uint32_t vertex_count,
+		    const struct material_surface *surfaces, uint32_t surface_count, bool wide);
+void draw_list_release(struct draw_list *l);
+
+/* The renderer's program variant an item draws with: its alpha mode, + 3
+ * when double sided. */
+static inline int draw_item_variant(const struct draw_item *it)
+{
+	return it->alpha_mode + (it->double_sided ? 3 : 0);
+}
+
+/* The blended items back to front for this model-view (column-major): the
+ * farthest center (most negative eye-space z) first. */
+void draw_list_sort_blended(struct draw_list *l, const float modelview[16]);
+
+#endif

@@ -1,0 +1,64 @@
+/* Inside the renderer (render.c: state, uploads, programs; render_draw.c:
+ * the draws of a frame): its state, shared by the two files only. */
+#ifndef MK_RENDER_PRIV_H
+#define MK_RENDER_PRIV_H
+
+#include "render/background.h"
+#include "render/draw_list.h"
+#include "render/gl.h"
+#include "render/shader.h"
+#include "render/shading.h"
+#include "scene/material.h"
+#include "scene/mesh_pack.h"
+
+enum { UNIT_MATCAP, UNIT_DETAIL, UNIT_RAMP, UNIT_BASE };
+
+/* A range's program variant: its alphaMode (enum mesh_alpha), + 3 when
+ * double sided. */
+enum { VARIANTS = 6 };
+
+struct program {
+	GLuint id;
+	unsigned features; /* enum material_feature and material_variant bits */
+	GLint modelview, projection, normal_matrix, matcap, detail, ramp, base_map, base_transform;
+	GLint iridescence, hsv, light, base_color, shininess, alpha;
+};
+
+struct renderer {
+	const struct gl *gl;
+	const char *shader_dir;
+	/* [mode][ortho][lit][variant] */
+	struct program programs[SHADING_MODE_COUNT][2][2][VARIANTS];
+	struct program *current; /* the matcap program, or the lit one alone */
+	struct program *beside;	 /* lit = beside: the lit program, drawn right */
+	/* The variants of each, [0] the opaque one (current, beside). */
+	struct program *variants[2][VARIANTS];
+	enum shading_mode mode;
+	bool ortho, mode_set;
+	bool highp;	     /* every float highp (PRECISION_HIGHP): see renderer_new */
+	struct material mat; /* the features and their numbers; no images, no surfaces */
+	GLuint vbo[SHADER_ATTR_COUNT], ibo, matcap, detail, ramp;
+	/* Per material (surfaces): its base map (0: none) and the rest. */
+	uint32_t surface_count;
+	GLuint *base_maps;
+	struct material_surface *surfaces; /* their images left empty */
+	bool variant_used[VARIANTS];	   /* by some range */
+	struct draw_list list;
+	GLuint matcap_override; /* another's texture as the matcap (the camera's); 0: none */
+	long attr_bytes[SHADER_ATTR_COUNT]; /* 0: not uploaded */
+	GLenum index_type;
+	enum vertex_format format;     /* for the next renderer_set_mesh */
+	enum vertex_format drawn;      /* of the arrays uploaded */
+	float position_scale;	       /* int16 positions: the model units of 1.0 */
+	int matcap_filter;	       /* enum matcap_filter (render.h) */
+	bool matcap_mippable;	       /* the image texture's size can have a chain */
+	bool matcap_has_mips;	       /* it has its mipmap chain */
+	int matcap_side;	       /* its shorter side, texels */
+	bool matcap_mipmapped;	       /* its minifying filter now reads the chain */
+	struct background *background; /* NULL: the view's clear colour */
+};
+
+/* The matcap's minifying filter for a viewport (render.c). */
+void render_matcap_choose_filter(struct renderer *r, const int vp[4]);
+
+#endif

@@ -1,0 +1,193 @@
+#include "gltf_parts.h"
+
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MAX_IMAGES 64
+
+static size_t pad4(size_t n)
+{
+	return (n + 3) & ~(size_t)3;
+}
+
+static unsigned char *slurp(const char *path, size_t *len)
+{
+	FILE *f = fopen(path, "rb");
+	unsigned char *p = NULL;
+	long n;
+
+	if (!f)
+		return NULL;
+	if (!fseek(f, 0, SEEK_END) && (n = ftell(f)) > 0 && !fseek(f, 0, SEEK_SET)) {
+		p = malloc((size_t)n);
+		if (p && fread(p, 1, (size_t)n, f) != (size_t)n) {
+			free(p);
+			p = NULL;
+		}
+		*len = (size_t)n;
+	}
+	fclose(f);
+	return p;
+}
+
+struct blob {
+	unsigned char *data;
+	size_t size;
+};
+
+/* Appends bytes 4-aligned; returns their offset. */
+static size_t put(struct blob *b, const void *p, size_t n)
+{
+	size_t at = b->size;
+
+	b->data = realloc(b->data, pad4(at + n));
+	memcpy(b->data + at, p, n);
+	memset(b->data + at + n, 0, pad4(at + n) - at - n);
+	b->size = pad4(at + n);
+	return at;
+}
+
+/* A part's four views (positions, normals, uvs, indices) and accessors,
+ * numbered 4 k .. 4 k + 3. */
+static void part_views(FILE *views, FILE *accessors, struct blob *b, const struct mesh *m, int k)
+{
+	size_t nv = m->vertex_count, off[4],
+	       len[4] = {nv * 12, nv * 12, nv * 8, m->index_count * 4};
+	float lo[3] = {1e30f, 1e30f, 1e30f}, hi[3] = {-1e30f, -1e30f, -1e30f};
+
+	off[0] = put(b, m->positions, len[0]);
+	off[1] = put(b, m->normals, len[1]);
+	off[2] = put(b, m->uvs, len[2]);
+	off[3] = put(b, m->indices, len[3]);
+	for (size_t i = 0; i < nv * 3; i++) {
+		lo[i % 3] = m->positions[i] < lo[i % 3] ? m->positions[i] : lo[i % 3];
+		hi[i % 3] = m->positions[i] > hi[i % 3] ? m->positions[i] : hi[i % 3];
+	}
+	for (int v = 0; v < 4; v++)
+		fprintf(views, "%s{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu}",
+			k || v ? "," : "", off[v], len[v]);
+	fprintf(accessors,
+		"%s{\"bufferView\":%d,\"componentType\":5126,\"count\":%zu,\"type\":\"VEC3\","
+		"\"min\":[%g,%g,%g],\"max\":[%g,%g,%g]}",
+		k ? "," : "", 4 * k, nv, lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
+	fprintf(accessors,
+		",{\"bufferView\":%d,\"componentType\":5126,\"count\":%zu,\"type\":\"VEC3\"}"
+		",{\"bufferView\":%d,\"componentType\":5126,\"count\":%zu,\"type\":\"VEC2\"}"
+		",{\"bufferView\":%d,\"componentType\":5125,\"count\":%u,\"type\":\"SCALAR\"}",
+		4 * k + 1, nv, 4 * k + 2, nv, 4 * k + 3, m->index_count);
+}
+
+static char *stream_text(FILE *f, char **buf)
+{
+	fclose(f);
+	return *buf;
+}
+
+int gltf_write_parts(const char *path, const struct gltf_part *parts, int n)
+{
+	char *vbuf = NULL, *abuf = NULL, *mbuf = NULL, *pbuf = NULL, *ibuf = NULL, *json = NULL;
+	size_t vs = 0, as = 0, ms = 0, ps = 0, is = 0, js = 0;
+	FILE *views = open_memstream(&vbuf, &vs), *acc = open_memstream(&abuf, &as),
+	     *mats = open_memstream(&mbuf, &ms), *prims = open_memstream(&pbuf, &ps),
+	     *imgs = open_memstream(&ibuf, &is), *out;
+	struct blob b = {NULL, 0};
+	int material = -1, images = 0, ret = -1;
+	size_t img_off[MAX_IMAGES], img_len[MAX_IMAGES];
+
+	for (int k = 0; k < n; k++) {
+		part_views(views, acc, &b, parts[k].mesh, k);
+		if (parts[k].own_material || material < 0) {
+			material++;
+			fprintf(mats,
+				"%s{\"pbrMetallicRoughness\":{\"baseColorFactor\":[%g,%g,%g,%g]",
+				material ? "," : "", parts[k].factor[0], parts[k].factor[1],
+				parts[k].factor[2], parts[k].factor[3]);
+			if (parts[k].png) {
+				size_t len = 0;
+				unsigned char *png = slurp(parts[k].png, &len);
+
+				if (!png)
+					goto out;
+				if (images == MAX_IMAGES) {
+					free(png);
+					goto out;
+				}
+				img_off[images] = put(&b, png, len);
+				img_len[images] = len;
+				free(png);
+				fprintf(imgs, "%s{\"bufferView\":%d,\"mimeType\":\"image/png\"}",
+					images ? "," : "", 4 * n + images);
+				fprintf(mats, ",\"baseColorTexture\":{\"index\":%d%s%s}", images,
+					parts[k].texture_info ? "," : "",
+					parts[k].texture_info ? parts[k].texture_info : "");
+				images++;
+			}
+			fprintf(mats, ",\"metallicFactor\":0}%s%s}", parts[k].material ? "," : "",
+				parts[k].material ? parts[k].material : "");
+		}
+		fprintf(prims,
+			"%s{\"attributes\":{\"POSITION\":%d,\"NORMAL\":%d,\"TEXCOORD_0\":%d},"
+			"\"indices\":%d,\"material\":%d}",
+			k ? "," : "", 4 * k, 4 * k + 1, 4 * k + 2, 4 * k + 3, material);
+	}
+	/* The images' views after every part's. */
+	for (int i = 0; i < images; i++)
+		fprintf(views, ",{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu}", img_off[i],
+			img_len[i]);
+	out = open_memstream(&json, &js);
+	fprintf(out,
+		"{\"asset\":{\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{\"nodes\":[0]}],"
+		"\"nodes\":[{\"mesh\":0}],\"meshes\":[{\"primitives\":[%s]}],\"materials\":[%s],"
+		"\"accessors\":[%s],\"bufferViews\":[%s],\"buffers\":[{\"byteLength\":%zu}]",
+		stream_text(prims, &pbuf), stream_text(mats, &mbuf), stream_text(acc, &abuf),
+		stream_text(views, &vbuf), b.size);
+	prims = mats = acc = views = NULL;
+	stream_text(imgs, &ibuf);
+	imgs = NULL;
+	if (images) {
+		fprintf(out, ",\"images\":[%s],\"textures\":[", ibuf);
+		for (int i = 0; i < images; i++)
+			fprintf(out, "%s{\"source\":%d}", i ? "," : "", i);
+		fprintf(out, "]");
+	}
+	fprintf(out, "}");
+	fclose(out);
+	{
+		FILE *f = fopen(path, "wb");
+		uint32_t jpad = (uint32_t)pad4(js), total = 12 + 8 + jpad + 8 + (uint32_t)b.size;
+		uint32_t hdr[3] = {0x46546C67, 2, total}, jc[2] = {jpad, 0x4E4F534A},
+			 bc[2] = {(uint32_t)b.size, 0x004E4942};
+
+		if (!f)
+			goto out;
+		fwrite(hdr, 4, 3, f);
+		fwrite(jc, 4, 2, f);
+		fwrite(json, 1, js, f);
+		for (size_t i = js; i < jpad; i++)
+			fputc(' ', f);
+		fwrite(bc, 4, 2, f);
+		fwrite(b.data, 1, b.size, f);
+		ret = fclose(f) ? -1 : 0;
+	}
+out:
+	if (views)
+		fclose(views);
+	if (acc)
+		fclose(acc);
+	if (mats)
+		fclose(mats);
+	if (prims)
+		fclose(prims);
+	if (imgs)
+		fclose(imgs);
+	free(vbuf);
+	free(abuf);
+	free(mbuf);
+	free(pbuf);
+	free(ibuf);
+	free(json);
+	free(b.data);
+	return ret;
+}

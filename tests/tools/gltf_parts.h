@@ -1,0 +1,24 @@
+/* Writes a GLB of several primitives, each with a material of its own: the
+ * several-material test models (parts with their own base maps, alpha
+ * MASK and BLEND, double-sided). */
+#ifndef MK_GLTF_PARTS_H
+#define MK_GLTF_PARTS_H
+
+#include "scene/mesh.h"
+
+struct gltf_part {
+	const struct mesh *mesh; /* positions, normals, uvs (required), indices */
+	double factor[4];	 /* baseColorFactor */
+	const char *png;	 /* baseColorTexture, embedded; NULL: none */
+	/* More members of the material, e.g. "\"alphaMode\":\"MASK\"" (NULL: none). */
+	const char *material;
+	/* Members of the primitive's baseColorTexture besides index (e.g. a
+	 * KHR_texture_transform's "extensions"); NULL: none. */
+	const char *texture_info;
+	int own_material; /* 0: the part shares the previous part's material */
+};
+
+/* One node, one mesh of n primitives. Returns 0 or -1. */
+int gltf_write_parts(const char *path, const struct gltf_part *parts, int n);
+
+#endif
