@@ -242,7 +242,7 @@ static void tex_coord_picks_the_uv_set(void **state)
 	assert_int_equal(
 	    gltf_load_textures(path, GLTF_TEXTURE_BASE_COLOR | GLTF_TEXTURE_NORMAL, &m), 0);
 	assert_non_null(m.uvs);
-	assert_int_equal(m.material.normal_map.width, 6);
+	assert_int_equal(m.materials[0].normal_map.width, 6);
 	assert_int_equal(m.materials[0].base_map.width, 0);
 	mesh_release(&m);
 }
