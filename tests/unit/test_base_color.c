@@ -433,15 +433,17 @@ static void each_primitive_keeps_its_material(void **state)
 	     "\"alphaMode\":\"MASK\",\"alphaCutoff\":0.3,"
 	     "\"doubleSided\":true",
 	     NULL,
-	     1},
-	    {&f->sphere, {0.2, 0.4, 1, 0.5}, NULL, "\"alphaMode\":\"BLEND\"", NULL, 1},
-	    {&f->sphere, {0, 0, 0, 1}, NULL, NULL, NULL, 0}, /* the BLEND one again */
+	     1,
+	     NULL},
+	    {&f->sphere, {0.2, 0.4, 1, 0.5}, NULL, "\"alphaMode\":\"BLEND\"", NULL, 1, NULL},
+	    {&f->sphere, {0, 0, 0, 1}, NULL, NULL, NULL, 0, NULL}, /* the BLEND one again */
 	    {&f->sphere,
 	     {1, 1, 1, 1},
 	     f->png,
 	     NULL,
 	     "\"extensions\":{\"KHR_texture_transform\":{\"offset\":[0.5,0]}}",
-	     1}};
+	     1,
+	     NULL}};
 	struct material_config cfg;
 	struct material mat;
 	char path[256];
