@@ -554,4 +554,17 @@ void renderer_get_stats(const struct renderer *r, struct renderer_stats *out)
 	out->matcap_mipmapped = r->matcap_mipmapped;
 	out->format = r->drawn;
 	out->draws = r->list.count;
+	for (uint32_t i = 0; r->current && i < r->list.count; i++) {
+		const struct program *q = r->variants[0][draw_item_variant(&r->list.items[i])];
+		uint32_t k = 0, n = out->program_count < 4 ? out->program_count : 4;
+
+		while (k < n && out->drawn[k].program != q->id)
+			k++;
+		if (k < n)
+			continue;
+		if (out->program_count++ < 4) {
+			out->drawn[k].program = q->id;
+			out->drawn[k].surface = r->list.items[i].surface;
+		}
+	}
 }
