@@ -2,11 +2,11 @@
  * issues them, grouped so that programs and textures change as rarely as
  * possible (opaque, then masked, each by program variant, then by
  * material), then the blended ones farthest first. Without 32-bit
- * indices (OES_element_index_uint) a range over more than 65536 vertices is cut into chunks of 16-bit indices,
- * each relative to its own first vertex (the attribute arrays are bound
- * from there), not expanded into unindexed triangles: each chunk's
- * vertices are gathered into the arrays uploaded (only those chunks share
- * are copied twice). Pure logic: no GL. */
+ * indices (OES_element_index_uint) a range over more than 65536 vertices
+ * is cut into chunks of 16-bit indices, each relative to its own first
+ * vertex (the attribute arrays are bound from there), not expanded into
+ * unindexed triangles: each chunk's vertices are gathered into the arrays
+ * uploaded (only those chunks share are copied twice). Pure logic: no GL. */
 #ifndef MK_DRAW_LIST_H
 #define MK_DRAW_LIST_H
 
