@@ -3,9 +3,11 @@
 #   make test       every test (unit, golden images, malformed input under ASan)
 #   make bench      speed figures (printed, never asserted)
 #   make install    PREFIX=/usr/local DESTDIR= (staging)
-#   make deps       install the packages this Debian release names them
-#                   (12 bookworm or 13 trixie; through sudo unless root)
-#   make test-trixie  make deps and make test in a Debian 13 chroot
+#   make deps       install what building and running need, under the names
+#                   this Debian release gives them (12 bookworm or 13 trixie;
+#                   through sudo unless root)
+#   make deps-test  add the test bench (make test says so when it is missing)
+#   make test-trixie  make deps, make deps-test and make test in a Debian 13 chroot
 #   make test-ansible the Ansible role (contrib/ansible) applied to a fresh root
 
 VERSION    := 0.1.0
@@ -139,34 +141,59 @@ include tests/tests.mk
 # Package names differ between releases: clang (and its runtime for the
 # fuzzers) is 14 on Debian 12 and 19 on Debian 13; OSMesa only while Mesa
 # has it. apt-get runs through sudo unless make already runs as root.
-# procps brings /bin/kill, which the unit's ExecReload names (a minimal
-# Debian 13 has none, and systemd-analyze verify says so).
 OS_CODENAME   := $(shell . /etc/os-release 2>/dev/null && echo $$VERSION_CODENAME)
 CLANG_VERSION ?= $(if $(filter bookworm,$(OS_CODENAME)),14,19)
 APT_GET       := $(if $(filter 0,$(shell id -u)),,sudo) env DEBIAN_FRONTEND=noninteractive apt-get
+# make deps: what building and running need, nothing more (a Pi gets no
+# test bench). procps brings /bin/kill, which the unit's ExecReload names
+# (a minimal Debian 13 has none); libcamera-ipa runs the camera matcap.
 DEBIAN_PACKAGES := make gcc g++ pkg-config libegl-dev libgles-dev \
 	libegl-mesa0 libgl1-mesa-dri libgbm-dev libdrm-dev libtinygltf-dev nlohmann-json3-dev \
-	libpng-dev libturbojpeg0-dev libcmocka-dev libinih-dev libudev-dev libsystemd-dev \
-	libgpiod-dev libevdev-dev libcamera-dev libcamera-ipa \
-	systemd procps clang-$(CLANG_VERSION) libclang-rt-$(CLANG_VERSION)-dev valgrind \
-	libmeshoptimizer-dev gnuplot-nox \
+	libpng-dev libturbojpeg0-dev libinih-dev libudev-dev libsystemd-dev \
+	libgpiod-dev libevdev-dev libcamera-dev libcamera-ipa libmeshoptimizer-dev libdraco-dev \
+	procps
+# make deps-test: the test bench on top. The unit tests' cmocka and zlib;
+# systemd-analyze for the unit; clang for the fuzzers; valgrind for the
+# soak; gnuplot for make report; the virtual board (qemu, busybox, kernel
+# modules, kmscube, the DRM, camera, GPIO and V4L2 tools); the model
+# corpus (Draco's and gltfpack's tools, assimp's sample files); the
+# board's USB stick images (FAT with files put in by mtools, ext2 by
+# mke2fs -d; no root or loop device needed); rsync for content by sync
+# (tests/e2e/sync.sh: real rsync into a live kiosk's folder); [status]
+# metrics scraped from a real node_exporter (tests/e2e/metrics.sh); the
+# Ansible role applied to a fresh root (tests/cross/ansible.sh).
+DEBIAN_TEST_PACKAGES := libcmocka-dev zlib1g-dev systemd \
+	clang-$(CLANG_VERSION) libclang-rt-$(CLANG_VERSION)-dev valgrind gnuplot-nox \
 	qemu-system-x86 busybox-static lz4 cpio kmod udev xz-utils kmscube libdrm-tests \
-	libcamera-tools gpiod v4l-utils
-# glTF: Draco meshes, and the tools and sample files of the model corpus test.
-DEBIAN_PACKAGES += libdraco-dev draco gltfpack assimp-testmodels
-# The board's USB stick images (tests/e2e/sticks.sh): FAT with files put
-# in by mtools, ext2 by mke2fs -d; no root or loop device needed.
-DEBIAN_PACKAGES += dosfstools mtools e2fsprogs
-# Content by sync (tests/e2e/sync.sh): real rsync into a live kiosk's folder.
-DEBIAN_PACKAGES += rsync
-# [status] metrics scraped from a real node_exporter (tests/e2e/metrics.sh);
-# the Ansible role applied to a fresh root (tests/cross/ansible.sh).
-DEBIAN_PACKAGES += prometheus-node-exporter curl ansible mmdebstrap
+	libcamera-tools gpiod v4l-utils \
+	draco gltfpack assimp-testmodels \
+	dosfstools mtools e2fsprogs rsync \
+	prometheus-node-exporter curl ansible mmdebstrap
 
 deps:
 	$(APT_GET) update -qq
 	osmesa=$$(apt-cache show libosmesa6-dev >/dev/null 2>&1 && echo libosmesa6-dev libosmesa6); \
 	$(APT_GET) install -y -qq --no-install-recommends $(DEBIAN_PACKAGES) $$osmesa
+
+deps-test:
+	$(APT_GET) update -qq
+	$(APT_GET) install -y -qq --no-install-recommends $(DEBIAN_TEST_PACKAGES)
+
+# The test targets say what is missing before anything is built (one
+# dpkg-query, read only when such a target is asked for).
+TEST_GOALS := $(filter test unit check golden bench,$(MAKECMDGOALS))
+ifneq ($(TEST_GOALS),)
+DEPS_INSTALLED := $(shell dpkg-query -W -f='$${db:Status-Abbrev} $${Package}\n' \
+	$(DEBIAN_PACKAGES) $(DEBIAN_TEST_PACKAGES) 2>/dev/null | sed -n 's/^ii *//p')
+DEPS_MISSING   := $(filter-out $(DEPS_INSTALLED),$(DEBIAN_PACKAGES))
+TEST_MISSING   := $(filter-out $(DEPS_INSTALLED),$(DEBIAN_TEST_PACKAGES))
+ifneq ($(DEPS_MISSING),)
+$(error make $(TEST_GOALS) needs $(DEPS_MISSING): run make deps, then make deps-test)
+endif
+ifneq ($(TEST_MISSING),)
+$(error make $(TEST_GOALS) needs the test bench ($(TEST_MISSING) missing): run make deps-test)
+endif
+endif
 
 # The tests on Debian 13 in a chroot made from Debian's archive (root:
 # debootstrap, mount and chroot; tests/trixie/chroot.sh says more).
@@ -216,4 +243,4 @@ format:
 clean:
 	rm -rf $(BUILD) matcap-kiosk tests/out
 
-.PHONY: all run matcaps deps test-trixie install uninstall format clean
+.PHONY: all run matcaps deps deps-test test-trixie install uninstall format clean

@@ -92,8 +92,11 @@ static bool decoded_images(const struct mesh *mesh)
 	bool any = m->normal_map.width || m->occlusion_map.width || m->thickness_map.width ||
 		   m->base_map.width;
 
-	for (uint32_t k = 0; k < mesh->material_count; k++)
-		any |= mesh->materials[k].base_map.width != 0;
+	for (uint32_t k = 0; k < mesh->material_count; k++) {
+		m = &mesh->materials[k];
+		any |= m->normal_map.width || m->occlusion_map.width || m->thickness_map.width ||
+		       m->base_map.width;
+	}
 	return any;
 }
 

@@ -15,6 +15,8 @@ static int item_order(const void *a, const void *b)
 	 * each, one material after another; then the index order kept. */
 	if (x->alpha_mode != y->alpha_mode)
 		return x->alpha_mode - y->alpha_mode;
+	if (draw_item_variant(x) != draw_item_variant(y))
+		return draw_item_variant(x) - draw_item_variant(y);
 	if (x->surface != y->surface)
 		return x->surface < y->surface ? -1 : 1;
 	return x->first < y->first ? -1 : x->first > y->first;
@@ -105,6 +107,7 @@ int draw_list_build(struct draw_list *l, const struct mesh_range *ranges, uint32
 	bool split = !wide && vertex_count > CHUNK_SPAN;
 	struct gather gat = {NULL, NULL, 0, 0, 0};
 	uint32_t cap = 0;
+	unsigned model = 0;
 	int ret = -ENOMEM;
 
 	memset(l, 0, sizeof(*l));
@@ -123,6 +126,8 @@ int draw_list_build(struct draw_list *l, const struct mesh_range *ranges, uint32
 	for (uint32_t i = 0; !l->wide && !split && i < index_count; i++)
 		l->indices16[i] = (uint16_t)indices[i];
 	l->index_count = split ? 0 : index_count;
+	for (uint32_t k = 0; surfaces && k < surface_count; k++)
+		model |= surfaces[k].features;
 	for (uint32_t r = 0; r < range_count; r++) {
 		const struct mesh_range *g = &ranges[r];
 		uint32_t s = g->material < surface_count ? g->material : 0;
@@ -132,11 +137,13 @@ int draw_list_build(struct draw_list *l, const struct mesh_range *ranges, uint32
 				       s,
 				       MESH_ALPHA_OPAQUE,
 				       false,
+				       0,
 				       {g->center[0], g->center[1], g->center[2]}};
 
 		if (surfaces && s < surface_count) {
 			it.alpha_mode = surfaces[s].alpha_mode;
 			it.double_sided = surfaces[s].double_sided;
+			it.missing = material_surface_missing(model, &surfaces[s]);
 		}
 		if (!g->index_count)
 			continue;

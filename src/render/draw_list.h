@@ -1,12 +1,12 @@
 /* The draws of one mesh: its ranges (struct mesh_range) as the renderer
  * issues them, grouped so that programs and textures change as rarely as
- * possible (opaque, then masked, each by material), then the blended ones
- * farthest first. Without 32-bit indices (OES_element_index_uint) a range
- * over more than 65536 vertices is cut into chunks of 16-bit indices,
- * each relative to its own first vertex (the attribute arrays are bound
- * from there), not expanded into unindexed triangles: each chunk's
- * vertices are gathered into the arrays uploaded (only those chunks share
- * are copied twice). Pure logic: no GL. */
+ * possible (opaque, then masked, each by program variant, then by
+ * material), then the blended ones farthest first. Without 32-bit
+ * indices (OES_element_index_uint) a range over more than 65536 vertices
+ * is cut into chunks of 16-bit indices, each relative to its own first
+ * vertex (the attribute arrays are bound from there), not expanded into
+ * unindexed triangles: each chunk's vertices are gathered into the arrays
+ * uploaded (only those chunks share are copied twice). Pure logic: no GL. */
 #ifndef MK_DRAW_LIST_H
 #define MK_DRAW_LIST_H
 
@@ -22,6 +22,9 @@ struct draw_item {
 	uint32_t surface;      /* material.surfaces[] */
 	int alpha_mode;	       /* enum mesh_alpha */
 	bool double_sided;
+	/* The model's features its material lacks (material_surface_missing
+	 * against every surface's together): left out of its program. */
+	unsigned missing;
 	float center[3]; /* model space: blended items are ordered by it */
 };
 
@@ -40,18 +43,39 @@ struct draw_list {
 };
 
 /* ranges NULL (range_count 0): one range over every index with surface 0.
- * surfaces give each range's alpha mode and sides (NULL: opaque, one
- * sided). wide: the GPU takes 32-bit indices. Returns 0 or -ENOMEM. */
+ * surfaces give each range's alpha mode, sides and features (NULL:
+ * opaque, one sided, the model's program). wide: the GPU takes 32-bit indices. Returns 0 or
+ * -ENOMEM. */
 int draw_list_build(struct draw_list *l, const struct mesh_range *ranges, uint32_t range_count,
 		    const uint32_t *indices, uint32_t index_count, uint32_t vertex_count,
 		    const struct material_surface *surfaces, uint32_t surface_count, bool wide);
 void draw_list_release(struct draw_list *l);
 
-/* The renderer's program variant an item draws with: its alpha mode, + 3
- * when double sided. */
+/* The renderer's program variants: an alpha mode, + 3 when double sided,
+ * + 6 x which of the model's features the material lacks (none; the
+ * detail map; its normal; iridescence; both the detail map and iridescence;
+ * the normal and iridescence). Variant 0: the model's own program. */
+enum { DRAW_SIDES_VARIANTS = 6, DRAW_VARIANTS = 36 };
+
 static inline int draw_item_variant(const struct draw_item *it)
 {
-	return it->alpha_mode + (it->double_sided ? 3 : 0);
+	int lacks = (it->missing & MATERIAL_DETAIL)	     ? 1
+		    : (it->missing & MATERIAL_DETAIL_NORMAL) ? 2
+							     : 0;
+
+	if (it->missing & MATERIAL_IRIDESCENCE)
+		lacks = lacks == 2 ? 5 : lacks + 3;
+	return it->alpha_mode + (it->double_sided ? 3 : 0) + DRAW_SIDES_VARIANTS * lacks;
+}
+
+/* The features variant v leaves out of the model's. */
+static inline unsigned draw_variant_missing(int v)
+{
+	static const unsigned d = MATERIAL_DETAIL | MATERIAL_DETAIL_NORMAL,
+			      n = MATERIAL_DETAIL_NORMAL, i = MATERIAL_IRIDESCENCE | MATERIAL_RAMP;
+	static const unsigned lacks[6] = {0, d, n, i, d | i, n | i};
+
+	return lacks[v / DRAW_SIDES_VARIANTS];
 }
 
 /* The blended items back to front for this model-view (column-major): the

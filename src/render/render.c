@@ -77,9 +77,12 @@ static void drop_surfaces(struct renderer *r)
 {
 	for (uint32_t k = 0; r->base_maps && k < r->surface_count; k++)
 		drop_texture(r->gl, &r->base_maps[k]);
+	for (uint32_t k = 0; r->detail_maps && k < r->surface_count; k++)
+		drop_texture(r->gl, &r->detail_maps[k]);
 	free(r->base_maps);
+	free(r->detail_maps);
 	free(r->surfaces);
-	r->base_maps = NULL;
+	r->base_maps = r->detail_maps = NULL;
 	r->surfaces = NULL;
 	r->surface_count = 0;
 }
@@ -322,39 +325,52 @@ int renderer_set_precision(struct renderer *r, bool highp)
 	return r->mode_set ? renderer_set_mode(r, r->mode, r->ortho) : 0;
 }
 
-/* Each material's sides, alpha and base map (uploaded only where the
- * programs drawn read it). */
+/* One material's maps: its base map (where the programs drawn read it)
+ * and its own detail map. */
+static int upload_surface(struct renderer *r, const struct material *m, uint32_t k)
+{
+	static const GLint wrap[] = {GL_REPEAT, GL_CLAMP_TO_EDGE, GL_MIRRORED_REPEAT};
+	const struct material_surface *s = &m->surfaces[k];
+	int ret = 0;
+
+	if ((drawn_features(m) & MATERIAL_BASE_MAP) && s->base_map.width) {
+		ret = upload_texture(r->gl, &r->base_maps[k], &s->base_map, true, true);
+		/* Its sampler's wrap (upload_texture left it bound). */
+		r->gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap[s->wrap[0]]);
+		r->gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap[s->wrap[1]]);
+	}
+	if (!ret && (s->features & MATERIAL_DETAIL) && s->detail.width)
+		ret = upload_texture(r->gl, &r->detail_maps[k], &s->detail, true, true);
+	return ret;
+}
+
+/* Each material's sides, alpha, features and maps. A material made by
+ * no mesh (surface_count 0) has the model's features. */
 static int set_surfaces(struct renderer *r, const struct material *m)
 {
 	uint32_t n = m->surface_count ? m->surface_count : 1;
-	bool maps = drawn_features(m) & MATERIAL_BASE_MAP;
 	int ret = 0;
 
 	drop_surfaces(r);
 	r->surfaces = calloc(n, sizeof(*r->surfaces));
 	r->base_maps = calloc(n, sizeof(*r->base_maps));
-	if (!r->surfaces || !r->base_maps)
+	r->detail_maps = calloc(n, sizeof(*r->detail_maps));
+	if (!r->surfaces || !r->base_maps || !r->detail_maps)
 		return -ENOMEM;
 	r->surface_count = n;
 	for (uint32_t k = 0; k < n; k++) {
-		const struct material_surface *s = m->surface_count ? &m->surfaces[k] : NULL;
+		struct material_surface *s = &r->surfaces[k];
 
-		if (!s) {
-			r->surfaces[k] = (struct material_surface){.alpha = 1.0f};
-			r->surfaces[k].base_transform[0] = r->surfaces[k].base_transform[3] = 1.0f;
+		if (!m->surface_count) {
+			*s = (struct material_surface){.alpha = 1.0f, .features = m->features};
+			s->base_transform[0] = s->base_transform[3] = 1.0f;
 			continue;
 		}
-		r->surfaces[k] = *s;
-		memset(&r->surfaces[k].base_map, 0, sizeof(struct image));
-		if (!ret && maps && s->base_map.width) {
-			static const GLint wrap[] = {GL_REPEAT, GL_CLAMP_TO_EDGE,
-						     GL_MIRRORED_REPEAT};
-
-			ret = upload_texture(r->gl, &r->base_maps[k], &s->base_map, true, true);
-			/* Its sampler's wrap (upload_texture left it bound). */
-			r->gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap[s->wrap[0]]);
-			r->gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap[s->wrap[1]]);
-		}
+		*s = m->surfaces[k];
+		memset(&s->base_map, 0, sizeof(struct image));
+		memset(&s->detail, 0, sizeof(struct image));
+		if (!ret)
+			ret = upload_surface(r, m, k);
 	}
 	return ret;
 }
@@ -371,7 +387,7 @@ int renderer_set_material(struct renderer *r, const struct material *m)
 	r->mat.surfaces = NULL;
 	r->mat.surface_count = 0;
 	ret = set_surfaces(r, m);
-	if (!ret && (m->features & MATERIAL_DETAIL))
+	if (!ret && (m->features & MATERIAL_DETAIL) && m->detail.width)
 		ret = upload_texture(r->gl, &r->detail, &m->detail, true, true);
 	else
 		drop_texture(r->gl, &r->detail);
@@ -407,32 +423,35 @@ static void find_uniforms(const struct gl *gl, struct program *p)
 	p->alpha = gl->GetUniformLocation(p->id, "u_alpha");
 }
 
+/* A range's program variant by its alphaMode (enum mesh_alpha) and sides;
+ * + 6 x what its material lacks (draw_variant_missing). */
+static const unsigned variant_features[DRAW_SIDES_VARIANTS] = {
+    0,
+    MATERIAL_ALPHA_MASK,
+    MATERIAL_ALPHA_BLEND,
+    MATERIAL_DOUBLE_SIDED,
+    MATERIAL_DOUBLE_SIDED | MATERIAL_ALPHA_MASK,
+    MATERIAL_DOUBLE_SIDED | MATERIAL_ALPHA_BLEND};
+
 /* Lit programs do not depend on the mapping mode: one per camera. A
  * program that fails to build is not kept, so the next call tries again
  * and the one in use stays. */
-/* A range's program variant by its alphaMode (enum mesh_alpha). */
-static const unsigned variant_features[VARIANTS] = {0,
-						    MATERIAL_ALPHA_MASK,
-						    MATERIAL_ALPHA_BLEND,
-						    MATERIAL_DOUBLE_SIDED,
-						    MATERIAL_DOUBLE_SIDED | MATERIAL_ALPHA_MASK,
-						    MATERIAL_DOUBLE_SIDED | MATERIAL_ALPHA_BLEND};
-
 static struct program *program_get(struct renderer *r, enum shading_mode mode, bool ortho, bool lit,
 				   int variant)
 {
 	struct program *p = &r->programs[lit ? SHADING_VIEW : mode][ortho][lit][variant];
+	unsigned features = (r->mat.features & ~draw_variant_missing(variant)) |
+			    variant_features[variant % DRAW_SIDES_VARIANTS];
 	struct shader_source src;
 	GLuint id;
 
 	if (p->id)
 		return p;
-	if (shader_source_matcap(&src, r->shader_dir, r->mat.features | variant_features[variant],
-				 mode, ortho, lit, r->highp) ||
+	if (shader_source_matcap(&src, r->shader_dir, features, mode, ortho, lit, r->highp) ||
 	    shader_program_build(r->gl, &src, &id))
 		return NULL;
 	p->id = id;
-	p->features = r->mat.features | variant_features[variant];
+	p->features = features;
 	find_uniforms(r->gl, p);
 	return p;
 }
@@ -451,7 +470,8 @@ static void prepare_variants(struct renderer *r)
 
 		for (int v = 0; v < VARIANTS; v++) {
 			/* The lit mode has no alpha: its sides only. */
-			int want = alpha ? v : v / 3 * 3;
+			int sides = v % DRAW_SIDES_VARIANTS;
+			int want = v - sides + (alpha ? sides : sides / 3 * 3);
 			struct program *q = NULL;
 
 			if (want && p[side] && r->variant_used[v])
@@ -534,4 +554,17 @@ void renderer_get_stats(const struct renderer *r, struct renderer_stats *out)
 	out->matcap_mipmapped = r->matcap_mipmapped;
 	out->format = r->drawn;
 	out->draws = r->list.count;
+	for (uint32_t i = 0; r->current && i < r->list.count; i++) {
+		const struct program *q = r->variants[0][draw_item_variant(&r->list.items[i])];
+		uint32_t k = 0, n = out->program_count < 4 ? out->program_count : 4;
+
+		while (k < n && out->drawn[k].program != q->id)
+			k++;
+		if (k < n)
+			continue;
+		if (out->program_count++ < 4) {
+			out->drawn[k].program = q->id;
+			out->drawn[k].surface = r->list.items[i].surface;
+		}
+	}
 }

@@ -82,6 +82,13 @@ struct renderer_stats {
 	bool matcap_mipmapped;		  /* the last frame read the matcap's mipmaps */
 	enum vertex_format format;	  /* of the arrays uploaded */
 	uint32_t draws;			  /* draw calls a frame makes (per half, lit = beside) */
+	/* The programs the draws use (the matcap's, or the lit one alone), the
+	 * first few in draw order, each with the surface it first draws. */
+	uint32_t program_count;
+	struct {
+		GLuint program;
+		uint32_t surface;
+	} drawn[4];
 };
 void renderer_get_stats(const struct renderer *r, struct renderer_stats *out);
 

@@ -18,8 +18,8 @@ static void bind_texture(const struct gl *gl, GLint uniform, int unit, GLuint te
 	gl->Uniform1i(uniform, unit);
 }
 
-/* What every range of a program shares: the matcap, the detail map, the
- * ramp and the material's numbers. */
+/* What every range of a program shares: the matcap, the ramp and the
+ * material's numbers. */
 static void set_uniforms(const struct renderer *r, const struct program *p)
 {
 	const struct gl *gl = r->gl;
@@ -27,11 +27,7 @@ static void set_uniforms(const struct renderer *r, const struct program *p)
 
 	bind_texture(gl, p->matcap, UNIT_MATCAP,
 		     r->matcap_override ? r->matcap_override : r->matcap);
-	bind_texture(gl, p->detail, UNIT_DETAIL, r->detail);
 	bind_texture(gl, p->ramp, UNIT_RAMP, r->ramp);
-	if (p->iridescence >= 0)
-		gl->Uniform4f(p->iridescence, m->hue_range, m->hue_average, m->hue_shift,
-			      m->opacity);
 	if (p->hsv >= 0)
 		gl->Uniform2f(p->hsv, m->saturation, m->value);
 	if (p->light >= 0)
@@ -42,9 +38,10 @@ static void set_uniforms(const struct renderer *r, const struct program *p)
 		gl->Uniform1f(p->shininess, m->shininess);
 }
 
-/* What one material changes: its base map, its transform and its alpha.
- * A material without a map leaves the last one bound: its vertices'
- * alpha (mesh colors) reads none of it. */
+/* What one material changes: its base map, its transform and its alpha,
+ * its detail map (else the model's) and its iridescence (where its
+ * program has them). A material without a base map leaves the last one
+ * bound: its vertices' alpha (mesh colors) reads none of it. */
 static void set_surface(const struct renderer *r, const struct program *p, uint32_t k)
 {
 	const struct gl *gl = r->gl;
@@ -52,6 +49,13 @@ static void set_surface(const struct renderer *r, const struct program *p, uint3
 
 	if (r->base_maps[k] || !k)
 		bind_texture(gl, p->base_map, UNIT_BASE, r->base_maps[k]);
+	bind_texture(gl, p->detail, UNIT_DETAIL, r->detail_maps[k] ? r->detail_maps[k] : r->detail);
+	if (p->iridescence >= 0 && (s->features & MATERIAL_IRIDESCENCE))
+		gl->Uniform4f(p->iridescence, s->hue_range, s->hue_average, s->hue_shift,
+			      s->opacity);
+	else if (p->iridescence >= 0)
+		gl->Uniform4f(p->iridescence, r->mat.hue_range, r->mat.hue_average,
+			      r->mat.hue_shift, r->mat.opacity);
 	if (p->base_transform >= 0) {
 		const float *t = s->base_transform;
 		const float m3[9] = {t[0], t[1], 0, t[2], t[3], 0, t[4], t[5], 1};

@@ -13,9 +13,9 @@
 
 enum { UNIT_MATCAP, UNIT_DETAIL, UNIT_RAMP, UNIT_BASE };
 
-/* A range's program variant: its alphaMode (enum mesh_alpha), + 3 when
- * double sided. */
-enum { VARIANTS = 6 };
+/* A range's program variant (draw_item_variant): its alphaMode, its sides
+ * and the model's features its material lacks. */
+enum { VARIANTS = DRAW_VARIANTS };
 
 struct program {
 	GLuint id;
@@ -38,9 +38,10 @@ struct renderer {
 	bool highp;	     /* every float highp (PRECISION_HIGHP): see renderer_new */
 	struct material mat; /* the features and their numbers; no images, no surfaces */
 	GLuint vbo[SHADER_ATTR_COUNT], ibo, matcap, detail, ramp;
-	/* Per material (surfaces): its base map (0: none) and the rest. */
+	/* Per material (surfaces): its base map and its own detail map (0:
+	 * none; detail: the model's, r->detail) and the rest. */
 	uint32_t surface_count;
-	GLuint *base_maps;
+	GLuint *base_maps, *detail_maps;
 	struct material_surface *surfaces; /* their images left empty */
 	bool variant_used[VARIANTS];	   /* by some range */
 	struct draw_list list;

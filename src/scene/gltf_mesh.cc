@@ -598,36 +598,27 @@ bool prepare(tinygltf::Model &m, const char *name, Pose *pose, std::string *err)
 	return gltf_ext::apply_skins(m, pose->worlds, &pose->mesh_source, err);
 }
 
-// The model's material for the features of the whole model (its base map
-// is each range material's), then every range's material with its base
-// map. Without UVs no texture can be placed.
+// The model's material (the first part's) for what applies to the whole
+// model, its factors only; then every range's material with its own
+// textures (base map, normal, occlusion, film thickness), each decoded once.
+// Without UVs no texture can be placed.
 void read_materials(const Builder &b, const tinygltf::Model &m, unsigned textures,
 		    const GltfImages &images, struct mesh *out)
 {
 	unsigned t = b.any_uvs ? textures : 0;
-	gltf_read_material(m, b.material, t, ~(unsigned)GLTF_TEXTURE_BASE_COLOR, images, b.name,
-			   &out->material);
+	gltf_read_material(m, b.material, t, 0, images, b.name, &out->material);
 	for (size_t k = 0; k < b.slots.size(); k++) {
-		gltf_read_material(m, b.slots[k], t, GLTF_TEXTURE_BASE_COLOR, images, b.name,
-				   &out->materials[k]);
+		gltf_read_material(m, b.slots[k], t, ~0u, images, b.name, &out->materials[k]);
 		out->material.images_decoded += out->materials[k].images_decoded;
 		out->material.has_base_map |= out->materials[k].has_base_map;
 	}
-	unsigned mapped = 0, detailed = 0;
-	for (uint32_t k = 0; k < out->material_count; k++) {
-		const struct mesh_material *g = &out->materials[k];
-		mapped += g->base_map.width > 0;
-		detailed += b.slots[k] != b.material && (g->has_normal_map || g->has_occlusion_map);
-	}
-	std::string shown = gltf_ext::escape(b.name);
+	unsigned mapped = 0;
+	for (uint32_t k = 0; k < out->material_count; k++)
+		mapped += out->materials[k].base_map.width > 0;
 	if (b.slots.size() > 1)
 		log_info("%s: %zu materials (%u with a base map shown), %u draw ranges",
-			 shown.c_str(), b.slots.size(), mapped, out->range_count);
-	// One detail map per model (src/scene/material.c): say whose it is.
-	if (detailed && (t & (GLTF_TEXTURE_NORMAL | GLTF_TEXTURE_OCCLUSION)))
-		log_info("%s: %u other materials have normal or occlusion textures; the first "
-			 "part's material's are shown over every part",
-			 shown.c_str(), detailed);
+			 gltf_ext::escape(b.name).c_str(), b.slots.size(), mapped,
+			 out->range_count);
 }
 
 } // namespace

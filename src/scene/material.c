@@ -86,25 +86,55 @@ static void iridescence_from_gltf(const struct mesh_material *g, struct material
 	m->opacity = (float)(DEFAULT_OPACITY * fmin(fmax(g->iridescence_factor, 0.0), 1.0));
 }
 
-static void resolve_iridescence(const struct material_config *cfg, const struct mesh *mesh,
-				struct material *m)
+/* The mesh material range k draws with; a mesh without ranges (built in,
+ * made by a test) has the model's one. */
+static const struct mesh_material *mesh_surface(const struct mesh *mesh, uint32_t k)
 {
-	const struct mesh_material *g = &mesh->material;
+	return mesh->material_count ? &mesh->materials[k] : &mesh->material;
+}
+
+/* One material's iridescence: on as the settings say or, auto, where its
+ * glTF material has it; the settings' numbers over the material's. */
+static void surface_iridescence(const struct material_config *cfg, const struct mesh_material *g,
+				struct material_surface *s)
+{
+	struct material film;
 	bool from_gltf = g->iridescence && g->iridescence_factor > 0.0f;
 
 	if (cfg->iridescence == MATERIAL_OFF || (cfg->iridescence == MATERIAL_AUTO && !from_gltf))
 		return;
-	m->features |= MATERIAL_IRIDESCENCE;
-	m->hue_average = DEFAULT_HUE_AVERAGE;
-	m->hue_range = DEFAULT_HUE_RANGE;
-	m->hue_shift = DEFAULT_HUE_SHIFT;
-	m->opacity = DEFAULT_OPACITY;
+	film.hue_average = DEFAULT_HUE_AVERAGE;
+	film.hue_range = DEFAULT_HUE_RANGE;
+	film.hue_shift = DEFAULT_HUE_SHIFT;
+	film.opacity = DEFAULT_OPACITY;
 	if (from_gltf)
-		iridescence_from_gltf(g, m);
-	m->hue_average = pick(cfg->hue_average, m->hue_average);
-	m->hue_range = pick(cfg->hue_range, m->hue_range);
-	m->hue_shift = pick(cfg->hue_shift, m->hue_shift);
-	m->opacity = pick(cfg->opacity, m->opacity);
+		iridescence_from_gltf(g, &film);
+	s->features |= MATERIAL_IRIDESCENCE;
+	s->hue_average = pick(cfg->hue_average, film.hue_average);
+	s->hue_range = pick(cfg->hue_range, film.hue_range);
+	s->hue_shift = pick(cfg->hue_shift, film.hue_shift);
+	s->opacity = pick(cfg->opacity, film.opacity);
+}
+
+/* Iridescence per material; the model's numbers are its first
+ * iridescent material's. */
+static void resolve_iridescence(const struct material_config *cfg, const struct mesh *mesh,
+				struct material *m)
+{
+	for (uint32_t k = m->surface_count; k-- > 0;) {
+		struct material_surface *s = &m->surfaces[k];
+
+		surface_iridescence(cfg, mesh_surface(mesh, k), s);
+		if (!(s->features & MATERIAL_IRIDESCENCE))
+			continue;
+		m->features |= MATERIAL_IRIDESCENCE;
+		m->hue_average = s->hue_average;
+		m->hue_range = s->hue_range;
+		m->hue_shift = s->hue_shift;
+		m->opacity = s->opacity;
+	}
+	if (!(m->features & MATERIAL_IRIDESCENCE))
+		return;
 	m->saturation = pick(cfg->saturation, DEFAULT_SATURATION);
 	m->value = pick(cfg->value, DEFAULT_VALUE);
 }
@@ -191,11 +221,36 @@ static int to_pot(struct image *img)
 	return ret;
 }
 
+/* Each material's own normal and occlusion maps (and, where it is
+ * iridescent, its film thickness) packed into its own detail map. */
+static int pack_surfaces(const struct material_config *cfg, const struct mesh *mesh,
+			 struct material *m)
+{
+	int ret = 0;
+
+	for (uint32_t k = 0; k < m->surface_count && !ret; k++) {
+		const struct mesh_material *g = mesh_surface(mesh, k);
+		struct material_surface *s = &m->surfaces[k];
+
+		ret = pack_gltf(g, (s->features & MATERIAL_IRIDESCENCE) != 0, &s->detail);
+		if (ret == -ENOENT) {
+			ret = 0;
+			continue;
+		}
+		if (!ret)
+			s->features |=
+			    MATERIAL_DETAIL | (g->normal_map.width ? MATERIAL_DETAIL_NORMAL : 0);
+		m->features |= s->features & (MATERIAL_DETAIL | MATERIAL_DETAIL_NORMAL);
+	}
+	if (!ret && !(m->features & MATERIAL_DETAIL) && cfg->detail == MATERIAL_ON)
+		log_warn("detail = on, but no detail_map is set and no material of the model "
+			 "has a normal or occlusion texture: the detail map is off");
+	return ret;
+}
+
 static int resolve_detail(const struct material_config *cfg, const struct mesh *mesh, bool strict,
 			  struct material *m)
 {
-	const struct mesh_material *g = &mesh->material;
-	bool shift = (m->features & MATERIAL_IRIDESCENCE) != 0;
 	int ret = 0;
 
 	if (cfg->detail == MATERIAL_OFF)
@@ -206,23 +261,17 @@ static int resolve_detail(const struct material_config *cfg, const struct mesh *
 			cfg->detail_map ? cfg->detail_map : "detail = on");
 		return strict ? -EINVAL : 0;
 	}
-	if (cfg->detail_map) {
-		ret = load_named(cfg->detail_map, "the detail map", strict, &m->detail);
-		if (!ret && m->detail.width)
-			ret = to_pot(&m->detail);
-		if (!ret && m->detail.width)
-			m->features |= MATERIAL_DETAIL | MATERIAL_DETAIL_NORMAL;
-		return ret;
+	if (!cfg->detail_map)
+		return pack_surfaces(cfg, mesh, m);
+	/* The settings' map covers every part, in place of their own. */
+	ret = load_named(cfg->detail_map, "the detail map", strict, &m->detail);
+	if (!ret && m->detail.width)
+		ret = to_pot(&m->detail);
+	if (!ret && m->detail.width) {
+		m->features |= MATERIAL_DETAIL | MATERIAL_DETAIL_NORMAL;
+		for (uint32_t k = 0; k < m->surface_count; k++)
+			m->surfaces[k].features |= MATERIAL_DETAIL | MATERIAL_DETAIL_NORMAL;
 	}
-	ret = pack_gltf(g, shift, &m->detail);
-	if (ret == -ENOENT) {
-		if (cfg->detail == MATERIAL_ON)
-			log_warn("detail = on, but no detail_map is set and the model's material "
-				 "has no normal or occlusion texture: the detail map is off");
-		return 0;
-	}
-	if (!ret)
-		m->features |= MATERIAL_DETAIL | (g->normal_map.width ? MATERIAL_DETAIL_NORMAL : 0);
 	return ret;
 }
 
@@ -248,13 +297,6 @@ static int resolve_displacement(const struct material_config *cfg, const struct 
 	return ret;
 }
 
-/* The mesh material range k draws with; a mesh without ranges (built in,
- * made by a test) has the model's one. */
-static const struct mesh_material *mesh_surface(const struct mesh *mesh, uint32_t k)
-{
-	return mesh->material_count ? &mesh->materials[k] : &mesh->material;
-}
-
 /* One material's base map, brought to power-of-two sides to repeat. */
 static int copy_base_map(const struct image *from, struct image *to)
 {
@@ -269,15 +311,10 @@ static int copy_base_map(const struct image *from, struct image *to)
  * base map (placed by the mesh's UVs). */
 static int resolve_surfaces(const struct mesh *mesh, bool base, struct material *m)
 {
-	uint32_t n = mesh->material_count ? mesh->material_count : 1;
 	bool unplaced = false;
 	int ret = 0;
 
-	m->surfaces = calloc(n, sizeof(*m->surfaces));
-	if (!m->surfaces)
-		return -ENOMEM;
-	m->surface_count = n;
-	for (uint32_t k = 0; k < n && !ret; k++) {
+	for (uint32_t k = 0; k < m->surface_count && !ret; k++) {
 		const struct mesh_material *g = mesh_surface(mesh, k);
 		struct material_surface *s = &m->surfaces[k];
 
@@ -324,6 +361,10 @@ int material_load(struct material *out, const struct material_config *cfg, const
 	int ret = 0;
 
 	memset(out, 0, sizeof(*out));
+	out->surface_count = mesh->material_count ? mesh->material_count : 1;
+	out->surfaces = calloc(out->surface_count, sizeof(*out->surfaces));
+	if (!out->surfaces)
+		return -ENOMEM;
 	out->lit = cfg->lit;
 	out->shininess = (float)cfg->shininess;
 	for (int k = 0; k < 3; k++)
@@ -351,8 +392,10 @@ void material_release(struct material *m)
 	image_release(&m->detail);
 	image_release(&m->ramp);
 	image_release(&m->height);
-	for (uint32_t k = 0; m->surfaces && k < m->surface_count; k++)
+	for (uint32_t k = 0; m->surfaces && k < m->surface_count; k++) {
 		image_release(&m->surfaces[k].base_map);
+		image_release(&m->surfaces[k].detail);
+	}
 	free(m->surfaces);
 	memset(m, 0, sizeof(*m));
 }

@@ -55,8 +55,18 @@ struct material_config {
 };
 
 /* What one mesh material (mesh.materials[k]) draws with: its ranges'
- * base map, how they blend and which faces they show. */
+ * base map, how they blend and which faces they show, its own detail map
+ * and its iridescence. */
 struct material_surface {
+	/* MATERIAL_DETAIL, MATERIAL_DETAIL_NORMAL and MATERIAL_IRIDESCENCE
+	 * where this material has them: a range whose material lacks one of
+	 * the model's (material.features) draws with a program without it. */
+	unsigned features;
+	/* Its normal and occlusion maps (and film thickness) packed as
+	 * material.detail is; empty: the model's (the settings' detail_map),
+	 * or none. */
+	struct image detail;
+	float hue_range, hue_average, hue_shift, opacity; /* its iridescence */
 	struct image base_map;	 /* sRGB as stored; power-of-two sides; empty: none */
 	float base_transform[6]; /* mesh_material.base_transform */
 	int wrap[2];		 /* mesh_material.base_wrap */
@@ -67,14 +77,19 @@ struct material_surface {
 
 /* What the renderer reads: resolved, with every texture decoded. */
 struct material {
-	unsigned features; /* enum material_feature */
-	int lit;	   /* enum material_lit */
+	/* enum material_feature: the model's, every surface's together */
+	unsigned features;
+	int lit; /* enum material_lit */
+	/* The first iridescent surface's numbers (its hue_*, opacity) */
 	float hue_range, hue_average, hue_shift;
 	float opacity, saturation, value;
 	float base_color[3], shininess;
 	float displacement_scale, displacement_pixels;
 	uint32_t displacement_triangles;
-	struct image detail; /* rg normal xy, b occlusion, a hue shift; power-of-two sides */
+	/* The settings' detail_map, over every part: rg normal xy, b
+	 * occlusion, a hue shift; power-of-two sides. Empty: each surface
+	 * has its own (or none). */
+	struct image detail;
 	struct image ramp;
 	struct image height;
 	float vertex_color[4]; /* mesh_material.color: every vertex's without a colour array */
@@ -103,6 +118,22 @@ void material_release(struct material *m);
  * subdivided and displaced to the screen's density, refitted to the unit
  * sphere, with tangents for a detail normal map. Returns 0 or -ENOMEM. */
 int material_prepare_mesh(const struct material *m, struct mesh *mesh, int width, int height);
+
+/* The features of `model` (enum material_feature) that surface s lacks:
+ * what its ranges' program leaves out (a ramp goes with iridescence, a
+ * detail normal with the detail map). */
+static inline unsigned material_surface_missing(unsigned model, const struct material_surface *s)
+{
+	unsigned missing = 0;
+
+	if ((model & MATERIAL_DETAIL) && !(s->features & MATERIAL_DETAIL))
+		missing |= MATERIAL_DETAIL | MATERIAL_DETAIL_NORMAL;
+	else if ((model & MATERIAL_DETAIL_NORMAL) && !(s->features & MATERIAL_DETAIL_NORMAL))
+		missing |= MATERIAL_DETAIL_NORMAL;
+	if ((model & MATERIAL_IRIDESCENCE) && !(s->features & MATERIAL_IRIDESCENCE))
+		missing |= MATERIAL_IRIDESCENCE | MATERIAL_RAMP;
+	return missing & model;
+}
 
 /* The vertex attributes a program with these features reads. */
 bool material_needs_uvs(unsigned features);

@@ -84,19 +84,19 @@ struct mesh {
 	 * (then mesh_material.color holds it). */
 	float *colors;
 	uint32_t *indices;
-	/* The model's material for the features that apply to the whole
-	 * model (iridescence, the detail map packed from the normal and
-	 * occlusion maps, the one colour of every vertex): the first
-	 * primitive's material. Its base map is left empty: each material
-	 * of materials[] holds its own. */
+	/* The model's material for what applies to the whole model (the one
+	 * colour of every vertex, the lit grey): the first primitive's
+	 * material, its factors only. Its images are left empty when the
+	 * mesh has materials[]: each holds its own maps. */
 	struct mesh_material material;
 	/* Draw ranges: indices[first_index .. first_index + index_count)
 	 * drawn with materials[material]. Together they cover every index
 	 * once, in order. A model of one material has one range. */
 	uint32_t range_count;
 	struct mesh_range *ranges;
-	/* Every material the ranges use, with its base map (decoded when
-	 * asked for): base colour factor and texture, alpha, sides. */
+	/* Every material the ranges use, with its maps (decoded when asked
+	 * for): base colour factor and texture, normal, occlusion and film
+	 * thickness maps, iridescence, alpha, sides. */
 	uint32_t material_count;
 	struct mesh_material *materials;
 };

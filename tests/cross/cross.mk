@@ -88,44 +88,76 @@ test-cross: cross-build $(KIOSK) $(TOOLS_DIR)/mkmodels $(TOOLS_DIR)/imgdiff
 
 .PHONY: cross-arch deps-cross cross-tools cross-build test-cross
 
-# The Debian package, from config/debian (debhelper), built in a copy of the
-# tree under build/deb: `make deb` for this machine's architecture.
-#   make deps-deb   build-essential, debhelper and lintian
-#   make deb        build/deb/matcap-kiosk_VERSION_ARCH.deb, then lintian (no error allowed)
-#   make test-deb   that package installed into a fresh Debian root, and run there
-DEB_BUILD := build/deb
-DEB_SRC   := $(DEB_BUILD)/matcap-kiosk-$(VERSION)
-DEB_TREE  := Makefile README.md LICENSE src shaders matcaps config systemd tests
+# The Debian package, from config/debian (debhelper):
+#   make deps-deb               what the package targets need on this machine
+#   make deb                    matcap-kiosk_VERSION_ARCH.deb for this machine, built
+#                               here, then lintian (no error allowed): in build/deb/ on
+#                               Debian 13, build/deb/bookworm/ on 12
+#   make deb ARCH=arm64         the same for arm64 (or armhf, or amd64), cross-built by
+#                               Debian's recipe in a fresh Debian 13 root that has only the
+#                               Build-Depends (DEB_SUITE=bookworm: Debian 12, into
+#                               build/deb/bookworm/), lintian there (tests/cross/deb-build.sh)
+#   make test-deb               amd64, arm64 and armhf built that way on Debian 13 and 12
+#                               (one root per release), the Debian 13 ones and Debian 12's
+#                               amd64 installed into fresh roots of their own architecture
+#                               and run there (qemu-user binfmt); ARCH=arm64 (or armhf) for
+#                               one, DEB_SUITES=trixie for one release (tests/cross/deb-test.sh)
+# Roots are made by mmdebstrap as root; the host gets no foreign
+# architecture. Downloaded packages are kept in build/deb-cache for the
+# next root.
+DEB_BUILD   := build/deb
+DEB_SRC     := build/deb-src/matcap-kiosk-$(VERSION)
+DEB_TREE    := Makefile README.md LICENSE src shaders matcaps config systemd tests
+DEB_SUITE   ?= trixie
+DEB_SUITES  ?= trixie bookworm
+DEB_ARCHS   ?= $(or $(ARCH),arm64 armhf)
+# The other architectures are installed on Debian 13 (what Pi OS is);
+# on 12 they are built and lintian-checked, amd64 installed (each qemu
+# root costs minutes of CI).
+DEB_INSTALL ?= $(foreach a,$(DEB_ARCHS),trixie:$(a))
+DEB_HOST_ARCH := $(shell dpkg --print-architecture 2>/dev/null)
+# build/deb/ holds Debian 13's packages, build/deb/SUITE/ another release's.
+DEB_OUT     := $(if $(filter trixie,$(DEB_SUITE)),$(DEB_BUILD),$(DEB_BUILD)/$(DEB_SUITE))
+DEB_HOST_OUT = $(if $(filter trixie,$(OS_CODENAME)),$(DEB_BUILD),$(DEB_BUILD)/$(OS_CODENAME))
+DEB_SUDO_ROOT := $(if $(filter 0,$(shell id -u)),,sudo)
 
 # systemd.pc and udev.pc (where units and rules go) are in systemd-dev from
-# Debian 13 on, in systemd and udev before.
+# Debian 13 on, in systemd and udev before: for `make deb` here. The
+# roots need mmdebstrap, qemu-user-static's binfmt handlers and arch-test.
 deps-deb:
 	$(CROSS_SUDO) apt-get update -qq
 	sd=$$(apt-cache show systemd-dev >/dev/null 2>&1 && echo systemd-dev || echo systemd udev); \
 	$(CROSS_SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
-		--no-install-recommends build-essential debhelper lintian dpkg-dev mmdebstrap file $$sd
+		--no-install-recommends build-essential debhelper lintian dpkg-dev mmdebstrap file \
+		qemu-user-static arch-test $$sd
 
-# A package for another architecture (dpkg-buildpackage -a) would need
-# that architecture's libraries installed with dpkg, for dpkg-shlibdeps to
-# find ${shlibs:Depends}; the sysroot above does without them on purpose.
-deb:
-	@[ -z "$(ARCH)" ] || [ "$(ARCH)" = "$$(dpkg --print-architecture)" ] || \
-		{ echo "make deb builds for this machine only: build the $(ARCH) package on the Pi"; \
-		exit 2; }
+# The source tree the package is built from: the project's files and
+# config/debian as debian/ (no caches: the Debian 13 chroot's root is
+# one).
+deb-src:
 	@v=$$(dpkg-parsechangelog -l config/debian/changelog -SVersion); [ "$$v" = "$(VERSION)" ] || \
 		{ echo "config/debian/changelog: version $$v, the Makefile says $(VERSION)"; exit 1; }
-	rm -rf $(DEB_BUILD)
+	rm -rf $(dir $(DEB_SRC))
 	mkdir -p $(DEB_SRC)
-	tar -c --exclude=tests/out --exclude=tests/vm/cache $(DEB_TREE) | tar -x -C $(DEB_SRC)
+	tar -c --exclude=tests/out --exclude=tests/vm/cache --exclude=tests/trixie/cache $(DEB_TREE) | tar -x -C $(DEB_SRC)
 	cp -r config/debian $(DEB_SRC)/debian
 	cp systemd/matcap-kiosk.sysusers $(DEB_SRC)/debian/matcap-kiosk.sysusers
+
+deb: deb-src
+ifeq ($(ARCH),)
 	cd $(DEB_SRC) && dpkg-buildpackage --build=binary --no-sign
-	lintian --fail-on error $(DEB_BUILD)/matcap-kiosk_$(VERSION)_*.deb
+	mkdir -p $(DEB_HOST_OUT)
+	mv $(dir $(DEB_SRC))matcap-kiosk*_$(VERSION)_$(DEB_HOST_ARCH).deb $(DEB_HOST_OUT)/
+	lintian --fail-on error $(DEB_HOST_OUT)/matcap-kiosk_$(VERSION)_$(DEB_HOST_ARCH).deb
+else
+	$(if $(filter 0,$(shell id -u)),,sudo) sh tests/cross/deb-build.sh $(DEB_SUITE) $(ARCH) \
+		$(DEB_SRC) $(DEB_OUT)
+endif
 
-# The package installed with apt into a fresh Debian root (build/deb-root),
-# rendering from the installed files (as root: the root is a chroot).
-test-deb: deb
-	sh tests/cross/deb-install.sh $(DEB_BUILD)/matcap-kiosk_$(VERSION)_$$(dpkg --print-architecture).deb \
-		build/deb-root
+# Builds, installs and renders in roots (as root: they are chroots). The
+# host's imgdiff compares the renders.
+test-deb: deb-src $(TOOLS_DIR)/imgdiff
+	$(DEB_SUDO_ROOT) sh tests/cross/deb-test.sh $(DEB_SRC) $(TOOLS_DIR)/imgdiff "$(DEB_SUITES)" \
+		"$(DEB_ARCHS)" "$(DEB_INSTALL)"
 
-.PHONY: deps-deb deb test-deb
+.PHONY: deps-deb deb-src deb test-deb

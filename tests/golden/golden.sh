@@ -18,7 +18,7 @@ scenes="$scenes knot-iridescence knot-iridescence-ramp knot-detail-map sphere-de
 scenes="$scenes sphere-beetle-gltf sphere-displaced sphere-lit sphere-lit-beside"
 scenes="$scenes sphere-vertex-color sphere-base-map sphere-base-map-off"
 scenes="$scenes background-color background-gradient background-image fit-long fit-long-half"
-scenes="$scenes parts-textures parts-mask parts-blend parts-leaf"
+scenes="$scenes parts-textures parts-mask parts-blend parts-leaf parts-normals parts-iridescence"
 mkdir -p "$out" "$models"
 "$TOOLS/mkmodels" "$models" >/dev/null
 
@@ -101,8 +101,10 @@ render() {
 	# Several materials (tests/tools/parts_models.c): two halves each
 	# with its own base map; a label cut by alpha MASK in front of a
 	# body; two BLEND panes in front of an opaque body, the nearer over
-	# the farther; a leaf seen from its hollow, shown by doubleSided.
-	parts-textures | parts-mask | parts-blend | parts-leaf)
+	# the farther; a leaf seen from its hollow, shown by doubleSided;
+	# two halves each with its own normal map (bumps above, smooth
+	# below); two halves each with its own iridescent film.
+	parts-textures | parts-mask | parts-blend | parts-leaf | parts-normals | parts-iridescence)
 		$k -c matcaps/pearl.png --model "$m/$1.glb" --output "$o"
 		;;
 	*)

@@ -133,9 +133,11 @@ static int check_case(struct display *d, const struct scene_case *c, const struc
 		goto out;
 	}
 	renderer_get_stats(r, &st);
-	/* A model of one material: one draw, as before it had ranges. */
+	/* A model of one material: one draw with one program, as before it
+	 * had ranges. */
 	if (st.attributes != 2 + uvs + tangents + colors || st.vertex_bytes != bytes ||
-	    st.textures != textures || st.draws != 1) {
+	    st.textures != textures || st.draws != 1 || st.program_count != 1 ||
+	    st.drawn[0].program != st.program) {
 		fprintf(stderr,
 			"%s: %d arrays of %ld bytes and %d textures, expected %d, %ld, %d\n",
 			c->name, st.attributes, st.vertex_bytes, st.textures,
@@ -157,6 +159,62 @@ out:
 	image_release(&mat.detail);
 	image_release(&mat.ramp);
 	image_release(&surface.base_map);
+	return bad;
+}
+
+/* Two materials, a detail map on one and a film on the other: each range
+ * draws with a program of its own material's features only (the one
+ * without a detail map samples none). */
+static int check_parts(struct display *d, struct mesh *mesh, const struct image *matcap)
+{
+	struct material_surface surfaces[2] = {
+	    {.features = MATERIAL_DETAIL | MATERIAL_DETAIL_NORMAL,
+	     .alpha = 1.0f,
+	     .base_transform = {1, 0, 0, 1, 0, 0}},
+	    {.features = MATERIAL_IRIDESCENCE,
+	     .opacity = 0.5f,
+	     .alpha = 1.0f,
+	     .base_transform = {1, 0, 0, 1, 0, 0}}};
+	struct material mat = {.features =
+				   MATERIAL_DETAIL | MATERIAL_DETAIL_NORMAL | MATERIAL_IRIDESCENCE,
+			       .surface_count = 2,
+			       .surfaces = surfaces};
+	uint32_t half = mesh->index_count / 6 * 3;
+	struct renderer *r = renderer_new(&d->gl, NULL);
+	struct renderer_stats st;
+	struct view v = {.orientation = quat_identity()};
+	int bad = 1;
+
+	printf("two materials, a detail map and a film\n");
+	fill(&surfaces[0].detail, 4, 4);
+	if (!r || mesh_alloc_ranges(mesh, 2, 2))
+		goto out;
+	mesh->ranges[0] = (struct mesh_range){0, half, 0, {0, 0, 0}};
+	mesh->ranges[1] = (struct mesh_range){half, mesh->index_count - half, 1, {0, 0, 0}};
+	if (renderer_set_material(r, &mat) || renderer_set_mesh(r, mesh) ||
+	    renderer_set_matcap(r, matcap) || renderer_set_mode(r, SHADING_VIEW, false)) {
+		fprintf(stderr, "two materials: the renderer failed\n");
+		goto out;
+	}
+	renderer_get_stats(r, &st);
+	bad = st.draws != 2 || st.program_count != 2;
+	if (bad)
+		fprintf(stderr, "two materials: %u draws with %u programs, expected 2 and 2\n",
+			st.draws, st.program_count);
+	for (uint32_t k = 0; !bad && k < 2; k++)
+		bad |= check_program(&d->gl, st.drawn[k].program,
+				     surfaces[st.drawn[k].surface].features, false,
+				     st.drawn[k].surface ? "the film's part" : "the detailed part");
+	d->begin_frame(d);
+	renderer_draw(r, &v, d->width, d->height);
+	d->present(d);
+	if (d->gl.GetError() != GL_NO_ERROR) {
+		fprintf(stderr, "two materials: GL error while drawing\n");
+		bad = 1;
+	}
+out:
+	renderer_free(r);
+	image_release(&surfaces[0].detail);
 	return bad;
 }
 
@@ -218,6 +276,7 @@ int main(void)
 	d->begin_frame(d);
 	for (size_t i = 0; i < sizeof(cases) / sizeof(cases[0]); i++)
 		bad |= check_case(d, &cases[i], &mesh, &matcap);
+	bad |= check_parts(d, &mesh, &matcap);
 	bad |= check_lod(d, &matcap);
 	image_release(&matcap);
 	mesh_release(&mesh);

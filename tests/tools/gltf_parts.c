@@ -79,6 +79,26 @@ static void part_views(FILE *views, FILE *accessors, struct blob *b, const struc
 		4 * k + 1, nv, 4 * k + 2, nv, 4 * k + 3, m->index_count);
 }
 
+/* One PNG into the buffer and the images; returns its texture's index,
+ * or -1. */
+static int embed(const char *path, struct blob *b, FILE *imgs, int first_view, int *images,
+		 size_t *img_off, size_t *img_len)
+{
+	size_t len = 0;
+	unsigned char *png = slurp(path, &len);
+
+	if (!png || *images == MAX_IMAGES) {
+		free(png);
+		return -1;
+	}
+	img_off[*images] = put(b, png, len);
+	img_len[*images] = len;
+	free(png);
+	fprintf(imgs, "%s{\"bufferView\":%d,\"mimeType\":\"image/png\"}", *images ? "," : "",
+		first_view + *images);
+	return (*images)++;
+}
+
 static char *stream_text(FILE *f, char **buf)
 {
 	fclose(f);
@@ -105,26 +125,25 @@ int gltf_write_parts(const char *path, const struct gltf_part *parts, int n)
 				material ? "," : "", parts[k].factor[0], parts[k].factor[1],
 				parts[k].factor[2], parts[k].factor[3]);
 			if (parts[k].png) {
-				size_t len = 0;
-				unsigned char *png = slurp(parts[k].png, &len);
+				int t =
+				    embed(parts[k].png, &b, imgs, 4 * n, &images, img_off, img_len);
 
-				if (!png)
+				if (t < 0)
 					goto out;
-				if (images == MAX_IMAGES) {
-					free(png);
-					goto out;
-				}
-				img_off[images] = put(&b, png, len);
-				img_len[images] = len;
-				free(png);
-				fprintf(imgs, "%s{\"bufferView\":%d,\"mimeType\":\"image/png\"}",
-					images ? "," : "", 4 * n + images);
-				fprintf(mats, ",\"baseColorTexture\":{\"index\":%d%s%s}", images,
+				fprintf(mats, ",\"baseColorTexture\":{\"index\":%d%s%s}", t,
 					parts[k].texture_info ? "," : "",
 					parts[k].texture_info ? parts[k].texture_info : "");
-				images++;
 			}
-			fprintf(mats, ",\"metallicFactor\":0}%s%s}", parts[k].material ? "," : "",
+			fprintf(mats, ",\"metallicFactor\":0}");
+			if (parts[k].normal_png) {
+				int t = embed(parts[k].normal_png, &b, imgs, 4 * n, &images,
+					      img_off, img_len);
+
+				if (t < 0)
+					goto out;
+				fprintf(mats, ",\"normalTexture\":{\"index\":%d}", t);
+			}
+			fprintf(mats, "%s%s}", parts[k].material ? "," : "",
 				parts[k].material ? parts[k].material : "");
 		}
 		fprintf(prims,

@@ -15,7 +15,8 @@ struct gltf_part {
 	/* Members of the primitive's baseColorTexture besides index (e.g. a
 	 * KHR_texture_transform's "extensions"); NULL: none. */
 	const char *texture_info;
-	int own_material; /* 0: the part shares the previous part's material */
+	int own_material;	/* 0: the part shares the previous part's material */
+	const char *normal_png; /* normalTexture, embedded; NULL: none */
 };
 
 /* One node, one mesh of n primitives. Returns 0 or -1. */

@@ -1,6 +1,8 @@
 #!/bin/sh
-# The README's first command: make itself, then `make deps`, on a fresh
-# Debian 12 or 13, as root (an image without sudo) or as a user with sudo.
+# The README's first command: make itself, then `make deps` (what building
+# and running need), on a fresh Debian 12 or 13, as root (an image without
+# sudo) or as a user with sudo. The test bench is `make deps-test`, the
+# README's test command.
 #   sh tests/tools/make-deps.sh
 set -eu
 cd "$(dirname "$0")/../.."

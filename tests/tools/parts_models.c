@@ -166,6 +166,19 @@ static void label(int x, int y, int w, int h, uint8_t *p)
 	p[0] = 220, p[1] = band ? 240 : 30, p[2] = band ? 240 : 30, p[3] = in ? 255 : 0;
 }
 
+/* A tangent-space normal map of round bumps, 8 x 8 over the map. */
+static void bumps(int x, int y, int w, int h, uint8_t *p)
+{
+	double u = (x + 0.5) / w * 8.0, v = (y + 0.5) / h * 8.0;
+	double dx = 0.8 * cos(u * 6.2832), dy = 0.8 * cos(v * 6.2832);
+	double len = sqrt(dx * dx + dy * dy + 1.0);
+
+	p[0] = (uint8_t)lround((dx / len * 0.5 + 0.5) * 255.0);
+	p[1] = (uint8_t)lround((dy / len * 0.5 + 0.5) * 255.0);
+	p[2] = (uint8_t)lround((1.0 / len * 0.5 + 0.5) * 255.0);
+	p[3] = 255;
+}
+
 static int put(const char *dir, const char *name, const struct gltf_part *parts, int n)
 {
 	char path[4096];
@@ -180,33 +193,55 @@ static int put(const char *dir, const char *name, const struct gltf_part *parts,
 
 int parts_models_write(const char *dir)
 {
-	char tex_a[4096], tex_b[4096], tex_label[4096];
+	char tex_a[4096], tex_b[4096], tex_label[4096], tex_bumps[4096];
 	struct mesh s, top, bottom, q1, q2, l;
 	int bad = png(dir, "tex-checker.png", 64, 64, checker, tex_a, sizeof(tex_a)) |
 		  png(dir, "tex-stripes.png", 64, 64, stripes, tex_b, sizeof(tex_b)) |
-		  png(dir, "tex-label.png", 128, 64, label, tex_label, sizeof(tex_label));
+		  png(dir, "tex-label.png", 128, 64, label, tex_label, sizeof(tex_label)) |
+		  png(dir, "tex-bumps.png", 64, 64, bumps, tex_bumps, sizeof(tex_bumps));
 
 	if (bad || mesh_uv_sphere(&s, 48, 24) || sub_mesh(&s, upper, &s, &top) ||
 	    sub_mesh(&s, upper, NULL, &bottom))
 		return 1;
 	/* Two halves, each its own base map. */
 	{
-		struct gltf_part p[2] = {{&top, {1, 1, 1, 1}, tex_a, NULL, NULL, 1},
-					 {&bottom, {1, 1, 1, 1}, tex_b, NULL, NULL, 1}};
+		struct gltf_part p[2] = {{&top, {1, 1, 1, 1}, tex_a, NULL, NULL, 1, NULL},
+					 {&bottom, {1, 1, 1, 1}, tex_b, NULL, NULL, 1, NULL}};
 
 		bad |= put(dir, "parts-textures.glb", p, 2);
+	}
+	/* Two halves, each its own normal map: bumps above, none below. */
+	{
+		struct gltf_part p[2] = {{&top, {1, 1, 1, 1}, NULL, NULL, NULL, 1, tex_bumps},
+					 {&bottom, {1, 1, 1, 1}, NULL, NULL, NULL, 1, NULL}};
+
+		bad |= put(dir, "parts-normals.glb", p, 2);
+	}
+	/* Two halves, each its own iridescent film: a thick one above (its
+	 * hue turns fast), a thin one below. */
+	{
+		static const char *const film[2] = {
+		    "\"extensions\":{\"KHR_materials_iridescence\":{\"iridescenceFactor\":1,"
+		    "\"iridescenceThicknessMaximum\":900}}",
+		    "\"extensions\":{\"KHR_materials_iridescence\":{\"iridescenceFactor\":0.6,"
+		    "\"iridescenceThicknessMaximum\":150}}"};
+		struct gltf_part p[2] = {{&top, {1, 1, 1, 1}, NULL, film[0], NULL, 1, NULL},
+					 {&bottom, {1, 1, 1, 1}, NULL, film[1], NULL, 1, NULL}};
+
+		bad |= put(dir, "parts-iridescence.glb", p, 2);
 	}
 	/* A label in front of a grey body: MASK, cut where its map is clear. */
 	if (quad(&q1, 0, 0.1, 1.2, 0.6, 1.05))
 		return 1;
 	{
-		struct gltf_part p[2] = {{&s, {0.7, 0.75, 0.8, 1}, NULL, NULL, NULL, 1},
+		struct gltf_part p[2] = {{&s, {0.7, 0.75, 0.8, 1}, NULL, NULL, NULL, 1, NULL},
 					 {&q1,
 					  {1, 1, 1, 1},
 					  tex_label,
 					  "\"alphaMode\":\"MASK\",\"alphaCutoff\":0.5",
 					  NULL,
-					  1}};
+					  1,
+					  NULL}};
 
 		bad |= put(dir, "parts-mask.glb", p, 2);
 	}
@@ -217,9 +252,9 @@ int parts_models_write(const char *dir)
 		return 1;
 	{
 		struct gltf_part p[3] = {
-		    {&s, {1, 0.35, 0.25, 1}, NULL, NULL, NULL, 1},
-		    {&q2, {0.2, 1, 0.3, 0.5}, NULL, "\"alphaMode\":\"BLEND\"", NULL, 1},
-		    {&q1, {0.2, 0.4, 1, 0.5}, NULL, "\"alphaMode\":\"BLEND\"", NULL, 1}};
+		    {&s, {1, 0.35, 0.25, 1}, NULL, NULL, NULL, 1, NULL},
+		    {&q2, {0.2, 1, 0.3, 0.5}, NULL, "\"alphaMode\":\"BLEND\"", NULL, 1, NULL},
+		    {&q1, {0.2, 0.4, 1, 0.5}, NULL, "\"alphaMode\":\"BLEND\"", NULL, 1, NULL}};
 
 		bad |= put(dir, "parts-blend.glb", p, 3);
 	}
@@ -228,7 +263,7 @@ int parts_models_write(const char *dir)
 		return 1;
 	{
 		struct gltf_part p[1] = {
-		    {&l, {0.45, 0.85, 0.35, 1}, NULL, "\"doubleSided\":true", NULL, 1}};
+		    {&l, {0.45, 0.85, 0.35, 1}, NULL, "\"doubleSided\":true", NULL, 1, NULL}};
 
 		bad |= put(dir, "parts-leaf.glb", p, 1);
 	}
@@ -263,7 +298,8 @@ int parts_models_write_bench(const char *dir)
 		    b % 8 ? NULL : tex,
 		    NULL,
 		    NULL,
-		    1};
+		    1,
+		    NULL};
 	}
 	bad |= put(dir, "knot-64-materials.glb", p, BANDS);
 	for (int b = 0; b < BANDS; b++)

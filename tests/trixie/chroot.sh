@@ -2,17 +2,16 @@
 # The tests on Debian 13 (trixie), from any Debian host: a chroot built
 # from Debian's archive with debootstrap, kept in tests/trixie/cache/root
 # (or $TRIXIE_ROOT) and reused, a fresh copy of this tree in it, then the
-# README's commands there: apt-get install make, make deps, make test.
+# README's commands there: apt-get install make, make deps, make deps-test,
+# make test.
 #
 #   tests/trixie/chroot.sh [-- COMMAND...]      (as root; make test-trixie)
 #
 # COMMAND runs in the copy instead of the tests (e.g. -- bash for a shell).
 # Knobs: TRIXIE_ROOT, DEBIAN_MIRROR, MAKE_TEST (the make arguments for the
 # tests, default "test"), JOBS (make -j, default 2), VM_E2E=0 (no virtual
-# board), TRIXIE_DEB=0 (no package built and installed after the tests, and
-# no Ansible role applied with it, tests/cross/ansible.sh). The board boots
-# Debian 12's kernel (tests/vm/build.sh makes it on this host, which must
-# then be Debian 12) with Debian 13's libgpiod 2,
+# board). The board boots Debian 12's kernel (tests/vm/build.sh makes it on
+# this host, which must then be Debian 12) with Debian 13's libgpiod 2,
 # libcamera 0.4 and Mesa 25 inside: the GPIO and camera tests on those.
 # /proc, /sys and /dev are mounted inside only while this runs; every exit
 # path unmounts them. Each step's time is printed as "trixie: STEP N s".
@@ -114,8 +113,9 @@ if [ $# -gt 0 ]; then
 	in_root sh -c "cd $SRC && exec \"\$@\"" sh "$@"
 	exit
 fi
-# The README's first command, verbatim as a root user would type it.
-in_root sh -c "cd $SRC && sh tests/tools/make-deps.sh" >"$ROOT.deps.log" 2>&1 ||
+# The README's first command, verbatim as a root user would type it, then
+# its test command's first half.
+in_root sh -c "cd $SRC && sh tests/tools/make-deps.sh && make deps-test" >"$ROOT.deps.log" 2>&1 ||
 	die "make deps failed in the chroot, see $ROOT.deps.log"
 step deps
 in_root sh -c "cd $SRC && make -j$JOBS all test-tools" >"$ROOT.build.log" 2>&1 ||
@@ -124,22 +124,4 @@ step build
 rc=0
 in_root sh -c "cd $SRC && make -j$JOBS $MAKE_TEST" || rc=$?
 step tests
-# The package as Debian 13 builds it (its own library versions), installed
-# with apt into a fresh Debian 13 root and run from the installed files.
-if [ "${TRIXIE_DEB:-1}" != 0 ]; then
-	if in_root sh -c "cd $SRC && make deps-deb && make deb" >"$ROOT.deb.log" 2>&1; then
-		sh "$TOP/tests/cross/deb-install.sh" \
-			"$ROOT$SRC"/build/deb/matcap-kiosk_*_"$(dpkg --print-architecture)".deb \
-			"$TOP/build/deb-root-trixie" trixie || rc=1
-		# The Ansible role, with that package, on a fresh Debian 13 root.
-		sh "$TOP/tests/cross/ansible.sh" \
-			"$ROOT$SRC"/build/deb/matcap-kiosk_*_"$(dpkg --print-architecture)".deb \
-			"$TOP/build/ansible-root-trixie" trixie || rc=1
-	else
-		tail -20 "$ROOT.deb.log"
-		echo "0 passed, 1 failed (make deb in the chroot, see $ROOT.deb.log)"
-		rc=1
-	fi
-	step package
-fi
 exit $rc

@@ -5,6 +5,7 @@
 #include "scene/gltf.h"
 #include "gltf_parts.h"
 #include "gltf_write.h"
+#include "render/draw_list.h"
 #include "scene/lod.h"
 #include "scene/material.h"
 #include "scene/mesh.h"
@@ -242,7 +243,7 @@ static void tex_coord_picks_the_uv_set(void **state)
 	assert_int_equal(
 	    gltf_load_textures(path, GLTF_TEXTURE_BASE_COLOR | GLTF_TEXTURE_NORMAL, &m), 0);
 	assert_non_null(m.uvs);
-	assert_int_equal(m.material.normal_map.width, 6);
+	assert_int_equal(m.materials[0].normal_map.width, 6);
 	assert_int_equal(m.materials[0].base_map.width, 0);
 	mesh_release(&m);
 }
@@ -433,15 +434,17 @@ static void each_primitive_keeps_its_material(void **state)
 	     "\"alphaMode\":\"MASK\",\"alphaCutoff\":0.3,"
 	     "\"doubleSided\":true",
 	     NULL,
-	     1},
-	    {&f->sphere, {0.2, 0.4, 1, 0.5}, NULL, "\"alphaMode\":\"BLEND\"", NULL, 1},
-	    {&f->sphere, {0, 0, 0, 1}, NULL, NULL, NULL, 0}, /* the BLEND one again */
+	     1,
+	     NULL},
+	    {&f->sphere, {0.2, 0.4, 1, 0.5}, NULL, "\"alphaMode\":\"BLEND\"", NULL, 1, NULL},
+	    {&f->sphere, {0, 0, 0, 1}, NULL, NULL, NULL, 0, NULL}, /* the BLEND one again */
 	    {&f->sphere,
 	     {1, 1, 1, 1},
 	     f->png,
 	     NULL,
 	     "\"extensions\":{\"KHR_texture_transform\":{\"offset\":[0.5,0]}}",
-	     1}};
+	     1,
+	     NULL}};
 	struct material_config cfg;
 	struct material mat;
 	char path[256];
@@ -496,6 +499,105 @@ static void each_primitive_keeps_its_material(void **state)
 	mesh_release(&m);
 }
 
+/* A w x h normal map of one texel value. */
+static void flat_png(const char *path, int w, int h, const uint8_t rgb[3])
+{
+	struct image img;
+
+	assert_int_equal(image_alloc(&img, w, h), 0);
+	for (int i = 0; i < w * h; i++) {
+		memcpy(img.rgba + i * 4, rgb, 3);
+		img.rgba[i * 4 + 3] = 255;
+	}
+	assert_int_equal(image_write_png(path, &img), 0);
+	image_release(&img);
+}
+
+/* Each material's normal and occlusion maps and iridescence reach the
+ * ranges drawn with it, and only those: material 0 a tilted normal map,
+ * material 1 none, material 2 a flat one and a film. Each range's draw
+ * leaves out of the model's program what its material lacks. */
+static void each_material_keeps_its_maps(void **state)
+{
+	static const uint8_t tilted[3] = {200, 128, 200}, flat[3] = {128, 128, 255};
+	struct fixture *f = *state;
+	char path[256], tilt_png[256], flat_png_path[256];
+	struct gltf_part p[3] = {
+	    {&f->sphere, {1, 1, 1, 1}, NULL, NULL, NULL, 1, tilt_png},
+	    {&f->sphere, {1, 1, 1, 1}, NULL, NULL, NULL, 1, NULL},
+	    {&f->sphere,
+	     {1, 1, 1, 1},
+	     NULL,
+	     "\"extensions\":{\"KHR_materials_iridescence\":{\"iridescenceFactor\":1,"
+	     "\"iridescenceThicknessMaximum\":300}}",
+	     NULL,
+	     1,
+	     flat_png_path}};
+	static const unsigned want[3] = {MATERIAL_DETAIL | MATERIAL_DETAIL_NORMAL, 0,
+					 MATERIAL_DETAIL | MATERIAL_DETAIL_NORMAL |
+					     MATERIAL_IRIDESCENCE};
+	struct material_config cfg;
+	struct material mat;
+	struct draw_list l;
+	struct mesh m;
+
+	snprintf(tilt_png, sizeof(tilt_png), "%s/tilted.png", f->dir);
+	snprintf(flat_png_path, sizeof(flat_png_path), "%s/flat.png", f->dir);
+	snprintf(path, sizeof(path), "%s/maps.glb", f->dir);
+	flat_png(tilt_png, 4, 4, tilted);
+	flat_png(flat_png_path, 2, 2, flat);
+	assert_int_equal(gltf_write_parts(path, p, 3), 0);
+	material_config_defaults(&cfg);
+	assert_int_equal(gltf_load_textures(path, material_gltf_textures(&cfg), &m), 0);
+	assert_int_equal(m.material_count, 3);
+	assert_int_equal(m.materials[0].normal_map.width, 4);
+	assert_int_equal(m.materials[1].normal_map.width, 0);
+	assert_int_equal(m.materials[2].normal_map.width, 2);
+	/* The model's material holds factors only: nothing decoded twice. */
+	assert_int_equal(m.material.normal_map.width, 0);
+	assert_int_equal(material_load(&mat, &cfg, &m, true), 0);
+	assert_int_equal(mat.features &
+			     (MATERIAL_DETAIL | MATERIAL_DETAIL_NORMAL | MATERIAL_IRIDESCENCE),
+			 want[2]);
+	assert_int_equal(mat.detail.width, 0); /* no map over the whole model */
+	for (int k = 0; k < 3; k++)
+		assert_int_equal(mat.surfaces[k].features, want[k]);
+	/* Each its own map: tilted x (200 -> about 0.57 of the way, packed
+	 * normalised), flat; material 1 none. */
+	assert_int_equal(mat.surfaces[0].detail.width, 4);
+	assert_true(mat.surfaces[0].detail.rgba[0] > 180);
+	assert_int_equal(mat.surfaces[1].detail.width, 0);
+	assert_int_equal(mat.surfaces[2].detail.width, 2);
+	assert_true(abs(mat.surfaces[2].detail.rgba[0] - 128) <= 1);
+	assert_true(fabsf(mat.surfaces[2].hue_average - (float)(2 * 1.3 * 300 / 550.0)) < 1e-5f);
+	assert_true(mat.surfaces[2].opacity > 0.0f && mat.surfaces[0].opacity == 0.0f);
+	/* Each range draws its material's surface with the program its
+	 * features need. */
+	assert_int_equal(draw_list_build(&l, m.ranges, m.range_count, m.indices, m.index_count,
+					 m.vertex_count, mat.surfaces, mat.surface_count, true),
+			 0);
+	assert_int_equal(l.count, 3);
+	for (uint32_t i = 0; i < l.count; i++) {
+		const struct draw_item *it = &l.items[i];
+		unsigned drawn = want[2] & ~draw_variant_missing(draw_item_variant(it));
+
+		assert_int_equal(drawn, want[it->surface]);
+		assert_int_equal(draw_item_variant(it) == 0, it->surface == 2);
+	}
+	draw_list_release(&l);
+	material_release(&mat);
+	/* A detail_map in the settings covers every part in their stead. */
+	cfg.detail_map = tilt_png;
+	assert_int_equal(material_load(&mat, &cfg, &m, true), 0);
+	assert_int_equal(mat.detail.width, 4);
+	for (int k = 0; k < 3; k++) {
+		assert_true(mat.surfaces[k].features & MATERIAL_DETAIL_NORMAL);
+		assert_int_equal(mat.surfaces[k].detail.width, 0);
+	}
+	material_release(&mat);
+	mesh_release(&m);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -507,6 +609,7 @@ int main(void)
 	    cmocka_unit_test(decodes_only_what_is_used),
 	    cmocka_unit_test(one_colour_is_a_constant),
 	    cmocka_unit_test(each_primitive_keeps_its_material),
+	    cmocka_unit_test(each_material_keeps_its_maps),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);
 }

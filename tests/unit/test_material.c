@@ -153,17 +153,17 @@ static void textures_decoded_only_when_asked(void **state)
 	assert_true(m.material.present && m.material.iridescence);
 	assert_true(m.material.has_normal_map && m.material.has_occlusion_map &&
 		    m.material.has_thickness_map);
-	assert_int_equal(m.material.normal_map.width + m.material.occlusion_map.width +
-			     m.material.thickness_map.width,
+	assert_int_equal(m.materials[0].normal_map.width + m.materials[0].occlusion_map.width +
+			     m.materials[0].thickness_map.width,
 			 0);
 	assert_true(fabs(m.material.iridescence_factor - 0.5) < 1e-6);
 	assert_true(m.material.thickness_min == 200.0f && m.material.thickness_max == 400.0f);
 	assert_true(fabs(m.material.base_color[0] - 0.8) < 1e-6);
 	mesh_release(&m);
 	assert_int_equal(gltf_load_textures(path, GLTF_TEXTURE_OCCLUSION, &m), 0);
-	assert_int_equal(m.material.normal_map.width, 0);
-	assert_int_equal(m.material.occlusion_map.width, 6);
-	assert_int_equal(m.material.occlusion_map.height, 4);
+	assert_int_equal(m.materials[0].normal_map.width, 0);
+	assert_int_equal(m.materials[0].occlusion_map.width, 6);
+	assert_int_equal(m.materials[0].occlusion_map.height, 4);
 	mesh_release(&m);
 	/* The settings decide what is asked. */
 	material_config_defaults(&cfg);
@@ -193,17 +193,17 @@ static void unusable_textures_leave_the_model(void **state)
 	o.container = GLTF_EXTERNAL_BIN;
 	write_model(f, "beside.gltf", o, path, sizeof(path));
 	assert_int_equal(gltf_load_textures(path, GLTF_TEXTURE_NORMAL, &m), 0);
-	assert_int_equal(m.material.normal_map.width, 6);
+	assert_int_equal(m.materials[0].normal_map.width, 6);
 	mesh_release(&m);
 	o.image_uri = "../normal.png";
 	write_model(f, "outside.gltf", o, path, sizeof(path));
 	assert_int_equal(gltf_load_textures(path, GLTF_TEXTURE_NORMAL, &m), 0);
-	assert_int_equal(m.material.normal_map.width, 0);
+	assert_int_equal(m.materials[0].normal_map.width, 0);
 	mesh_release(&m);
 	o.image_uri = "/etc/passwd";
 	write_model(f, "absolute.gltf", o, path, sizeof(path));
 	assert_int_equal(gltf_load_textures(path, GLTF_TEXTURE_NORMAL, &m), 0);
-	assert_int_equal(m.material.normal_map.width, 0);
+	assert_int_equal(m.materials[0].normal_map.width, 0);
 	mesh_release(&m);
 	path_in(f, "text.png", text, sizeof(text));
 	FILE *t = fopen(text, "w");
@@ -213,7 +213,7 @@ static void unusable_textures_leave_the_model(void **state)
 	o.normal_png = text;
 	write_model(f, "corrupt.glb", o, path, sizeof(path));
 	assert_int_equal(gltf_load_textures(path, GLTF_TEXTURE_NORMAL, &m), 0);
-	assert_int_equal(m.material.normal_map.width, 0);
+	assert_int_equal(m.materials[0].normal_map.width, 0);
 	mesh_release(&m);
 }
 
@@ -267,12 +267,22 @@ static void iridescence_from_gltf_and_settings(void **state)
 	assert_true(fabs(mat.hue_range + 400 / (1.3 * 550.0)) < 1e-5);
 	assert_true(fabs(mat.hue_shift - 2 * 1.3 * 200 / 550.0) < 1e-5);
 	assert_true(fabs(mat.opacity - 0.3) < 1e-6);
-	/* Packed at the largest map's size, a power of two: 8 x 4 (from 6 x 5).
-	 * Flat normal, occlusion 64 in blue, thickness 51 in alpha. */
-	assert_int_equal(mat.detail.width, 8);
-	assert_int_equal(mat.detail.height, 4);
+	/* The material's own map, on its surface (none for the whole
+	 * model): packed at the largest map's size, a power of two: 8 x 4
+	 * (from 6 x 5). Flat normal, occlusion 64 in blue, thickness 51 in
+	 * alpha. Its iridescence is its surface's too. */
+	assert_int_equal(mat.surface_count, 1);
+	assert_int_equal(mat.detail.width, 0);
+	assert_int_equal(mat.surfaces[0].features,
+			 MATERIAL_IRIDESCENCE | MATERIAL_DETAIL | MATERIAL_DETAIL_NORMAL);
+	assert_true(mat.surfaces[0].hue_average == mat.hue_average &&
+		    mat.surfaces[0].hue_range == mat.hue_range &&
+		    mat.surfaces[0].hue_shift == mat.hue_shift &&
+		    mat.surfaces[0].opacity == mat.opacity);
+	assert_int_equal(mat.surfaces[0].detail.width, 8);
+	assert_int_equal(mat.surfaces[0].detail.height, 4);
 	for (int i = 0; i < 32; i++) {
-		const uint8_t *p = mat.detail.rgba + i * 4;
+		const uint8_t *p = mat.surfaces[0].detail.rgba + i * 4;
 
 		assert_true(abs(p[0] - 128) <= 1 && abs(p[1] - 128) <= 1);
 		assert_int_equal(p[2], 64);

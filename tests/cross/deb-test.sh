@@ -1,0 +1,101 @@
+#!/bin/sh
+# make test-deb: the package built in fresh roots with only its
+# Build-Depends (tests/cross/deb-build.sh), for each SUITE and ARCH, then
+# installed into a fresh root of its own architecture and run there
+# (tests/cross/deb-install.sh), each render compared with the amd64
+# package's of the same suite. Says each part's time, each package's size
+# and Depends line, and ends with one "N passed, N failed" line (the
+# install checks and one per build). Needs root.
+# Usage: tests/cross/deb-test.sh SRC IMGDIFF "SUITES" "ARCHS" "INSTALL"
+#   SUITES  e.g. "trixie bookworm"; the first one's packages go to
+#           build/deb/, the others' to build/deb/SUITE/
+#   ARCHS   e.g. "arm64 armhf"; this machine's architecture (amd64) is
+#           always built and installed first: its render is the reference
+#   INSTALL the SUITE:ARCH pairs of other architectures installed, or "all"
+set -u
+src=$1
+imgdiff=$2
+suites=$3
+archs=$4
+install=$5
+native=$(dpkg --print-architecture)
+dir=$(dirname "$0")
+first=${suites%% *}
+passed=0
+failed=0
+failures=
+times=
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+# part LABEL COMMAND...: run it, its output shown as it comes (its own
+# "N passed, N failed" indented, so that only the total below is counted
+# by .ci/run), add its checks to the total (a command without such a line
+# counts as one check), say its time.
+part() {
+	label=$1
+	shift
+	t0=$(date +%s)
+	{
+		"$@"
+		echo $? >"$tmp/rc"
+	} 2>&1 | tee "$tmp/log" | sed 's/^[0-9]* passed, [0-9]* failed/  (&)/'
+	rc=$(cat "$tmp/rc")
+	line=$(sed -n 's/^\([0-9]*\) passed, \([0-9]*\) failed.*/\1 \2/p' "$tmp/log" | tail -1)
+	if [ -n "$line" ]; then
+		passed=$((passed + ${line% *}))
+		failed=$((failed + ${line#* }))
+	elif [ "$rc" = 0 ]; then
+		passed=$((passed + 1))
+	else
+		failed=$((failed + 1))
+	fi
+	[ "$rc" = 0 ] || failures="$failures $label"
+	t="$label: $(($(date +%s) - t0)) s (exit $rc)"
+	echo "== $t"
+	times="$times  $t
+"
+	return "$rc"
+}
+
+wanted() {
+	[ "$install" = all ] && return 0
+	for p in $install; do [ "$p" = "$1:$2" ] && return 0; done
+	return 1
+}
+
+version=$(dpkg-parsechangelog -l "$src/debian/changelog" -SVersion)
+for suite in $suites; do
+	out=build/deb
+	[ "$suite" = "$first" ] || out=build/deb/$suite
+	# This machine's package first: the reference render, and the one
+	# built with nothing but its Build-Depends in the root.
+	order=$native
+	for a in $archs; do [ "$a" = "$native" ] || order="$order $a"; done
+	part "build $suite ($order)" sh "$dir/deb-build.sh" "$suite" "$order" "$src" "$out"
+	for arch in $order; do
+		deb=$out/matcap-kiosk_${version}_$arch.deb
+		[ -e "$deb" ] || continue
+		echo "$deb: $(stat -c %s "$deb") bytes"
+		echo "  Depends: $(dpkg-deb -f "$deb" Depends)"
+	done
+	for arch in $order; do
+		deb=$out/matcap-kiosk_${version}_$arch.deb
+		[ -e "$deb" ] || continue
+		ref=
+		if [ "$arch" != "$native" ]; then
+			wanted "$suite" "$arch" || continue
+			part "binfmt $arch" sh "$dir/binfmt.sh" "$arch" || continue
+			ref=build/deb-root-$suite-$native.png
+			[ -e "$ref" ] || ref=
+		fi
+		part "install $suite $arch" sh "$dir/deb-install.sh" "$deb" \
+			"build/deb-root-$suite-$arch" "$suite" $ref ${ref:+"$imgdiff"}
+	done
+done
+
+echo "== test-deb: the time of each part"
+printf '%s' "$times"
+[ -z "$failures" ] || echo "failed:$failures"
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ] && [ -z "$failures" ]
