@@ -97,8 +97,9 @@ test-cross: cross-build $(KIOSK) $(TOOLS_DIR)/mkmodels $(TOOLS_DIR)/imgdiff
 #                               Debian's recipe in a fresh Debian 13 root that has only the
 #                               Build-Depends (DEB_SUITE=bookworm: Debian 12, into
 #                               build/deb/bookworm/), lintian there (tests/cross/deb-build.sh)
-#   make test-deb               amd64, arm64 and armhf built that way on Debian 13 and 12
-#                               (one root per release), the Debian 13 ones and Debian 12's
+#   make test-deb               amd64, arm64 and armhf built that way on Debian 13, amd64 on
+#                               Debian 12 (one root per release; DEB_OTHER_ARCHS="arm64 armhf"
+#                               builds those on 12 too), the Debian 13 ones and Debian 12's
 #                               amd64 installed into fresh roots of their own architecture
 #                               and run there (qemu-user binfmt); ARCH=arm64 (or armhf) for
 #                               one, DEB_SUITES=trixie for one release (tests/cross/deb-test.sh)
@@ -115,6 +116,7 @@ DEB_ARCHS   ?= $(or $(ARCH),arm64 armhf)
 # on 12 they are built and lintian-checked, amd64 installed (each qemu
 # root costs minutes of CI).
 DEB_INSTALL ?= $(foreach a,$(DEB_ARCHS),trixie:$(a))
+DEB_OTHER_ARCHS ?=
 DEB_HOST_ARCH := $(shell dpkg --print-architecture 2>/dev/null)
 # build/deb/ holds Debian 13's packages, build/deb/SUITE/ another release's.
 DEB_OUT     := $(if $(filter trixie,$(DEB_SUITE)),$(DEB_BUILD),$(DEB_BUILD)/$(DEB_SUITE))
@@ -157,7 +159,7 @@ endif
 # Builds, installs and renders in roots (as root: they are chroots). The
 # host's imgdiff compares the renders.
 test-deb: deb-src $(TOOLS_DIR)/imgdiff
-	$(DEB_SUDO_ROOT) sh tests/cross/deb-test.sh $(DEB_SRC) $(TOOLS_DIR)/imgdiff "$(DEB_SUITES)" \
+	$(DEB_SUDO_ROOT) env DEB_OTHER_ARCHS="$(DEB_OTHER_ARCHS)" sh tests/cross/deb-test.sh $(DEB_SRC) $(TOOLS_DIR)/imgdiff "$(DEB_SUITES)" \
 		"$(DEB_ARCHS)" "$(DEB_INSTALL)"
 
 .PHONY: deps-deb deb-src deb test-deb
