@@ -42,7 +42,7 @@ test_baker
 # 10. The live loop as systemd runs it, through the ASan binary.
 test_live
 # 10a. The same live loop and the unit tests under ThreadSanitizer.
-test_tsan
+[ "${TSAN:-1}" = 0 ] || test_tsan
 # 10b. Hands-off operation: --status, the poster, --import of a USB stick.
 test_hands
 # 10c. Content by sync: rsync and Syncthing's temporary names.

@@ -9,7 +9,8 @@
 #
 # COMMAND runs in the copy instead of the tests (e.g. -- bash for a shell).
 # Knobs: TRIXIE_ROOT, DEBIAN_MIRROR, MAKE_TEST (the make arguments for the
-# tests, default "test"), JOBS (make -j, default 2), VM_E2E=0 (no virtual
+# tests, default "test"), JOBS (make -j, default 2), TSAN=1 (the ThreadSanitizer
+# group too: off here by default, it runs on the host), VM_E2E=0 (no virtual
 # board). The board boots Debian 12's kernel (tests/vm/build.sh makes it on
 # this host, which must then be Debian 12) with Debian 13's libgpiod 2,
 # libcamera 0.4 and Mesa 25 inside: the GPIO and camera tests on those.
@@ -106,7 +107,7 @@ step copy
 
 in_root() {
 	chroot "$ROOT" /usr/bin/env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root \
-		LANG=C.UTF-8 TERM="${TERM:-dumb}" VM_CACHE=$VM_IN VM_E2E="${VM_E2E:-1}" "$@"
+		LANG=C.UTF-8 TERM="${TERM:-dumb}" VM_CACHE=$VM_IN VM_E2E="${VM_E2E:-1}" TSAN="${TSAN:-0}" "$@"
 }
 
 if [ $# -gt 0 ]; then
