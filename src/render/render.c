@@ -334,7 +334,7 @@ static int upload_surface(struct renderer *r, const struct material *m, uint32_t
 	int ret = 0;
 
 	if ((drawn_features(m) & MATERIAL_BASE_MAP) && s->base_map.width) {
-		ret = upload_texture(r->gl, &r->base_maps[k], &s->base_map, true, true);
+		ret = upload_texture(r->gl, &r->base_maps[k], &s->base_map, true, !s->no_mipmaps);
 		/* Its sampler's wrap (upload_texture left it bound). */
 		r->gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap[s->wrap[0]]);
 		r->gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap[s->wrap[1]]);

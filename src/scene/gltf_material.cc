@@ -180,19 +180,24 @@ void read_alpha(const tinygltf::Material &mat, const std::string &name, struct m
 	out->double_sided = mat.doubleSided;
 }
 
-// The texture's sampler's wrapS and wrapT (none: repeat, glTF's default).
-void read_wrap(const tinygltf::Model &m, int texture, int wrap[2])
+// The texture's sampler's wrapS and wrapT (none: repeat, glTF's default),
+// and whether its minFilter reads one level only (NEAREST or LINEAR: no
+// mipmaps, as the spec and three.js draw it; none or unset: mipmaps).
+void read_wrap(const tinygltf::Model &m, int texture, int wrap[2], bool *no_mipmaps)
 {
 	if (texture < 0 || (size_t)texture >= m.textures.size())
 		return;
 	int sampler = m.textures[(size_t)texture].sampler;
 	if (sampler < 0 || (size_t)sampler >= m.samplers.size())
 		return;
-	const int mode[2] = {m.samplers[(size_t)sampler].wrapS, m.samplers[(size_t)sampler].wrapT};
+	const tinygltf::Sampler &s = m.samplers[(size_t)sampler];
+	const int mode[2] = {s.wrapS, s.wrapT};
 	for (int k = 0; k < 2; k++)
 		wrap[k] = mode[k] == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE     ? MESH_WRAP_CLAMP
 			  : mode[k] == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT ? MESH_WRAP_MIRROR
 									     : MESH_WRAP_REPEAT;
+	*no_mipmaps = s.minFilter == TINYGLTF_TEXTURE_FILTER_NEAREST ||
+		      s.minFilter == TINYGLTF_TEXTURE_FILTER_LINEAR;
 }
 
 bool is_blend(const tinygltf::Model &m, int material)
@@ -338,7 +343,7 @@ void gltf_read_material(const tinygltf::Model &m, int index, unsigned textures, 
 	// The mesh's UVs are this set when it was chosen for the map.
 	if (base_coord == gltf_uv_set(m, index, textures))
 		base_coord = 0;
-	read_wrap(m, base_tex.index, out->base_wrap);
+	read_wrap(m, base_tex.index, out->base_wrap, &out->base_no_mipmaps);
 	if ((textures & decode & GLTF_TEXTURE_BASE_COLOR) && out->has_base_map)
 		read_texture(m, base_tex.index, base_coord, images, name, "baseColorTexture",
 			     &out->base_map, out->images_decoded);

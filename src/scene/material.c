@@ -325,6 +325,7 @@ static int resolve_surfaces(const struct mesh *mesh, bool base, struct material 
 			continue;
 		memcpy(s->base_transform, g->base_transform, sizeof(s->base_transform));
 		memcpy(s->wrap, g->base_wrap, sizeof(s->wrap));
+		s->no_mipmaps = g->base_no_mipmaps;
 		s->alpha_mode = g->alpha_mode;
 		s->alpha = g->base_alpha;
 		s->alpha_cutoff = g->alpha_cutoff;

@@ -70,6 +70,7 @@ struct material_surface {
 	struct image base_map;	 /* sRGB as stored; power-of-two sides; empty: none */
 	float base_transform[6]; /* mesh_material.base_transform */
 	int wrap[2];		 /* mesh_material.base_wrap */
+	bool no_mipmaps;	 /* mesh_material.base_no_mipmaps */
 	int alpha_mode;		 /* enum mesh_alpha; opaque when base colour is off */
 	float alpha, alpha_cutoff;
 	bool double_sided;

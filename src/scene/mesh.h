@@ -55,7 +55,8 @@ struct mesh_material {
 	unsigned images_decoded;
 	struct image base_map;
 	float base_transform[6];
-	int base_wrap[2]; /* its sampler's wrapS, wrapT: enum mesh_wrap */
+	int base_wrap[2];     /* its sampler's wrapS, wrapT: enum mesh_wrap */
+	bool base_no_mipmaps; /* its sampler's minFilter reads one level */
 };
 
 /* A part of the index array drawn with one material. center: the middle

@@ -336,7 +336,7 @@ static void base64(const uint8_t *in, size_t n, char *out)
 static void load_three(const char *materials, const int mat[3], bool color_0, struct mesh *m)
 {
 	float data[36] = {0};
-	char b64[200], prim[3][96], json[2048];
+	char b64[200], prim[3][96], json[4096];
 	int n;
 
 	for (int t = 0; t < 3; t++) {
@@ -380,6 +380,47 @@ static void assert_colour(const float *c, float r, float g, float b, float a)
  * constant vertex attribute): no colour per vertex to build, store or
  * upload. Colours that differ between primitives, or COLOR_0, are per
  * vertex, and the constant so far becomes the first vertices' colours. */
+/* A base map's sampler: its wrap per axis, and a minFilter of NEAREST or
+ * LINEAR reads one level (no mipmaps: what the spec and three.js draw);
+ * a mipmapped minFilter, or no sampler, keeps the chain. */
+static void sampler_wrap_and_min_filter(void **state)
+{
+	static const char *materials =
+	    "[{\"pbrMetallicRoughness\":{\"baseColorFactor\":[1,0,0,1],"
+	    "\"baseColorTexture\":{\"index\":0}}},"
+	    "{\"pbrMetallicRoughness\":{\"baseColorFactor\":[0,1,0,1],"
+	    "\"baseColorTexture\":{\"index\":1}}},"
+	    "{\"pbrMetallicRoughness\":{\"baseColorFactor\":[0,0,1,1],"
+	    "\"baseColorTexture\":{\"index\":2}}}],"
+	    "\"textures\":[{\"source\":0,\"sampler\":0},{\"source\":0,\"sampler\":1},"
+	    "{\"source\":0}],\"images\":[{\"uri\":\"no-such-map.png\"}],"
+	    "\"samplers\":[{\"minFilter\":9729,\"wrapS\":33071,\"wrapT\":33648},"
+	    "{\"minFilter\":9987}]";
+	int seen = 0;
+	struct mesh m;
+
+	(void)state;
+	load_three(materials, (const int[3]){0, 1, 2}, false, &m);
+	assert_int_equal(m.material_count, 3);
+	for (uint32_t k = 0; k < m.material_count; k++) {
+		const struct mesh_material *g = &m.materials[k];
+
+		if (g->base_color[0] > 0.5f) { /* red: clamp, mirror, one level */
+			assert_true(g->base_no_mipmaps);
+			assert_int_equal(g->base_wrap[0], MESH_WRAP_CLAMP);
+			assert_int_equal(g->base_wrap[1], MESH_WRAP_MIRROR);
+		} else {
+			assert_false(g->base_no_mipmaps);
+			assert_int_equal(g->base_wrap[0], MESH_WRAP_REPEAT);
+			assert_int_equal(g->base_wrap[1], MESH_WRAP_REPEAT);
+		}
+		seen |= (g->base_color[0] > 0.5f) | (g->base_color[1] > 0.5f) << 1 |
+			(g->base_color[2] > 0.5f) << 2;
+	}
+	assert_int_equal(seen, 7);
+	mesh_release(&m);
+}
+
 static void one_colour_is_a_constant(void **state)
 {
 	static const char *red = "{\"pbrMetallicRoughness\":{\"baseColorFactor\":[1,0,0,1]}}";
@@ -608,6 +649,7 @@ int main(void)
 	    cmocka_unit_test(packed_and_simplified),
 	    cmocka_unit_test(decodes_only_what_is_used),
 	    cmocka_unit_test(one_colour_is_a_constant),
+	    cmocka_unit_test(sampler_wrap_and_min_filter),
 	    cmocka_unit_test(each_primitive_keeps_its_material),
 	    cmocka_unit_test(each_material_keeps_its_maps),
 	};

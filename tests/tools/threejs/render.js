@@ -57,8 +57,11 @@ function fitTransform(root) {
 // The glTF material's alpha as GLTFLoader reads it (MASK: alphaTest;
 // BLEND: transparent, no depth writes), with its colour: as the kiosk,
 // alpha comes with the base colour.
+// GLTFLoader sets flatShading where a primitive has no NORMAL (the spec
+// asks for flat normals there, which the kiosk computes): without it the
+// matcap is looked up with a normal of (0,0,0), a corner texel.
 function matcapMaterial(m, matcap) {
-	const p = { matcap, side: m.side };
+	const p = { matcap, side: m.side, flatShading: m.flatShading };
 	if (baseColor) {
 		p.color = m.color;
 		p.map = m.map;
