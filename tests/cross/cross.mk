@@ -74,10 +74,12 @@ cross-tools: cross-arch
 		command -v $$t >/dev/null || { echo "$$t not found: run make deps-cross ARCH=$(ARCH)"; \
 		exit 1; }; done
 
-# The program as shipped (-O2) and, with UBSan, the unit tests and tools.
+# The program as shipped (-O2) and, with UBSan and the test hooks (a
+# reload held by MK_TEST_PREPARE_DELAY_MS: test_kiosk_reload), the unit
+# tests and tools.
 cross-build: cross-tools $(CROSS_SYSROOT)/.complete
 	+$(CROSS_MAKE) OPT="-O2 -g" $(CROSS_BUILD)/matcap-kiosk
-	+$(CROSS_MAKE) BUILD=$(CROSS_BUILD)/ubsan OPT="-O2 -g $(CROSS_SANITIZE)" \
+	+$(CROSS_MAKE) BUILD=$(CROSS_BUILD)/ubsan OPT="-O2 -g $(CROSS_SANITIZE) -DMK_TEST_HOOKS" \
 		LDFLAGS="$(CROSS_SANITIZE)" KIOSK=$(CROSS_BUILD)/ubsan/matcap-kiosk unit-tests \
 		$(CROSS_BUILD)/ubsan/matcap-kiosk $(CROSS_BUILD)/ubsan/tools/mkmodels
 
