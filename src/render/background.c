@@ -133,15 +133,7 @@ static int upload(struct background *b, const struct image *img)
 
 	if (!up)
 		return -ENOMEM;
-	gl->GenTextures(1, &b->texture);
-	gl->BindTexture(GL_TEXTURE_2D, b->texture);
-	gl->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-	gl->TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, up->width, up->height, 0, GL_RGBA,
-		       GL_UNSIGNED_BYTE, up->rgba);
-	gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-	gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-	gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-	gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+	b->texture = gl_texture_picture(gl, up->width, up->height, up->rgba);
 	b->image_width = img->width;
 	b->image_height = img->height;
 	image_release(&small);

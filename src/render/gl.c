@@ -48,3 +48,19 @@ int gl_load(struct gl *gl, gl_get_proc_fn get_proc, void *ctx)
 	read_caps(gl, &gl->caps);
 	return 0;
 }
+
+GLuint gl_texture_picture(const struct gl *gl, int width, int height, const void *rgba)
+{
+	GLuint tex = 0;
+
+	gl->GenTextures(1, &tex);
+	gl->BindTexture(GL_TEXTURE_2D, tex);
+	gl->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+	gl->TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+		       rgba);
+	gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+	gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+	gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+	gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+	return tex;
+}

@@ -113,4 +113,8 @@ int gl_load(struct gl *gl, gl_get_proc_fn get_proc, void *ctx);
  * EGL's extension string); a NULL list has none. */
 bool gl_extension_listed(const char *list, const char *name);
 
+/* A picture drawn once over the frame (the poster, a background image):
+ * RGBA bytes, one level, linear, clamped. Returns the texture, bound. */
+GLuint gl_texture_picture(const struct gl *gl, int width, int height, const void *rgba);
+
 #endif

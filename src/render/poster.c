@@ -18,22 +18,6 @@ static void fit(const struct image *img, int width, int height, int rotation, fl
 	out[1] = (float)(img->height * s / sh);
 }
 
-static GLuint upload(const struct gl *gl, const struct image *img)
-{
-	GLuint tex = 0;
-
-	gl->GenTextures(1, &tex);
-	gl->BindTexture(GL_TEXTURE_2D, tex);
-	gl->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-	gl->TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, img->width, img->height, 0, GL_RGBA,
-		       GL_UNSIGNED_BYTE, img->rgba);
-	gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-	gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-	gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-	gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-	return tex;
-}
-
 static void draw_image(const struct gl *gl, GLuint program, const struct image *img, int width,
 		       int height, int rotation)
 {
@@ -44,7 +28,7 @@ static void draw_image(const struct gl *gl, GLuint program, const struct image *
 	int k = ((rotation / 90) % 4 + 4) % 4;
 	float turn[4] = {c[k], sn[k], -sn[k], c[k]};
 	float f[2];
-	GLuint tex = upload(gl, img);
+	GLuint tex = gl_texture_picture(gl, img->width, img->height, img->rgba);
 
 	fit(img, width, height, rotation, f);
 	gl->UseProgram(program);
