@@ -12,7 +12,8 @@
  * stays with the kiosk (the display, the devices, attract mode's timing)
  * or with the matcaps and the background (shared by every model, and
  * swapped apart from the model) is not here. A section of another
- * feature that is per model is one more line. */
+ * feature that is per model is one more line ({"caption", NULL}), and
+ * the error messages list it too. */
 static const struct {
 	const char *section, *key;
 } model_keys[] = {
@@ -21,13 +22,23 @@ static const struct {
     {"scene", "base_color"}, {"scene", "model_scene"}, {"scene", "lod_pixels"},
 };
 
-#define MODEL_KEYS_TEXT                                                                            \
-	"[frame], [material], and [scene] mode, fit, yaw, pitch, base_color, model_scene and "     \
-	"lod_pixels"
+#define MODEL_KEYS (sizeof(model_keys) / sizeof(model_keys[0]))
+
+/* "[frame], [material], [scene] mode, [scene] fit, ...": from the table. */
+static void keys_text(char *buf, size_t n)
+{
+	size_t len = 0;
+
+	buf[0] = '\0';
+	for (size_t i = 0; i < MODEL_KEYS && len + 1 < n; i++)
+		len += (size_t)snprintf(buf + len, n - len, "%s[%s]%s%s", i ? ", " : "",
+					model_keys[i].section, model_keys[i].key ? " " : "",
+					model_keys[i].key ? model_keys[i].key : "");
+}
 
 bool model_settings_allowed(const char *section, const char *key)
 {
-	for (size_t i = 0; i < sizeof(model_keys) / sizeof(model_keys[0]); i++)
+	for (size_t i = 0; i < MODEL_KEYS; i++)
 		if (!strcmp(model_keys[i].section, section) &&
 		    (!model_keys[i].key || !strcmp(model_keys[i].key, key)))
 			return true;
@@ -66,7 +77,7 @@ static void dir_of(const char *path, char *dir, size_t n)
 
 enum options_status model_settings_read(struct content_config *c, const char *model)
 {
-	char path[PATH_MAX], dir[PATH_MAX];
+	char path[PATH_MAX], dir[PATH_MAX], keys[400];
 	enum options_status ret = OPTIONS_CONFIG;
 	struct options o;
 	FILE *f;
@@ -84,7 +95,8 @@ enum options_status model_settings_read(struct content_config *c, const char *mo
 	if (content_config_copy(&o.content, c))
 		goto out;
 	dir_of(path, dir, sizeof(dir));
-	ret = options_read_stream(&o, path, dir, f, model_settings_allowed, MODEL_KEYS_TEXT);
+	keys_text(keys, sizeof(keys));
+	ret = options_read_stream(&o, path, dir, f, model_settings_allowed, keys);
 	if (ret == OPTIONS_OK) {
 		content_config_release(c);
 		*c = o.content;

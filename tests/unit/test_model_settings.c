@@ -109,6 +109,7 @@ static void bad_keys(void **state)
 	log_last_error(last, sizeof(last));
 	assert_non_null(
 	    strstr(last, "cup.ini:4: [kiosk] attract_after is not a setting a model's"));
+	assert_non_null(strstr(last, "it takes [frame], [material], [scene] mode, [scene] fit"));
 	assert_true(isnan(o.content.frame.yaw));
 	write_file("cup.ini", "[frame]\nup = sideways\n");
 	log_clear_last_error();
