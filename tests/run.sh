@@ -75,7 +75,7 @@ if [ "${VM_E2E:-1}" != 0 ]; then
 	# Debian 13 changes (Mesa, libgpiod, libcamera).
 	scripts=
 	for s in ${VM_E2E_SCRIPTS:-}; do
-		if [ -f tests/e2e/$s.sh ]; then scripts="$scripts tests/e2e/$s.sh"; else scripts="$scripts tests/vm/$s.sh"; fi
+		if [ -f "tests/e2e/$s.sh" ]; then scripts="$scripts tests/e2e/$s.sh"; else scripts="$scripts tests/vm/$s.sh"; fi
 	done
 	# shellcheck disable=SC2086 # a list of paths
 	timed test_board $scripts
