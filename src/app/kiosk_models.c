@@ -59,13 +59,30 @@ static void tell_frame(struct kiosk_models *m)
 	app_apply(m->p.app, &msg);
 }
 
+/* The file name of model's NAME.ini; "" when it has none. */
+static const char *ini_name(const char *model, char *buf, size_t n)
+{
+	const char *slash;
+
+	if (!model_settings_path(model, buf, n))
+		return "";
+	slash = strrchr(buf, '/');
+	return slash ? slash + 1 : buf;
+}
+
 static void watch_models(struct kiosk_models *m)
 {
 	const char *spec = m->p.config->model;
 
+	char ini[PATH_MAX];
+
 	/* A list names several places: each of them is read at a reload. */
 	if (!strchr(spec, ','))
 		m->watch = folder_watch_new(spec);
+	/* One file: its folder is watched for its name, and its NAME.ini's. */
+	if (m->watch && !model_spec_is_many(spec) && *ini_name(spec, ini, sizeof(ini)) &&
+	    folder_watch_also(m->watch, ini_name(spec, ini, sizeof(ini))))
+		log_warn("%s: its settings file is not watched (no memory)", spec);
 }
 
 struct kiosk_models *kiosk_models_new(const struct kiosk_models_parts *parts, uint64_t now_ns)
@@ -225,11 +242,18 @@ static bool arrived_path(void *ctx, const char *path)
 static void note_arrived(void *ctx, const char *folder, const char *name)
 {
 	struct kiosk_models *m = ctx;
-	char path[PATH_MAX];
-	bool one_file = !model_spec_is_many(m->p.config->model);
+	const char *spec = m->p.config->model;
+	char path[PATH_MAX], ini[PATH_MAX];
+	bool one_file = !model_spec_is_many(spec);
 
+	/* One file: the watch reports its name or its NAME.ini's alone. */
+	if (one_file && !strcmp(name, ini_name(spec, ini, sizeof(ini)))) {
+		free(m->settings_changed);
+		m->settings_changed = strdup(spec);
+		return;
+	}
 	if (one_file)
-		snprintf(path, sizeof(path), "%s", m->p.config->model);
+		snprintf(path, sizeof(path), "%s", spec);
 	else
 		snprintf(path, sizeof(path), "%s/%s", folder, name);
 	if (!one_file && settings_of(m, path))
