@@ -150,6 +150,7 @@ static int show(struct kiosk_models *m, struct content *fresh, int index)
 {
 	struct content old;
 	int ret = content_upload_model(fresh, m->p.renderer);
+	unsigned own;
 
 	if (ret) {
 		m->p.counts->model_load_failures++;
@@ -162,6 +163,13 @@ static int show(struct kiosk_models *m, struct content *fresh, int index)
 		return ret;
 	}
 	content_take_model(m->p.content, fresh, &old);
+	own = m->p.content->own_look;
+	m->p.content->own_look = 0;
+	if (own && content_upload_look(m->p.content, m->p.renderer))
+		log_err("%s: its matcap or background does not fit on the GPU",
+			m->p.content->model_path);
+	if (own && m->p.look_changed)
+		m->p.look_changed(m->p.ctx, own);
 	tell_frame(m);
 	/* Its cache write and sync are waited for on the worker. */
 	worker_retire(m->p.worker, &old);
@@ -206,8 +214,8 @@ static void start(struct kiosk_models *m, int from, int step)
 
 	m->requested = from;
 	m->asked_ns = monotonic_ns();
-	if (model_loader_start(m->loader, m->list, m->p.config, from, step, m->shown, d->width,
-			       d->height)) {
+	if (model_loader_start(m->loader, m->list, m->p.config, &m->p.content->look, from, step,
+			       m->shown, d->width, d->height)) {
 		tell_app(m, m->shown);
 		m->asked = app_state(m->p.app)->model;
 	}

@@ -110,6 +110,7 @@ static void check_models(struct check *c, const struct content_config *cfg)
 	const char *spec = cfg->model;
 	struct model_list *l;
 	struct content s;
+	struct content_look look = {0};
 
 	if (!spec || !*spec)
 		return; /* the built-in knot */
@@ -125,12 +126,18 @@ static void check_models(struct check *c, const struct content_config *cfg)
 		int ret;
 
 		log_clear_last_error();
-		ret = content_load_model(&s, cfg, path, c->o->display.width, c->o->display.height);
+		/* A model's own matcaps and background (its NAME.ini) are
+		 * opened too: those that differ from the kiosk's. */
+		ret = content_look_set(&look, cfg);
+		if (!ret)
+			ret = content_load_model(&s, cfg, path, &look, c->o->display.width,
+						 c->o->display.height);
 		if (!ret)
 			content_release(&s);
 		found(c, "scene", "model", path, ret);
 	}
 	model_list_free(l);
+	content_look_release(&look);
 }
 
 static void check_matcaps(struct check *c)
