@@ -210,7 +210,7 @@ printf '[kiosk]\nattract_after = 1\nattract_model_seconds = 1\n[scene]\nmodel = 
 printf '[scene]\nmodel = %s\n' "$look/one/s.glb" >"$look/one.ini"
 look_kiosk() { # CONFIG LOG
 	ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 RUNTIME_DIRECTORY=$look/run \
-		"$kiosk" --backend $offscreen --size 64x64 --config "$1" --keyboard none --camera off \
+		"$kiosk" --backend "$offscreen" --size 64x64 --config "$1" --keyboard none --camera off \
 		-v 2>"$2" &
 	look_pid=$!
 }
