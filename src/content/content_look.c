@@ -66,10 +66,14 @@ int content_load_look(struct content *s, const struct content_config *c,
 			 s->matcap_path ? s->matcap_path : "of the built-in clay");
 	}
 	if (!ret && shown && !same(want.background, shown->background)) {
+		const char *what = c->background ? c->background : "by default";
+
 		ret = content_load_background(c, false, &s->background, &s->background_image);
 		s->own_look |= CONTENT_OWN_BACKGROUND;
-		log_info("%s: shown on the background %s", s->model_path,
-			 c->background ? c->background : "by default");
+		if (c->background && background_names_image(c->background) &&
+		    s->background.kind != BACKGROUND_IMAGE)
+			what = "by default (its own does not load)";
+		log_info("%s: shown on the background %s", s->model_path, what);
 	}
 	content_look_release(&s->look);
 	s->look = want;

@@ -103,6 +103,27 @@ static void check_image(struct check *c, const char *section, const char *key, c
 		found(c, section, key, path, load_image(path));
 }
 
+/* A model's own matcaps and background (its NAME.ini) that the loader
+ * replaced by the defaults: they do not load. */
+static void check_own_look(struct check *c, const struct content *s)
+{
+	const struct content_config *own = s->own;
+	char ini[PATH_MAX];
+
+	if (!own || !s->own_look || !model_settings_path(s->model_path, ini, sizeof(ini)))
+		return;
+	if ((s->own_look & CONTENT_OWN_MATCAP) && own->matcap && !s->matcap_path) {
+		log_err("%s: [scene] matcap = '%s': does not load (above)", ini, own->matcap);
+		c->bad_files++;
+	}
+	if ((s->own_look & CONTENT_OWN_BACKGROUND) && own->background &&
+	    background_names_image(own->background) && s->background.kind != BACKGROUND_IMAGE) {
+		log_err("%s: [display] background = '%s': does not load (above)", ini,
+			own->background);
+		c->bad_files++;
+	}
+}
+
 /* A folder's or list's models each (the kiosk passes over one that fails,
  * with a line in the journal, but it was named to be shown). */
 static void check_models(struct check *c, const struct content_config *cfg)
@@ -132,6 +153,8 @@ static void check_models(struct check *c, const struct content_config *cfg)
 		if (!ret)
 			ret = content_load_model(&s, cfg, path, &look, c->o->display.width,
 						 c->o->display.height);
+		if (!ret)
+			check_own_look(c, &s);
 		if (!ret)
 			content_release(&s);
 		found(c, "scene", "model", path, ret);
