@@ -10,6 +10,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 enum anim_interp { ANIM_STEP, ANIM_LINEAR, ANIM_CUBICSPLINE };
 enum anim_path { ANIM_TRANSLATION, ANIM_ROTATION, ANIM_SCALE, ANIM_WEIGHTS };
 enum anim_loop { ANIM_REPEAT, ANIM_ONCE, ANIM_PINGPONG };
@@ -132,5 +136,9 @@ void anim_trs_matrix(const struct anim_trs *trs, float m[16]);
  * for "off", "all" or no clip; -2 when the name matches none. */
 int anim_clip_find(const struct mesh_anim *a, const char *want);
 void mesh_anim_free(struct mesh_anim *a);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

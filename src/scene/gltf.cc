@@ -50,6 +50,8 @@ int load_memory(const char *name, const uint8_t *data, size_t size, const char *
 	images.keep = o->textures != 0;
 	images.files = &ctx;
 	std::memset(out, 0, sizeof(*out));
+	if (o->anim)
+		*o->anim = nullptr;
 
 	if (size > GLTF_MAX_FILE || size > 0xffffffffu) {
 		log_err("%s: file is %zu bytes, expected at most %u",
@@ -114,7 +116,7 @@ extern "C" int gltf_load_memory_options(const char *name, const uint8_t *data, s
 extern "C" int gltf_load_memory_textures(const char *name, const uint8_t *data, size_t size,
 					 const char *dir, unsigned textures, struct mesh *out)
 {
-	struct gltf_options o = {textures, nullptr, nullptr};
+	struct gltf_options o = {textures, nullptr, nullptr, nullptr};
 	return gltf_load_memory_options(name, data, size, dir, &o, out);
 }
 
@@ -147,7 +149,7 @@ extern "C" int gltf_load_options(const char *path, const struct gltf_options *o,
 
 extern "C" int gltf_load_textures(const char *path, unsigned textures, struct mesh *out)
 {
-	struct gltf_options o = {textures, nullptr, nullptr};
+	struct gltf_options o = {textures, nullptr, nullptr, nullptr};
 	return gltf_load_options(path, &o, out);
 }
 

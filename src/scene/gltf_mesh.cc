@@ -5,6 +5,7 @@
 #include "scene/gltf_ext.h"
 #include "scene/gltf_material.h"
 #include "scene/gltf_mesh.h"
+#include "scene/gltf_anim.h"
 #include "util/log.h"
 
 #include <tiny_gltf.h>
@@ -621,6 +622,15 @@ void read_materials(const Builder &b, const tinygltf::Model &m, unsigned texture
 			 out->range_count);
 }
 
+// Before the passes that pose the file: they rewrite its meshes.
+void read_anim(const char *name, const tinygltf::Model &m, const struct gltf_options *o)
+{
+	std::string err;
+	if (o->anim && !gltf_read_anim(m, o->anim, &err))
+		log_warn("%s: %s; the model shows still", gltf_ext::escape(name).c_str(),
+			 gltf_ext::escape(err).c_str());
+}
+
 } // namespace
 
 int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_options *o,
@@ -632,6 +642,7 @@ int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_opti
 	b.name = name;
 	b.want_colors = (o->textures & GLTF_TEXTURE_BASE_COLOR) != 0;
 	b.textures = o->textures;
+	read_anim(name, m, o);
 	if (prepare(m, name, &pose, &b.error) &&
 	    gltf_ext::choose_scene(m, o->scene, o->scene_setting, &scene, &b.error)) {
 		std::vector<int> roots;
@@ -657,5 +668,9 @@ int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_opti
 		read_materials(b, m, o->textures, images, out);
 	gltf_keep_colors(out,
 			 b.uniform_set && b.any_colors && b.colors.empty() ? b.uniform : nullptr);
+	if (ret && o->anim) {
+		mesh_anim_free(*o->anim);
+		*o->anim = nullptr;
+	}
 	return ret;
 }

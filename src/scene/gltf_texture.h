@@ -16,6 +16,8 @@ enum gltf_texture {
 	GLTF_TEXTURE_BASE_COLOR = 1u << 3,
 };
 
+struct mesh_anim;
+
 /* What to load beyond the geometry. */
 struct gltf_options {
 	unsigned textures; /* enum gltf_texture bits */
@@ -26,6 +28,10 @@ struct gltf_options {
 	/* How a refusal of `scene` names where it came from, e.g. "[scene]
 	 * model_scene"; NULL: not named. */
 	const char *scene_setting;
+	/* Set: the file's animations into *anim (scene/anim.h; NULL when it
+	 * has none or they are malformed, which is a warning: the still
+	 * model loads). NULL: animations are not read. */
+	struct mesh_anim **anim;
 };
 
 #endif

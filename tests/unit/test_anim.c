@@ -1,15 +1,19 @@
 /* glTF animation's pure maths (src/scene/anim.h): the samplers against
  * values worked by hand, slerp the shorter way, the loop modes, a clock
  * run forward by a year, and node evaluation parents first without
- * recursion. */
+ * recursion; and a glTF file's animations read into that model, a
+ * malformed one refused with a warning while the still model loads. */
 #include "scene/anim.h"
+#include "scene/gltf.h"
 
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include <cmocka.h>
 
 #define NEAR(a, b) assert_true(fabs((double)(a) - (double)(b)) < 1e-5)
@@ -296,6 +300,142 @@ static void clips_over_the_rest_pose(void **state)
 	assert_int_equal(anim_clip_find(&a, "Run"), -2);
 }
 
+/* A small animated glTF, written here: a root node moved by a LINEAR
+ * translation, its child (a morphing triangle) turned by a STEP rotation
+ * and its two morph weights animated; a second, unnamed clip. `extra`
+ * replaces the first sampler's interpolation, `rot_sampler` the rotation
+ * channel's sampler, to make broken files. */
+static void b64(FILE *f, const unsigned char *p, size_t n)
+{
+	static const char t[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+
+	for (size_t i = 0; i < n; i += 3) {
+		unsigned v = (unsigned)p[i] << 16 | (i + 1 < n ? (unsigned)p[i + 1] << 8 : 0) |
+			     (i + 2 < n ? p[i + 2] : 0);
+
+		fputc(t[v >> 18 & 63], f);
+		fputc(t[v >> 12 & 63], f);
+		fputc(i + 1 < n ? t[v >> 6 & 63] : '=', f);
+		fputc(i + 2 < n ? t[v & 63] : '=', f);
+	}
+}
+
+static void write_animated(const char *path, const char *interp, int rot_sampler)
+{
+	double h = sqrt(0.5);
+	float data[] = {0, 0, 0, 1, 0, 0, 0,	    1,	      0,	  /* 0: positions */
+			0, 1, 2,					  /* 36: times */
+			0, 0, 0, 1, 0, 0, 2,	    0,	      0,	  /* 48: translations */
+			0, 0, 0, 1, 0, 0, (float)h, (float)h, 0, 0, 1, 0, /* 84: rotations */
+			0, 0, 1, 0, 1, 1,				  /* 132: weights */
+			0, 0, 1, 0, 0, 1, 0,	    0,	      1, 1, 0, 0,
+			1, 0, 0, 1, 0, 0}; /* 156: targets */
+	FILE *f = fopen(path, "w");
+
+	assert_non_null(f);
+	fprintf(f,
+		"{\"asset\":{\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{\"nodes\":[0]}],"
+		"\"nodes\":[{\"children\":[1],\"translation\":[0,0,5]},{\"mesh\":0}],"
+		"\"meshes\":[{\"weights\":[0.5,0],\"primitives\":[{\"attributes\":"
+		"{\"POSITION\":0},\"targets\":[{\"POSITION\":5},{\"POSITION\":6}]}]}],"
+		"\"buffers\":[{\"byteLength\":%zu,\"uri\":\"data:application/"
+		"octet-stream;base64,",
+		sizeof(data));
+	b64(f, (const unsigned char *)data, sizeof(data));
+	fprintf(f, "\"}],\"bufferViews\":[{\"buffer\":0,\"byteLength\":%zu}],", sizeof(data));
+	fprintf(f, "\"accessors\":["
+		   "{\"bufferView\":0,\"componentType\":5126,\"count\":3,\"type\":\"VEC3\","
+		   "\"min\":[0,0,0],\"max\":[1,1,0]},"
+		   "{\"bufferView\":0,\"byteOffset\":36,\"componentType\":5126,\"count\":3,"
+		   "\"type\":\"SCALAR\",\"min\":[0],\"max\":[2]},"
+		   "{\"bufferView\":0,\"byteOffset\":48,\"componentType\":5126,\"count\":3,"
+		   "\"type\":\"VEC3\"},"
+		   "{\"bufferView\":0,\"byteOffset\":84,\"componentType\":5126,\"count\":3,"
+		   "\"type\":\"VEC4\"},"
+		   "{\"bufferView\":0,\"byteOffset\":132,\"componentType\":5126,\"count\":6,"
+		   "\"type\":\"SCALAR\"},"
+		   "{\"bufferView\":0,\"byteOffset\":156,\"componentType\":5126,\"count\":3,"
+		   "\"type\":\"VEC3\"},"
+		   "{\"bufferView\":0,\"byteOffset\":192,\"componentType\":5126,\"count\":3,"
+		   "\"type\":\"VEC3\"}],");
+	fprintf(f,
+		"\"animations\":[{\"name\":\"Move\",\"samplers\":["
+		"{\"input\":1,\"output\":2,\"interpolation\":\"%s\"},"
+		"{\"input\":1,\"output\":3,\"interpolation\":\"STEP\"},"
+		"{\"input\":1,\"output\":4}],\"channels\":["
+		"{\"sampler\":0,\"target\":{\"node\":0,\"path\":\"translation\"}},"
+		"{\"sampler\":%d,\"target\":{\"node\":1,\"path\":\"rotation\"}},"
+		"{\"sampler\":2,\"target\":{\"node\":1,\"path\":\"weights\"}}]},"
+		"{\"samplers\":[{\"input\":1,\"output\":2}],\"channels\":["
+		"{\"sampler\":0,\"target\":{\"node\":1,\"path\":\"translation\"}}]}]}",
+		interp, rot_sampler);
+	fclose(f);
+}
+
+static struct mesh_anim *load_anim(const char *path, int *ret)
+{
+	struct mesh mesh;
+	struct mesh_anim *a = (struct mesh_anim *)1; // the loader must clear it
+	struct gltf_options o = {.anim = &a};
+
+	*ret = gltf_load_options(path, &o, &mesh);
+	if (*ret == 0)
+		mesh_release(&mesh);
+	return a;
+}
+
+static void reads_a_files_animations(void **state)
+{
+	(void)state;
+	char path[] = "/tmp/mk-anim-XXXXXX.gltf";
+	int fd = mkstemps(path, 5), ret;
+
+	assert_true(fd >= 0);
+	close(fd);
+	write_animated(path, "LINEAR", 1);
+	struct mesh_anim *a = load_anim(path, &ret);
+	assert_int_equal(ret, 0);
+	assert_non_null(a);
+	assert_int_equal(a->node_count, 2);
+	assert_int_equal(a->nodes[1].parent, 0);
+	assert_int_equal(a->nodes[1].weight_count, 2);
+	NEAR(a->rest_weights[0], 0.5); // the mesh's default weights
+	NEAR(a->nodes[0].rest.t[2], 5);
+	assert_int_equal(a->clip_count, 2);
+	assert_string_equal(a->clips[0].name, "Move");
+	assert_null(a->clips[1].name);
+	NEAR(a->clips[0].duration, 2);
+	assert_int_equal(a->clips[0].channel_count, 3);
+	assert_int_equal(anim_clip_find(a, "Move"), 0);
+	assert_int_equal(anim_clip_find(a, "1"), 1);
+
+	struct anim_pose *p = anim_pose_new(a);
+	assert_non_null(p);
+	anim_pose_apply(a, &a->clips[0], 1.5, p);
+	NEAR(p->local[0].t[0], 1.5);	   // LINEAR between (1,0,0) and (2,0,0)
+	NEAR(p->local[0].t[2], 0);	   // the channel replaces the rest translation
+	NEAR(p->local[1].r[2], sqrt(0.5)); // STEP: the key at 1 s holds
+	NEAR(p->weights[0], 1);		   // (1,0) to (1,1), halfway
+	NEAR(p->weights[1], 0.5);
+	anim_pose_free(p);
+	mesh_anim_free(a);
+
+	// A malformed animation is a warning: the still model loads.
+	write_animated(path, "SMOOTH", 1);
+	a = load_anim(path, &ret);
+	assert_int_equal(ret, 0);
+	assert_null(a);
+	write_animated(path, "LINEAR", 0); // rotation from a VEC3 sampler
+	a = load_anim(path, &ret);
+	assert_int_equal(ret, 0);
+	assert_null(a);
+	write_animated(path, "CUBICSPLINE", 1); // 3 values a key, not 9
+	a = load_anim(path, &ret);
+	assert_int_equal(ret, 0);
+	assert_null(a);
+	unlink(path);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -308,6 +448,7 @@ int main(void)
 	    cmocka_unit_test(nodes_parents_first),
 	    cmocka_unit_test(a_deep_chain_costs_a_loop),
 	    cmocka_unit_test(clips_over_the_rest_pose),
+	    cmocka_unit_test(reads_a_files_animations),
 	};
 	return cmocka_run_group_tests_name("anim", tests, NULL, NULL);
 }
