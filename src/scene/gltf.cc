@@ -116,7 +116,8 @@ extern "C" int gltf_load_memory_options(const char *name, const uint8_t *data, s
 extern "C" int gltf_load_memory_textures(const char *name, const uint8_t *data, size_t size,
 					 const char *dir, unsigned textures, struct mesh *out)
 {
-	struct gltf_options o = {textures, nullptr, nullptr, nullptr};
+	struct gltf_options o = {};
+	o.textures = textures;
 	return gltf_load_memory_options(name, data, size, dir, &o, out);
 }
 
@@ -149,7 +150,8 @@ extern "C" int gltf_load_options(const char *path, const struct gltf_options *o,
 
 extern "C" int gltf_load_textures(const char *path, unsigned textures, struct mesh *out)
 {
-	struct gltf_options o = {textures, nullptr, nullptr, nullptr};
+	struct gltf_options o = {};
+	o.textures = textures;
 	return gltf_load_options(path, &o, out);
 }
 

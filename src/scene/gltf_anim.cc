@@ -260,3 +260,72 @@ bool gltf_read_anim(const tinygltf::Model &m, struct mesh_anim **out, std::strin
 	*out = a;
 	return true;
 }
+
+namespace
+{
+
+// The clip's pose at o->time, as its clock plays it.
+void apply_clip(const struct mesh_anim *a, const struct anim_clip *clip,
+		const struct gltf_options *o, struct anim_pose *p)
+{
+	struct anim_clock c;
+	anim_clock_init(&c, clip->duration, (enum anim_loop)o->loop, o->speed);
+	anim_clock_seek(&c, o->time);
+	anim_pose_apply(a, clip, anim_clock_time(&c), p);
+}
+
+bool choose_clips(const struct mesh_anim *a, const struct gltf_options *o, int *clip,
+		  std::string *err)
+{
+	const char *want = o->animation ? o->animation : "auto";
+	*clip = anim_clip_find(a, want);
+	if (*clip != -2)
+		return true;
+	std::string names;
+	for (size_t k = 0; k < a->clip_count; k++)
+		if (a->clips[k].name)
+			names += (names.empty() ? ": \"" : ", \"") +
+				 gltf_ext::escape(a->clips[k].name) + "\"";
+	*err = "animations: no animation \"" + gltf_ext::escape(want) + "\"" +
+	       (o->animation_setting ? " (" + std::string(o->animation_setting) + ")" : "") +
+	       ", expected auto, off, all, an index below " + std::to_string(a->clip_count) +
+	       " or an animation's name" + names;
+	return false;
+}
+
+} // namespace
+
+bool gltf_pose_nodes(tinygltf::Model &m, const struct mesh_anim *a, const struct gltf_options *o,
+		     std::string *err)
+{
+	int clip;
+	if (!o->pose || !a)
+		return true;
+	if (!choose_clips(a, o, &clip, err))
+		return false;
+	bool all = o->animation && !std::strcmp(o->animation, "all");
+	if (clip < 0 && !all)
+		return true; // off: the rest pose
+	struct anim_pose *p = anim_pose_new(a);
+	if (!p)
+		throw std::bad_alloc();
+	for (size_t k = 0; k < a->clip_count; k++)
+		if (all || (int)k == clip)
+			apply_clip(a, &a->clips[k], o, p);
+	// Written back into the file's nodes, so that the passes that pose a
+	// still (node worlds, morphs, skins) pose it at this time.
+	for (size_t i = 0; i < a->node_count; i++) {
+		tinygltf::Node &n = m.nodes[i];
+		const struct anim_trs &l = p->local[i];
+		if (!a->nodes[i].has_matrix) {
+			n.translation.assign(l.t, l.t + 3);
+			n.rotation.assign(l.r, l.r + 4);
+			n.scale.assign(l.s, l.s + 3);
+		}
+		const float *w = p->weights + a->nodes[i].weight_offset;
+		if (a->nodes[i].weight_count)
+			n.weights.assign(w, w + a->nodes[i].weight_count);
+	}
+	anim_pose_free(p);
+	return true;
+}

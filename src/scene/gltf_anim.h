@@ -4,6 +4,7 @@
 #define MK_GLTF_ANIM_H
 
 #include "scene/anim.h"
+#include "scene/gltf_texture.h"
 
 #include <string>
 #include <tiny_gltf.h>
@@ -12,5 +13,12 @@
 // (free with mesh_anim_free). false, *out NULL and err naming the field and
 // what was expected when an animation is malformed.
 bool gltf_read_anim(const tinygltf::Model &m, struct mesh_anim **out, std::string *err);
+
+// With o->pose, the clips o->animation names, at o->time, written into the
+// nodes' translation, rotation, scale and weights (a is the model's, read
+// by gltf_read_anim; NULL: nothing to pose). false, err naming the setting,
+// for a clip the file lacks.
+bool gltf_pose_nodes(tinygltf::Model &m, const struct mesh_anim *a, const struct gltf_options *o,
+		     std::string *err);
 
 #endif

@@ -622,13 +622,25 @@ void read_materials(const Builder &b, const tinygltf::Model &m, unsigned texture
 			 out->range_count);
 }
 
-// Before the passes that pose the file: they rewrite its meshes.
-void read_anim(const char *name, const tinygltf::Model &m, const struct gltf_options *o)
+// Before the passes that pose the file: they rewrite its meshes. A
+// malformed animation is a warning (the still model loads); a clip the
+// settings name and the file lacks is an error, as a missing scene is.
+bool read_anim(const char *name, tinygltf::Model &m, const struct gltf_options *o, std::string *err)
 {
-	std::string err;
-	if (o->anim && !gltf_read_anim(m, o->anim, &err))
+	struct mesh_anim *a = nullptr;
+	if (!o->anim && !o->pose)
+		return true;
+	if (!gltf_read_anim(m, &a, err)) {
 		log_warn("%s: %s; the model shows still", gltf_ext::escape(name).c_str(),
-			 gltf_ext::escape(err).c_str());
+			 gltf_ext::escape(*err).c_str());
+		err->clear();
+	}
+	bool ok = gltf_pose_nodes(m, a, o, err);
+	if (o->anim && ok)
+		*o->anim = a;
+	else
+		mesh_anim_free(a);
+	return ok;
 }
 
 } // namespace
@@ -642,8 +654,7 @@ int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_opti
 	b.name = name;
 	b.want_colors = (o->textures & GLTF_TEXTURE_BASE_COLOR) != 0;
 	b.textures = o->textures;
-	read_anim(name, m, o);
-	if (prepare(m, name, &pose, &b.error) &&
+	if (read_anim(name, m, o, &b.error) && prepare(m, name, &pose, &b.error) &&
 	    gltf_ext::choose_scene(m, o->scene, o->scene_setting, &scene, &b.error)) {
 		std::vector<int> roots;
 		if (scene >= 0)

@@ -5,6 +5,8 @@
 #ifndef MK_GLTF_TEXTURE_H
 #define MK_GLTF_TEXTURE_H
 
+#include <stdbool.h>
+
 /* The material textures a caller may ask to have decoded. */
 enum gltf_texture {
 	GLTF_TEXTURE_NORMAL = 1u << 0,	  /* normalTexture */
@@ -32,6 +34,15 @@ struct gltf_options {
 	 * has none or they are malformed, which is a warning: the still
 	 * model loads). NULL: animations are not read. */
 	struct mesh_anim **anim;
+	/* pose: the model posed as the clips `animation` names ("auto" or
+	 * NULL: the first; "off": none; "all": every one; a name or an
+	 * index) show it `time` seconds after they start, played at `speed`
+	 * (0: 1) with `loop` (enum anim_loop); a name the file lacks is an
+	 * error naming `animation_setting`. false: the rest pose. */
+	bool pose;
+	const char *animation, *animation_setting;
+	double time, speed;
+	int loop;
 };
 
 #endif

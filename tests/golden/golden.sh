@@ -19,6 +19,7 @@ scenes="$scenes sphere-beetle-gltf sphere-displaced sphere-lit sphere-lit-beside
 scenes="$scenes sphere-vertex-color sphere-base-map sphere-base-map-off"
 scenes="$scenes background-color background-gradient background-image fit-long fit-long-half"
 scenes="$scenes parts-textures parts-mask parts-blend parts-leaf parts-normals parts-iridescence"
+scenes="$scenes morph-t1 morph-t3 morph-pingpong"
 mkdir -p "$out" "$models"
 "$TOOLS/mkmodels" "$models" >/dev/null
 
@@ -106,6 +107,17 @@ render() {
 	# below); two halves each with its own iridescent film.
 	parts-textures | parts-mask | parts-blend | parts-leaf | parts-normals | parts-iridescence)
 		$k -c matcaps/pearl.png --model "$m/$1.glb" --output "$o"
+		;;
+	# Poses of Khronos's SimpleMorph (two targets, weights keyed each
+	# second over 4 s) at fixed times: --time on its one clip; pingpong
+	# at 5 s plays back to the pose at 3 s.
+	morph-t1 | morph-t3)
+		$k -c matcaps/gold.png --model tests/corpus/khronos/SimpleMorph.gltf \
+			--time "${1#morph-t}" --output "$o"
+		;;
+	morph-pingpong)
+		$k -c matcaps/gold.png --model tests/corpus/khronos/SimpleMorph.gltf \
+			--time 5 --loop pingpong --output "$o"
 		;;
 	*)
 		echo "golden.sh: no scene named $1 (scenes: $scenes)" >&2
