@@ -2,6 +2,7 @@
 // JSON and the GLB container), then handed to the mesh builder
 // (gltf_mesh.cc), which trusts nothing tinygltf hands back.
 #include "scene/gltf.h"
+#include "scene/gltf_fit.h"
 #include "scene/gltf_ext.h"
 #include "scene/gltf_fs.h"
 #include "scene/gltf_material.h"
@@ -91,7 +92,9 @@ int load_memory(const char *name, const uint8_t *data, size_t size, const char *
 		log_err("%s: %s", gltf_ext::escape(name).c_str(), gltf_ext::escape(err).c_str());
 		return -EINVAL;
 	}
-	return gltf_build_mesh(name, model, o, images, out);
+	GltfFit fit;
+	gltf_clip_fit(name, model, o, images, &fit);
+	return gltf_build_mesh(name, model, o, images, out, &fit);
 }
 
 } // namespace

@@ -4,7 +4,9 @@
 // shapes so that playback trusts them.
 #include "scene/gltf_anim.h"
 #include "scene/gltf_ext.h"
+#include "util/log.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -274,8 +276,10 @@ void apply_clip(const struct mesh_anim *a, const struct anim_clip *clip,
 	anim_pose_apply(a, clip, anim_clock_time(&c), p);
 }
 
-bool choose_clips(const struct mesh_anim *a, const struct gltf_options *o, int *clip,
-		  std::string *err)
+} // namespace
+
+bool gltf_anim_clips(const struct mesh_anim *a, const struct gltf_options *o, int *clip,
+		     std::string *err)
 {
 	const char *want = o->animation ? o->animation : "auto";
 	*clip = anim_clip_find(a, want);
@@ -293,15 +297,13 @@ bool choose_clips(const struct mesh_anim *a, const struct gltf_options *o, int *
 	return false;
 }
 
-} // namespace
-
 bool gltf_pose_nodes(tinygltf::Model &m, const struct mesh_anim *a, const struct gltf_options *o,
 		     std::string *err)
 {
 	int clip;
 	if (!o->pose || !a)
 		return true;
-	if (!choose_clips(a, o, &clip, err))
+	if (!gltf_anim_clips(a, o, &clip, err))
 		return false;
 	bool all = o->animation && !std::strcmp(o->animation, "all");
 	if (clip < 0 && !all)
@@ -328,4 +330,23 @@ bool gltf_pose_nodes(tinygltf::Model &m, const struct mesh_anim *a, const struct
 	}
 	anim_pose_free(p);
 	return true;
+}
+
+bool gltf_anim_load(const char *name, tinygltf::Model &m, const struct gltf_options *o,
+		    std::string *err)
+{
+	struct mesh_anim *a = nullptr;
+	if (!o->anim && !o->pose)
+		return true;
+	if (!gltf_read_anim(m, &a, err)) {
+		log_warn("%s: %s; the model shows still", gltf_ext::escape(name).c_str(),
+			 gltf_ext::escape(*err).c_str());
+		err->clear();
+	}
+	bool ok = gltf_pose_nodes(m, a, o, err);
+	if (o->anim && ok)
+		*o->anim = a;
+	else
+		mesh_anim_free(a);
+	return ok;
 }

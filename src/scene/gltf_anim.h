@@ -21,4 +21,14 @@ bool gltf_read_anim(const tinygltf::Model &m, struct mesh_anim **out, std::strin
 bool gltf_pose_nodes(tinygltf::Model &m, const struct mesh_anim *a, const struct gltf_options *o,
 		     std::string *err);
 
+// gltf_read_anim and gltf_pose_nodes as the mesh builder runs them, before
+// the passes that bake a still: a malformed animation is a warning (the
+// still model loads); *o->anim, when asked for, takes the result.
+bool gltf_anim_load(const char *name, tinygltf::Model &m, const struct gltf_options *o,
+		    std::string *err);
+// The clip o->animation names: *clip its index, -1 for off or all (or a
+// file without clips); false and err naming the setting for one it lacks.
+bool gltf_anim_clips(const struct mesh_anim *a, const struct gltf_options *o, int *clip,
+		     std::string *err);
+
 #endif

@@ -530,7 +530,7 @@ bool has_extent(const std::vector<double> &p)
 	return false;
 }
 
-int finish_mesh(Builder &b, const tinygltf::Model &m, struct mesh *out)
+int finish_mesh(Builder &b, const tinygltf::Model &m, struct mesh *out, GltfFit *fit)
 {
 	uint32_t nv = (uint32_t)(b.positions.size() / 3);
 	if (b.indices.empty()) {
@@ -545,7 +545,12 @@ int finish_mesh(Builder &b, const tinygltf::Model &m, struct mesh *out)
 	}
 	if (mesh_alloc(out, nv, (uint32_t)b.indices.size(), b.any_uvs))
 		return -ENOMEM;
-	mesh_fit_positions(b.positions.data(), nv, out->positions);
+	if (fit && fit->measure)
+		mesh_box(b.positions.data(), nv, fit->measured);
+	if (fit && fit->use_box)
+		mesh_fit_box(b.positions.data(), nv, fit->box, out->positions);
+	else
+		mesh_fit_positions(b.positions.data(), nv, out->positions);
 	std::memcpy(out->normals, b.normals.data(), b.normals.size() * sizeof(float));
 	std::memcpy(out->indices, b.indices.data(), b.indices.size() * sizeof(uint32_t));
 	std::vector<GltfPart> parts;
@@ -622,31 +627,10 @@ void read_materials(const Builder &b, const tinygltf::Model &m, unsigned texture
 			 out->range_count);
 }
 
-// Before the passes that pose the file: they rewrite its meshes. A
-// malformed animation is a warning (the still model loads); a clip the
-// settings name and the file lacks is an error, as a missing scene is.
-bool read_anim(const char *name, tinygltf::Model &m, const struct gltf_options *o, std::string *err)
-{
-	struct mesh_anim *a = nullptr;
-	if (!o->anim && !o->pose)
-		return true;
-	if (!gltf_read_anim(m, &a, err)) {
-		log_warn("%s: %s; the model shows still", gltf_ext::escape(name).c_str(),
-			 gltf_ext::escape(*err).c_str());
-		err->clear();
-	}
-	bool ok = gltf_pose_nodes(m, a, o, err);
-	if (o->anim && ok)
-		*o->anim = a;
-	else
-		mesh_anim_free(a);
-	return ok;
-}
-
 } // namespace
 
 int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_options *o,
-		    const GltfImages &images, struct mesh *out)
+		    const GltfImages &images, struct mesh *out, GltfFit *fit)
 {
 	Builder b;
 	Pose pose;
@@ -654,7 +638,7 @@ int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_opti
 	b.name = name;
 	b.want_colors = (o->textures & GLTF_TEXTURE_BASE_COLOR) != 0;
 	b.textures = o->textures;
-	if (read_anim(name, m, o, &b.error) && prepare(m, name, &pose, &b.error) &&
+	if (gltf_anim_load(name, m, o, &b.error) && prepare(m, name, &pose, &b.error) &&
 	    gltf_ext::choose_scene(m, o->scene, o->scene_setting, &scene, &b.error)) {
 		std::vector<int> roots;
 		if (scene >= 0)
@@ -665,11 +649,11 @@ int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_opti
 					roots.push_back((int)i);
 		add_scene(b, m, roots, "scenes[" + std::to_string(scene) + "]", pose);
 	}
-	ret = b.error.empty() ? finish_mesh(b, m, out) : -EINVAL;
+	ret = b.error.empty() ? finish_mesh(b, m, out, fit) : -EINVAL;
 	std::string shown = gltf_ext::escape(name);
 	if (ret == -EINVAL && !b.error.empty())
 		log_err("%s: %s", shown.c_str(), gltf_ext::escape(b.error).c_str());
-	else if (ret == 0)
+	else if (ret == 0 && !(fit && fit->measure))
 		log_info("%s: %u vertices, %u triangles", shown.c_str(), out->vertex_count,
 			 out->index_count / 3);
 	if (ret == 0 && b.not_triangles)

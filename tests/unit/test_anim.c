@@ -6,6 +6,7 @@
 #include "scene/anim.h"
 #include "scene/gltf.h"
 
+#include <errno.h>
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -419,6 +420,22 @@ static void reads_a_files_animations(void **state)
 	NEAR(p->weights[1], 0.5);
 	anim_pose_free(p);
 	mesh_anim_free(a);
+
+	// Posed at 1.5 s, fitted to the box of the whole clip: inside the
+	// unit sphere, the clips kept.
+	struct mesh posed;
+	struct gltf_options po = {.anim = &a, .pose = true, .time = 1.5, .speed = 1};
+	assert_int_equal(gltf_load_options(path, &po, &posed), 0);
+	assert_non_null(a);
+	for (uint32_t i = 0; i < posed.vertex_count; i++) {
+		const float *v = posed.positions + i * 3;
+		assert_true(v[0] * v[0] + v[1] * v[1] + v[2] * v[2] <= 1.0001f);
+	}
+	mesh_release(&posed);
+	mesh_anim_free(a);
+	po.animation = "Run"; // a clip the file lacks: an error
+	assert_int_equal(gltf_load_options(path, &po, &posed), -EINVAL);
+	assert_null(a);
 
 	// A malformed animation is a warning: the still model loads.
 	write_animated(path, "SMOOTH", 1);
