@@ -193,6 +193,7 @@ bench: $(KIOSK) test-tools
 	KIOSK=./$(KIOSK) sh tests/bench/bench_input.sh
 	KIOSK=./$(KIOSK) sh tests/bench/bench_kms.sh
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_models.sh
+	KIOSK=./$(KIOSK) sh tests/bench/bench_anim.sh
 	TOOLS=$(TOOLS_DIR) sh tests/bench/bench_quality.sh tests/out/report --frames 7
 
 # Speed against error, regenerated into tests/bench/report (checked in, with
