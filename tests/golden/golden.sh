@@ -19,7 +19,7 @@ scenes="$scenes sphere-beetle-gltf sphere-displaced sphere-lit sphere-lit-beside
 scenes="$scenes sphere-vertex-color sphere-base-map sphere-base-map-off"
 scenes="$scenes background-color background-gradient background-image fit-long fit-long-half"
 scenes="$scenes parts-textures parts-mask parts-blend parts-leaf parts-normals parts-iridescence"
-scenes="$scenes morph-t1 morph-t3 morph-pingpong"
+scenes="$scenes morph-t1 morph-t3 morph-pingpong skin-t1 nodes-t1.7"
 mkdir -p "$out" "$models"
 "$TOOLS/mkmodels" "$models" >/dev/null
 
@@ -118,6 +118,17 @@ render() {
 	morph-pingpong)
 		$k -c matcaps/gold.png --model tests/corpus/khronos/SimpleMorph.gltf \
 			--time 5 --loop pingpong --output "$o"
+		;;
+	# A skin (RiggedSimple: two joints bend a cylinder) and node
+	# animation of a rigid part (BoxAnimated: the inner box turns from
+	# 1.25 s), as three.js's AnimationMixer poses them (tests/README).
+	skin-t1)
+		$k -c matcaps/pearl.png --model tests/corpus/khronos/RiggedSimple.gltf \
+			--time 1 --output "$o"
+		;;
+	nodes-t1.7)
+		$k -c matcaps/pearl.png --model tests/corpus/khronos/BoxAnimated.gltf \
+			--time 1.7 --output "$o"
 		;;
 	*)
 		echo "golden.sh: no scene named $1 (scenes: $scenes)" >&2
