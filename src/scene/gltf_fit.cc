@@ -1,6 +1,7 @@
-// A posed still fitted for its whole clip: the model's box at the pose
-// asked for and at the clip's key times, each a load of the geometry, so
-// that every still of one clip shares one framing.
+// A posed still fitted for its whole clip: the centre of the model's box
+// at the pose asked for and at the clip's key times, and its farthest
+// vertex from it over them, two loads of the geometry a pose, so that
+// every still of one clip shares one framing.
 #include "scene/gltf_fit.h"
 #include "scene/gltf_anim.h"
 
@@ -38,22 +39,45 @@ std::vector<double> sample_times(const struct mesh_anim *a, int clip, bool all)
 	return t;
 }
 
+// One pose's box (fit->measured), and with fit->has_center the squared
+// distance of its farthest vertex from that centre (fit->radius2).
 bool measure(const char *name, const tinygltf::Model &m, const struct gltf_options *o,
-	     const GltfImages &images, double box[6])
+	     const GltfImages &images, GltfFit *fit)
 {
 	tinygltf::Model copy = m;
 	struct mesh mesh;
 	struct gltf_options geometry = *o; // the pose alone: no clips kept, no maps
 	geometry.anim = nullptr;
 	geometry.textures = 0;
-	GltfFit fit = {};
-	fit.measure = true;
-	if (gltf_build_mesh(name, copy, &geometry, images, &mesh, &fit))
+	fit->measure = true;
+	if (gltf_build_mesh(name, copy, &geometry, images, &mesh, fit))
 		return false;
 	mesh_release(&mesh);
-	for (int k = 0; k < 3; k++) {
-		box[k] = std::fmin(box[k], fit.measured[k]);
-		box[3 + k] = std::fmax(box[3 + k], fit.measured[3 + k]);
+	return true;
+}
+
+// Every pose of the clip: the pose asked for, then each sample as clip
+// time (once, speed 1: the clock leaves a time within the clip as it is).
+// Without a centre, their box; with one, their farthest vertex from it.
+bool each_pose(const char *name, const tinygltf::Model &m, const struct gltf_options *o,
+	       const GltfImages &images, const std::vector<double> &times, GltfFit *all)
+{
+	struct gltf_options at = *o;
+	at.loop = ANIM_ONCE;
+	at.speed = 1;
+	for (size_t i = 0; i <= times.size(); i++) {
+		GltfFit one = {};
+		one.has_center = all->has_center;
+		std::memcpy(one.center, all->center, sizeof(one.center));
+		if (i > 0)
+			at.time = times[i - 1];
+		if (!measure(name, m, i ? &at : o, images, &one))
+			return false;
+		for (int k = 0; k < 3; k++) {
+			all->measured[k] = std::fmin(all->measured[k], one.measured[k]);
+			all->measured[3 + k] = std::fmax(all->measured[3 + k], one.measured[3 + k]);
+		}
+		all->radius2 = std::fmax(all->radius2, one.radius2);
 	}
 	return true;
 }
@@ -76,17 +100,22 @@ void gltf_clip_fit(const char *name, const tinygltf::Model &m, const struct gltf
 	mesh_anim_free(a);
 	if (clip < 0 && !all)
 		return;
-	double box[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
-	// The pose asked for, then each sample as clip time (once, speed 1:
-	// the clock leaves a time within the clip as it is).
-	bool ok = measure(name, m, o, images, box);
-	struct gltf_options at = *o;
-	at.loop = ANIM_ONCE;
-	at.speed = 1;
-	for (size_t i = 0; ok && i < times.size(); i++) {
-		at.time = times[i];
-		ok = measure(name, m, &at, images, box);
+	// As mesh_fit_positions fits one pose: the centre of the poses' box,
+	// and their farthest vertex from it on the unit sphere (two passes).
+	GltfFit over = {};
+	for (int k = 0; k < 3; k++) {
+		over.measured[k] = INFINITY;
+		over.measured[3 + k] = -INFINITY;
 	}
-	fit->use_box = ok && box[0] <= box[3];
-	std::memcpy(fit->box, box, sizeof(box));
+	if (!each_pose(name, m, o, images, times, &over) || !(over.measured[0] <= over.measured[3]))
+		return;
+	for (int k = 0; k < 3; k++)
+		over.center[k] = over.measured[k] + (over.measured[3 + k] - over.measured[k]) / 2;
+	over.has_center = true;
+	if (!each_pose(name, m, o, images, times, &over))
+		return;
+	fit->use_fit = true;
+	std::memcpy(fit->center, over.center, sizeof(fit->center));
+	fit->scale =
+	    over.radius2 > 0 && std::isfinite(over.radius2) ? 1 / std::sqrt(over.radius2) : 1;
 }

@@ -6,10 +6,10 @@
 
 #include <tiny_gltf.h>
 
-// For o->pose: a box holding the model at the pose asked for and at each
-// of its clip's key times (at most 32), so that every still of a clip is
-// fitted alike (fit->use_box); nothing for a file without the clip.
-// Each sample costs a load of the geometry.
+// For o->pose: the fit mesh_fit_positions would give the model at the pose
+// asked for and at its clip's key times (at most 32) together, so that
+// every still of a clip is fitted alike (fit->use_fit); nothing for a file
+// without the clip. Each sample costs two loads of the geometry.
 void gltf_clip_fit(const char *name, const tinygltf::Model &m, const struct gltf_options *o,
 		   const GltfImages &images, GltfFit *fit);
 

@@ -546,9 +546,10 @@ int finish_mesh(Builder &b, const tinygltf::Model &m, struct mesh *out, GltfFit 
 	if (mesh_alloc(out, nv, (uint32_t)b.indices.size(), b.any_uvs))
 		return -ENOMEM;
 	if (fit && fit->measure)
-		mesh_box(b.positions.data(), nv, fit->measured);
-	if (fit && fit->use_box)
-		mesh_fit_box(b.positions.data(), nv, fit->box, out->positions);
+		mesh_box(b.positions.data(), nv, fit->has_center ? fit->center : nullptr,
+			 fit->measured, &fit->radius2);
+	if (fit && fit->use_fit)
+		mesh_fit_to(b.positions.data(), nv, fit->center, fit->scale, out->positions);
 	else
 		mesh_fit_positions(b.positions.data(), nv, out->positions);
 	std::memcpy(out->normals, b.normals.data(), b.normals.size() * sizeof(float));

@@ -160,34 +160,34 @@ void mesh_fit_positions(const double *world, uint32_t count, float *out)
 			out[i * 3 + k] = (float)((world[i * 3 + k] - c[k]) * scale);
 }
 
-void mesh_box(const double *world, uint32_t count, double box[6])
+void mesh_box(const double *world, uint32_t count, const double *center, double box[6], double *r2)
 {
+	*r2 = 0.0;
 	for (int k = 0; k < 3; k++) {
 		box[k] = INFINITY;
 		box[3 + k] = -INFINITY;
 	}
-	for (uint32_t i = 0; i < count; i++)
+	for (uint32_t i = 0; i < count; i++) {
+		double d2 = 0.0;
+
 		for (int k = 0; k < 3; k++) {
-			box[k] = fmin(box[k], world[i * 3 + k]);
-			box[3 + k] = fmax(box[3 + k], world[i * 3 + k]);
+			double v = world[i * 3 + k];
+
+			box[k] = fmin(box[k], v);
+			box[3 + k] = fmax(box[3 + k], v);
+			if (center)
+				d2 += (v - center[k]) * (v - center[k]);
 		}
+		*r2 = fmax(*r2, d2);
+	}
 }
 
-void mesh_fit_box(const double *world, uint32_t count, const double box[6], float *out)
+void mesh_fit_to(const double *world, uint32_t count, const double center[3], double scale,
+		 float *out)
 {
-	double c[3], r2 = 0.0, scale = 1.0;
-
-	for (int k = 0; k < 3; k++) {
-		double h = (box[3 + k] - box[k]) / 2.0;
-
-		c[k] = box[k] + h;
-		r2 += h * h;
-	}
-	if (r2 > 0.0 && isfinite(r2))
-		scale = 1.0 / sqrt(r2);
 	for (uint32_t i = 0; i < count; i++)
 		for (int k = 0; k < 3; k++)
-			out[i * 3 + k] = (float)((world[i * 3 + k] - c[k]) * scale);
+			out[i * 3 + k] = (float)((world[i * 3 + k] - center[k]) * scale);
 }
 
 struct weld_key {
