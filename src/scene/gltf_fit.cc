@@ -15,7 +15,8 @@ namespace
 {
 
 // Clip times that show the clip's extent: its key times (where LINEAR and
-// STEP reach their extremes), at most 32, else 32 spread over it.
+// STEP reach their extremes; at most 32, else 32 spread over it), and 16
+// steps over the whole: a slerp sweeps an arc between its keys.
 std::vector<double> sample_times(const struct mesh_anim *a, int clip, bool all)
 {
 	std::vector<double> t;
@@ -36,6 +37,8 @@ std::vector<double> sample_times(const struct mesh_anim *a, int clip, bool all)
 		for (int i = 0; i < 32; i++)
 			t.push_back(longest * i / 31);
 	}
+	for (int i = 1; i < 16; i++)
+		t.push_back(longest * i / 16);
 	return t;
 }
 

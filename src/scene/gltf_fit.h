@@ -7,7 +7,8 @@
 #include <tiny_gltf.h>
 
 // For o->pose: the fit mesh_fit_positions would give the model at the pose
-// asked for and at its clip's key times (at most 32) together, so that
+// asked for, at its clip's key times (at most 32) and 15 steps between
+// together, so that
 // every still of a clip is fitted alike (fit->use_fit); nothing for a file
 // without the clip. Each sample costs two loads of the geometry.
 void gltf_clip_fit(const char *name, const tinygltf::Model &m, const struct gltf_options *o,
