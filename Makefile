@@ -80,7 +80,7 @@ SRC_INPUT   := input/action input/button input/gesture input/touch_decode input/
 	       input/gpio_$(GPIOD_API) input/keyboard input/touch
 SRC_CAMERA  := camera/camera_feed camera/camera_link camera/camera_math camera/camera_proto \
 	       camera/camera_texture
-SRC_RENDER  := render/background render/bake render/draw_list render/framing render/gl render/poster \
+SRC_RENDER  := render/background render/bake render/draw_list render/framing render/gl render/poster render/render_scale \
 	       render/render render/render_draw render/shader render/shading
 SRC_SCENE   := scene/lod scene/material scene/mesh scene/mesh_cache scene/mesh_cache_fields scene/mesh_cache_key scene/mesh_gen scene/mesh_pack scene/subdivide scene/tangent \
 	       scene/texture
@@ -93,6 +93,7 @@ LIB_CC += scene/gltf_words
 SHADERS := shaders/mapping.glsl shaders/matcap.vert shaders/matcap.frag shaders/material.glsl
 SHADERS += shaders/camera.vert shaders/camera.frag
 SHADERS += shaders/poster.vert shaders/poster.frag
+SHADERS += shaders/scale.vert shaders/scale.frag
 SHADERS += shaders/background.vert shaders/background.frag
 
 LIB_OBJS := $(LIB_C:%=$(BUILD)/%.o) $(LIB_CC:%=$(BUILD)/%.o) $(BUILD)/shaders_embedded.o

@@ -41,6 +41,8 @@ static const char *const camera_names[] = {"off", "on", NULL};	       /* enum ca
 static const char *const import_names[] = {"auto", "off", NULL};       /* enum camera_feed_import */
 static const char *const antialias_names[] = {"auto", "off", "2", "4", "8", NULL};
 static const char *const base_color_names[] = {"auto", "off", NULL}; /* enum material_switch */
+/* A number with a word for 0: its first choice (render_scale's auto). */
+static const char *const auto_names[] = {"auto", NULL};
 
 /* A field's place and size: the size tells a bool from an enum, and the
  * copy, the comparison and the release go by it. */
@@ -270,6 +272,11 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "at debug), so stills of other views keep one size"},
     {"fit", 0, OPTIONS_SCENE, "fit", K_DOUBLE, AT(content.fit), 0.1, 1, 0, NULL, "SHARE",
      "the share of the frame the model fills at its start view; it stays inside as it turns"},
+    {"render-scale", 0, OPTIONS_DISPLAY, "render_scale", K_DOUBLE, AT(display.render_scale), 0.5, 1,
+     0, auto_names, "S",
+     "draw the model at this share of the panel's width and height, scaled up on the way out "
+     "(the KMS plane where it can, else one GL pass); auto: 1 up to 1080p, less on a larger "
+     "panel"},
 };
 
 const char *backend_name(enum backend_kind kind)
@@ -293,6 +300,7 @@ void option_defaults(struct options *o)
 	memset(o, 0, sizeof(*o));
 	o->display.width = 1280;
 	o->display.height = 720;
+	o->display.render_scale = 1;
 	o->content.mode = SHADING_VIEW;
 	o->content.pitch = 20.0;
 	o->content.yaw = -30.0;
@@ -474,7 +482,8 @@ void option_accepted(const struct option_def *d, char *buf, size_t n)
 		return;
 	case K_DOUBLE:
 	case K_DEGREES:
-		snprintf(buf, n, "a number from %g to %g", d->lo, d->hi);
+		snprintf(buf, n, "%s%sa number from %g to %g", d->choices ? d->choices[0] : "",
+			 d->choices ? " or " : "", d->lo, d->hi);
 		return;
 	case K_SIZE:
 		snprintf(buf, n, "WIDTHxHEIGHT, each from %g to %g", d->lo, d->hi);
@@ -545,6 +554,10 @@ static bool set_number(void *p, const struct option_def *d, const char *value)
 {
 	double v;
 
+	if (d->choices && strcmp(value, d->choices[0]) == 0) {
+		*(double *)p = 0;
+		return true;
+	}
 	if (!parse_number(value, d->lo, d->hi, d->kind == K_INT ? (d->step ? d->step : 1) : 0, &v))
 		return false;
 	if (d->kind == K_INT)

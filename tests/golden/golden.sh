@@ -19,6 +19,7 @@ scenes="$scenes sphere-beetle-gltf sphere-displaced sphere-lit sphere-lit-beside
 scenes="$scenes sphere-vertex-color sphere-base-map sphere-base-map-off"
 scenes="$scenes background-color background-gradient background-image fit-long fit-long-half"
 scenes="$scenes parts-textures parts-mask parts-blend parts-leaf parts-normals parts-iridescence"
+scenes="$scenes render-scale-half"
 mkdir -p "$out" "$models"
 "$TOOLS/mkmodels" "$models" >/dev/null
 
@@ -106,6 +107,11 @@ render() {
 	# below); two halves each with its own iridescent film.
 	parts-textures | parts-mask | parts-blend | parts-leaf | parts-normals | parts-iridescence)
 		$k -c matcaps/pearl.png --model "$m/$1.glb" --output "$o"
+		;;
+	# [display] render_scale 0.5: the knot drawn at 160x120 and scaled
+	# up by the GL pass (render/render_scale.c), filtered linearly.
+	render-scale-half)
+		$k -c matcaps/gold.png --render-scale 0.5 --output "$o"
 		;;
 	*)
 		echo "golden.sh: no scene named $1 (scenes: $scenes)" >&2

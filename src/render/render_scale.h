@@ -1,0 +1,54 @@
+/* [display] render_scale: the scene drawn into fewer pixels than the
+ * panel has, and scaled up on the way out. Where the KMS primary plane
+ * scales (display/kms_scale.c) the display's buffer is already the small
+ * one and this pass does nothing; elsewhere it is one GL pass: the scene
+ * into a framebuffer object of the scaled size, then a full-screen quad
+ * that samples it with linear filtering into the display's framebuffer
+ * (GLES2 has no glBlitFramebuffer; a quad is one draw on any GPU).
+ *
+ * The frame's order: the display's begin_frame, render_scale_begin, the
+ * scene (renderer_draw at the size begin gave), render_scale_end, then
+ * the full-resolution overlays (the caption, the logo: drawn at the
+ * display's width x height, never scaled), then the display's present. */
+#ifndef MK_RENDER_SCALE_H
+#define MK_RENDER_SCALE_H
+
+#include "render/gl.h"
+
+#include <stdbool.h>
+
+#define RENDER_SCALE_MIN 0.5
+
+/* The scale for a width x height panel: want itself (0.5 to 1), or for
+ * auto (0) the largest step of 0.05 that draws no more pixels than a
+ * 1920x1080 frame on a software rasteriser, 2560x1440 on a GPU, and at
+ * least RENDER_SCALE_MIN: 1 up to 1080p everywhere, 0.5 for 4K in
+ * software. Why those budgets: tests/bench/report/speed-error.md. */
+double render_scale_pick(double want, int width, int height, bool software);
+/* The scaled buffer's size: rounded to whole pixels, at least 1x1. */
+void render_scale_size(double scale, int width, int height, int *w, int *h);
+
+struct render_scale;
+
+/* want: [display] render_scale (0: auto). samples: the display's
+ * multisampling (struct display's samples): the scaled buffer is not
+ * multisampled, said once where that is more than 0. Makes no GL object
+ * until a frame needs one. */
+struct render_scale *render_scale_new(const struct gl *gl, double want, int samples,
+				      const char *shader_dir);
+/* With the context current. */
+void render_scale_free(struct render_scale *s);
+
+/* After the display's begin_frame, with its framebuffer bound: where the
+ * scale for width x height is under 1 and the plane does not scale
+ * (plane: struct display's plane_scaled), binds the scaled framebuffer
+ * (made on the first frame and again when the size changes) and its
+ * viewport. *w, *h: the size to draw the scene at (width x height at 1,
+ * or when the framebuffer cannot be made: said once, drawn full size). */
+void render_scale_begin(struct render_scale *s, bool plane, int width, int height, int *w, int *h);
+/* The scaled scene up into the display's framebuffer, its viewport full
+ * size again; nothing where begin drew full size. Full-resolution
+ * overlays draw after this. */
+void render_scale_end(struct render_scale *s);
+
+#endif
