@@ -72,7 +72,7 @@ SRC_CONTENT := content/content content/matcap_set content/matcap_job content/mod
 	       content/model_loader content/worker
 SRC_CONFIG  := config/options config/settings config/settings_origin
 SRC_STATE   := state/app state/power state/schedule
-SRC_DISPLAY := display/backlight display/cec display/cec_link display/display display/display_egl display/display_kms \
+SRC_DISPLAY := display/backlight display/cec display/cec_link display/display display/display_egl display/display_kms display/kms_scale \
 	       display/display_osmesa \
 	       display/drm display/drm_atomic display/drm_legacy display/egl_util display/hotplug \
 	       display/kms_fb
