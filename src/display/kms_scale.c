@@ -33,7 +33,7 @@ bool kms_scale_plane(struct drm *drm, struct gbm_device *gbm, uint32_t format,
 		     const struct display *d)
 {
 	int mw = drm->mode.hdisplay, mh = drm->mode.vdisplay, w, h, ret;
-	double scale = render_scale_pick(drm->scale_want, mw, mh, d->gl.caps.software);
+	double scale = render_scale_pick(drm->scale_want, mw, mh, d->gl.caps.software, true);
 
 	if (scale >= 1)
 		return unscaled(drm);

@@ -20,14 +20,14 @@ struct render_scale {
 	bool said, broken, told; /* logged once: the scale, a failure, the samples */
 };
 
-double render_scale_pick(double want, int width, int height, bool software)
+double render_scale_pick(double want, int width, int height, bool software, bool plane)
 {
 	double budget = software ? 1920.0 * 1080.0 : 2560.0 * 1440.0, pixels, s;
 
 	if (want > 0)
 		return want < RENDER_SCALE_MIN ? RENDER_SCALE_MIN : want > 1 ? 1 : want;
 	pixels = (double)width * (double)height;
-	if (pixels <= budget)
+	if (pixels <= budget || (software && !plane))
 		return 1;
 	/* Steps of 0.05, rounded down: a step never draws over the budget. */
 	s = floor(sqrt(budget / pixels) * 20 + 1e-9) / 20;
@@ -147,7 +147,8 @@ static void say(struct render_scale *s, double scale, int w, int h)
 void render_scale_begin(struct render_scale *s, bool plane, int width, int height, int *w, int *h)
 {
 	const struct gl *gl = s->gl;
-	double scale = plane ? 1 : render_scale_pick(s->want, width, height, gl->caps.software);
+	double scale =
+	    plane ? 1 : render_scale_pick(s->want, width, height, gl->caps.software, false);
 
 	*w = width;
 	*h = height;

@@ -20,11 +20,14 @@
 #define RENDER_SCALE_MIN 0.5
 
 /* The scale for a width x height panel: want itself (0.5 to 1), or for
- * auto (0) the largest step of 0.05 that draws no more pixels than a
- * 1920x1080 frame on a software rasteriser, 2560x1440 on a GPU, and at
- * least RENDER_SCALE_MIN: 1 up to 1080p everywhere, 0.5 for 4K in
- * software. Why those budgets: tests/bench/report/speed-error.md. */
-double render_scale_pick(double want, int width, int height, bool software);
+ * auto (0) 1 up to a budget of pixels, 1920x1080 on a software rasteriser
+ * and 2560x1440 on a GPU, and on a larger panel the largest step of 0.05
+ * that draws no more than the budget, at least RENDER_SCALE_MIN (0.5 for
+ * 4K in software, 0.65 on a GPU). plane: the display's plane would scale
+ * (free); without it the GL pass shades every panel pixel once more,
+ * which on a software rasteriser costs what it saves, so auto stays at 1
+ * there. The figures: tests/bench/report/speed-error.md. */
+double render_scale_pick(double want, int width, int height, bool software, bool plane);
 /* The scaled buffer's size: rounded to whole pixels, at least 1x1. */
 void render_scale_size(double scale, int width, int height, int *w, int *h);
 
