@@ -275,8 +275,8 @@ const struct option_def option_defs[OPTION_DEFS] = {
     {"render-scale", 0, OPTIONS_DISPLAY, "render_scale", K_DOUBLE, AT(display.render_scale), 0.5, 1,
      0, auto_names, "S",
      "draw the model at this share of the panel's width and height, scaled up on the way out "
-     "(the KMS plane where it can, else one GL pass); auto: 1 up to 1080p, less on a larger "
-     "panel"},
+     "(the KMS plane where it can, else one GL pass); auto: 1 up to 1080p (1440p on a GPU), "
+     "less on a larger panel (in software only where the plane scales)"},
 };
 
 const char *backend_name(enum backend_kind kind)

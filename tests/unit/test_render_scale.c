@@ -178,11 +178,12 @@ static void pattern(struct image *img)
 /* The pattern drawn as the scene at half size comes out over the whole
  * frame, upright (green on top), the halves where they were and the seam
  * between them filtered; afterwards the display's framebuffer and a full
- * viewport are bound again. */
-static void gl_pass(void **state)
+ * viewport are bound again. samples: the display's, as the scaled buffer
+ * takes them (multisampled renderbuffers resolved by a blit on OSMesa:
+ * the same picture, its edges being the texels'). */
+static void draw_pattern(struct display *d, int samples)
 {
-	struct display *d = *state;
-	struct render_scale *s = render_scale_new(&d->gl, 0.5, 0, NULL);
+	struct render_scale *s = render_scale_new(&d->gl, 0.5, samples, NULL);
 	struct background_spec spec;
 	struct background *b;
 	struct image img, f;
@@ -226,6 +227,16 @@ static void gl_pass(void **state)
 	render_scale_free(s);
 }
 
+static void gl_pass(void **state)
+{
+	draw_pattern(*state, 0);
+}
+
+static void gl_pass_multisampled(void **state)
+{
+	draw_pattern(*state, 4);
+}
+
 /* At 1, or where the plane scales, the scene draws straight into the
  * display's framebuffer at full size. */
 static void full_size(void **state)
@@ -262,6 +273,7 @@ int main(void)
 	};
 	const struct CMUnitTest drawn[] = {
 	    cmocka_unit_test(gl_pass),
+	    cmocka_unit_test(gl_pass_multisampled),
 	    cmocka_unit_test(full_size),
 	};
 	int failed = cmocka_run_group_tests(pure, NULL, NULL);
