@@ -9,7 +9,11 @@
  * The frame's order: the display's begin_frame, render_scale_begin, the
  * scene (renderer_draw at the size begin gave), render_scale_end, then
  * the full-resolution overlays (the caption, the logo: drawn at the
- * display's width x height, never scaled), then the display's present. */
+ * display's width x height, never scaled), then the display's present.
+ * Where the KMS plane scales (struct display's plane_scaled), the
+ * display's buffer itself is the small one: an overlay drawn by GL there
+ * is scaled with the frame, so it belongs on an overlay plane of its own;
+ * one that cannot have one needs the GL pass (no plane scaling). */
 #ifndef MK_RENDER_SCALE_H
 #define MK_RENDER_SCALE_H
 
