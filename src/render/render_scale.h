@@ -29,7 +29,7 @@
  * that draws no more than the budget, at least RENDER_SCALE_MIN (0.5 for
  * 4K in software, 0.65 on a GPU). plane: the display's plane would scale
  * (free); without it the GL pass shades every panel pixel once more,
- * which on a software rasteriser costs what it saves, so auto stays at 1
+ * which on a software rasteriser costs more than it saves, so auto stays at 1
  * there. The figures: tests/bench/report/speed-error.md. */
 double render_scale_pick(double want, int width, int height, bool software, bool plane);
 /* The scaled buffer's size: rounded to whole pixels, at least 1x1. */

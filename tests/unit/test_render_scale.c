@@ -68,7 +68,7 @@ static void key(void **state)
 
 /* A number is kept; auto: 1 up to 1080p (1440p on a GPU), then the
  * largest step of 0.05 within the budget, never under 0.5; on a software
- * rasteriser only where the plane scales (the GL pass costs it what it
+ * rasteriser only where the plane scales (the GL pass costs it more than it
  * saves). */
 static void pick(void **state)
 {
