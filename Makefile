@@ -73,7 +73,7 @@ SRC_CONTENT := content/content content/content_look content/matcap_set content/m
 	       content/model_loader content/worker
 SRC_CONFIG  := config/options config/model_settings config/settings config/settings_origin
 SRC_STATE   := state/app state/view state/power state/schedule
-SRC_DISPLAY := display/backlight display/cec display/cec_link display/display display/display_egl display/display_kms \
+SRC_DISPLAY := display/backlight display/cec display/cec_link display/display display/display_egl display/display_kms display/kms_scale \
 	       display/display_osmesa \
 	       display/drm display/drm_atomic display/drm_legacy display/egl_util display/hotplug \
 	       display/kms_fb
@@ -81,19 +81,21 @@ SRC_INPUT   := input/action input/button input/gesture input/touch_decode input/
 	       input/gpio_$(GPIOD_API) input/keyboard input/touch
 SRC_CAMERA  := camera/camera_feed camera/camera_link camera/camera_math camera/camera_proto \
 	       camera/camera_texture
-SRC_RENDER  := render/background render/bake render/draw_list render/framing render/gl render/poster \
+SRC_RENDER  := render/background render/bake render/draw_list render/framing render/gl render/poster render/render_scale \
 	       render/render render/render_draw render/shader render/shading
 SRC_SCENE   := scene/lod scene/material scene/mesh scene/mesh_cache scene/mesh_cache_fields scene/mesh_cache_key scene/mesh_gen scene/mesh_pack scene/subdivide scene/tangent \
 	       scene/texture
+SRC_SCENE   += scene/anim scene/anim_sampler scene/anim_palette
 SRC_UTIL    := util/file util/folder_watch util/image util/log util/math3d
 LIB_C  := $(SRC_APP) $(SRC_OPS) $(SRC_CONTENT) $(SRC_CONFIG) $(SRC_STATE) $(SRC_DISPLAY) $(SRC_INPUT) $(SRC_CAMERA) $(SRC_RENDER) $(SRC_SCENE) $(SRC_UTIL)
 # The C++ shims, each behind a C header (gltf_ext.h is internal to the glTF one).
 LIB_CC := scene/gltf scene/gltf_mesh scene/gltf_fs scene/gltf_material scene/gltf_ext scene/gltf_files scene/gltf_pose \
 	  scene/gltf_draco camera/camera
-LIB_CC += scene/gltf_words
+LIB_CC += scene/gltf_words scene/gltf_anim scene/gltf_fit
 SHADERS := shaders/mapping.glsl shaders/matcap.vert shaders/matcap.frag shaders/material.glsl
 SHADERS += shaders/camera.vert shaders/camera.frag
 SHADERS += shaders/poster.vert shaders/poster.frag
+SHADERS += shaders/scale.vert shaders/scale.frag
 SHADERS += shaders/background.vert shaders/background.frag
 
 LIB_OBJS := $(LIB_C:%=$(BUILD)/%.o) $(LIB_CC:%=$(BUILD)/%.o) $(BUILD)/shaders_embedded.o

@@ -40,8 +40,11 @@ static const char *const switch_names[] = {"auto", "off", "on", NULL}; /* enum m
 static const char *const lit_names[] = {"off", "on", "beside", NULL};  /* enum material_lit */
 static const char *const camera_names[] = {"off", "on", NULL};	       /* enum camera_feed_use */
 static const char *const import_names[] = {"auto", "off", NULL};       /* enum camera_feed_import */
+static const char *const loop_names[] = {"repeat", "once", "pingpong", NULL}; /* enum anim_loop */
 static const char *const antialias_names[] = {"auto", "off", "2", "4", "8", NULL};
 static const char *const base_color_names[] = {"auto", "off", NULL}; /* enum material_switch */
+/* A number with a word for 0: its first choice (render_scale's auto). */
+static const char *const auto_names[] = {"auto", NULL};
 static const char *const up_names[] = {"+y", "-y", "+z", "-z", "+x", "-x", NULL}; /* frame_up */
 static const char *const direction_names[] = {"right", "left", NULL};
 
@@ -227,6 +230,16 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "auto: the matcap times the model's base colour (glTF colour, texture, COLOR_0); off: not"},
     {"model-scene", 0, OPTIONS_SCENE, "model_scene", K_STRING, AT(content.model_scene), 0, 0, 0,
      NULL, "SCENE", "which of the model's glTF scenes: an index or a name (default: its own)"},
+    {"animation", 0, OPTIONS_SCENE, "animation", K_STRING, AT(content.animation), 0, 0, 0, NULL,
+     "WHICH",
+     "the glTF animation posed for --time: auto (the first), off, all, an index or a name"},
+    {"loop", 0, OPTIONS_SCENE, "loop", K_CHOICE, AT(content.anim_loop), 0, 0, 0, loop_names, "HOW",
+     "how the animation goes on past its end: repeat, once (holds the last frame), pingpong"},
+    {"speed", 0, OPTIONS_SCENE, "speed", K_DOUBLE, AT(content.anim_speed), 0.01, 100, 0, NULL, "X",
+     "the animation's speed (1: as the file has it)"},
+    {"time", 0, OPTION_CLI, NULL, K_DOUBLE, AT(content.anim_time), 0, 1e9, 0, NULL, "SECONDS",
+     "draw the model as its animation poses it this many seconds after it starts (with "
+     "--output)"},
     {"config", 'C', OPTION_CLI, NULL, K_STRING, AT(config), 0, 0, 0, NULL, "FILE",
      "read settings from an INI file first (see config/kiosk.ini)"},
     {"output", 'o', OPTION_CLI, NULL, K_STRING, AT(output), 0, 0, 0, NULL, "FILE",
@@ -271,6 +284,11 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "at debug), so stills of other views keep one size"},
     {"fit", 0, OPTIONS_SCENE, "fit", K_DOUBLE, AT(content.fit), 0.1, 1, 0, NULL, "SHARE",
      "the share of the frame the model fills at its start view; it stays inside as it turns"},
+    {"render-scale", 0, OPTIONS_DISPLAY, "render_scale", K_DOUBLE, AT(display.render_scale), 0.5, 1,
+     0, auto_names, "S",
+     "draw the model at this share of the panel's width and height, scaled up on the way out "
+     "(the KMS plane where it can, else one GL pass); auto: 1 up to 1080p (1440p on a GPU), "
+     "less on a larger panel (in software only where the plane scales)"},
     {"frame-up", 0, OPTIONS_FRAME, "up", K_CHOICE, AT(content.frame.up), 0, 0, 0, up_names, "AXIS",
      "the model's axis that points up: +y (glTF's), -y, +z, -z, +x or -x"},
     {"orientation", 0, OPTIONS_FRAME, "orientation", K_STRING, AT(content.frame.orientation), 0, 0,
@@ -330,11 +348,14 @@ void option_defaults(struct options *o)
 	memset(o, 0, sizeof(*o));
 	o->display.width = 1280;
 	o->display.height = 720;
+	o->display.render_scale = 1;
 	o->content.mode = SHADING_VIEW;
 	o->content.pitch = 20.0;
 	o->content.yaw = -30.0;
 	o->content.lod_pixels = 4.0;
 	o->content.fit = CONTENT_FIT_DEFAULT;
+	o->content.anim_speed = 1.0;
+	o->content.anim_time = -1.0; /* no --time: the rest pose */
 	material_config_defaults(&o->content.material);
 	frame_config_defaults(&o->content.frame);
 	o->log_level = LOG_INFO;
@@ -512,7 +533,8 @@ void option_accepted(const struct option_def *d, char *buf, size_t n)
 		return;
 	case K_DOUBLE:
 	case K_DEGREES:
-		snprintf(buf, n, "a number from %g to %g", d->lo, d->hi);
+		snprintf(buf, n, "%s%sa number from %g to %g", d->choices ? d->choices[0] : "",
+			 d->choices ? " or " : "", d->lo, d->hi);
 		return;
 	case K_SIZE:
 		snprintf(buf, n, "WIDTHxHEIGHT, each from %g to %g", d->lo, d->hi);
@@ -583,6 +605,10 @@ static bool set_number(void *p, const struct option_def *d, const char *value)
 {
 	double v;
 
+	if (d->choices && strcmp(value, d->choices[0]) == 0) {
+		*(double *)p = 0;
+		return true;
+	}
 	if (!parse_number(value, d->lo, d->hi, d->kind == K_INT ? (d->step ? d->step : 1) : 0, &v))
 		return false;
 	if (d->kind == K_INT)
