@@ -14,6 +14,7 @@ VERSION    := 0.1.0
 PREFIX     ?= /usr/local
 BINDIR     ?= $(PREFIX)/bin
 DATADIR    ?= $(PREFIX)/share/matcap-kiosk
+MANDIR     ?= $(PREFIX)/share/man
 SYSCONFDIR ?= /etc
 DESTDIR    ?=
 # systemd and udev search these under /usr/local as under /usr. A package
@@ -70,9 +71,9 @@ SRC_APP     := app/kiosk_models app/kiosk app/kiosk_content app/kiosk_report app
 SRC_OPS     := ops/check ops/import ops/import_ini ops/metrics ops/screen ops/service ops/status
 SRC_CONTENT := content/content content/matcap_set content/matcap_job content/model_list \
 	       content/model_loader content/worker
-SRC_CONFIG  := config/options config/settings config/settings_origin
-SRC_STATE   := state/app state/power state/schedule
-SRC_DISPLAY := display/backlight display/cec display/cec_link display/display display/display_egl display/display_kms \
+SRC_CONFIG  := config/options config/model_settings config/settings config/settings_origin
+SRC_STATE   := state/app state/view state/power state/schedule
+SRC_DISPLAY := display/backlight display/cec display/cec_link display/display display/display_egl display/display_kms display/kms_scale \
 	       display/display_osmesa \
 	       display/drm display/drm_atomic display/drm_legacy display/egl_util display/hotplug \
 	       display/kms_fb
@@ -80,7 +81,7 @@ SRC_INPUT   := input/action input/button input/gesture input/touch_decode input/
 	       input/gpio_$(GPIOD_API) input/keyboard input/touch
 SRC_CAMERA  := camera/camera_feed camera/camera_link camera/camera_math camera/camera_proto \
 	       camera/camera_texture
-SRC_RENDER  := render/background render/bake render/draw_list render/framing render/gl render/poster \
+SRC_RENDER  := render/background render/bake render/draw_list render/framing render/gl render/poster render/render_scale \
 	       render/render render/render_draw render/shader render/shading
 SRC_SCENE   := scene/lod scene/material scene/mesh scene/mesh_cache scene/mesh_cache_fields scene/mesh_cache_key scene/mesh_gen scene/mesh_pack scene/subdivide scene/tangent \
 	       scene/texture
@@ -93,6 +94,7 @@ LIB_CC += scene/gltf_words
 SHADERS := shaders/mapping.glsl shaders/matcap.vert shaders/matcap.frag shaders/material.glsl
 SHADERS += shaders/camera.vert shaders/camera.frag
 SHADERS += shaders/poster.vert shaders/poster.frag
+SHADERS += shaders/scale.vert shaders/scale.frag
 SHADERS += shaders/background.vert shaders/background.frag
 
 LIB_OBJS := $(LIB_C:%=$(BUILD)/%.o) $(LIB_CC:%=$(BUILD)/%.o) $(BUILD)/shaders_embedded.o
@@ -205,6 +207,7 @@ install: matcap-kiosk
 	install -d $(DESTDIR)$(DATADIR)/matcaps
 	install -m 0644 matcaps/*.png $(DESTDIR)$(DATADIR)/matcaps/
 	install -D -m 0644 config/kiosk.ini $(DESTDIR)$(DATADIR)/kiosk.ini.example
+	install -D -m 0644 config/matcap-kiosk.1 $(DESTDIR)$(MANDIR)/man1/matcap-kiosk.1
 	# Settings in pieces: packages and Ansible roles drop *.ini files here.
 	install -d $(DESTDIR)$(SYSCONFDIR)/matcap-kiosk/kiosk.ini.d
 	# An edited config survives a reinstall.
@@ -230,6 +233,7 @@ install: matcap-kiosk
 
 uninstall:
 	rm -f $(DESTDIR)$(BINDIR)/matcap-kiosk
+	rm -f $(DESTDIR)$(MANDIR)/man1/matcap-kiosk.1
 	rm -rf $(DESTDIR)$(DATADIR)
 	rm -f $(DESTDIR)$(SYSTEMD_UNITDIR)/matcap-kiosk.service \
 		$(DESTDIR)$(SYSTEMD_UNITDIR)/matcap-kiosk-import@.service \

@@ -161,7 +161,7 @@ static int draw(struct kiosk *k, uint64_t now)
 {
 	const struct app_state *st = app_state(k->app);
 	struct display *d = k->display;
-	int ret;
+	int ret, w, h;
 
 	sync_mode(k, st->mode);
 	k->view.orientation = st->orientation;
@@ -175,7 +175,12 @@ static int draw(struct kiosk *k, uint64_t now)
 	if (k->camera)
 		renderer_use_matcap_texture(k->renderer,
 					    camera_feed_draw(k->camera, st->camera_on));
-	renderer_draw(k->renderer, &k->view, d->width, d->height);
+	render_scale_begin(k->scale, d->plane_scaled, d->width, d->height, &w, &h);
+	renderer_draw(k->renderer, &k->view, w, h);
+	render_scale_end(k->scale);
+	/* The frame is full size again: full-resolution overlays (the
+	 * caption, the logo) draw here, at d->width x d->height, before the
+	 * present. */
 	ret = d->present(d);
 	if (ret == -EAGAIN)
 		return 0;
@@ -211,9 +216,11 @@ static int configure(struct kiosk *k, uint64_t now_ns)
 	struct app_msg m = {.kind = APP_RELOADED, .reload = {&cfg, count, now_ns}};
 
 	log_set_level(o->log_level);
-	k->view = content_view(&o->content);
-	cfg.rest = k->view.orientation;
-	cfg.mode = o->content.mode;
+	const struct content_config *shown = content_settings(k->content, &o->content);
+
+	k->view = content_view(shown);
+	content_app_frame(shown, &cfg.frame, &cfg.rest);
+	cfg.mode = shown->mode;
 	if (k->app)
 		app_apply(k->app, &m);
 	else
@@ -524,7 +531,9 @@ struct kiosk *kiosk_new(const struct kiosk_parts *p, uint64_t now_ns)
 	/* The renderer already holds the mode. */
 	k->shown_mode = p->options->content.mode;
 	k->shown_ortho = p->options->content.ortho;
-	if (kiosk_content_start(k) || options_copy(&k->started, p->options) ||
+	k->scale = render_scale_new(&p->display->gl, p->options->display.render_scale,
+				    p->display->samples, p->options->shader_dir);
+	if (!k->scale || kiosk_content_start(k) || options_copy(&k->started, p->options) ||
 	    options_copy(&k->applied, p->options) || configure(k, now_ns)) {
 		kiosk_free(k);
 		return NULL;
@@ -549,6 +558,7 @@ void kiosk_free(struct kiosk *k)
 	kiosk_models_free(k->models);
 	metrics_free(k->metrics);
 	app_free(k->app);
+	render_scale_free(k->scale);
 	options_release(&k->started);
 	options_release(&k->applied);
 	free(k);

@@ -27,6 +27,7 @@ const struct options_section_rule options_sections[OPTIONS_SECTIONS] = {
 		       "at once; the touchscreens are opened again if this section changed"},
     [OPTIONS_STATUS] = {"status", OPTIONS_LIVE, NULL,
 			"at once; a metrics file no longer named is removed"},
+    [OPTIONS_FRAME] = {"frame", OPTIONS_LIVE, NULL, "at once"},
 };
 
 static const char *const backend_names[] = {"auto", "kms", "osmesa", "egl-headless", NULL};
@@ -41,6 +42,10 @@ static const char *const camera_names[] = {"off", "on", NULL};	       /* enum ca
 static const char *const import_names[] = {"auto", "off", NULL};       /* enum camera_feed_import */
 static const char *const antialias_names[] = {"auto", "off", "2", "4", "8", NULL};
 static const char *const base_color_names[] = {"auto", "off", NULL}; /* enum material_switch */
+/* A number with a word for 0: its first choice (render_scale's auto). */
+static const char *const auto_names[] = {"auto", NULL};
+static const char *const up_names[] = {"+y", "-y", "+z", "-z", "+x", "-x", NULL}; /* frame_up */
+static const char *const direction_names[] = {"right", "left", NULL};
 
 /* A field's place and size: the size tells a bool from an enum, and the
  * copy, the comparison and the release go by it. */
@@ -54,15 +59,13 @@ _Static_assert(offsetof(struct camera_feed_config, height) ==
 		   offsetof(struct camera_feed_config, width) + sizeof(int),
 	       "camera width, height");
 /* Choices other than a bool are kept through an int. */
-_Static_assert(sizeof(enum backend_kind) == sizeof(int) &&
-		   sizeof(enum shading_mode) == sizeof(int) &&
-		   sizeof(enum app_action) == sizeof(int) &&
-		   sizeof(enum button_active) == sizeof(int) &&
-		   sizeof(enum button_bias) == sizeof(int) &&
-		   sizeof(enum camera_feed_use) == sizeof(int) &&
-		   sizeof(enum camera_feed_import) == sizeof(int) &&
-		   sizeof(enum display_antialias) == sizeof(int),
-	       "enums are ints");
+_Static_assert(
+    sizeof(enum backend_kind) == sizeof(int) && sizeof(enum shading_mode) == sizeof(int) &&
+	sizeof(enum app_action) == sizeof(int) && sizeof(enum button_active) == sizeof(int) &&
+	sizeof(enum button_bias) == sizeof(int) && sizeof(enum camera_feed_use) == sizeof(int) &&
+	sizeof(enum camera_feed_import) == sizeof(int) &&
+	sizeof(enum display_antialias) == sizeof(int) && sizeof(enum frame_up) == sizeof(int),
+    "enums are ints");
 
 const struct option_def option_defs[OPTION_DEFS] = {
     {"backend", 'b', OPTIONS_DISPLAY, "backend", K_CHOICE, AT(backend), 0, 0, 0, backend_names,
@@ -270,6 +273,47 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "at debug), so stills of other views keep one size"},
     {"fit", 0, OPTIONS_SCENE, "fit", K_DOUBLE, AT(content.fit), 0.1, 1, 0, NULL, "SHARE",
      "the share of the frame the model fills at its start view; it stays inside as it turns"},
+    {"render-scale", 0, OPTIONS_DISPLAY, "render_scale", K_DOUBLE, AT(display.render_scale), 0.5, 1,
+     0, auto_names, "S",
+     "draw the model at this share of the panel's width and height, scaled up on the way out "
+     "(the KMS plane where it can, else one GL pass); auto: 1 up to 1080p (1440p on a GPU), "
+     "less on a larger panel (in software only where the plane scales)"},
+    {"frame-up", 0, OPTIONS_FRAME, "up", K_CHOICE, AT(content.frame.up), 0, 0, 0, up_names, "AXIS",
+     "the model's axis that points up: +y (glTF's), -y, +z, -z, +x or -x"},
+    {"orientation", 0, OPTIONS_FRAME, "orientation", K_STRING, AT(content.frame.orientation), 0, 0,
+     0, NULL, "'R P Y'",
+     "turn the model by ROLL PITCH YAW degrees (after up, before the fit: the fit frames the "
+     "turned model)"},
+    {"start-yaw", 0, OPTIONS_FRAME, "yaw", K_DOUBLE, AT(content.frame.yaw), -360, 360, 0, NULL,
+     "DEG", "the start view's turn about the vertical (default: [scene] yaw)"},
+    {"start-pitch", 0, OPTIONS_FRAME, "pitch", K_DOUBLE, AT(content.frame.pitch), -90, 90, 0, NULL,
+     "DEG", "the start view's tilt (default: [scene] pitch)"},
+    {"start-zoom", 0, OPTIONS_FRAME, "zoom", K_DOUBLE, AT(content.frame.zoom), 0.05, 20, 0, NULL,
+     "Z", "the start view's zoom, 1: the fit's"},
+    {"yaw-min", 0, OPTIONS_FRAME, "yaw_min", K_DOUBLE, AT(content.frame.yaw_min), -3600, 3600, 0,
+     NULL, "DEG", "no turn left of this yaw (with yaw_max: a turntable between them)"},
+    {"yaw-max", 0, OPTIONS_FRAME, "yaw_max", K_DOUBLE, AT(content.frame.yaw_max), -3600, 3600, 0,
+     NULL, "DEG", "no turn right of this yaw"},
+    {"pitch-min", 0, OPTIONS_FRAME, "pitch_min", K_DOUBLE, AT(content.frame.pitch_min), -180, 180,
+     0, NULL, "DEG", "no tilt below this pitch"},
+    {"pitch-max", 0, OPTIONS_FRAME, "pitch_max", K_DOUBLE, AT(content.frame.pitch_max), -180, 180,
+     0, NULL, "DEG", "no tilt above this pitch"},
+    {"zoom-min", 0, OPTIONS_FRAME, "zoom_min", K_DOUBLE, AT(content.frame.zoom_min), 0.05, 20, 0,
+     NULL, "Z", "the least zoom a pinch or a stop reaches (default 0.5)"},
+    {"zoom-max", 0, OPTIONS_FRAME, "zoom_max", K_DOUBLE, AT(content.frame.zoom_max), 0.05, 20, 0,
+     NULL, "Z", "the most zoom (default 4)"},
+    {"attract-direction", 0, OPTIONS_FRAME, "attract_direction", K_CHOICE,
+     AT(content.frame.attract_direction), 0, 0, 0, direction_names, "WAY",
+     "attract mode turns right or left"},
+    {"attract-sway", 0, OPTIONS_FRAME, "attract_sway", K_DOUBLE, AT(content.frame.attract_sway), 0,
+     180, 0, NULL, "DEG",
+     "attract mode swings this far each way of the start view instead of turning; 0: full turns"},
+    {"stops", 0, OPTIONS_FRAME, "stops", K_STRING, AT(content.frame.stops), 0, 0, 0, NULL,
+     "'Y P Z \"TEXT\"; ...'",
+     "guided stops: views (yaw, pitch in degrees, zoom) each with a line of text, stepped by "
+     "next-stop and prev-stop"},
+    {"stop-seconds", 0, OPTIONS_FRAME, "stop_seconds", K_DOUBLE, AT(content.frame.stop_seconds), 0,
+     3600, 0, NULL, "S", "attract mode plays the stops in turn, each this long; 0: it turns"},
 };
 
 const char *backend_name(enum backend_kind kind)
@@ -293,12 +337,14 @@ void option_defaults(struct options *o)
 	memset(o, 0, sizeof(*o));
 	o->display.width = 1280;
 	o->display.height = 720;
+	o->display.render_scale = 1;
 	o->content.mode = SHADING_VIEW;
 	o->content.pitch = 20.0;
 	o->content.yaw = -30.0;
 	o->content.lod_pixels = 4.0;
 	o->content.fit = CONTENT_FIT_DEFAULT;
 	material_config_defaults(&o->content.material);
+	frame_config_defaults(&o->content.frame);
 	o->log_level = LOG_INFO;
 	o->app.attract_after_s = 60;
 	o->app.attract_speed = radians(15);
@@ -474,7 +520,8 @@ void option_accepted(const struct option_def *d, char *buf, size_t n)
 		return;
 	case K_DOUBLE:
 	case K_DEGREES:
-		snprintf(buf, n, "a number from %g to %g", d->lo, d->hi);
+		snprintf(buf, n, "%s%sa number from %g to %g", d->choices ? d->choices[0] : "",
+			 d->choices ? " or " : "", d->lo, d->hi);
 		return;
 	case K_SIZE:
 		snprintf(buf, n, "WIDTHxHEIGHT, each from %g to %g", d->lo, d->hi);
@@ -545,6 +592,10 @@ static bool set_number(void *p, const struct option_def *d, const char *value)
 {
 	double v;
 
+	if (d->choices && strcmp(value, d->choices[0]) == 0) {
+		*(double *)p = 0;
+		return true;
+	}
 	if (!parse_number(value, d->lo, d->hi, d->kind == K_INT ? (d->step ? d->step : 1) : 0, &v))
 		return false;
 	if (d->kind == K_INT)

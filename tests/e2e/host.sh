@@ -38,6 +38,7 @@ ref() { # NAME SIZE [ARGS]...
 ref knot-1024x768 1024x768
 ref knot-1024x768-rot90 1024x768 --rotate 90
 ref knot-800x600 800x600
+ref knot-1024x768-half 1024x768 --render-scale 0.5
 # A drag turns the model and keeps the scale [scene] fit chose at the start
 # view (pitch 20): the turned references are drawn at that scale.
 fit_zoom() { # SIZE [ARGS]...

@@ -19,6 +19,8 @@ scenes="$scenes sphere-beetle-gltf sphere-displaced sphere-lit sphere-lit-beside
 scenes="$scenes sphere-vertex-color sphere-base-map sphere-base-map-off"
 scenes="$scenes background-color background-gradient background-image fit-long fit-long-half"
 scenes="$scenes parts-textures parts-mask parts-blend parts-leaf parts-normals parts-iridescence"
+scenes="$scenes frame-up frame-start-view"
+scenes="$scenes render-scale-half"
 mkdir -p "$out" "$models"
 "$TOOLS/mkmodels" "$models" >/dev/null
 
@@ -98,6 +100,18 @@ render() {
 	fit-long-half)
 		$k -c matcaps/gold.png --model "$m/long.glb" --fit 0.5 --output "$o"
 		;;
+	# [frame] from the model's own NAME.ini: the long model stood on its
+	# end (up = +x, then a quarter roll), framed as turned (the fit
+	# fills the height); and a start view of yaw, pitch and zoom.
+	frame-up)
+		cp "$m/long.glb" "$m/long-up.glb"
+		printf '[frame]\nup = +x\norientation = 0 0 30\n' >"$m/long-up.ini"
+		$k -c matcaps/gold.png --model "$m/long-up.glb" --output "$o"
+		;;
+	frame-start-view)
+		$k -c matcaps/gold.png --model "$m/long.glb" --start-yaw 60 --start-pitch 45 \
+			--start-zoom 0.7 --output "$o"
+		;;
 	# Several materials (tests/tools/parts_models.c): two halves each
 	# with its own base map; a label cut by alpha MASK in front of a
 	# body; two BLEND panes in front of an opaque body, the nearer over
@@ -106,6 +120,11 @@ render() {
 	# below); two halves each with its own iridescent film.
 	parts-textures | parts-mask | parts-blend | parts-leaf | parts-normals | parts-iridescence)
 		$k -c matcaps/pearl.png --model "$m/$1.glb" --output "$o"
+		;;
+	# [display] render_scale 0.5: the knot drawn at 160x120 and scaled
+	# up by the GL pass (render/render_scale.c), filtered linearly.
+	render-scale-half)
+		$k -c matcaps/gold.png --render-scale 0.5 --output "$o"
 		;;
 	*)
 		echo "golden.sh: no scene named $1 (scenes: $scenes)" >&2
