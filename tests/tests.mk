@@ -17,6 +17,7 @@ UNIT_TESTS  += touch_device app_touch
 UNIT_TESTS  += model_list gltf_words settings_files
 UNIT_TESTS  += status poster file metrics background framing
 UNIT_TESTS  += kiosk_reload app_frame model_settings render_scale
+UNIT_TESTS  += anim anim_palette
 TOOLS_DIR   := $(BUILD)/tools
 ASAN_BUILD  := $(BUILD)/asan
 # MK_TEST_HOOKS: the test hooks (MK_TEST_PREPARE_DELAY_MS, src/app/reload.c)
@@ -193,6 +194,7 @@ bench: $(KIOSK) test-tools
 	KIOSK=./$(KIOSK) sh tests/bench/bench_input.sh
 	KIOSK=./$(KIOSK) sh tests/bench/bench_kms.sh
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_models.sh
+	KIOSK=./$(KIOSK) sh tests/bench/bench_anim.sh
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_quality.sh tests/out/report --frames 7
 
 # Speed against error, regenerated into tests/bench/report (checked in, with
