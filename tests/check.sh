@@ -12,7 +12,7 @@ set -u
 
 groups="layers unit golden egl program_check mirror_check ortho loaders bad-input corpus cli"
 groups="$groups config_doc baker live metrics install systemd fuzz soak no-camera board hands"
-groups="$groups base_color_check sync tsan"
+groups="$groups base_color_check sync tsan systemd-board"
 
 unit_names() { (cd tests/unit && ls test_*.c) | sed 's/^test_//; s/\.c$//'; }
 golden_names() { (cd tests/golden && ls ./*.png) | sed 's|^\./||; s/\.png$//'; }
@@ -99,6 +99,7 @@ needs() {
 	sync) echo "asan-kiosk $TOOLS/mkmodels" ;;
 	fuzz) echo fuzzers ;;
 	soak) echo "$TOOLS/soak" ;;
+	systemd-board) echo all ;;
 	board) echo "all $TOOLS/imgdiff $TOOLS/hues $TOOLS/cec_power $TOOLS/clock_set $TOOLS/touch_inject $TOOLS/mkmodels" ;;
 	esac
 }

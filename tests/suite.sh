@@ -515,6 +515,21 @@ test_board() {
 	results board "$out/e2e.log" "$out/e2e.err"
 }
 
+# The kiosk as systemd runs it on the board (tests/vm/systemd-test.sh: a
+# Debian root, made once with debootstrap, booted with systemd as PID 1 on
+# the board's kernel with vkms): ready after the first frame, restarted by
+# the watchdog when stopped, and a reload that outlasts WatchdogSec=3s
+# (held by the test hook's MK_TEST_PREPARE_DELAY_MS) not killed, its flips
+# counted; a bad setting not restarted; the console given back.
+test_systemd_board() {
+	VM_TIMEOUT=${VM_SYSTEMD_TIMEOUT:-900} sh tests/vm/systemd-test.sh "$PWD/$out/vm-systemd" \
+		>"$out/vm-systemd.log" 2>"$out/vm-systemd.err"
+	grep -E '^(ok|not ok) ' "$out/vm-systemd.log" >"$out/vm-systemd.results"
+	grep -q "^ok every check ran" "$out/vm-systemd.results" ||
+		echo "not ok the systemd board did not finish (see $out/vm-systemd.err)" >>"$out/vm-systemd.results"
+	results "systemd board" "$out/vm-systemd.results" "$out/vm-systemd.err"
+}
+
 # The glTF base colour, loaded and drawn, against a reference written from
 # the specifications (tests/oracle/base_color_check.c).
 test_base_color_check() {
