@@ -32,7 +32,7 @@ BUILD   ?= build
 # call goes through the table in src/render/gl.c (the README, "How it is put
 # together"). Their headers are still found through pkg-config.
 PKGS_LINK    := egl gbm libdrm libudev libpng libturbojpeg tinygltf inih libsystemd libgpiod libevdev \
-		libcamera draco
+		libcamera draco freetype2 harfbuzz fribidi
 # Mesa 25.1 and later have no OSMesa: without its headers the osmesa
 # backend is left out (OSMESA=0 leaves it out by hand) and offscreen
 # rendering, the tests' included, goes through egl-headless.
@@ -81,9 +81,9 @@ SRC_INPUT   := input/action input/button input/gesture input/touch_decode input/
 SRC_CAMERA  := camera/camera_feed camera/camera_link camera/camera_math camera/camera_proto \
 	       camera/camera_texture
 SRC_RENDER  := render/background render/bake render/draw_list render/framing render/gl render/poster \
-	       render/render render/render_draw render/shader render/shading
+	       render/caption render/render render/render_draw render/shader render/shading
 SRC_SCENE   := scene/lod scene/material scene/mesh scene/mesh_cache scene/mesh_cache_fields scene/mesh_cache_key scene/mesh_gen scene/mesh_pack scene/subdivide scene/tangent \
-	       scene/texture
+	       scene/texture scene/caption scene/caption_text
 SRC_UTIL    := util/file util/folder_watch util/image util/log util/math3d
 LIB_C  := $(SRC_APP) $(SRC_OPS) $(SRC_CONTENT) $(SRC_CONFIG) $(SRC_STATE) $(SRC_DISPLAY) $(SRC_INPUT) $(SRC_CAMERA) $(SRC_RENDER) $(SRC_SCENE) $(SRC_UTIL)
 # The C++ shims, each behind a C header (gltf_ext.h is internal to the glTF one).
@@ -94,6 +94,7 @@ SHADERS := shaders/mapping.glsl shaders/matcap.vert shaders/matcap.frag shaders/
 SHADERS += shaders/camera.vert shaders/camera.frag
 SHADERS += shaders/poster.vert shaders/poster.frag
 SHADERS += shaders/background.vert shaders/background.frag
+SHADERS += shaders/caption.vert shaders/caption.frag
 
 LIB_OBJS := $(LIB_C:%=$(BUILD)/%.o) $(LIB_CC:%=$(BUILD)/%.o) $(BUILD)/shaders_embedded.o
 
@@ -151,7 +152,7 @@ DEBIAN_PACKAGES := make gcc g++ pkg-config libegl-dev libgles-dev \
 	libegl-mesa0 libgl1-mesa-dri libgbm-dev libdrm-dev libtinygltf-dev nlohmann-json3-dev \
 	libpng-dev libturbojpeg0-dev libinih-dev libudev-dev libsystemd-dev \
 	libgpiod-dev libevdev-dev libcamera-dev libcamera-ipa libmeshoptimizer-dev libdraco-dev \
-	procps
+	libfreetype-dev libharfbuzz-dev libfribidi-dev fonts-dejavu-core procps
 # make deps-test: the test bench on top. The unit tests' cmocka and zlib;
 # systemd-analyze for the unit; clang for the fuzzers; valgrind for the
 # soak; gnuplot for make report; the virtual board (qemu, busybox, kernel

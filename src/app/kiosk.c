@@ -176,6 +176,8 @@ static int draw(struct kiosk *k, uint64_t now)
 		renderer_use_matcap_texture(k->renderer,
 					    camera_feed_draw(k->camera, st->camera_on));
 	renderer_draw(k->renderer, &k->view, d->width, d->height);
+	renderer_draw_caption(k->renderer, &k->view, now / 1e9, d->width, d->height);
+	renderer_caption_at(k->renderer, &k->view, now / 1e9, d->width, d->height, k->caption_at);
 	ret = d->present(d);
 	if (ret == -EAGAIN)
 		return 0;
@@ -378,6 +380,20 @@ static void tell_service(struct kiosk *k, uint64_t now)
 	service_ping(&k->service, now, !stuck);
 }
 
+/* The caption drifts against burn-in, a pixel every few minutes: a frame
+ * when it moved, and a look once a minute. */
+static uint64_t caption_deadline(struct kiosk *k, uint64_t now)
+{
+	struct display *d = k->display;
+	int at[2];
+
+	if (!renderer_caption_at(k->renderer, &k->view, now / 1e9, d->width, d->height, at))
+		return CLOCK_NEVER;
+	if (at[0] != k->caption_at[0] || at[1] != k->caption_at[1])
+		kiosk_tell_app(k, APP_DISPLAY_BACK);
+	return now + 60000000000ull;
+}
+
 static uint64_t earliest(uint64_t a, uint64_t b, uint64_t c)
 {
 	uint64_t ab = a < b ? a : b;
@@ -428,7 +444,7 @@ static int loop_once(struct kiosk *k, int sig_fd)
 {
 	struct pollfd fds[FD_INPUTS + KIOSK_MAX_INPUTS];
 	uint64_t now = monotonic_ns();
-	uint64_t next = app_advance(k->app, now);
+	uint64_t next = app_advance(k->app, now), caption = caption_deadline(k, now);
 	enum signals_seen sig = SIGNALS_NONE;
 	int n, ret;
 
@@ -444,6 +460,7 @@ static int loop_once(struct kiosk *k, int sig_fd)
 	if (k->screen)
 		next = earliest(next, screen_deadline(k->screen, now), CLOCK_NEVER);
 	next = earliest(next, k->rescan_at, service_deadline(&k->service));
+	next = earliest(next, caption, CLOCK_NEVER);
 	next = earliest(next, kiosk_models_deadline(k->models), metrics_deadline(k->metrics));
 	n = fill_fds(k, fds, sig_fd);
 	note_step(k);

@@ -99,6 +99,7 @@ struct kiosk {
 	 * what a page flip or an input may wait for (the bench reads it). */
 	uint64_t woke_ns;
 	uint64_t longest_step_ns;
+	int caption_at[2]; /* where the last frame drew the caption (it drifts) */
 };
 
 void kiosk_tell_app(struct kiosk *k, enum app_msg_kind kind);

@@ -98,6 +98,7 @@ static int render_frames(const struct options *o, const struct content *s, struc
 		ret = d->begin_frame(d);
 		if (!ret) {
 			renderer_draw(r, &v, d->width, d->height);
+			renderer_draw_caption(r, &v, 0, d->width, d->height);
 			ret = d->present(d);
 		}
 		times[i] = now_ms() - t;

@@ -27,6 +27,7 @@ const struct options_section_rule options_sections[OPTIONS_SECTIONS] = {
 		       "at once; the touchscreens are opened again if this section changed"},
     [OPTIONS_STATUS] = {"status", OPTIONS_LIVE, NULL,
 			"at once; a metrics file no longer named is removed"},
+    [OPTIONS_CAPTION] = {"caption", OPTIONS_LIVE, NULL, "at once"},
 };
 
 static const char *const backend_names[] = {"auto", "kms", "osmesa", "egl-headless", NULL};
@@ -41,6 +42,10 @@ static const char *const camera_names[] = {"off", "on", NULL};	       /* enum ca
 static const char *const import_names[] = {"auto", "off", NULL};       /* enum camera_feed_import */
 static const char *const antialias_names[] = {"auto", "off", "2", "4", "8", NULL};
 static const char *const base_color_names[] = {"auto", "off", NULL}; /* enum material_switch */
+static const char *const position_names[] = {
+    "bottom-left", "bottom-right", "top-left", "top-right",
+    "bottom",	   "top",	   NULL}; /* enum caption_position */
+static const char *const drift_names[] = {"off", "on", NULL};
 
 /* A field's place and size: the size tells a bool from an enum, and the
  * copy, the comparison and the release go by it. */
@@ -61,7 +66,8 @@ _Static_assert(sizeof(enum backend_kind) == sizeof(int) &&
 		   sizeof(enum button_bias) == sizeof(int) &&
 		   sizeof(enum camera_feed_use) == sizeof(int) &&
 		   sizeof(enum camera_feed_import) == sizeof(int) &&
-		   sizeof(enum display_antialias) == sizeof(int),
+		   sizeof(enum display_antialias) == sizeof(int) &&
+		   sizeof(enum caption_position) == sizeof(int),
 	       "enums are ints");
 
 const struct option_def option_defs[OPTION_DEFS] = {
@@ -270,6 +276,28 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "at debug), so stills of other views keep one size"},
     {"fit", 0, OPTIONS_SCENE, "fit", K_DOUBLE, AT(content.fit), 0.1, 1, 0, NULL, "SHARE",
      "the share of the frame the model fills at its start view; it stays inside as it turns"},
+    {"caption", 0, OPTIONS_CAPTION, "text", K_STRING, AT(content.caption.text), 0, 0, 0, NULL,
+     "TEXT",
+     "a caption over the model, UTF-8 (any script; \\n breaks the line); auto: the model's "
+     "name (its file's); default: none"},
+    {"caption-font", 0, OPTIONS_CAPTION, "font", K_STRING, AT(content.caption.font), 0, 0, 0, NULL,
+     "FILE", "a TrueType/OpenType font (default: DejaVu Sans, fonts-dejavu-core)"},
+    {"caption-size", 0, OPTIONS_CAPTION, "size", K_DOUBLE, AT(content.caption.size), 6, 400, 0,
+     NULL, "PX", "the text's size in pixels of the panel"},
+    {"caption-color", 0, OPTIONS_CAPTION, "color", K_STRING, AT(content.caption.color), 0, 0, 0,
+     NULL, "COLOR", "the text's colour, #rrggbb or #rrggbbaa (default: white)"},
+    {"caption-box", 0, OPTIONS_CAPTION, "box", K_STRING, AT(content.caption.box), 0, 0, 0, NULL,
+     "COLOR", "the box behind it, #rrggbbaa, aa its opacity (default: #00000099); none: no box"},
+    {"caption-padding", 0, OPTIONS_CAPTION, "padding", K_INT, AT(content.caption.padding), 0, 400,
+     1, NULL, "PX", "pixels inside the box, and between the box and the screen's edge"},
+    {"caption-position", 0, OPTIONS_CAPTION, "position", K_CHOICE, AT(content.caption.position), 0,
+     0, 0, position_names, "WHERE",
+     "bottom-left, bottom-right, top-left, top-right, bottom or top"},
+    {"caption-drift", 0, OPTIONS_CAPTION, "drift", K_CHOICE, AT(content.caption.drift), 0, 0, 0,
+     drift_names, "WHEN",
+     "on: the caption moves a few pixels over hours against burn-in; off: it stays"},
+    {"logo", 0, OPTIONS_CAPTION, "logo", K_STRING, AT(content.caption.logo), 0, 0, 0, NULL, "FILE",
+     "a PNG/JPEG shown at its own size in the caption's box, left of the text"},
 };
 
 const char *backend_name(enum backend_kind kind)
@@ -298,6 +326,9 @@ void option_defaults(struct options *o)
 	o->content.yaw = -30.0;
 	o->content.lod_pixels = 4.0;
 	o->content.fit = CONTENT_FIT_DEFAULT;
+	o->content.caption.size = CAPTION_SIZE_DEFAULT;
+	o->content.caption.padding = 12;
+	o->content.caption.drift = true;
 	material_config_defaults(&o->content.material);
 	o->log_level = LOG_INFO;
 	o->app.attract_after_s = 60;

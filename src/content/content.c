@@ -286,6 +286,38 @@ int content_load_background(const struct content_config *o, bool strict,
 	return 0;
 }
 
+/* The name "auto" shows: the model file's, without folder and extension
+ * (the built-in knot has none). Malloc'd, or NULL. */
+static char *model_name(const char *path)
+{
+	const char *base = path ? strrchr(path, '/') : NULL, *dot;
+
+	base = base ? base + 1 : path;
+	if (!base || !*base)
+		return NULL;
+	dot = strrchr(base, '.');
+	return strndup(base, dot && dot != base ? (size_t)(dot - base) : strlen(base));
+}
+
+/* The caption's picture, drawn here on the worker (FreeType and HarfBuzz
+ * are no work for the loop thread): once per content, so per model. A
+ * caption that fails is left out (the journal says why), unless strict. */
+static int load_caption(struct content *s, const struct content_config *o, bool strict)
+{
+	char *name = model_name(s->model_path);
+	int ret;
+
+	s->caption_place = (struct caption_config){.padding = o->caption.padding,
+						   .position = o->caption.position,
+						   .drift = o->caption.drift};
+	ret =
+	    caption_wanted(&o->caption) ? caption_render(&o->caption, name, &s->caption) : -ENOENT;
+	free(name);
+	if (ret == -ENOENT || (ret && !strict))
+		return 0;
+	return ret;
+}
+
 int content_load(struct content *s, const struct content_config *o, bool strict)
 {
 	int ret;
@@ -298,6 +330,8 @@ int content_load(struct content *s, const struct content_config *o, bool strict)
 		ret = load_matcap(o, strict, s);
 	if (!ret)
 		ret = material_load(&s->material, &o->material, &s->mesh, strict);
+	if (!ret)
+		ret = load_caption(s, o, strict);
 	if (ret)
 		content_release(s);
 	return ret;
@@ -315,6 +349,8 @@ int content_load_model(struct content *s, const struct content_config *o, const 
 		ret = material_load(&s->material, &o->material, &s->mesh, true);
 	if (!ret)
 		ret = content_prepare(s, o, width, height);
+	if (!ret)
+		ret = load_caption(s, o, false);
 	if (ret)
 		content_release(s);
 	return ret;
@@ -329,6 +365,7 @@ static void release_model(struct content *s)
 	mesh_release(&s->mesh);
 	material_release(&s->material);
 	free(s->model_path);
+	image_release(&s->caption);
 }
 
 void content_take_model(struct content *shown, struct content *fresh, struct content *old)
@@ -342,6 +379,7 @@ void content_take_model(struct content *shown, struct content *fresh, struct con
 	old->writer = kept.writer;
 	old->material = kept.material;
 	old->model_path = kept.model_path;
+	old->caption = kept.caption;
 	*shown = *fresh;
 	shown->matcap = kept.matcap;
 	shown->set = kept.set;
@@ -483,6 +521,8 @@ int content_upload_model(struct content *s, struct renderer *r)
 		content_cache_store(s);
 	if (!ret)
 		release_decoded_maps(&s->mesh);
+	if (!ret)
+		ret = renderer_set_caption(r, &s->caption, &s->caption_place);
 	/* The parse, the preparation and the upload freed far more than the
 	 * scene keeps; malloc holds freed heap for reuse, and a kiosk reuses
 	 * little: back to the system before the first frame. */

@@ -6,6 +6,7 @@
 #include "content/model_list.h"
 #include "content/matcap_set.h"
 #include "render/background.h"
+#include "scene/caption.h"
 #include "util/image.h"
 #include "util/log.h"
 
@@ -145,6 +146,23 @@ static void check_matcaps(struct check *c)
 	matcap_set_free(set);
 }
 
+/* The caption's font, drawn once as the kiosk draws it, and its logo. */
+static void check_caption(struct check *c, const struct caption_config *cap)
+{
+	struct caption_config font = {.text = "Ag", .size = cap->size, .font = cap->font};
+	struct image img;
+	int ret;
+
+	if (!caption_wanted(cap))
+		return;
+	check_image(c, "caption", "logo", cap->logo);
+	log_clear_last_error();
+	ret = caption_render(&font, NULL, &img);
+	image_release(&img);
+	if (ret || cap->font)
+		found(c, "caption", "font", cap->font ? cap->font : CAPTION_FONT_DEFAULT, ret);
+}
+
 static void list_files(struct check *c)
 {
 	const char *const *files;
@@ -181,6 +199,7 @@ int check_config_run(const struct options *o, FILE *out)
 	check_image(&c, "display", "poster", o->poster);
 	if (o->content.background && background_names_image(o->content.background))
 		check_image(&c, "display", "background", o->content.background);
+	check_caption(&c, &o->content.caption);
 	/* Per-model settings files do not exist yet: nothing more to load. */
 	if (c.bad_files) {
 		log_err("%s: the settings read, but %d file%s they name %s not load (above): the "
