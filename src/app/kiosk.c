@@ -444,7 +444,7 @@ static int loop_once(struct kiosk *k, int sig_fd)
 {
 	struct pollfd fds[FD_INPUTS + KIOSK_MAX_INPUTS];
 	uint64_t now = monotonic_ns();
-	uint64_t next = app_advance(k->app, now), caption = caption_deadline(k, now);
+	uint64_t next = earliest(app_advance(k->app, now), caption_deadline(k, now), CLOCK_NEVER);
 	enum signals_seen sig = SIGNALS_NONE;
 	int n, ret;
 
@@ -460,7 +460,6 @@ static int loop_once(struct kiosk *k, int sig_fd)
 	if (k->screen)
 		next = earliest(next, screen_deadline(k->screen, now), CLOCK_NEVER);
 	next = earliest(next, k->rescan_at, service_deadline(&k->service));
-	next = earliest(next, caption, CLOCK_NEVER);
 	next = earliest(next, kiosk_models_deadline(k->models), metrics_deadline(k->metrics));
 	n = fill_fds(k, fds, sig_fd);
 	note_step(k);
