@@ -75,7 +75,7 @@ SRC_STATE   := state/app state/power state/schedule
 SRC_DISPLAY := display/backlight display/cec display/cec_link display/display display/display_egl display/display_kms \
 	       display/display_osmesa \
 	       display/drm display/drm_atomic display/drm_legacy display/egl_util display/hotplug \
-	       display/kms_fb
+	       display/kms_fb display/kms_overlay
 SRC_INPUT   := input/action input/button input/gesture input/touch_decode input/gpio \
 	       input/gpio_$(GPIOD_API) input/keyboard input/touch
 SRC_CAMERA  := camera/camera_feed camera/camera_link camera/camera_math camera/camera_proto \
@@ -147,7 +147,9 @@ CLANG_VERSION ?= $(if $(filter bookworm,$(OS_CODENAME)),14,19)
 APT_GET       := $(if $(filter 0,$(shell id -u)),,sudo) env DEBIAN_FRONTEND=noninteractive apt-get
 # make deps: what building and running need, nothing more (a Pi gets no
 # test bench). procps brings /bin/kill, which the unit's ExecReload names
-# (a minimal Debian 13 has none); libcamera-ipa runs the camera matcap.
+# (a minimal Debian 13 has none); libcamera-ipa runs the camera matcap;
+# FreeType, HarfBuzz and FriBidi shape [caption]'s text, in DejaVu Sans
+# (fonts-dejavu-core) unless [caption] font names another.
 DEBIAN_PACKAGES := make gcc g++ pkg-config libegl-dev libgles-dev \
 	libegl-mesa0 libgl1-mesa-dri libgbm-dev libdrm-dev libtinygltf-dev nlohmann-json3-dev \
 	libpng-dev libturbojpeg0-dev libinih-dev libudev-dev libsystemd-dev \

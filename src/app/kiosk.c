@@ -157,6 +157,67 @@ static void log_latency(struct kiosk *k, uint64_t last_input_ns)
 		  (double)(monotonic_ns() - k->input_drawn_ns) / 1e6);
 }
 
+/* The caption's drift goes by the wall clock: hours are the panel's. */
+static double caption_clock(void)
+{
+	return (double)clock_ns(CLOCK_REALTIME) / 1e9;
+}
+
+/* The caption on an overlay plane where the display has one that takes it
+ * (tested once per picture, after a first frame set the mode): true, and
+ * GL draws none. A turned panel keeps it on GL (the plane is upright). */
+static bool caption_on_plane(struct kiosk *k)
+{
+	struct display *d = k->display;
+	unsigned serial = renderer_caption_serial(k->renderer);
+
+	if (!d->overlay)
+		return false;
+	if (!serial || k->view.rotation || !k->frames_drawn || serial == k->caption_refused) {
+		if (k->caption_plane)
+			d->overlay(d->overlay_ctx, NULL, 0, 0, 0);
+		k->caption_plane = 0;
+		return false;
+	}
+	if (d->overlay(d->overlay_ctx, &k->content->caption, serial, k->caption_at[0],
+		       k->caption_at[1])) {
+		k->caption_refused = serial;
+		k->caption_plane = 0;
+		return false;
+	}
+	k->caption_plane = serial;
+	return true;
+}
+
+/* The caption drifts against burn-in, a pixel every few minutes, and is
+ * looked at every 10 s (nothing to a CPU; a clock set forward is seen
+ * soon): on a plane, the plane alone moves; else a
+ * frame is drawn. A picture not yet tested on a plane asks for a frame. */
+static uint64_t caption_deadline(struct kiosk *k, uint64_t now)
+{
+	struct display *d = k->display;
+	unsigned serial = renderer_caption_serial(k->renderer);
+	int at[2];
+
+	if (!renderer_caption_at(k->renderer, &k->view, caption_clock(), d->width, d->height, at))
+		return CLOCK_NEVER;
+	if (d->overlay && k->frames_drawn && serial != k->caption_plane &&
+	    serial != k->caption_refused && !k->view.rotation)
+		kiosk_tell_app(k, APP_DISPLAY_BACK);
+	if (at[0] == k->caption_at[0] && at[1] == k->caption_at[1])
+		return now + 10000000000ull;
+	if (k->caption_plane &&
+	    !d->overlay(d->overlay_ctx, &k->content->caption, serial, at[0], at[1])) {
+		log_debug("caption: its plane moved to %d,%d", at[0], at[1]);
+		memcpy(k->caption_at, at, sizeof(at));
+	} else {
+		k->caption_refused = k->caption_plane ? k->caption_plane : k->caption_refused;
+		k->caption_plane = 0;
+		kiosk_tell_app(k, APP_DISPLAY_BACK);
+	}
+	return now + 10000000000ull;
+}
+
 static int draw(struct kiosk *k, uint64_t now)
 {
 	const struct app_state *st = app_state(k->app);
@@ -176,8 +237,10 @@ static int draw(struct kiosk *k, uint64_t now)
 		renderer_use_matcap_texture(k->renderer,
 					    camera_feed_draw(k->camera, st->camera_on));
 	renderer_draw(k->renderer, &k->view, d->width, d->height);
-	renderer_draw_caption(k->renderer, &k->view, now / 1e9, d->width, d->height);
-	renderer_caption_at(k->renderer, &k->view, now / 1e9, d->width, d->height, k->caption_at);
+	renderer_caption_at(k->renderer, &k->view, caption_clock(), d->width, d->height,
+			    k->caption_at);
+	if (!caption_on_plane(k))
+		renderer_draw_caption(k->renderer, &k->view, caption_clock(), d->width, d->height);
 	ret = d->present(d);
 	if (ret == -EAGAIN)
 		return 0;
@@ -378,20 +441,6 @@ static void tell_service(struct kiosk *k, uint64_t now)
 	else if (k->display_absent)
 		service_ready(&k->service, false);
 	service_ping(&k->service, now, !stuck);
-}
-
-/* The caption drifts against burn-in, a pixel every few minutes: a frame
- * when it moved, and a look once a minute. */
-static uint64_t caption_deadline(struct kiosk *k, uint64_t now)
-{
-	struct display *d = k->display;
-	int at[2];
-
-	if (!renderer_caption_at(k->renderer, &k->view, now / 1e9, d->width, d->height, at))
-		return CLOCK_NEVER;
-	if (at[0] != k->caption_at[0] || at[1] != k->caption_at[1])
-		kiosk_tell_app(k, APP_DISPLAY_BACK);
-	return now + 60000000000ull;
 }
 
 static uint64_t earliest(uint64_t a, uint64_t b, uint64_t c)

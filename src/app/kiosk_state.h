@@ -99,7 +99,9 @@ struct kiosk {
 	 * what a page flip or an input may wait for (the bench reads it). */
 	uint64_t woke_ns;
 	uint64_t longest_step_ns;
-	int caption_at[2]; /* where the last frame drew the caption (it drifts) */
+	int caption_at[2];	  /* where the caption is shown (it drifts) */
+	unsigned caption_plane;	  /* the caption picture on an overlay plane; 0: none */
+	unsigned caption_refused; /* the one no plane took (drawn with GL) */
 };
 
 void kiosk_tell_app(struct kiosk *k, enum app_msg_kind kind);

@@ -286,7 +286,13 @@ int renderer_set_caption(struct renderer *r, const struct image *img,
 		return -EINVAL;
 	caption_gl_free(r->caption);
 	r->caption = cap;
+	r->caption_serial += cap != NULL;
 	return 0;
+}
+
+unsigned renderer_caption_serial(const struct renderer *r)
+{
+	return r->caption ? r->caption_serial : 0;
 }
 
 bool renderer_caption_at(const struct renderer *r, const struct view *v, double seconds, int width,

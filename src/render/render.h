@@ -56,6 +56,9 @@ void renderer_draw_caption(struct renderer *r, const struct view *v, double seco
  * The loop redraws when it moved. */
 bool renderer_caption_at(const struct renderer *r, const struct view *v, double seconds, int width,
 			 int height, int out[2]);
+/* Which caption picture is set, 1, 2, ... (a new one each set); 0: none.
+ * An overlay plane is tested once per picture. */
+unsigned renderer_caption_serial(const struct renderer *r);
 
 /* How renderer_set_mesh stores the vertices (scene/mesh_pack.h); the
  * default: compact. */

@@ -59,6 +59,7 @@ struct renderer {
 	bool matcap_mipmapped;	       /* its minifying filter now reads the chain */
 	struct background *background; /* NULL: the view's clear colour */
 	struct caption_gl *caption;    /* NULL: none */
+	unsigned caption_serial;       /* bumped with each caption set */
 };
 
 /* The matcap's minifying filter for a viewport (render.c). */
