@@ -279,7 +279,7 @@ const struct option_def option_defs[OPTION_DEFS] = {
     {"caption", 0, OPTIONS_CAPTION, "text", K_STRING, AT(content.caption.text), 0, 0, 0, NULL,
      "TEXT",
      "a caption over the model, UTF-8 (any script; \\n breaks the line); auto: the model's "
-     "name (its file's); default: none"},
+     "name (its glTF title or scene name, else its file's); default: none"},
     {"caption-font", 0, OPTIONS_CAPTION, "font", K_STRING, AT(content.caption.font), 0, 0, 0, NULL,
      "FILE", "a TrueType/OpenType font (default: DejaVu Sans, fonts-dejavu-core)"},
     {"caption-size", 0, OPTIONS_CAPTION, "size", K_DOUBLE, AT(content.caption.size), 6, 400, 0,

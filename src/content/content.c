@@ -3,6 +3,7 @@
 #include "render/bake.h"
 #include "render/framing.h"
 #include "scene/gltf.h"
+#include "scene/gltf_name.h"
 #include "scene/lod.h"
 #include "util/log.h"
 
@@ -286,11 +287,16 @@ int content_load_background(const struct content_config *o, bool strict,
 	return 0;
 }
 
-/* The name "auto" shows: the model file's, without folder and extension
- * (the built-in knot has none). Malloc'd, or NULL. */
-static char *model_name(const char *path)
+/* The name "auto" shows: the glTF's title or scene name, else the model
+ * file's, without folder and extension (the built-in knot has none).
+ * Malloc'd, or NULL. */
+static char *model_name(const char *path, const char *scene)
 {
 	const char *base = path ? strrchr(path, '/') : NULL, *dot;
+	char *named = path ? gltf_model_name(path, scene) : NULL;
+
+	if (named)
+		return named;
 
 	base = base ? base + 1 : path;
 	if (!base || !*base)
@@ -304,7 +310,9 @@ static char *model_name(const char *path)
  * caption that fails is left out (the journal says why), unless strict. */
 static int load_caption(struct content *s, const struct content_config *o, bool strict)
 {
-	char *name = model_name(s->model_path);
+	char *name = o->caption.text && !strcmp(o->caption.text, "auto")
+			 ? model_name(s->model_path, o->model_scene)
+			 : NULL;
 	int ret;
 
 	s->caption_place = (struct caption_config){.padding = o->caption.padding,

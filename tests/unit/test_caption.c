@@ -8,6 +8,7 @@
 #include "display/display.h"
 #include "render/caption.h"
 #include "scene/caption.h"
+#include "scene/gltf_name.h"
 #include "util/log.h"
 
 #include <errno.h>
@@ -19,6 +20,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include <cmocka.h>
 
@@ -182,6 +184,75 @@ static void refused(void **state)
 	assert_int_equal(caption_render(&c, NULL, &img), -ENOENT);
 }
 
+static void write_file(const char *path, const void *data, size_t n)
+{
+	FILE *f = fopen(path, "wb");
+
+	assert_non_null(f);
+	assert_int_equal(fwrite(data, 1, n, f), n);
+	fclose(f);
+}
+
+static void put_u32(unsigned char *p, uint32_t v)
+{
+	for (int k = 0; k < 4; k++)
+		p[k] = (unsigned char)(v >> (8 * k));
+}
+
+/* [caption] text = auto: asset.extras.title first, else the scene shown
+ * ([scene] model_scene by index or name, else "scene", else the first),
+ * from a .gltf and from a GLB's JSON chunk; nothing from a file that names
+ * none or is not glTF. */
+static void named(void **state)
+{
+	static const char titled[] =
+	    "{\"asset\":{\"version\":\"2.0\",\"extras\":{\"title\":\"Amphora \u05db\"}},"
+	    "\"scenes\":[{\"name\":\"A\"}]}";
+	static const char scenes[] = "{\"asset\":{\"version\":\"2.0\"},\"scene\":1,"
+				     "\"scenes\":[{\"name\":\"First\"},{\"name\":\"Second\"}]}";
+	static const char bare[] = "{\"asset\":{\"version\":\"2.0\"}}";
+	char dir[] = "/tmp/test_caption.XXXXXX", path[64];
+	unsigned char glb[20 + sizeof(scenes) + 3] = "glTF";
+	size_t json = (sizeof(scenes) - 1 + 3) & ~(size_t)3;
+	char *name;
+
+	(void)state;
+	assert_non_null(mkdtemp(dir));
+	snprintf(path, sizeof(path), "%s/t.gltf", dir);
+	write_file(path, titled, sizeof(titled) - 1);
+	name = gltf_model_name(path, NULL);
+	assert_string_equal(name, "Amphora \xd7\x9b");
+	free(name);
+	write_file(path, scenes, sizeof(scenes) - 1);
+	name = gltf_model_name(path, NULL);
+	assert_string_equal(name, "Second");
+	free(name);
+	name = gltf_model_name(path, "0");
+	assert_string_equal(name, "First");
+	free(name);
+	assert_null(gltf_model_name(path, "7"));
+	/* The same as a GLB: the JSON chunk, padded with spaces. */
+	put_u32(glb + 4, 2);
+	put_u32(glb + 8, (uint32_t)(20 + json));
+	put_u32(glb + 12, (uint32_t)json);
+	put_u32(glb + 16, 0x4E4F534Au);
+	memset(glb + 20, ' ', json);
+	memcpy(glb + 20, scenes, sizeof(scenes) - 1);
+	snprintf(path, sizeof(path), "%s/t.glb", dir);
+	write_file(path, glb, 20 + json);
+	name = gltf_model_name(path, NULL);
+	assert_string_equal(name, "Second");
+	free(name);
+	write_file(path, bare, sizeof(bare) - 1);
+	assert_null(gltf_model_name(path, NULL));
+	write_file(path, "not json", 8);
+	assert_null(gltf_model_name(path, NULL));
+	unlink(path);
+	snprintf(path, sizeof(path), "%s/t.gltf", dir);
+	unlink(path);
+	rmdir(dir);
+}
+
 static int setup(void **state)
 {
 	struct display_config cfg = {.width = W, .height = H};
@@ -260,7 +331,7 @@ int main(void)
 	const struct CMUnitTest pure[] = {
 	    cmocka_unit_test(colors),  cmocka_unit_test(texts),	 cmocka_unit_test(placed),
 	    cmocka_unit_test(drifts),  cmocka_unit_test(kerned), cmocka_unit_test(pictured),
-	    cmocka_unit_test(refused),
+	    cmocka_unit_test(refused), cmocka_unit_test(named),
 	};
 	const struct CMUnitTest gl[] = {
 	    cmocka_unit_test(upright),
