@@ -14,6 +14,7 @@ VERSION    := 0.1.0
 PREFIX     ?= /usr/local
 BINDIR     ?= $(PREFIX)/bin
 DATADIR    ?= $(PREFIX)/share/matcap-kiosk
+MANDIR     ?= $(PREFIX)/share/man
 SYSCONFDIR ?= /etc
 DESTDIR    ?=
 # systemd and udev search these under /usr/local as under /usr. A package
@@ -208,6 +209,7 @@ install: matcap-kiosk
 	install -d $(DESTDIR)$(DATADIR)/matcaps
 	install -m 0644 matcaps/*.png $(DESTDIR)$(DATADIR)/matcaps/
 	install -D -m 0644 config/kiosk.ini $(DESTDIR)$(DATADIR)/kiosk.ini.example
+	install -D -m 0644 config/matcap-kiosk.1 $(DESTDIR)$(MANDIR)/man1/matcap-kiosk.1
 	# Settings in pieces: packages and Ansible roles drop *.ini files here.
 	install -d $(DESTDIR)$(SYSCONFDIR)/matcap-kiosk/kiosk.ini.d
 	# An edited config survives a reinstall.
@@ -233,6 +235,7 @@ install: matcap-kiosk
 
 uninstall:
 	rm -f $(DESTDIR)$(BINDIR)/matcap-kiosk
+	rm -f $(DESTDIR)$(MANDIR)/man1/matcap-kiosk.1
 	rm -rf $(DESTDIR)$(DATADIR)
 	rm -f $(DESTDIR)$(SYSTEMD_UNITDIR)/matcap-kiosk.service \
 		$(DESTDIR)$(SYSTEMD_UNITDIR)/matcap-kiosk-import@.service \

@@ -402,6 +402,12 @@ test_install() {
 		test -f $out/stage/usr/share/matcap-kiosk/matcaps/gold.png &&
 		test -f $out/stage/etc/matcap-kiosk/kiosk.ini &&
 		test -d $out/stage/etc/matcap-kiosk/kiosk.ini.d"
+	# The manual page formats without a warning where man is installed.
+	check "make install: the manual page" sh -c "
+		test -f $out/stage/usr/share/man/man1/matcap-kiosk.1 &&
+		{ ! command -v man >/dev/null ||
+			! LC_ALL=C.UTF-8 man --warnings -l $out/stage/usr/share/man/man1/matcap-kiosk.1 2>&1 >/dev/null |
+				grep -q .; }"
 	check "make install: the unit (with its paths), sysusers.d and udev rule" sh -c "
 		grep -qx 'ExecStart=/usr/bin/matcap-kiosk --config /etc/matcap-kiosk/kiosk.ini' \
 			$out/stage/usr/lib/systemd/system/matcap-kiosk.service &&

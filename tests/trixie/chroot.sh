@@ -11,7 +11,11 @@
 # Knobs: TRIXIE_ROOT, DEBIAN_MIRROR, MAKE_TEST (the make arguments for the
 # tests, default "test"), JOBS (make -j, default 2), TSAN=1 (the ThreadSanitizer
 # group too: off here by default, it runs on the host), VM_E2E=0 (no virtual
-# board). The board boots Debian 12's kernel (tests/vm/build.sh makes it on
+# board), VM_E2E_SCRIPTS (the board scripts booted here: by default the
+# display, the GPIO buttons and the camera, the ones whose libraries Debian 13
+# changes; the rest test the kernel and our code, which the host's run
+# already covers; empty: all), FUZZ_SECONDS (5 here: the host fuzzes 20 s,
+# the same code). The board boots Debian 12's kernel (tests/vm/build.sh makes it on
 # this host, which must then be Debian 12) with Debian 13's libgpiod 2,
 # libcamera 0.4 and Mesa 25 inside: the GPIO and camera tests on those.
 # /proc, /sys and /dev are mounted inside only while this runs; every exit
@@ -107,7 +111,8 @@ step copy
 
 in_root() {
 	chroot "$ROOT" /usr/bin/env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root \
-		LANG=C.UTF-8 TERM="${TERM:-dumb}" VM_CACHE=$VM_IN VM_E2E="${VM_E2E:-1}" TSAN="${TSAN:-0}" "$@"
+		LANG=C.UTF-8 TERM="${TERM:-dumb}" VM_CACHE=$VM_IN VM_E2E="${VM_E2E:-1}" TSAN="${TSAN:-0}" \
+		VM_E2E_SCRIPTS="${VM_E2E_SCRIPTS-kms gpio-test camera}" FUZZ_SECONDS="${FUZZ_SECONDS:-5}" "$@"
 }
 
 if [ $# -gt 0 ]; then

@@ -5,6 +5,15 @@
 // x times yaw about y), the same background, and MeshMatcapMaterial with
 // the glTF material's colour, map and vertex colours, as the kiosk's
 // base_color = auto does.
+//
+// Poses: without `t` the model is drawn as loaded (its nodes' own TRS, the
+// default morph weights: the kiosk's still). With `t` (seconds) an
+// AnimationMixer plays one clip (`clip`: a name or an index, the first by
+// default, as [scene] animation = auto; `all`: every clip at once) looped,
+// and mixer.setTime(t) poses it. `fit` picks the bounds the view is fitted to: `pose` (the pose drawn,
+// the default without `t`) or `clip` (the whole clip, sampled at its keys
+// and at 1/60 of its length: the kiosk keeps the model in frame that way,
+// the default with `t`).
 import * as THREE from 'three';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 
@@ -20,6 +29,8 @@ const baseColor = (q.get('basecolor') || 'auto') !== 'off';
 // [scene] fit's scale of the picture, as the kiosk logged it: three.js's
 // camera zoom scales the frustum exactly as the kiosk's clip space.
 const zoom = parseFloat(q.get('zoom') || '1');
+const time = q.has('t') ? parseFloat(q.get('t')) : null;
+const fitMode = q.get('fit') || (time === null ? 'pose' : 'clip');
 const out = document.getElementById('out');
 
 function fitDistance(aspect) {
@@ -28,30 +39,89 @@ function fitDistance(aspect) {
 	return FIT_MARGIN / Math.sin(halfMin);
 }
 
-// As mesh_fit_positions: the centre of the world-space bounding box and
-// the largest distance of a vertex from it.
-function fitTransform(root) {
-	const box = new THREE.Box3();
+// The world matrices and, for skinned meshes, the bone matrices of the
+// pose set now: getVertexPosition reads skeleton.boneMatrices, which only
+// skeleton.update() fills (the renderer calls it per frame; before the first
+// frame they are zeros and every skinned vertex would read as the origin).
+function updatePose(root) {
+	root.updateMatrixWorld(true);
+	root.traverse((o) => { if (o.isSkinnedMesh) o.skeleton.update(); });
+}
+
+// Each vertex in world space as drawn (skinned and morphed) at each pose.
+function forEachVertex(root, poses, fn) {
 	const meshes = [];
 	const v = new THREE.Vector3();
+
+	root.traverse((o) => { if (o.isMesh) meshes.push(o); });
+	for (const pose of poses) {
+		pose();
+		for (const m of meshes)
+			for (let i = 0; i < m.geometry.attributes.position.count; i++)
+				fn(m.getVertexPosition(i, v).applyMatrix4(m.matrixWorld));
+	}
+}
+
+// As mesh_fit_positions: the centre of the world-space bounding box and
+// the largest distance of a vertex from it, over the given poses.
+function fitTransform(root, poses) {
+	const box = new THREE.Box3();
 	let r2 = 0;
 
-	root.updateMatrixWorld(true);
-	root.traverse((o) => { if (o.isMesh) meshes.push(o); });
-	// getVertexPosition: as drawn, skinned and morphed.
-	for (const m of meshes)
-		for (let i = 0; i < m.geometry.attributes.position.count; i++)
-			box.expandByPoint(m.getVertexPosition(i, v).applyMatrix4(m.matrixWorld));
+	forEachVertex(root, poses, (p) => box.expandByPoint(p));
 	const c = box.getCenter(new THREE.Vector3());
-	for (const m of meshes)
-		for (let i = 0; i < m.geometry.attributes.position.count; i++)
-			r2 = Math.max(r2, m.getVertexPosition(i, v).applyMatrix4(m.matrixWorld).distanceToSquared(c));
+	forEachVertex(root, poses, (p) => { r2 = Math.max(r2, p.distanceToSquared(c)); });
 	const s = r2 > 0 ? 1 / Math.sqrt(r2) : 1;
 	const fit = new THREE.Group();
 	fit.scale.setScalar(s);
 	fit.position.copy(c).multiplyScalar(-s);
 	fit.add(root);
 	return fit;
+}
+
+// The clips [scene] animation = auto | NAME | INDEX | all names.
+function pickClips(clips, want) {
+	if (!clips.length)
+		throw new Error('the model has no animation');
+	if (want === null || want === '')
+		return [clips[0]];
+	if (want === 'all')
+		return clips;
+	const named = clips.find((c) => c.name === want);
+	if (named)
+		return [named];
+	const i = Number(want);
+	if (Number.isInteger(i) && i >= 0 && i < clips.length)
+		return [clips[i]];
+	throw new Error(`no clip "${want}" (the model has ${clips.map((c, k) => c.name || k).join(', ')})`);
+}
+
+// The times the whole-clip fit samples: every key of every track, and 60
+// steps over the longest clip.
+function clipTimes(clips) {
+	const times = new Set();
+	const duration = Math.max(...clips.map((c) => c.duration));
+	for (const clip of clips)
+		for (const track of clip.tracks)
+			for (const k of track.times)
+				times.add(k);
+	for (let i = 0; i <= 60; i++)
+		times.add((duration * i) / 60);
+	return [...times].sort((a, b) => a - b);
+}
+
+// The poses to fit to and the one to draw: as loaded, or the clips at t.
+function posesOf(gltf, root) {
+	const rest = () => updatePose(root);
+	if (time === null)
+		return { draw: rest, fit: [rest] };
+	const clips = pickClips(gltf.animations, q.get('clip'));
+	const mixer = new THREE.AnimationMixer(root);
+	for (const clip of clips)
+		mixer.clipAction(clip).play();
+	const at = (t) => () => { mixer.setTime(t); updatePose(root); };
+	const fit = fitMode === 'clip' ? clipTimes(clips).map(at) : [at(time)];
+	return { draw: at(time), fit };
 }
 
 // The glTF material's alpha as GLTFLoader reads it (MASK: alphaTest;
@@ -112,7 +182,9 @@ async function main() {
 	turn.quaternion.multiplyQuaternions(
 	    new THREE.Quaternion().setFromAxisAngle(new THREE.Vector3(1, 0, 0), pitch * d2r),
 	    new THREE.Quaternion().setFromAxisAngle(new THREE.Vector3(0, 1, 0), yaw * d2r));
-	turn.add(fitTransform(root));
+	const poses = posesOf(gltf, root);
+	turn.add(fitTransform(root, poses.fit));
+	poses.draw();
 	const scene = new THREE.Scene();
 	scene.add(turn);
 
