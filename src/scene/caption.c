@@ -4,6 +4,7 @@
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
+#include <stdint.h>
 #include <string.h>
 
 bool caption_wanted(const struct caption_config *c)
@@ -96,4 +97,20 @@ void caption_place(const struct caption_config *c, int cw, int ch, int width, in
 	}
 	out[0] = x + dx;
 	out[1] = y + dy;
+}
+
+void caption_blend(const struct image *cap, int x, int y, struct image *frame)
+{
+	for (int r = 0; r < cap->height; r++)
+		for (int c = 0; c < cap->width; c++) {
+			const uint8_t *s = cap->rgba + ((size_t)r * cap->width + c) * 4;
+			uint8_t *d;
+
+			if (x + c < 0 || y + r < 0 || x + c >= frame->width ||
+			    y + r >= frame->height)
+				continue;
+			d = frame->rgba + ((size_t)(y + r) * frame->width + x + c) * 4;
+			for (int k = 0; k < 3; k++)
+				d[k] = (uint8_t)(s[k] + d[k] * (255 - s[3]) / 255);
+		}
 }

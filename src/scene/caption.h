@@ -59,6 +59,11 @@ char *caption_text(const struct caption_config *c, const char *name);
  * errno after logging what failed (the file and why). */
 int caption_render(const struct caption_config *c, const char *name, struct image *out);
 
+/* Blend the caption's picture over frame (straight RGBA, opaque) with its
+ * top-left corner at x, y, clipped: the frame --status reads back when an
+ * overlay plane shows the caption, as the screen shows it. */
+void caption_blend(const struct image *cap, int x, int y, struct image *frame);
+
 /* Where the caption's top-left corner goes on a width x height screen
  * (already turned for the panel), its drift at seconds added: within
  * +-CAPTION_DRIFT_PX, each axis on its own period of hours, whole pixels. */

@@ -113,6 +113,26 @@ static void drifts(void **state)
 	assert_int_equal(hi[1], 550 + CAPTION_DRIFT_PX);
 }
 
+/* --status's frame with the plane's caption put in: premultiplied over,
+ * clipped at the frame's edge. */
+static void blended(void **state)
+{
+	struct image cap, frame;
+
+	(void)state;
+	assert_int_equal(image_alloc(&cap, 2, 1), 0);
+	assert_int_equal(image_alloc(&frame, 2, 2), 0);
+	memcpy(cap.rgba, (uint8_t[]){128, 0, 0, 128, 0, 0, 0, 0}, 8);
+	memset(frame.rgba, 200, 16);
+	caption_blend(&cap, 1, 1, &frame);
+	assert_int_equal(frame.rgba[12], 128 + 200 * 127 / 255);
+	assert_int_equal(frame.rgba[13], 200 * 127 / 255);
+	assert_int_equal(frame.rgba[0], 200);
+	assert_int_equal(frame.rgba[8], 200);
+	image_release(&cap);
+	image_release(&frame);
+}
+
 static int width_of(const char *text)
 {
 	struct caption_config c = {.text = (char *)text, .size = 40, .box = "none"};
@@ -331,7 +351,7 @@ int main(void)
 	const struct CMUnitTest pure[] = {
 	    cmocka_unit_test(colors),  cmocka_unit_test(texts),	 cmocka_unit_test(placed),
 	    cmocka_unit_test(drifts),  cmocka_unit_test(kerned), cmocka_unit_test(pictured),
-	    cmocka_unit_test(refused), cmocka_unit_test(named),
+	    cmocka_unit_test(refused), cmocka_unit_test(named),	 cmocka_unit_test(blended),
 	};
 	const struct CMUnitTest gl[] = {
 	    cmocka_unit_test(upright),
