@@ -71,8 +71,8 @@ SRC_APP     := app/kiosk_models app/kiosk app/kiosk_content app/kiosk_report app
 SRC_OPS     := ops/check ops/import ops/import_ini ops/metrics ops/screen ops/service ops/status
 SRC_CONTENT := content/content content/matcap_set content/matcap_job content/model_list \
 	       content/model_loader content/worker
-SRC_CONFIG  := config/options config/settings config/settings_origin
-SRC_STATE   := state/app state/power state/schedule
+SRC_CONFIG  := config/options config/model_settings config/settings config/settings_origin
+SRC_STATE   := state/app state/view state/power state/schedule
 SRC_DISPLAY := display/backlight display/cec display/cec_link display/display display/display_egl display/display_kms \
 	       display/display_osmesa \
 	       display/drm display/drm_atomic display/drm_legacy display/egl_util display/hotplug \

@@ -16,7 +16,7 @@ UNIT_TESTS  += drm gesture touch_decode schedule power cec backlight
 UNIT_TESTS  += touch_device app_touch
 UNIT_TESTS  += model_list gltf_words settings_files
 UNIT_TESTS  += status poster file metrics background framing
-UNIT_TESTS  += kiosk_reload caption
+UNIT_TESTS  += kiosk_reload app_frame model_settings caption
 TOOLS_DIR   := $(BUILD)/tools
 ASAN_BUILD  := $(BUILD)/asan
 # MK_TEST_HOOKS: the test hooks (MK_TEST_PREPARE_DELAY_MS, src/app/reload.c)

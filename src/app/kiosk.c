@@ -276,9 +276,11 @@ static int configure(struct kiosk *k, uint64_t now_ns)
 	struct app_msg m = {.kind = APP_RELOADED, .reload = {&cfg, count, now_ns}};
 
 	log_set_level(o->log_level);
-	k->view = content_view(&o->content);
-	cfg.rest = k->view.orientation;
-	cfg.mode = o->content.mode;
+	const struct content_config *shown = content_settings(k->content, &o->content);
+
+	k->view = content_view(shown);
+	content_app_frame(shown, &cfg.frame, &cfg.rest);
+	cfg.mode = shown->mode;
 	if (k->app)
 		app_apply(k->app, &m);
 	else

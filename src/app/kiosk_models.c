@@ -1,4 +1,5 @@
 #include "app/kiosk_models.h"
+#include "config/model_settings.h"
 #include "content/model_list.h"
 #include "content/model_loader.h"
 #include "util/clock.h"
@@ -31,7 +32,8 @@ struct kiosk_models {
 	uint64_t asked_ns; /* when the job under way was started, for the bench */
 	char *arrived[MAX_ARRIVED];
 	int arrived_count;
-	bool syncing; /* a sync tool is writing into the folder: said once */
+	bool syncing;		/* a sync tool is writing into the folder: said once */
+	char *settings_changed; /* the model whose NAME.ini was written; NULL: none */
 };
 
 static void finish(void *ctx);
@@ -40,6 +42,20 @@ static void tell_app(struct kiosk_models *m, int shown)
 {
 	struct app_msg msg = {.kind = APP_MODELS, .models = {model_list_count(m->list), shown}};
 
+	app_apply(m->p.app, &msg);
+}
+
+/* The model shown has its own [frame] and mode (its NAME.ini). */
+static void tell_frame(struct kiosk_models *m)
+{
+	const struct content_config *c = content_settings(m->p.content, m->p.config);
+	struct app_frame f;
+	struct app_msg msg = {.kind = APP_FRAME};
+
+	content_app_frame(c, &f, &msg.frame.rest);
+	msg.frame.frame = &f;
+	msg.frame.mode = c->mode;
+	msg.frame.now_ns = monotonic_ns();
 	app_apply(m->p.app, &msg);
 }
 
@@ -97,6 +113,7 @@ void kiosk_models_free(struct kiosk_models *m)
 	model_list_free(m->list);
 	folder_watch_free(m->watch);
 	forget_arrived(m);
+	free(m->settings_changed);
 	free(m);
 }
 
@@ -128,6 +145,7 @@ static int show(struct kiosk_models *m, struct content *fresh, int index)
 		return ret;
 	}
 	content_take_model(m->p.content, fresh, &old);
+	tell_frame(m);
 	/* Its cache write and sync are waited for on the worker. */
 	worker_retire(m->p.worker, &old);
 	m->shown = index;
@@ -178,6 +196,22 @@ static void start(struct kiosk_models *m, int from, int step)
 	}
 }
 
+/* A model's NAME.ini written (config/model_settings.h): that model is
+ * loaded again once the folder is quiet, when it is the one shown. */
+static bool settings_of(struct kiosk_models *m, const char *path)
+{
+	char ini[PATH_MAX];
+
+	for (int i = 0; i < model_list_count(m->list); i++)
+		if (model_settings_path(model_list_path(m->list, i), ini, sizeof(ini)) &&
+		    !strcmp(ini, path)) {
+			free(m->settings_changed);
+			m->settings_changed = strdup(model_list_path(m->list, i));
+			return true;
+		}
+	return false;
+}
+
 static bool arrived_path(void *ctx, const char *path)
 {
 	struct kiosk_models *m = ctx;
@@ -198,6 +232,8 @@ static void note_arrived(void *ctx, const char *folder, const char *name)
 		snprintf(path, sizeof(path), "%s", m->p.config->model);
 	else
 		snprintf(path, sizeof(path), "%s/%s", folder, name);
+	if (!one_file && settings_of(m, path))
+		return;
 	if (m->arrived_count < MAX_ARRIVED && !arrived_path(m, path))
 		m->arrived[m->arrived_count++] = strdup(path);
 	if (m->arrived_count && !m->arrived[m->arrived_count - 1])
@@ -221,6 +257,13 @@ static void rescan(struct kiosk_models *m)
 	m->list = l;
 	m->shown = model_list_find(l, m->p.content->model_path);
 	m->reload = fresh;
+	if (fresh < 0 && m->settings_changed &&
+	    model_list_find(l, m->settings_changed) == m->shown && m->shown >= 0) {
+		log_info("models: %s: its settings changed: loading it again", m->settings_changed);
+		m->reload = m->shown;
+	}
+	free(m->settings_changed);
+	m->settings_changed = NULL;
 	if (fresh >= 0)
 		log_debug("models: %s arrived or changed: loading it", model_list_path(l, fresh));
 	tell_app(m, m->shown);

@@ -84,14 +84,16 @@ static void print_stats(double *times, int n, double first_frame_ms)
 static int render_frames(const struct options *o, const struct content *s, struct display *d,
 			 struct renderer *r, double start_ms)
 {
-	struct view v = content_view(&o->content);
+	const struct content_config *c = content_settings(s, &o->content);
+	struct view v = content_view(c);
 	double *times = calloc((size_t)o->frames, sizeof(double));
 	double first = 0;
 	int ret = 0;
 
 	if (!times)
 		return -ENOMEM;
-	v.zoom = (float)s->zoom;
+	/* [frame] zoom: the start view's, over the fit's. */
+	v.zoom = (float)(s->zoom * (c->frame.zoom > 0 ? c->frame.zoom : 1.0));
 	for (int i = 0; i < o->frames && !ret; i++) {
 		double t = now_ms();
 

@@ -7,6 +7,7 @@
 #include "render/shading.h"
 #include "scene/caption.h"
 #include "scene/material.h"
+#include "state/view.h"
 
 #include <stdbool.h>
 
@@ -28,6 +29,7 @@ struct content_config {
 	double lod_pixels; /* simplify to this error on the display; 0: off */
 	int rotation;	   /* the panel's, degrees */
 	struct material_config material;
+	struct frame_config frame;     /* [frame]: orientation, start view, limits, stops */
 	struct caption_config caption; /* [caption] */
 };
 

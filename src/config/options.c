@@ -27,6 +27,9 @@ struct file_state {
 	int line;
 	int seen_line[OPTION_DEFS];
 	int errors;
+	/* A model's own file: the keys it may hold; NULL: any. */
+	bool (*allowed)(const char *section, const char *key);
+	const char *allowed_text;
 };
 
 /* Leading blanks are dropped: inih would take an indented key for the
@@ -183,6 +186,11 @@ static int on_key(void *user, const char *section, const char *key, const char *
 	const char *why = NULL;
 
 	st->errors++;
+	if (st->allowed && !st->allowed(section, key)) {
+		log_err("%s:%d: [%s] %s is not a setting a model's own file may hold; it takes %s",
+			st->path, st->line, section, key, st->allowed_text);
+		return 1;
+	}
 	if (d && quoted(value)) {
 		log_err("%s:%d: [%s] %s = %s: the quotes would be part of the value; write it "
 			"without them (blanks inside a path are fine)",
@@ -347,10 +355,61 @@ static void check_caption(struct file_state *st)
 	}
 }
 
+static int frame_line(const struct file_state *st, const char *key)
+{
+	return st->seen_line[find_key("frame", key) - option_defs];
+}
+
+/* Counts an error for each [frame] setting of this file that does not
+ * hold together: an orientation or stops that do not parse, a minimum
+ * above its maximum (the line of the maximum). */
+static void check_frame(struct file_state *st)
+{
+	const struct frame_config *f = &st->opts->content.frame;
+	struct app_frame af;
+	struct quat q;
+	char err[200], key[16];
+	const char *what;
+	int at;
+
+	if (frame_line(st, "orientation") && frame_base(f, &q, err, sizeof(err))) {
+		st->errors++;
+		log_err("%s:%d: [frame] orientation = '%s' is not valid: %s", st->path,
+			frame_line(st, "orientation"), f->orientation, err);
+	}
+	if (!frame_to_app(f, 0, 0, &af, err, sizeof(err)))
+		return;
+	/* "yaw_min is above yaw_max": the line of either; else the stops. */
+	what = strstr(err, "_min is above") ? err : NULL;
+	snprintf(key, sizeof(key), "%.*s_max", what ? (int)strcspn(err, "_") : 0, err);
+	at = what ? frame_line(st, key) : frame_line(st, "stops");
+	if (what && !at) {
+		key[strlen(key) - 3] = '\0';
+		strcat(key, "min");
+		at = frame_line(st, key);
+	}
+	if (!at)
+		return;
+	st->errors++;
+	log_err("%s:%d: [frame] %s is not valid: %s", st->path, at, what ? key : "stops", err);
+}
+
 static enum options_status read_stream(struct options *o, const char *path, const char *dir,
 				       FILE *f)
 {
-	struct file_state st = {.opts = o, .path = path, .dir = dir, .f = f};
+	return options_read_stream(o, path, dir, f, NULL, NULL);
+}
+
+enum options_status options_read_stream(struct options *o, const char *path, const char *dir,
+					FILE *f, bool (*allowed)(const char *, const char *),
+					const char *allowed_text)
+{
+	struct file_state st = {.opts = o,
+				.path = path,
+				.dir = dir,
+				.f = f,
+				.allowed = allowed,
+				.allowed_text = allowed_text};
 	int ret;
 
 	if (!options_origin_file(o, path))
@@ -359,6 +418,7 @@ static enum options_status read_stream(struct options *o, const char *path, cons
 	check_lines(&st);
 	check_schedule(&st);
 	check_background(&st);
+	check_frame(&st);
 	check_caption(&st);
 	if (ret > 0)
 		log_err("%s:%d: not an INI line; expected [section], key = value or a comment",

@@ -28,6 +28,13 @@ enum options_status options_read_installed(struct options *opts, const char *pat
 /* The same from memory (for the fuzzer); name is used in messages only. */
 enum options_status options_read_memory(struct options *opts, const char *name, const char *text,
 					size_t size);
+/* One stream (no drop-ins, no include), relative paths from dir (NULL:
+ * as written), taking only the keys allowed(section, key) accepts (NULL:
+ * all); another is an error naming allowed_text. */
+enum options_status options_read_stream(struct options *opts, const char *path, const char *dir,
+					FILE *f,
+					bool (*allowed)(const char *section, const char *key),
+					const char *allowed_text);
 void options_usage(FILE *out);
 
 #endif

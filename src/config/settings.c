@@ -27,6 +27,7 @@ const struct options_section_rule options_sections[OPTIONS_SECTIONS] = {
 		       "at once; the touchscreens are opened again if this section changed"},
     [OPTIONS_STATUS] = {"status", OPTIONS_LIVE, NULL,
 			"at once; a metrics file no longer named is removed"},
+    [OPTIONS_FRAME] = {"frame", OPTIONS_LIVE, NULL, "at once"},
     [OPTIONS_CAPTION] = {"caption", OPTIONS_LIVE, NULL, "at once"},
 };
 
@@ -46,6 +47,8 @@ static const char *const position_names[] = {
     "bottom-left", "bottom-right", "top-left", "top-right",
     "bottom",	   "top",	   NULL}; /* enum caption_position */
 static const char *const drift_names[] = {"off", "on", NULL};
+static const char *const up_names[] = {"+y", "-y", "+z", "-z", "+x", "-x", NULL}; /* frame_up */
+static const char *const direction_names[] = {"right", "left", NULL};
 
 /* A field's place and size: the size tells a bool from an enum, and the
  * copy, the comparison and the release go by it. */
@@ -59,16 +62,14 @@ _Static_assert(offsetof(struct camera_feed_config, height) ==
 		   offsetof(struct camera_feed_config, width) + sizeof(int),
 	       "camera width, height");
 /* Choices other than a bool are kept through an int. */
-_Static_assert(sizeof(enum backend_kind) == sizeof(int) &&
-		   sizeof(enum shading_mode) == sizeof(int) &&
-		   sizeof(enum app_action) == sizeof(int) &&
-		   sizeof(enum button_active) == sizeof(int) &&
-		   sizeof(enum button_bias) == sizeof(int) &&
-		   sizeof(enum camera_feed_use) == sizeof(int) &&
-		   sizeof(enum camera_feed_import) == sizeof(int) &&
-		   sizeof(enum display_antialias) == sizeof(int) &&
-		   sizeof(enum caption_position) == sizeof(int),
-	       "enums are ints");
+_Static_assert(
+    sizeof(enum backend_kind) == sizeof(int) && sizeof(enum shading_mode) == sizeof(int) &&
+	sizeof(enum app_action) == sizeof(int) && sizeof(enum button_active) == sizeof(int) &&
+	sizeof(enum button_bias) == sizeof(int) && sizeof(enum camera_feed_use) == sizeof(int) &&
+	sizeof(enum camera_feed_import) == sizeof(int) &&
+	sizeof(enum display_antialias) == sizeof(int) && sizeof(enum frame_up) == sizeof(int) &&
+	sizeof(enum caption_position) == sizeof(int),
+    "enums are ints");
 
 const struct option_def option_defs[OPTION_DEFS] = {
     {"backend", 'b', OPTIONS_DISPLAY, "backend", K_CHOICE, AT(backend), 0, 0, 0, backend_names,
@@ -276,6 +277,42 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "at debug), so stills of other views keep one size"},
     {"fit", 0, OPTIONS_SCENE, "fit", K_DOUBLE, AT(content.fit), 0.1, 1, 0, NULL, "SHARE",
      "the share of the frame the model fills at its start view; it stays inside as it turns"},
+    {"frame-up", 0, OPTIONS_FRAME, "up", K_CHOICE, AT(content.frame.up), 0, 0, 0, up_names, "AXIS",
+     "the model's axis that points up: +y (glTF's), -y, +z, -z, +x or -x"},
+    {"orientation", 0, OPTIONS_FRAME, "orientation", K_STRING, AT(content.frame.orientation), 0, 0,
+     0, NULL, "'R P Y'",
+     "turn the model by ROLL PITCH YAW degrees (after up, before the fit: the fit frames the "
+     "turned model)"},
+    {"start-yaw", 0, OPTIONS_FRAME, "yaw", K_DOUBLE, AT(content.frame.yaw), -360, 360, 0, NULL,
+     "DEG", "the start view's turn about the vertical (default: [scene] yaw)"},
+    {"start-pitch", 0, OPTIONS_FRAME, "pitch", K_DOUBLE, AT(content.frame.pitch), -90, 90, 0, NULL,
+     "DEG", "the start view's tilt (default: [scene] pitch)"},
+    {"start-zoom", 0, OPTIONS_FRAME, "zoom", K_DOUBLE, AT(content.frame.zoom), 0.05, 20, 0, NULL,
+     "Z", "the start view's zoom, 1: the fit's"},
+    {"yaw-min", 0, OPTIONS_FRAME, "yaw_min", K_DOUBLE, AT(content.frame.yaw_min), -3600, 3600, 0,
+     NULL, "DEG", "no turn left of this yaw (with yaw_max: a turntable between them)"},
+    {"yaw-max", 0, OPTIONS_FRAME, "yaw_max", K_DOUBLE, AT(content.frame.yaw_max), -3600, 3600, 0,
+     NULL, "DEG", "no turn right of this yaw"},
+    {"pitch-min", 0, OPTIONS_FRAME, "pitch_min", K_DOUBLE, AT(content.frame.pitch_min), -180, 180,
+     0, NULL, "DEG", "no tilt below this pitch"},
+    {"pitch-max", 0, OPTIONS_FRAME, "pitch_max", K_DOUBLE, AT(content.frame.pitch_max), -180, 180,
+     0, NULL, "DEG", "no tilt above this pitch"},
+    {"zoom-min", 0, OPTIONS_FRAME, "zoom_min", K_DOUBLE, AT(content.frame.zoom_min), 0.05, 20, 0,
+     NULL, "Z", "the least zoom a pinch or a stop reaches (default 0.5)"},
+    {"zoom-max", 0, OPTIONS_FRAME, "zoom_max", K_DOUBLE, AT(content.frame.zoom_max), 0.05, 20, 0,
+     NULL, "Z", "the most zoom (default 4)"},
+    {"attract-direction", 0, OPTIONS_FRAME, "attract_direction", K_CHOICE,
+     AT(content.frame.attract_direction), 0, 0, 0, direction_names, "WAY",
+     "attract mode turns right or left"},
+    {"attract-sway", 0, OPTIONS_FRAME, "attract_sway", K_DOUBLE, AT(content.frame.attract_sway), 0,
+     180, 0, NULL, "DEG",
+     "attract mode swings this far each way of the start view instead of turning; 0: full turns"},
+    {"stops", 0, OPTIONS_FRAME, "stops", K_STRING, AT(content.frame.stops), 0, 0, 0, NULL,
+     "'Y P Z \"TEXT\"; ...'",
+     "guided stops: views (yaw, pitch in degrees, zoom) each with a line of text, stepped by "
+     "next-stop and prev-stop"},
+    {"stop-seconds", 0, OPTIONS_FRAME, "stop_seconds", K_DOUBLE, AT(content.frame.stop_seconds), 0,
+     3600, 0, NULL, "S", "attract mode plays the stops in turn, each this long; 0: it turns"},
     {"caption", 0, OPTIONS_CAPTION, "text", K_STRING, AT(content.caption.text), 0, 0, 0, NULL,
      "TEXT",
      "a caption over the model, UTF-8 (any script; \\n breaks the line); auto: the model's "
@@ -330,6 +367,7 @@ void option_defaults(struct options *o)
 	o->content.caption.padding = 12;
 	o->content.caption.drift = true;
 	material_config_defaults(&o->content.material);
+	frame_config_defaults(&o->content.frame);
 	o->log_level = LOG_INFO;
 	o->app.attract_after_s = 60;
 	o->app.attract_speed = radians(15);

@@ -1,5 +1,6 @@
 #include "content/content.h"
 #include "content/model_list.h"
+#include "config/model_settings.h"
 #include "render/bake.h"
 #include "render/framing.h"
 #include "scene/gltf.h"
@@ -210,9 +211,46 @@ static int load_matcap(const struct content_config *o, bool strict, struct conte
 	return s->matcap_path ? 0 : -ENOMEM;
 }
 
+static void free_own(struct content *s)
+{
+	if (s->own)
+		content_config_release(s->own);
+	free(s->own);
+	s->own = NULL;
+}
+
+/* o with the model's NAME.ini over it (read here, on the worker where a
+ * model is loaded). A file with errors (each logged with its line) is
+ * left out: the model is shown with o as it is. */
+static int own_settings(struct content *s, const struct content_config *o, const char *path)
+{
+	struct content_config *c = calloc(1, sizeof(*c));
+
+	if (!c || content_config_copy(c, o)) {
+		free(c);
+		return -ENOMEM;
+	}
+	if (model_settings_read(c, path) != OPTIONS_OK)
+		log_err("%s: its own settings are ignored for the errors above", path);
+	free_own(s);
+	s->own = c;
+	return 0;
+}
+
+const struct content_config *content_settings(const struct content *s,
+					      const struct content_config *c)
+{
+	return s->own ? s->own : c;
+}
+
 /* The model of one file, from the cache or parsed; strict: no knot. */
 static int load_mesh(struct content *s, const struct content_config *o, const char *path)
 {
+	int ret = own_settings(s, o, path);
+
+	if (ret)
+		return ret;
+	o = s->own;
 	return content_cache_lookup(s, o, path) ? load_model(path, o, &s->mesh) : 0;
 }
 
@@ -245,6 +283,7 @@ static int load_first_model(struct content *s, const struct content_config *o, b
 	if (strict)
 		return -ENOENT;
 	log_warn("%s: showing the built-in torus knot: no model there loads", o->model);
+	free_own(s);
 	return mesh_torus_knot(&s->mesh, KNOT_TUBULAR, KNOT_RADIAL);
 }
 
@@ -262,6 +301,7 @@ static int load_the_model(struct content *s, const struct content_config *o, boo
 		log_warn("showing the built-in torus knot instead of %s", o->model);
 		free(s->model_path);
 		s->model_path = NULL;
+		free_own(s);
 		ret = mesh_torus_knot(&s->mesh, KNOT_TUBULAR, KNOT_RADIAL);
 	}
 	return ret;
@@ -337,9 +377,10 @@ int content_load(struct content *s, const struct content_config *o, bool strict)
 	if (!ret)
 		ret = load_matcap(o, strict, s);
 	if (!ret)
-		ret = material_load(&s->material, &o->material, &s->mesh, strict);
+		ret = material_load(&s->material, &content_settings(s, o)->material, &s->mesh,
+				    strict);
 	if (!ret)
-		ret = load_caption(s, o, strict);
+		ret = load_caption(s, content_settings(s, o), strict);
 	if (ret)
 		content_release(s);
 	return ret;
@@ -354,11 +395,12 @@ int content_load_model(struct content *s, const struct content_config *o, const 
 	s->model_path = strdup(path);
 	ret = s->model_path ? load_mesh(s, o, path) : -ENOMEM;
 	if (!ret)
-		ret = material_load(&s->material, &o->material, &s->mesh, true);
+		ret =
+		    material_load(&s->material, &content_settings(s, o)->material, &s->mesh, true);
 	if (!ret)
 		ret = content_prepare(s, o, width, height);
 	if (!ret)
-		ret = load_caption(s, o, false);
+		ret = load_caption(s, content_settings(s, o), false);
 	if (ret)
 		content_release(s);
 	return ret;
@@ -374,6 +416,7 @@ static void release_model(struct content *s)
 	material_release(&s->material);
 	free(s->model_path);
 	image_release(&s->caption);
+	free_own(s);
 }
 
 void content_take_model(struct content *shown, struct content *fresh, struct content *old)
@@ -388,6 +431,7 @@ void content_take_model(struct content *shown, struct content *fresh, struct con
 	old->material = kept.material;
 	old->model_path = kept.model_path;
 	old->caption = kept.caption;
+	old->own = kept.own;
 	*shown = *fresh;
 	shown->matcap = kept.matcap;
 	shown->set = kept.set;
@@ -459,6 +503,7 @@ int content_prepare(struct content *s, const struct content_config *o, int width
 	bool displaced = s->material.features & MATERIAL_DISPLACEMENT;
 	int ret = 0;
 
+	o = content_settings(s, o);
 	if (content_cache_fits(s, width, height)) {
 		log_info("%s: the prepared mesh from the cache (%u triangles)", s->model_path,
 			 s->mesh.index_count / 3);
@@ -558,6 +603,8 @@ int content_upload(struct content *s, struct renderer *r)
 struct view content_view(const struct content_config *o)
 {
 	struct view v = {.ortho = o->ortho, .rotation = o->rotation};
+	struct app_frame f;
+	struct quat rest;
 	struct background_spec bg;
 	char err[200];
 
@@ -565,9 +612,24 @@ struct view content_view(const struct content_config *o)
 		background_spec_default(&bg);
 	background_clear_color(&bg, v.background);
 
-	v.orientation = quat_multiply(quat_from_axis_angle(1, 0, 0, o->pitch * M_PI / 180),
-				      quat_from_axis_angle(0, 1, 0, o->yaw * M_PI / 180));
+	content_app_frame(o, &f, &rest);
+	v.orientation = quat_multiply(quat_from_axis_angle(1, 0, 0, f.pitch0),
+				      quat_multiply(quat_from_axis_angle(0, 1, 0, f.yaw0), rest));
 	return v;
+}
+
+void content_app_frame(const struct content_config *c, struct app_frame *f, struct quat *rest)
+{
+	char err[200];
+
+	if (frame_to_app(&c->frame, c->yaw, c->pitch, f, err, sizeof(err))) {
+		struct frame_config none;
+
+		frame_config_defaults(&none);
+		frame_to_app(&none, c->yaw, c->pitch, f, err, sizeof(err));
+	}
+	if (frame_base(&c->frame, rest, err, sizeof(err)))
+		*rest = (struct quat){1, 0, 0, 0};
 }
 
 int content_rescan_matcaps(struct content *s)

@@ -39,6 +39,9 @@ struct content {
 	 * Kept after the upload: the overlay plane is filled from it. */
 	struct image caption;
 	struct caption_config caption_place; /* its position, padding, drift; no strings */
+	/* The model's settings: the caller's with its NAME.ini over them
+	 * (config/model_settings.h); NULL: the caller's (the built-in knot). */
+	struct content_config *own;
 };
 
 /* strict: every file the settings name must load (a one-shot render is
@@ -72,9 +75,17 @@ void content_take_model(struct content *shown, struct content *fresh, struct con
  * back once on the GPU; the material's own images and the mesh stay, so
  * a failed swap can put this content back. */
 int content_upload_model(struct content *s, struct renderer *r);
-/* The camera and panel the settings ask for, at the resting orientation,
- * with the clear colour of the background. */
+/* The camera and panel the settings ask for, at the start view ([frame]
+ * up and orientation, then its or [scene]'s yaw and pitch), with the
+ * clear colour of the background. Its zoom is not set. */
 struct view content_view(const struct content_config *c);
+/* The settings s's model is shown with: its own, else c. */
+const struct content_config *content_settings(const struct content *s,
+					      const struct content_config *c);
+/* c's [frame] for the app state (state/view.h): the start view, limits,
+ * stops, and the model's own turn. A [frame] that does not hold together
+ * (refused when read) frames nothing. */
+void content_app_frame(const struct content_config *c, struct app_frame *f, struct quat *rest);
 /* Parse c's background and decode its image into spec and img (left
  * empty for a colour or a gradient). strict: a background that does not
  * load fails; otherwise it is replaced by the default, and the journal

@@ -21,10 +21,12 @@ enum app_action {
 	ACTION_RESET,	   /* back to the resting orientation and the configured mode */
 	ACTION_NEXT_MODEL, /* the next model of a folder or list */
 	ACTION_PREV_MODEL,
+	ACTION_NEXT_STOP, /* glide to the next of [frame] stops */
+	ACTION_PREV_STOP,
 	ACTION_COUNT
 };
 
-/* "none", "turn-left", ... "prev-model", then NULL: the config file's names. */
+/* "none", "turn-left", ... "prev-stop", then NULL: the config file's names. */
 extern const char *const app_action_names[ACTION_COUNT + 1];
 
 struct app_event {

@@ -33,6 +33,8 @@ static const struct {
     {KEY_N, ACTION_NEXT_MODEL},
     {KEY_PAGEUP, ACTION_PREV_MODEL},
     {KEY_P, ACTION_PREV_MODEL},
+    {KEY_DOT, ACTION_NEXT_STOP},
+    {KEY_COMMA, ACTION_PREV_STOP},
 };
 
 #define N_KEYS (sizeof(keys) / sizeof(keys[0]))

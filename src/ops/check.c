@@ -2,6 +2,7 @@
  * A problem is one line: where the setting came from (file:line), the
  * setting, its value and the loader's own reason. */
 #include "ops/check.h"
+#include "config/model_settings.h"
 #include "content/content.h"
 #include "content/model_list.h"
 #include "content/matcap_set.h"
@@ -11,6 +12,7 @@
 #include "util/log.h"
 
 #include <errno.h>
+#include <limits.h>
 #include <string.h>
 #include <unistd.h>
 
@@ -18,7 +20,32 @@ struct check {
 	const struct options *o;
 	FILE *out;
 	int bad_files;
+	int bad_settings; /* models' own NAME.ini files with errors */
 };
+
+int check_model_settings(const struct content_config *cfg, FILE *out)
+{
+	struct model_list *l = cfg->model && *cfg->model ? model_list_new(cfg->model) : NULL;
+	int bad = 0;
+
+	for (int i = 0; l && i < model_list_count(l); i++) {
+		const char *path = model_list_path(l, i);
+		struct content_config own;
+		char ini[PATH_MAX];
+
+		if (!model_settings_path(path, ini, sizeof(ini)) || access(ini, F_OK))
+			continue;
+		if (content_config_copy(&own, cfg))
+			return bad + 1;
+		if (model_settings_read(&own, path) != OPTIONS_OK)
+			bad++;
+		else if (out)
+			fprintf(out, "  read %s (the settings of %s)\n", ini, path);
+		content_config_release(&own);
+	}
+	model_list_free(l);
+	return bad;
+}
 
 static const struct option_def *def_of(const char *section, const char *key)
 {
@@ -87,6 +114,7 @@ static void check_models(struct check *c, const struct content_config *cfg)
 
 	if (!spec || !*spec)
 		return; /* the built-in knot */
+	c->bad_settings = check_model_settings(cfg, c->out);
 	log_clear_last_error();
 	l = model_list_new(spec);
 	if (!l) {
@@ -200,7 +228,11 @@ int check_config_run(const struct options *o, FILE *out)
 	if (o->content.background && background_names_image(o->content.background))
 		check_image(&c, "display", "background", o->content.background);
 	check_caption(&c, &o->content.caption);
-	/* Per-model settings files do not exist yet: nothing more to load. */
+	if (c.bad_settings) {
+		log_err("%s: %d model%s own settings file%s errors (above)", name, c.bad_settings,
+			c.bad_settings == 1 ? "'s" : "s'", c.bad_settings == 1 ? " has" : "s have");
+		return CHECK_BAD_SETTINGS;
+	}
 	if (c.bad_files) {
 		log_err("%s: the settings read, but %d file%s they name %s not load (above): the "
 			"kiosk would show a stand-in (the knot, the clay matcap, the background) "

@@ -1,4 +1,5 @@
 #include "ops/import.h"
+#include "ops/check.h"
 #include "ops/import_ini.h"
 #include "content/content.h"
 #include "config/options.h"
@@ -45,6 +46,7 @@ struct import {
 static const char *const model_exts[] = {"gltf", "glb", NULL};
 static const char *const content_exts[] = {"gltf", "glb", "bin", "png", "jpg", "jpeg", NULL};
 static const char *const image_exts[] = {"png", "jpg", "jpeg", NULL};
+static const char *const ini_exts[] = {"ini", NULL}; /* a model's NAME.ini */
 /* In a subfolder: what a model names by URI, never a model itself. */
 static const char *const asset_exts[] = {"bin", "png", "jpg", "jpeg", NULL};
 
@@ -272,7 +274,10 @@ static int copy_folder(struct import *im, int fd, const char *shown, const char 
 		if (!ret && exts != image_exts && is_folder(fd, name)) {
 			if (!model_folder || strcmp(name, "matcaps"))
 				ret = copy_subfolder(im, fd, shown, name, to, depth, count);
-		} else if (!ret && file_name_has_ext(name, exts) &&
+		} else if (!ret &&
+			   (file_name_has_ext(name, exts) ||
+			    (model_folder && file_name_has_ext(name, ini_exts) &&
+			     strcmp(name, "kiosk.ini"))) &&
 			   (!model_folder || name_usable(im, name))) {
 			r = copy_file(im, shown, fd, name, to);
 			ret = r < 0 ? r : 0;
@@ -538,6 +543,11 @@ static int check(const struct import *im, const struct options *o)
 	free(t.content.matcap);
 	t.content.model = model;
 	t.content.matcap = matcap;
+	/* Each model's own settings file, refused as kiosk.ini is. */
+	if (check_model_settings(&t.content, NULL)) {
+		ret = -EINVAL;
+		goto out;
+	}
 	/* A file that does not load is not a mistake in the settings. */
 	ret = content_load(&s, &t.content, true) ? -EIO : 0;
 	if (!ret)

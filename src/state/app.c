@@ -27,16 +27,84 @@ struct app {
 	int model_count;	  /* models that next/prev-model cycle through */
 	uint64_t now_ns;	  /* the last time the state was advanced to */
 	struct app_turn turns[4]; /* left, right, up, down */
+	/* A glide to a view (home before attract's turn, a stop): yaw,
+	 * pitch, zoom from (from, v0) to (to, v1) over ease_s from ease_ns;
+	 * then attract mode's path, when it is attract's. */
+	bool easing;
+	uint64_t ease_ns;
+	double ease_s, from[3], v0[3], to[3], v1[3];
+	struct attract_path path;
+	bool touring;	  /* attract mode plays the stops */
+	uint64_t stop_at; /* attract mode's next stop then */
 };
+
+static double clampd(double x, double lo, double hi)
+{
+	return x < lo ? lo : x > hi ? hi : x;
+}
+
+/* A frame left zero (a test's config) limits nothing. */
+static void frame_normalise(struct app_frame *f)
+{
+	if (!(f->zoom0 > 0))
+		f->zoom0 = 1.0;
+	if (!(f->zoom_min > 0))
+		f->zoom_min = APP_ZOOM_MIN;
+	if (!(f->zoom_max > 0))
+		f->zoom_max = APP_ZOOM_MAX;
+	if (f->direction == 0)
+		f->direction = 1.0;
+	if (!f->yaw_limited)
+		f->yaw_min = -INFINITY, f->yaw_max = INFINITY;
+	if (!f->pitch_limited)
+		f->pitch_min = -INFINITY, f->pitch_max = INFINITY;
+}
+
+/* The orientation of yaw and pitch: yaw about the model's vertical, then
+ * the tilt towards the viewer, after the model's own turn. An angle with
+ * no limits is kept within one turn, so a million turns lose no
+ * precision. */
+static void pose(struct app *a, double yaw, double pitch, double zoom)
+{
+	const struct app_frame *f = &a->cfg.frame;
+
+	if (!f->yaw_limited)
+		yaw = remainder(yaw, 2 * M_PI);
+	if (!f->pitch_limited)
+		pitch = remainder(pitch, 2 * M_PI);
+	a->state.yaw = clampd(yaw, f->yaw_min, f->yaw_max);
+	a->state.pitch = clampd(pitch, f->pitch_min, f->pitch_max);
+	a->state.zoom = clampd(zoom, f->zoom_min, f->zoom_max);
+	a->state.orientation = quat_normalize(
+	    quat_multiply(quat_from_axis_angle(1, 0, 0, a->state.pitch),
+			  quat_multiply(quat_from_axis_angle(0, 1, 0, a->state.yaw), a->cfg.rest)));
+	a->state.dirty = true;
+}
+
+static void set_stop(struct app *a, int stop)
+{
+	a->state.stop = stop;
+	a->state.stop_text =
+	    stop >= 0 && a->cfg.frame.stops[stop].text[0] ? a->cfg.frame.stops[stop].text : NULL;
+}
+
+static void home(struct app *a)
+{
+	const struct app_frame *f = &a->cfg.frame;
+
+	a->easing = false;
+	set_stop(a, -1);
+	pose(a, f->yaw0, f->pitch0, f->zoom0);
+}
 
 static void init(struct app *a, const struct app_config *cfg, int matcap_count, uint64_t now_ns)
 {
 	memset(a, 0, sizeof(*a));
 	a->cfg = *cfg;
+	frame_normalise(&a->cfg.frame);
 	a->matcap_count = matcap_count;
-	a->state.orientation = quat_normalize(cfg->rest);
+	home(a);
 	a->state.mode = cfg->mode;
-	a->state.zoom = 1.0;
 	a->state.last_input_ns = now_ns;
 	a->state.dirty = true;
 	a->state.model_step = 1;
@@ -65,20 +133,12 @@ const struct app_state *app_state(const struct app *a)
 	return &a->state;
 }
 
+/* A turntable: left is left on the screen, down tilts the top towards
+ * the viewer, each within [frame]'s limits. */
 static void turn(struct app *a, double yaw, double pitch)
 {
-	struct quat q = a->state.orientation;
-
-	/* Turns about the viewer's axes, applied on the left, so "left" is
-	 * left on the screen whatever the model's orientation (and no gimbal
-	 * lock). Normalising after each step keeps a million small turns a
-	 * rotation. */
-	if (yaw != 0.0)
-		q = quat_multiply(quat_from_axis_angle(0, 1, 0, yaw), q);
-	if (pitch != 0.0)
-		q = quat_multiply(quat_from_axis_angle(1, 0, 0, pitch), q);
-	a->state.orientation = quat_normalize(q);
-	a->state.dirty = true;
+	a->easing = false;
+	pose(a, a->state.yaw + yaw, a->state.pitch + pitch, a->state.zoom);
 }
 
 /* Seconds that one direction turned within [from, to]. */
@@ -107,7 +167,7 @@ static bool turning(const struct app *a)
 
 bool app_moving(const struct app *a)
 {
-	return a->attract || turning(a);
+	return a->attract || a->easing || turning(a);
 }
 
 static uint64_t attract_at(const struct app *a)
@@ -160,6 +220,98 @@ static void step_model(struct app *a, int step)
 	a->state.model_step = step;
 }
 
+/* Glide from the pose now to (yaw, pitch, zoom), from rest, arriving at
+ * yaw speed v1: the longer the way at speed, the longer the glide. An
+ * unlimited yaw takes the short way round. */
+static void ease_to(struct app *a, uint64_t t, const double to[3], double v1, double speed)
+{
+	const struct app_state *st = &a->state;
+	double d;
+
+	memcpy(a->to, to, sizeof(a->to));
+	if (!a->cfg.frame.yaw_limited)
+		a->to[0] = st->yaw + remainder(to[0] - st->yaw, 2 * M_PI);
+	a->from[0] = st->yaw;
+	a->from[1] = st->pitch;
+	a->from[2] = st->zoom;
+	memset(a->v0, 0, sizeof(a->v0));
+	memset(a->v1, 0, sizeof(a->v1));
+	a->v1[0] = v1;
+	d = fmax(fmax(fabs(a->to[0] - a->from[0]), fabs(a->to[1] - a->from[1])),
+		 fabs(log(a->to[2] / a->from[2])));
+	a->ease_s = d > 1e-9 ? clampd(2 * d / (speed > 0 ? speed : M_PI / 4), 0.5, 4) : 0;
+	a->ease_ns = t;
+	a->easing = true;
+}
+
+static double ease_speed(const struct app *a)
+{
+	return a->cfg.attract_speed > 0 ? a->cfg.attract_speed : a->cfg.turn_speed;
+}
+
+static void to_stop(struct app *a, int k, uint64_t t, double speed)
+{
+	const struct frame_stop *s = &a->cfg.frame.stops[k];
+	double to[3] = {s->yaw, s->pitch, s->zoom};
+
+	set_stop(a, k);
+	ease_to(a, t, to, 0, speed);
+	a->state.dirty = true;
+}
+
+static void step_stop(struct app *a, int step, uint64_t t)
+{
+	int n = a->cfg.frame.stop_count, k = a->state.stop;
+
+	if (n < 1)
+		return;
+	k = k < 0 ? (step > 0 ? 0 : n - 1) : ((k + step) % n + n) % n;
+	to_stop(a, k, t, a->cfg.turn_speed);
+}
+
+/* Attract mode from t: the stops in turn, or home (no snap) and then the
+ * turn or swing, which the glide meets at its speed. */
+static void attract_begin(struct app *a, uint64_t t)
+{
+	const struct app_frame *f = &a->cfg.frame;
+	double to[3] = {f->yaw0, f->pitch0, f->zoom0}, v;
+
+	a->attract_ns = t;
+	a->touring = f->stop_count > 0 && f->stop_seconds > 0;
+	if (a->touring) {
+		to_stop(a, a->state.stop < 0 ? 0 : (a->state.stop + 1) % f->stop_count, t,
+			ease_speed(a));
+		a->stop_at = t + (uint64_t)(f->stop_seconds * 1e9);
+		return;
+	}
+	set_stop(a, -1);
+	if (!f->yaw_limited)
+		to[0] = a->state.yaw + remainder(to[0] - a->state.yaw, 2 * M_PI);
+	attract_path_make(&a->path, f, to[0], a->cfg.attract_speed);
+	attract_path_at(&a->path, 0, &v);
+	ease_to(a, t, to, v, ease_speed(a));
+}
+
+/* The pose at now: on the glide, then (attract mode's) on the path. */
+static void glide(struct app *a, uint64_t now)
+{
+	double t = now > a->ease_ns ? (double)(now - a->ease_ns) * 1e-9 : 0, v, p[3];
+
+	if (t < a->ease_s) {
+		for (int i = 0; i < 3; i++)
+			p[i] = ease_at(a->from[i], a->v0[i], a->to[i], a->v1[i], a->ease_s, t, &v);
+		pose(a, p[0], p[1], p[2]);
+		return;
+	}
+	if (a->attract && !a->touring) {
+		pose(a, attract_path_at(&a->path, t - a->ease_s, &v), a->to[1], a->to[2]);
+		return;
+	}
+	if (a->easing)
+		pose(a, a->to[0], a->to[1], a->to[2]);
+	a->easing = false;
+}
+
 static void press(struct app *a, enum app_action action, uint64_t t)
 {
 	struct app_state *st = &a->state;
@@ -187,10 +339,13 @@ static void press(struct app *a, enum app_action action, uint64_t t)
 	case ACTION_PREV_MODEL:
 		step_model(a, action == ACTION_NEXT_MODEL ? 1 : -1);
 		break;
+	case ACTION_NEXT_STOP:
+	case ACTION_PREV_STOP:
+		step_stop(a, action == ACTION_NEXT_STOP ? 1 : -1, t);
+		break;
 	case ACTION_RESET:
-		st->orientation = quat_normalize(a->cfg.rest);
+		home(a);
 		st->mode = a->cfg.mode;
-		st->zoom = 1.0;
 		for (int i = 0; i < 4; i++)
 			a->turns[i].until_ns = 0; /* a tap's remainder would undo it */
 		st->dirty = true;
@@ -209,6 +364,8 @@ static uint64_t input_at(struct app *a, uint64_t time_ns)
 	app_advance(a, t);
 	if (t > a->state.last_input_ns)
 		a->state.last_input_ns = t;
+	if (a->attract)
+		a->easing = false; /* attract's glide stops where it is */
 	a->attract = false;
 	return t;
 }
@@ -227,14 +384,14 @@ static void input(struct app *a, const struct app_event *ev)
 
 static void zoom(struct app *a, double scale)
 {
-	double z = a->state.zoom * scale;
+	const struct app_frame *f = &a->cfg.frame;
+	double z = clampd(a->state.zoom * scale, f->zoom_min, f->zoom_max);
 
-	z = z < APP_ZOOM_MIN ? APP_ZOOM_MIN : z > APP_ZOOM_MAX ? APP_ZOOM_MAX : z;
 	/* At a bound a pinch changes nothing, and nothing is drawn. */
 	if (!(scale > 0) || z == a->state.zoom)
 		return;
-	a->state.zoom = z;
-	a->state.dirty = true;
+	a->easing = false;
+	pose(a, a->state.yaw, a->state.pitch, z);
 }
 
 /* A drag turns about the viewer's axes as the arrows do: right is right
@@ -279,28 +436,38 @@ static uint64_t next_change(const struct app *a)
 {
 	uint64_t period = attract_period(a), at;
 
-	if (turning(a) || (a->attract && !period))
+	if (turning(a) || (a->attract && !period) || (a->easing && !a->attract))
 		return a->now_ns + FRAME_NS;
 	if (!a->attract)
 		return attract_at(a);
 	at = a->attract_ns + period;
+	if (a->touring && a->stop_at < at)
+		at = a->stop_at;
 	if (a->cfg.attract_model_s > 0 && a->model_count > 1 && a->model_at < at)
 		at = a->model_at;
 	return at > a->now_ns ? at : a->now_ns;
 }
 
-/* Attract mode's turn since it was last drawn, at most attract_fps times
- * a second: the display's every vblank would cost a kiosk nobody watches
- * its CPU for nothing. */
-static double attract_yaw(struct app *a, uint64_t now_ns)
+/* Attract mode's pose, at most attract_fps times a second: the
+ * display's every vblank would cost a kiosk nobody watches its CPU for
+ * nothing. The pose is a function of the time, so the rate changes no
+ * angle. The stops come in turn, one each stop_seconds. */
+static void attract_move(struct app *a, uint64_t now_ns)
 {
-	double yaw;
+	uint64_t every = (uint64_t)(a->cfg.frame.stop_seconds * 1e9);
 
+	if (a->touring && now_ns >= a->stop_at) {
+		glide(a, a->stop_at); /* the stop reached, then on from there */
+		to_stop(a, (a->state.stop + 1) % a->cfg.frame.stop_count, a->stop_at,
+			ease_speed(a));
+		a->stop_at += every;
+		if (a->stop_at <= now_ns)
+			a->stop_at = now_ns + every;
+	}
 	if (now_ns < a->attract_ns + attract_period(a))
-		return 0.0;
-	yaw = a->cfg.attract_speed * (double)(now_ns - a->attract_ns) * 1e-9;
+		return;
+	glide(a, now_ns);
 	a->attract_ns = now_ns;
-	return yaw;
 }
 
 /* Attract mode shows every model in turn, one each attract_model_s. */
@@ -328,17 +495,19 @@ uint64_t app_advance(struct app *a, uint64_t now_ns)
 	pitch = speed * (turn_seconds(&t[3], prev, now_ns) - turn_seconds(&t[2], prev, now_ns));
 	a->now_ns = now_ns;
 	at = attract_at(a);
+	if (yaw != 0.0 || pitch != 0.0)
+		turn(a, yaw, pitch);
 	if (!a->attract && !any_held(a) && at <= now_ns) {
 		a->attract = true;
-		a->attract_ns = at > prev ? at : prev;
+		attract_begin(a, at > prev ? at : prev);
 		a->model_at = a->attract_ns + (uint64_t)(a->cfg.attract_model_s * 1e9);
 	}
 	if (a->attract) {
-		yaw += attract_yaw(a, now_ns);
+		attract_move(a, now_ns);
 		attract_models(a, now_ns);
+	} else if (a->easing) {
+		glide(a, now_ns);
 	}
-	if (yaw != 0.0 || pitch != 0.0)
-		turn(a, yaw, pitch);
 	return next_change(a);
 }
 
@@ -403,6 +572,21 @@ static void reload(struct app *a, const struct app_config *cfg, int matcap_count
 	a->state.camera_on = camera_on && available;
 }
 
+/* Another model is shown: its own frame, from its start view. Attract
+ * mode goes on from there. */
+static void frame(struct app *a, const struct app_frame *f, struct quat rest,
+		  enum shading_mode mode, uint64_t now_ns)
+{
+	a->cfg.frame = *f;
+	a->cfg.rest = rest;
+	a->cfg.mode = mode;
+	a->state.mode = mode;
+	frame_normalise(&a->cfg.frame);
+	home(a);
+	if (a->attract)
+		attract_begin(a, now_ns > a->now_ns ? now_ns : a->now_ns);
+}
+
 void app_apply(struct app *a, const struct app_msg *m)
 {
 	switch (m->kind) {
@@ -429,6 +613,9 @@ void app_apply(struct app *a, const struct app_msg *m)
 		break;
 	case APP_MODELS:
 		models(a, m->models.count, m->models.shown);
+		break;
+	case APP_FRAME:
+		frame(a, m->frame.frame, m->frame.rest, m->frame.mode, m->frame.now_ns);
 		break;
 	}
 }

@@ -12,6 +12,7 @@
 #include "util/clock.h"
 #include "util/math3d.h"
 #include "render/shading.h"
+#include "state/view.h"
 
 #include <stdbool.h>
 #include <stdint.h>
@@ -25,7 +26,8 @@ struct app_config {
 	double attract_speed;	/* radians per second in attract mode */
 	double attract_fps;	/* frames per second at most in attract mode; 0: the display's */
 	double attract_model_s; /* the next model this often in attract mode; 0: never */
-	struct quat rest;	/* orientation at start and after a reset */
+	struct quat rest;	/* the model's own turn ([frame] up, orientation) */
+	struct app_frame frame; /* start view, limits, attract's shape, stops */
 	enum shading_mode mode;
 	double drag_speed;	    /* radians a drag across the whole screen turns */
 	enum app_action long_press; /* what a long touch does */
@@ -44,8 +46,13 @@ struct app_state {
 	double zoom; /* the picture's scale about its centre: 1 at rest */
 	bool dirty;  /* something changed since the last frame drawn */
 	uint64_t last_input_ns;
-	int model;	/* the model wanted, an index into the model list */
-	int model_step; /* +1 or -1: the way the last step went, for passing over */
+	int model;	   /* the model wanted, an index into the model list */
+	int model_step;	   /* +1 or -1: the way the last step went, for passing over */
+	double yaw, pitch; /* radians: orientation is pitch x yaw x rest */
+	int stop;	   /* the guided stop shown or eased to; -1: none */
+	/* That stop's text (for a caption), or NULL; owned by the app, valid
+	 * until the next message. */
+	const char *stop_text;
 };
 
 enum app_msg_kind {
@@ -57,6 +64,7 @@ enum app_msg_kind {
 	APP_FRAME_SHOWN,  /* the state was drawn and handed to the display */
 	APP_TOUCH,	  /* .touch: a touchscreen gesture */
 	APP_MODELS,	  /* .models: a model was shown, or the list read again */
+	APP_FRAME,	  /* .frame: the model shown has this [frame] (its NAME.ini) */
 };
 
 struct app_msg {
@@ -76,6 +84,12 @@ struct app_msg {
 			int count; /* models that next/prev-model cycle through */
 			int shown; /* the one on screen now; -1: none of them */
 		} models;
+		struct {
+			const struct app_frame *frame;
+			struct quat rest;
+			enum shading_mode mode;
+			uint64_t now_ns;
+		} frame;
 		struct {
 			const struct app_config *config;
 			int matcap_count;

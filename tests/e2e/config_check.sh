@@ -64,6 +64,17 @@ w '[scene]\nmodel = %s/empty\n' "$dir" >"$dir/nomodels.ini"
 case_ folder-without-models 66 "nomodels.ini:2: \[scene\] model = '$dir/empty': .*no .gltf or .glb" \
 	"$dir/nomodels.ini" $mc
 
+# A model's own NAME.ini: read and said; a key it may not hold refused
+# with its file and line (exit 78, a settings error).
+mkdir -p "$dir/own"
+cp "$models/sphere.glb" "$dir/own/vase.glb"
+w '[frame]\nup = +z\nyaw_min = -40\nyaw_max = 40\n' >"$dir/own/vase.ini"
+w '[scene]\nmodel = %s/own/vase.glb\n' "$dir" >"$dir/own.ini"
+case_ model-settings 0 "read $dir/own/vase.ini (the settings of $dir/own/vase.glb)" "$dir/own.ini" $mc
+w '[frame]\nyaw = 10\n\n[kiosk]\nattract_after = 5\n' >"$dir/own/vase.ini"
+case_ model-settings-bad-key 78 "vase.ini:5: \[kiosk\] attract_after is not a setting a model's own" \
+	"$dir/own.ini" $mc
+
 w '[kiosk]\ninclude = typo.ini\n' >"$dir/inc.ini"
 w '[scene]\nmodle = x.glb\n' >"$dir/typo.ini"
 case_ include-with-errors 78 "typo.ini:2: unknown key 'modle'" "$dir/inc.ini" $mc

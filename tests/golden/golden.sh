@@ -20,6 +20,7 @@ scenes="$scenes sphere-vertex-color sphere-base-map sphere-base-map-off"
 scenes="$scenes background-color background-gradient background-image fit-long fit-long-half"
 scenes="$scenes parts-textures parts-mask parts-blend parts-leaf parts-normals parts-iridescence"
 scenes="$scenes caption-latin caption-rtl caption-logo"
+scenes="$scenes frame-up frame-start-view"
 mkdir -p "$out" "$models"
 "$TOOLS/mkmodels" "$models" >/dev/null
 
@@ -98,6 +99,18 @@ render() {
 		;;
 	fit-long-half)
 		$k -c matcaps/gold.png --model "$m/long.glb" --fit 0.5 --output "$o"
+		;;
+	# [frame] from the model's own NAME.ini: the long model stood on its
+	# end (up = +x, then a quarter roll), framed as turned (the fit
+	# fills the height); and a start view of yaw, pitch and zoom.
+	frame-up)
+		cp "$m/long.glb" "$m/long-up.glb"
+		printf '[frame]\nup = +x\norientation = 0 0 30\n' >"$m/long-up.ini"
+		$k -c matcaps/gold.png --model "$m/long-up.glb" --output "$o"
+		;;
+	frame-start-view)
+		$k -c matcaps/gold.png --model "$m/long.glb" --start-yaw 60 --start-pitch 45 \
+			--start-zoom 0.7 --output "$o"
 		;;
 	# Several materials (tests/tools/parts_models.c): two halves each
 	# with its own base map; a label cut by alpha MASK in front of a

@@ -1,0 +1,110 @@
+#include "config/model_settings.h"
+#include "util/log.h"
+
+#include <errno.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+/* The keys a model's own file may hold; key NULL: the whole section. What
+ * stays with the kiosk (the display, the devices, attract mode's timing)
+ * or with the matcaps and the background (shared by every model, and
+ * swapped apart from the model) is not here. A section of another
+ * feature that is per model is one more line ({"caption", NULL}), and
+ * the error messages list it too. */
+static const struct {
+	const char *section, *key;
+} model_keys[] = {
+    {"frame", NULL},	     {"material", NULL}, {"scene", "mode"},	  {"scene", "fit"},
+    {"scene", "yaw"},	     {"scene", "pitch"}, {"scene", "base_color"}, {"scene", "model_scene"},
+    {"scene", "lod_pixels"}, {"caption", NULL},
+};
+
+#define MODEL_KEYS (sizeof(model_keys) / sizeof(model_keys[0]))
+
+/* "[frame], [material], [scene] mode, [scene] fit, ...": from the table. */
+static void keys_text(char *buf, size_t n)
+{
+	size_t len = 0;
+
+	buf[0] = '\0';
+	for (size_t i = 0; i < MODEL_KEYS && len + 1 < n; i++)
+		len += (size_t)snprintf(buf + len, n - len, "%s[%s]%s%s", i ? ", " : "",
+					model_keys[i].section, model_keys[i].key ? " " : "",
+					model_keys[i].key ? model_keys[i].key : "");
+}
+
+bool model_settings_allowed(const char *section, const char *key)
+{
+	for (size_t i = 0; i < MODEL_KEYS; i++)
+		if (!strcmp(model_keys[i].section, section) &&
+		    (!model_keys[i].key || !strcmp(model_keys[i].key, key)))
+			return true;
+	return false;
+}
+
+static bool ends_with(const char *s, size_t len, const char *tail)
+{
+	size_t n = strlen(tail);
+
+	return len >= n && !strcasecmp(s + len - n, tail);
+}
+
+bool model_settings_path(const char *model, char *out, size_t n)
+{
+	size_t len = model ? strlen(model) : 0, stem;
+
+	if (ends_with(model, len, ".glb"))
+		stem = len - 4;
+	else if (ends_with(model, len, ".gltf"))
+		stem = len - 5;
+	else
+		return false;
+	return (size_t)snprintf(out, n, "%.*s.ini", (int)stem, model) < n;
+}
+
+static void dir_of(const char *path, char *dir, size_t n)
+{
+	const char *slash = strrchr(path, '/');
+
+	if (!slash)
+		snprintf(dir, n, ".");
+	else
+		snprintf(dir, n, "%.*s", slash == path ? 1 : (int)(slash - path), path);
+}
+
+enum options_status model_settings_read(struct content_config *c, const char *model)
+{
+	char path[PATH_MAX], dir[PATH_MAX], keys[400];
+	enum options_status ret = OPTIONS_CONFIG;
+	struct options o;
+	FILE *f;
+
+	if (!model_settings_path(model, path, sizeof(path)))
+		return OPTIONS_OK;
+	f = fopen(path, "r");
+	if (!f && errno == ENOENT)
+		return OPTIONS_OK;
+	if (!f) {
+		log_err("%s: cannot read the model's settings: %s", path, strerror(errno));
+		return OPTIONS_CONFIG;
+	}
+	option_defaults(&o);
+	if (content_config_copy(&o.content, c))
+		goto out;
+	dir_of(path, dir, sizeof(dir));
+	keys_text(keys, sizeof(keys));
+	ret = options_read_stream(&o, path, dir, f, model_settings_allowed, keys);
+	if (ret == OPTIONS_OK) {
+		content_config_release(c);
+		*c = o.content;
+		memset(&o.content, 0, sizeof(o.content));
+		log_debug("%s: the model's own settings", path);
+	}
+out:
+	fclose(f);
+	options_release(&o);
+	return ret;
+}
