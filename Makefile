@@ -73,7 +73,7 @@ SRC_CONTENT := content/content content/matcap_set content/matcap_job content/mod
 	       content/model_loader content/worker
 SRC_CONFIG  := config/options config/model_settings config/settings config/settings_origin
 SRC_STATE   := state/app state/view state/power state/schedule
-SRC_DISPLAY := display/backlight display/cec display/cec_link display/display display/display_egl display/display_kms \
+SRC_DISPLAY := display/backlight display/cec display/cec_link display/display display/display_egl display/display_kms display/kms_scale \
 	       display/display_osmesa \
 	       display/drm display/drm_atomic display/drm_legacy display/egl_util display/hotplug \
 	       display/kms_fb display/kms_overlay
@@ -81,7 +81,7 @@ SRC_INPUT   := input/action input/button input/gesture input/touch_decode input/
 	       input/gpio_$(GPIOD_API) input/keyboard input/touch
 SRC_CAMERA  := camera/camera_feed camera/camera_link camera/camera_math camera/camera_proto \
 	       camera/camera_texture
-SRC_RENDER  := render/background render/bake render/draw_list render/framing render/gl render/poster \
+SRC_RENDER  := render/background render/bake render/draw_list render/framing render/gl render/poster render/render_scale \
 	       render/caption render/render render/render_draw render/shader render/shading
 SRC_SCENE   := scene/lod scene/material scene/mesh scene/mesh_cache scene/mesh_cache_fields scene/mesh_cache_key scene/mesh_gen scene/mesh_pack scene/subdivide scene/tangent \
 	       scene/texture scene/caption scene/caption_text
@@ -94,6 +94,7 @@ LIB_CC += scene/gltf_words scene/gltf_name
 SHADERS := shaders/mapping.glsl shaders/matcap.vert shaders/matcap.frag shaders/material.glsl
 SHADERS += shaders/camera.vert shaders/camera.frag
 SHADERS += shaders/poster.vert shaders/poster.frag
+SHADERS += shaders/scale.vert shaders/scale.frag
 SHADERS += shaders/background.vert shaders/background.frag
 SHADERS += shaders/caption.vert shaders/caption.frag
 

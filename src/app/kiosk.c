@@ -163,9 +163,17 @@ static double caption_clock(void)
 	return (double)clock_ns(CLOCK_REALTIME) / 1e9;
 }
 
+/* The overlay plane is upright and in the mode's pixels: a turned panel,
+ * or a primary plane that scales a smaller frame up (render_scale), keeps
+ * the caption on GL (there drawn at the frame's size, scaled with it). */
+static bool plane_possible(const struct kiosk *k)
+{
+	return k->display->overlay && !k->view.rotation && !k->display->plane_scaled;
+}
+
 /* The caption on an overlay plane where the display has one that takes it
  * (tested once per picture, after a first frame set the mode): true, and
- * GL draws none. A turned panel keeps it on GL (the plane is upright). */
+ * GL draws none. */
 static bool caption_on_plane(struct kiosk *k)
 {
 	struct display *d = k->display;
@@ -173,7 +181,7 @@ static bool caption_on_plane(struct kiosk *k)
 
 	if (!d->overlay)
 		return false;
-	if (!serial || k->view.rotation || !k->frames_drawn || serial == k->caption_refused) {
+	if (!serial || !plane_possible(k) || !k->frames_drawn || serial == k->caption_refused) {
 		if (k->caption_plane)
 			d->overlay(d->overlay_ctx, NULL, 0, 0, 0);
 		k->caption_plane = 0;
@@ -201,8 +209,8 @@ static uint64_t caption_deadline(struct kiosk *k, uint64_t now)
 
 	if (!renderer_caption_at(k->renderer, &k->view, caption_clock(), d->width, d->height, at))
 		return CLOCK_NEVER;
-	if (d->overlay && k->frames_drawn && serial != k->caption_plane &&
-	    serial != k->caption_refused && !k->view.rotation)
+	if (d->overlay && plane_possible(k) && k->frames_drawn && serial != k->caption_plane &&
+	    serial != k->caption_refused)
 		kiosk_tell_app(k, APP_DISPLAY_BACK);
 	if (at[0] == k->caption_at[0] && at[1] == k->caption_at[1])
 		return now + 10000000000ull;
@@ -222,7 +230,7 @@ static int draw(struct kiosk *k, uint64_t now)
 {
 	const struct app_state *st = app_state(k->app);
 	struct display *d = k->display;
-	int ret;
+	int ret, w, h;
 
 	sync_mode(k, st->mode);
 	k->view.orientation = st->orientation;
@@ -236,7 +244,12 @@ static int draw(struct kiosk *k, uint64_t now)
 	if (k->camera)
 		renderer_use_matcap_texture(k->renderer,
 					    camera_feed_draw(k->camera, st->camera_on));
-	renderer_draw(k->renderer, &k->view, d->width, d->height);
+	render_scale_begin(k->scale, d->plane_scaled, d->width, d->height, &w, &h);
+	renderer_draw(k->renderer, &k->view, w, h);
+	render_scale_end(k->scale);
+	/* The frame is full size again: full-resolution overlays (the
+	 * caption, the logo) draw here, at d->width x d->height, before the
+	 * present. */
 	renderer_caption_at(k->renderer, &k->view, caption_clock(), d->width, d->height,
 			    k->caption_at);
 	if (!caption_on_plane(k))
@@ -581,7 +594,9 @@ struct kiosk *kiosk_new(const struct kiosk_parts *p, uint64_t now_ns)
 	/* The renderer already holds the mode. */
 	k->shown_mode = p->options->content.mode;
 	k->shown_ortho = p->options->content.ortho;
-	if (kiosk_content_start(k) || options_copy(&k->started, p->options) ||
+	k->scale = render_scale_new(&p->display->gl, p->options->display.render_scale,
+				    p->display->samples, p->options->shader_dir);
+	if (!k->scale || kiosk_content_start(k) || options_copy(&k->started, p->options) ||
 	    options_copy(&k->applied, p->options) || configure(k, now_ns)) {
 		kiosk_free(k);
 		return NULL;
@@ -606,6 +621,7 @@ void kiosk_free(struct kiosk *k)
 	kiosk_models_free(k->models);
 	metrics_free(k->metrics);
 	app_free(k->app);
+	render_scale_free(k->scale);
 	options_release(&k->started);
 	options_release(&k->applied);
 	free(k);

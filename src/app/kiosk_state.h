@@ -22,6 +22,7 @@
 #include "input/input.h"
 #include "input/touch.h"
 #include "render/render.h"
+#include "render/render_scale.h"
 #include "util/folder_watch.h"
 
 #include <poll.h>
@@ -56,7 +57,8 @@ enum input_origin { INPUT_CALLER, INPUT_BUTTON, INPUT_KEYBOARD };
 struct kiosk {
 	struct display *display;
 	struct renderer *renderer;
-	struct content *content; /* on screen; a reload swaps what it holds */
+	struct render_scale *scale; /* [display] render_scale's GL pass */
+	struct content *content;    /* on screen; a reload swaps what it holds */
 	char **argv;
 	int argc;
 	bool camera_possible;

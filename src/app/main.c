@@ -14,6 +14,7 @@
 #include "ops/status.h"
 #include "ops/check.h"
 #include "render/poster.h"
+#include "render/render_scale.h"
 
 #include <errno.h>
 #include <math.h>
@@ -87,11 +88,16 @@ static int render_frames(const struct options *o, const struct content *s, struc
 	const struct content_config *c = content_settings(s, &o->content);
 	struct view v = content_view(c);
 	double *times = calloc((size_t)o->frames, sizeof(double));
+	struct render_scale *scale =
+	    render_scale_new(&d->gl, o->display.render_scale, d->samples, o->shader_dir);
 	double first = 0;
-	int ret = 0;
+	int ret = 0, w, h;
 
-	if (!times)
+	if (!times || !scale) {
+		free(times);
+		render_scale_free(scale);
 		return -ENOMEM;
+	}
 	/* [frame] zoom: the start view's, over the fit's. */
 	v.zoom = (float)(s->zoom * (c->frame.zoom > 0 ? c->frame.zoom : 1.0));
 	for (int i = 0; i < o->frames && !ret; i++) {
@@ -99,7 +105,10 @@ static int render_frames(const struct options *o, const struct content *s, struc
 
 		ret = d->begin_frame(d);
 		if (!ret) {
-			renderer_draw(r, &v, d->width, d->height);
+			render_scale_begin(scale, d->plane_scaled, d->width, d->height, &w, &h);
+			renderer_draw(r, &v, w, h);
+			render_scale_end(scale);
+			/* Full-resolution overlays draw here, as in the live loop. */
 			renderer_draw_caption(r, &v, 0, d->width, d->height);
 			ret = d->present(d);
 		}
@@ -109,6 +118,7 @@ static int render_frames(const struct options *o, const struct content *s, struc
 	}
 	if (!ret && o->stats)
 		print_stats(times, o->frames, first);
+	render_scale_free(scale);
 	free(times);
 	return ret;
 }

@@ -47,6 +47,8 @@ static const char *const position_names[] = {
     "bottom-left", "bottom-right", "top-left", "top-right",
     "bottom",	   "top",	   NULL}; /* enum caption_position */
 static const char *const drift_names[] = {"off", "on", NULL};
+/* A number with a word for 0: its first choice (render_scale's auto). */
+static const char *const auto_names[] = {"auto", NULL};
 static const char *const up_names[] = {"+y", "-y", "+z", "-z", "+x", "-x", NULL}; /* frame_up */
 static const char *const direction_names[] = {"right", "left", NULL};
 
@@ -277,6 +279,11 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "at debug), so stills of other views keep one size"},
     {"fit", 0, OPTIONS_SCENE, "fit", K_DOUBLE, AT(content.fit), 0.1, 1, 0, NULL, "SHARE",
      "the share of the frame the model fills at its start view; it stays inside as it turns"},
+    {"render-scale", 0, OPTIONS_DISPLAY, "render_scale", K_DOUBLE, AT(display.render_scale), 0.5, 1,
+     0, auto_names, "S",
+     "draw the model at this share of the panel's width and height, scaled up on the way out "
+     "(the KMS plane where it can, else one GL pass); auto: 1 up to 1080p (1440p on a GPU), "
+     "less on a larger panel (in software only where the plane scales)"},
     {"frame-up", 0, OPTIONS_FRAME, "up", K_CHOICE, AT(content.frame.up), 0, 0, 0, up_names, "AXIS",
      "the model's axis that points up: +y (glTF's), -y, +z, -z, +x or -x"},
     {"orientation", 0, OPTIONS_FRAME, "orientation", K_STRING, AT(content.frame.orientation), 0, 0,
@@ -358,6 +365,7 @@ void option_defaults(struct options *o)
 	memset(o, 0, sizeof(*o));
 	o->display.width = 1280;
 	o->display.height = 720;
+	o->display.render_scale = 1;
 	o->content.mode = SHADING_VIEW;
 	o->content.pitch = 20.0;
 	o->content.yaw = -30.0;
@@ -543,7 +551,8 @@ void option_accepted(const struct option_def *d, char *buf, size_t n)
 		return;
 	case K_DOUBLE:
 	case K_DEGREES:
-		snprintf(buf, n, "a number from %g to %g", d->lo, d->hi);
+		snprintf(buf, n, "%s%sa number from %g to %g", d->choices ? d->choices[0] : "",
+			 d->choices ? " or " : "", d->lo, d->hi);
 		return;
 	case K_SIZE:
 		snprintf(buf, n, "WIDTHxHEIGHT, each from %g to %g", d->lo, d->hi);
@@ -614,6 +623,10 @@ static bool set_number(void *p, const struct option_def *d, const char *value)
 {
 	double v;
 
+	if (d->choices && strcmp(value, d->choices[0]) == 0) {
+		*(double *)p = 0;
+		return true;
+	}
 	if (!parse_number(value, d->lo, d->hi, d->kind == K_INT ? (d->step ? d->step : 1) : 0, &v))
 		return false;
 	if (d->kind == K_INT)

@@ -95,7 +95,8 @@ struct options {
 };
 
 /* K_DEGREES: read in degrees, kept in radians. K_LEVEL: a log level by
- * its name. K_CHOICE: an index into choices, kept as an enum (or a bool
+ * its name. A K_DOUBLE with choices takes its first word for 0 (auto).
+ * K_CHOICE: an index into choices, kept as an enum (or a bool
  * for a choice of two). */
 enum option_kind { K_FLAG, K_STRING, K_INT, K_DOUBLE, K_DEGREES, K_SIZE, K_CHOICE, K_LEVEL };
 
@@ -117,7 +118,7 @@ struct option_def {
 
 /* The table's length: the compiler refuses an entry more, and
  * tests/unit/test_options.c one less. */
-#define OPTION_DEFS 115
+#define OPTION_DEFS 116
 extern const struct option_def option_defs[OPTION_DEFS];
 
 void option_defaults(struct options *o);

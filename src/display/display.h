@@ -20,6 +20,7 @@ struct display_config {
 	bool exit_when_busy;   /* KMS: exit when another program holds the display */
 	int kms_api;	       /* KMS: 0 auto, 1 atomic, 2 legacy (enum drm_api) */
 	bool quiet;	       /* KMS: probing for auto, say nothing when absent */
+	double render_scale;   /* [display] render_scale: 0.5 to 1; 0: auto */
 };
 
 /* [display] antialias, in the settings' order. */
@@ -42,6 +43,10 @@ struct display {
 	int height;
 	struct gl gl;
 	int samples; /* multisampled with this many samples per pixel; 0: not */
+	/* KMS: the primary plane scales the width x height buffer up to the
+	 * mode ([display] render_scale, src/display/kms_scale.c): the scene
+	 * is drawn 1:1, with no GL pass (render/render_scale.h). */
+	bool plane_scaled;
 	/* A presented frame has not reached the screen yet (a page flip is
 	 * pending): draw nothing new until dispatch() clears it. */
 	bool waiting;

@@ -8,6 +8,7 @@
 #include "display/hotplug.h"
 #include "display/kms_fb.h"
 #include "display/kms_overlay.h"
+#include "display/kms_scale.h"
 #include "util/log.h"
 
 #include <drm_fourcc.h>
@@ -278,7 +279,7 @@ static void disconnect(struct display_kms *k, bool turn_off)
 
 static int make_surface(struct display_kms *k)
 {
-	int w = k->drm.mode.hdisplay, h = k->drm.mode.vdisplay;
+	int w = (int)k->drm.src_w, h = (int)k->drm.src_h; /* kms_scale_plane's */
 
 	k->surface = gbm_surface_create(k->gbm, (uint32_t)w, (uint32_t)h, k->format,
 					GBM_BO_USE_SCANOUT | GBM_BO_USE_RENDERING);
@@ -319,6 +320,7 @@ static int connect_display(struct display_kms *k)
 		return ret;
 	ops_reset(k);
 	ret = drm_ops_init(&k->drm, k->api);
+	k->base.plane_scaled = !ret && kms_scale_plane(&k->drm, k->gbm, k->format, &k->base);
 	if (!ret)
 		ret = make_surface(k);
 	if (ret)
@@ -639,6 +641,7 @@ static void init_base(struct display_kms *k, const struct display_config *cfg)
 	k->mode = cfg->mode ? strdup(cfg->mode) : NULL;
 	k->exit_when_busy = cfg->exit_when_busy;
 	k->antialias = cfg->antialias;
+	k->drm.scale_want = cfg->render_scale;
 	k->api = (enum drm_api)cfg->kms_api;
 }
 

@@ -37,6 +37,12 @@ struct drm {
 	int crtc_index;
 	drmModeModeInfo mode;
 	char connector_name[32];
+	/* The primary plane's source: the buffer's size, smaller than the
+	 * mode's where the plane scales it up (atomic only), chosen by
+	 * display/kms_scale.c from scale_want ([display] render_scale, 0:
+	 * auto); 0: the mode's size. */
+	uint32_t src_w, src_h;
+	double scale_want;
 	/* What the CRTC showed before our first modeset, restored on exit. */
 	drmModeCrtc *saved_crtc;
 	void *priv;		     /* the atomic backend's property ids */
@@ -71,6 +77,10 @@ int drm_ops_init(struct drm *drm, enum drm_api api);
 extern const struct drm_ops drm_legacy_ops;
 extern const struct drm_ops drm_atomic_ops;
 int drm_atomic_init(struct drm *drm);
+/* Whether the driver would take the modeset that shows fb (with the
+ * plane's source as src_w x src_h say): an atomic TEST_ONLY commit, which
+ * changes nothing. Returns 0 or the commit's negative errno. */
+int drm_atomic_test(struct drm *drm, uint32_t fb);
 
 /* DRM master: only one program may set modes. drm_master_holder names
  * the one that holds it ("kmscube (pid 42)") where the kernel's debugfs

@@ -117,10 +117,48 @@ static void add_plane(drmModeAtomicReq *req, const struct drm *drm, const struct
 		      uint32_t fb)
 {
 	uint32_t w = drm->mode.hdisplay, h = drm->mode.vdisplay;
-	uint64_t v[10] = {fb, drm->crtc_id, 0, 0, (uint64_t)w << 16, (uint64_t)h << 16, 0, 0, w, h};
+	/* The source rectangle: the buffer, smaller than the CRTC's where the
+	 * plane scales it up ([display] render_scale, kms_scale.c). */
+	uint32_t sw = drm->src_w ? drm->src_w : w, sh = drm->src_h ? drm->src_h : h;
+	uint64_t v[10] = {fb, drm->crtc_id, 0, 0, (uint64_t)sw << 16, (uint64_t)sh << 16, 0, 0, w,
+			  h};
 
 	for (int i = 0; i < 10; i++)
 		drmModeAtomicAddProperty(req, a->plane_id, a->prop[P_FB_ID + i], v[i]);
+}
+
+/* The mode, the connector on the CRTC and the CRTC on, for a modeset. */
+static int add_modeset(drmModeAtomicReq *req, struct drm *drm, struct atomic *a)
+{
+	if (a->mode_blob)
+		drmModeDestroyPropertyBlob(drm->fd, a->mode_blob);
+	a->mode_blob = 0;
+	if (drmModeCreatePropertyBlob(drm->fd, &drm->mode, sizeof(drm->mode), &a->mode_blob))
+		return -errno;
+	drmModeAtomicAddProperty(req, drm->connector_id, a->prop[P_CONN_CRTC_ID], drm->crtc_id);
+	drmModeAtomicAddProperty(req, drm->crtc_id, a->prop[P_CRTC_MODE_ID], a->mode_blob);
+	drmModeAtomicAddProperty(req, drm->crtc_id, a->prop[P_CRTC_ACTIVE], 1);
+	return 0;
+}
+
+int drm_atomic_test(struct drm *drm, uint32_t fb)
+{
+	struct atomic *a = drm->priv;
+	drmModeAtomicReq *req = drmModeAtomicAlloc();
+	int ret;
+
+	if (!req)
+		return -ENOMEM;
+	ret = add_modeset(req, drm, a);
+	if (!ret) {
+		add_plane(req, drm, a, fb);
+		if (drmModeAtomicCommit(drm->fd, req,
+					DRM_MODE_ATOMIC_TEST_ONLY | DRM_MODE_ATOMIC_ALLOW_MODESET,
+					NULL))
+			ret = -errno;
+	}
+	drmModeAtomicFree(req);
+	return ret;
 }
 
 static int atomic_flip(struct drm *drm, uint32_t fb, bool modeset)
@@ -133,18 +171,9 @@ static int atomic_flip(struct drm *drm, uint32_t fb, bool modeset)
 	if (!req)
 		return -ENOMEM;
 	if (modeset) {
-		if (a->mode_blob)
-			drmModeDestroyPropertyBlob(drm->fd, a->mode_blob);
-		a->mode_blob = 0;
-		if (drmModeCreatePropertyBlob(drm->fd, &drm->mode, sizeof(drm->mode),
-					      &a->mode_blob)) {
-			ret = -errno;
+		ret = add_modeset(req, drm, a);
+		if (ret)
 			goto out;
-		}
-		drmModeAtomicAddProperty(req, drm->connector_id, a->prop[P_CONN_CRTC_ID],
-					 drm->crtc_id);
-		drmModeAtomicAddProperty(req, drm->crtc_id, a->prop[P_CRTC_MODE_ID], a->mode_blob);
-		drmModeAtomicAddProperty(req, drm->crtc_id, a->prop[P_CRTC_ACTIVE], 1);
 		flags |= DRM_MODE_ATOMIC_ALLOW_MODESET;
 	}
 	add_plane(req, drm, a, fb);

@@ -45,6 +45,11 @@ int gl_load(struct gl *gl, gl_get_proc_fn get_proc, void *ctx)
 	memcpy(&gl->name, &p, sizeof(p));
 	GL_FUNCS(GL_LOAD)
 #undef GL_LOAD
+#define GL_LOAD_OPTIONAL(type, name)                                                               \
+	p = get_proc(ctx, "gl" #name);                                                             \
+	memcpy(&gl->name, &p, sizeof(p));
+	GL_OPTIONAL_FUNCS(GL_LOAD_OPTIONAL)
+#undef GL_LOAD_OPTIONAL
 	read_caps(gl, &gl->caps);
 	return 0;
 }

@@ -78,6 +78,21 @@
 	X(PFNGLVERTEXATTRIBPOINTERPROC, VertexAttribPointer)                                       \
 	X(PFNGLVIEWPORTPROC, Viewport)
 
+/* Multisampled framebuffers, where the context has them (OpenGL ES 3.0,
+ * desktop GL's ARB_framebuffer_object, EXT_multisampled_render_to_texture):
+ * loaded without being required, NULL where the driver has none. A
+ * driver may hand out an entry its context cannot use: check the version
+ * or the extension first. */
+typedef void (*gl_storage_multisample_fn)(GLenum, GLsizei, GLenum, GLsizei, GLsizei);
+typedef void (*gl_blit_fn)(GLint, GLint, GLint, GLint, GLint, GLint, GLint, GLint, GLbitfield,
+			   GLenum);
+typedef void (*gl_texture_multisample_fn)(GLenum, GLenum, GLenum, GLuint, GLint, GLsizei);
+#define GL_OPTIONAL_FUNCS(X)                                                                       \
+	X(gl_blit_fn, BlitFramebuffer)                                                             \
+	X(gl_storage_multisample_fn, RenderbufferStorageMultisample)                               \
+	X(gl_storage_multisample_fn, RenderbufferStorageMultisampleEXT)                            \
+	X(gl_texture_multisample_fn, FramebufferTexture2DMultisampleEXT)
+
 /* What the context can do, read once when it is made: the renderer and
  * the camera pass look here, never at extension strings, renderer names
  * or which display backend made the context. */
@@ -98,6 +113,7 @@ struct gl_caps {
 struct gl {
 #define GL_MEMBER(type, name) type name;
 	GL_FUNCS(GL_MEMBER)
+	GL_OPTIONAL_FUNCS(GL_MEMBER)
 #undef GL_MEMBER
 	struct gl_caps caps;
 };

@@ -4,7 +4,7 @@
 # against error with the front marked. Printed, never asserted.
 #   sh tests/bench/bench_quality.sh OUTDIR [--frames N] [--size WxH] [--backend B]
 # `make report` writes tests/bench/report (checked in); `make bench`, a scratch
-# copy. Environment: TOOLS.
+# copy. Environment: TOOLS; KIOSK adds the render_scale rows.
 set -eu
 out=$1
 shift
@@ -13,6 +13,18 @@ scratch=$(mktemp -d /tmp/matcap-bench-XXXXXX)
 trap 'rm -rf "$scratch"' EXIT
 mkdir -p "$out"
 "$TOOLS/bench_quality" "$out" "$scratch" "$@"
+# [display] render_scale's rows (bench_scale.sh), where the kiosk is built.
+if [ -n "${KIOSK:-}" ]; then
+	echo >>"$out/speed-error.md"
+	sh tests/bench/bench_scale.sh 1920x1080 3840x2160 >>"$out/speed-error.md"
+fi
+# [display] render_scale's rows (bench_scale.sh), where the kiosk is built.
+if [ -n "${KIOSK:-}" ]; then
+	for size in 1920x1080 3840x2160; do
+		echo
+		sh tests/bench/bench_scale.sh "$size"
+	done >>"$out/speed-error.md"
+fi
 gnuplot -e "dir='$out'" tests/bench/report/speed-error.gp
 cat "$out/speed-error.md"
 echo "plot: $out/speed-error.png"

@@ -4,7 +4,8 @@
 # atomic and legacy, what the display scans out against the OSMesa
 # reference (a readback of the CRTC's framebuffer: vkms 6.1 cannot drive
 # Virtual-1 and Writeback-1 from one CRTC, see tests/vm/README.md), at
-# least 30 page flips, antialias = 4, rotation, a chosen mode, the screen given back as
+# least 30 page flips, antialias = 4, render_scale 0.5 (the GL pass: vkms
+# refuses the scaling plane), rotation, a chosen mode, the screen given back as
 # it was after SIGTERM and SIGINT, and the errors for a connector or mode
 # that does not exist.  Ends with "vm: N passed, N failed".
 set -u
@@ -58,6 +59,26 @@ else
 fi
 kiosk_stop TERM
 vm_check "antialias 4: exit 0 (got $KRC)" test "$KRC" = 0
+
+# ---- render_scale 0.5: vkms scales no plane, so the atomic test commit
+# with the plane's source smaller than its CRTC rectangle is refused,
+# said once, and the GL pass draws 512x384 and scales it up: the CRTC
+# scans out a full 1024x768 frame, as OSMesa draws it through the pass.
+kiosk_start half.log --render-scale 0.5
+grab_when_shown half.log half.png "$HOLD_FB"
+show half.log
+vm_check "render_scale 0.5: vkms refuses the scaling plane in a test commit, said once" \
+	test "$(grep -c 'primary plane cannot scale 512x384 up to 1024x768 (the test commit says' half.log)" = 1
+vm_check "render_scale 0.5: the GL pass draws 512x384 and scales it up" \
+	has half.log "render_scale 0.50: the scene drawn at 512x384, scaled up to 1024x768 by a GL pass"
+vm_check "render_scale 0.5: the CRTC scans out a 1024x768 frame" \
+	sh -c "[ \"\$(vm-grab | sed -n 's/.* mode \([^ ]*\) differ.*/\1/p')\" = 1024x768 ]"
+vm_check "render_scale 0.5: matches the OSMesa reference at 0.5" \
+	matches "$REF/knot-1024x768-half.png" half.png
+vm_check "render_scale 0.5: and not the full-size one" \
+	sh -c "! imgdiff --tol 8 --share 0.002 $REF/knot-1024x768.png half.png >/dev/null"
+kiosk_stop TERM
+vm_check "render_scale 0.5: exit 0 (got $KRC)" test "$KRC" = 0
 
 # ---- attract mode: a frame per vblank at most, counted at exit; SIGINT
 # A background job of a script ignores SIGINT, so the kiosk runs in the

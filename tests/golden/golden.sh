@@ -21,6 +21,7 @@ scenes="$scenes background-color background-gradient background-image fit-long f
 scenes="$scenes parts-textures parts-mask parts-blend parts-leaf parts-normals parts-iridescence"
 scenes="$scenes caption-latin caption-rtl caption-logo"
 scenes="$scenes frame-up frame-start-view"
+scenes="$scenes render-scale-half"
 mkdir -p "$out" "$models"
 "$TOOLS/mkmodels" "$models" >/dev/null
 
@@ -138,6 +139,11 @@ render() {
 	caption-logo)
 		$k -c matcaps/gold.png --caption-size 16 --caption-position bottom --caption-box none \
 			--logo "$m/logo.png" --caption 'Matcap & Co.' --output "$o"
+		;;
+	# [display] render_scale 0.5: the knot drawn at 160x120 and scaled
+	# up by the GL pass (render/render_scale.c), filtered linearly.
+	render-scale-half)
+		$k -c matcaps/gold.png --render-scale 0.5 --output "$o"
 		;;
 	*)
 		echo "golden.sh: no scene named $1 (scenes: $scenes)" >&2
