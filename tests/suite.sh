@@ -205,6 +205,20 @@ test_loaders() {
 		! $s --model-scene nope --output $out/render/scene-bad.png 2>$out/bad/scene.log &&
 		[ \$(grep -c error $out/bad/scene.log) = 1 ] &&
 		grep -q 'no scene \"nope\" (\[scene\] model_scene).*\"one\", \"pair\"' $out/bad/scene.log"
+	# [scene] animation with --time: its clip by index or "auto"; one the
+	# file lacks is one error naming the setting; "off" is the rest pose.
+	a="$KIOSK -q --backend $offscreen --size 64x64 --model tests/corpus/khronos/SimpleMorph.gltf"
+	check "animation picks the clip --time poses; off is the rest pose" sh -c "
+		$a --output $out/render/anim-rest.png && $a --time 1 --output $out/render/anim-auto.png &&
+		$a --time 1 --animation 0 --output $out/render/anim-0.png &&
+		$a --time 1 --animation off --output $out/render/anim-off.png &&
+		cmp -s $out/render/anim-auto.png $out/render/anim-0.png &&
+		cmp -s $out/render/anim-rest.png $out/render/anim-off.png &&
+		! cmp -s $out/render/anim-rest.png $out/render/anim-auto.png"
+	check "an animation the file lacks is one error naming it" sh -c "
+		! $a --time 1 --animation nope --output $out/render/anim-bad.png 2>$out/bad/anim.log &&
+		[ \$(grep -c error $out/bad/anim.log) = 1 ] &&
+		grep -q 'no animation \"nope\" (\[scene\] animation)' $out/bad/anim.log"
 }
 
 # bad_input NAME OPTION FILE: through the ASan binary, exit status 1, one

@@ -16,7 +16,9 @@ UNIT_TESTS  += drm gesture touch_decode schedule power cec backlight
 UNIT_TESTS  += touch_device app_touch
 UNIT_TESTS  += model_list gltf_words settings_files
 UNIT_TESTS  += status poster file metrics background framing
-UNIT_TESTS  += kiosk_reload app_frame model_settings render_scale caption
+UNIT_TESTS  += kiosk_reload app_frame model_settings render_scale
+UNIT_TESTS  += anim anim_palette
+UNIT_TESTS  += caption
 TOOLS_DIR   := $(BUILD)/tools
 ASAN_BUILD  := $(BUILD)/asan
 # MK_TEST_HOOKS: the test hooks (MK_TEST_PREPARE_DELAY_MS, src/app/reload.c)
@@ -200,6 +202,7 @@ bench: $(KIOSK) test-tools
 	KIOSK=./$(KIOSK) sh tests/bench/bench_input.sh
 	KIOSK=./$(KIOSK) sh tests/bench/bench_kms.sh
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_models.sh
+	KIOSK=./$(KIOSK) sh tests/bench/bench_anim.sh
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_quality.sh tests/out/report --frames 7
 
 # Speed against error, regenerated into tests/bench/report (checked in, with

@@ -18,6 +18,10 @@
 struct content_config {
 	char *model;	    /* a file, folder or list (model_list.h); NULL: the built-in knot */
 	char *model_scene;  /* the glTF scene by index or name; NULL: the file's */
+	char *animation;    /* the glTF clip(s) --time poses; NULL: auto (the first) */
+	int anim_loop;	    /* enum anim_loop */
+	double anim_speed;  /* the clip's speed */
+	double anim_time;   /* --time: seconds into the clip; < 0: the rest pose */
 	char *matcap;	    /* a file or a folder; NULL: the shipped folder */
 	char *matcap_first; /* the folder's matcap shown first; NULL: see load_matcap */
 	char *background;   /* render/background.h's text; NULL: the default */

@@ -41,6 +41,7 @@ static const char *const switch_names[] = {"auto", "off", "on", NULL}; /* enum m
 static const char *const lit_names[] = {"off", "on", "beside", NULL};  /* enum material_lit */
 static const char *const camera_names[] = {"off", "on", NULL};	       /* enum camera_feed_use */
 static const char *const import_names[] = {"auto", "off", NULL};       /* enum camera_feed_import */
+static const char *const loop_names[] = {"repeat", "once", "pingpong", NULL}; /* enum anim_loop */
 static const char *const antialias_names[] = {"auto", "off", "2", "4", "8", NULL};
 static const char *const base_color_names[] = {"auto", "off", NULL}; /* enum material_switch */
 static const char *const position_names[] = {
@@ -235,6 +236,16 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "auto: the matcap times the model's base colour (glTF colour, texture, COLOR_0); off: not"},
     {"model-scene", 0, OPTIONS_SCENE, "model_scene", K_STRING, AT(content.model_scene), 0, 0, 0,
      NULL, "SCENE", "which of the model's glTF scenes: an index or a name (default: its own)"},
+    {"animation", 0, OPTIONS_SCENE, "animation", K_STRING, AT(content.animation), 0, 0, 0, NULL,
+     "WHICH",
+     "the glTF animation posed for --time: auto (the first), off, all, an index or a name"},
+    {"loop", 0, OPTIONS_SCENE, "loop", K_CHOICE, AT(content.anim_loop), 0, 0, 0, loop_names, "HOW",
+     "how the animation goes on past its end: repeat, once (holds the last frame), pingpong"},
+    {"speed", 0, OPTIONS_SCENE, "speed", K_DOUBLE, AT(content.anim_speed), 0.01, 100, 0, NULL, "X",
+     "the animation's speed (1: as the file has it)"},
+    {"time", 0, OPTION_CLI, NULL, K_DOUBLE, AT(content.anim_time), 0, 1e9, 0, NULL, "SECONDS",
+     "draw the model as its animation poses it this many seconds after it starts (with "
+     "--output)"},
     {"config", 'C', OPTION_CLI, NULL, K_STRING, AT(config), 0, 0, 0, NULL, "FILE",
      "read settings from an INI file first (see config/kiosk.ini)"},
     {"output", 'o', OPTION_CLI, NULL, K_STRING, AT(output), 0, 0, 0, NULL, "FILE",
@@ -374,6 +385,8 @@ void option_defaults(struct options *o)
 	o->content.caption.size = CAPTION_SIZE_DEFAULT;
 	o->content.caption.padding = 12;
 	o->content.caption.drift = true;
+	o->content.anim_speed = 1.0;
+	o->content.anim_time = -1.0; /* no --time: the rest pose */
 	material_config_defaults(&o->content.material);
 	frame_config_defaults(&o->content.frame);
 	o->log_level = LOG_INFO;

@@ -30,7 +30,13 @@ static int load_model(const char *path, const struct content_config *o, struct m
 	if (path) {
 		struct gltf_options g = {.textures = material_gltf_textures(&o->material),
 					 .scene = o->model_scene,
-					 .scene_setting = "[scene] model_scene"};
+					 .scene_setting = "[scene] model_scene",
+					 .pose = o->anim_time >= 0,
+					 .animation = o->animation,
+					 .animation_setting = "[scene] animation",
+					 .time = o->anim_time,
+					 .speed = o->anim_speed,
+					 .loop = o->anim_loop};
 
 		return gltf_load_options(path, &g, mesh);
 	}
@@ -55,6 +61,14 @@ static int content_cache_lookup(struct content *s, const struct content_config *
 	if (!ret && c->model_scene)
 		s->cache_key.settings =
 		    mesh_cache_hash(c->model_scene, strlen(c->model_scene), s->cache_key.settings);
+	/* A pose (--time) is another mesh. */
+	if (!ret && c->anim_time >= 0) {
+		double t[3] = {c->anim_time, c->anim_speed, c->anim_loop};
+		const char *a = c->animation ? c->animation : "auto";
+
+		s->cache_key.settings = mesh_cache_hash(t, sizeof(t), s->cache_key.settings);
+		s->cache_key.settings = mesh_cache_hash(a, strlen(a), s->cache_key.settings);
+	}
 	/* The fit's zoom (or --zoom) sets the level of detail's pixels. */
 	if (!ret)
 		s->cache_key.settings =

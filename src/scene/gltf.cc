@@ -2,6 +2,7 @@
 // JSON and the GLB container), then handed to the mesh builder
 // (gltf_mesh.cc), which trusts nothing tinygltf hands back.
 #include "scene/gltf.h"
+#include "scene/gltf_fit.h"
 #include "scene/gltf_ext.h"
 #include "scene/gltf_fs.h"
 #include "scene/gltf_material.h"
@@ -50,6 +51,8 @@ int load_memory(const char *name, const uint8_t *data, size_t size, const char *
 	images.keep = o->textures != 0;
 	images.files = &ctx;
 	std::memset(out, 0, sizeof(*out));
+	if (o->anim)
+		*o->anim = nullptr;
 
 	if (size > GLTF_MAX_FILE || size > 0xffffffffu) {
 		log_err("%s: file is %zu bytes, expected at most %u",
@@ -89,7 +92,9 @@ int load_memory(const char *name, const uint8_t *data, size_t size, const char *
 		log_err("%s: %s", gltf_ext::escape(name).c_str(), gltf_ext::escape(err).c_str());
 		return -EINVAL;
 	}
-	return gltf_build_mesh(name, model, o, images, out);
+	GltfFit fit;
+	gltf_clip_fit(name, model, o, images, &fit);
+	return gltf_build_mesh(name, model, o, images, out, &fit);
 }
 
 } // namespace
@@ -114,7 +119,8 @@ extern "C" int gltf_load_memory_options(const char *name, const uint8_t *data, s
 extern "C" int gltf_load_memory_textures(const char *name, const uint8_t *data, size_t size,
 					 const char *dir, unsigned textures, struct mesh *out)
 {
-	struct gltf_options o = {textures, nullptr, nullptr};
+	struct gltf_options o = {};
+	o.textures = textures;
 	return gltf_load_memory_options(name, data, size, dir, &o, out);
 }
 
@@ -147,7 +153,8 @@ extern "C" int gltf_load_options(const char *path, const struct gltf_options *o,
 
 extern "C" int gltf_load_textures(const char *path, unsigned textures, struct mesh *out)
 {
-	struct gltf_options o = {textures, nullptr, nullptr};
+	struct gltf_options o = {};
+	o.textures = textures;
 	return gltf_load_options(path, &o, out);
 }
 

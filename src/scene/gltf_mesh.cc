@@ -5,6 +5,7 @@
 #include "scene/gltf_ext.h"
 #include "scene/gltf_material.h"
 #include "scene/gltf_mesh.h"
+#include "scene/gltf_anim.h"
 #include "util/log.h"
 
 #include <tiny_gltf.h>
@@ -529,7 +530,7 @@ bool has_extent(const std::vector<double> &p)
 	return false;
 }
 
-int finish_mesh(Builder &b, const tinygltf::Model &m, struct mesh *out)
+int finish_mesh(Builder &b, const tinygltf::Model &m, struct mesh *out, GltfFit *fit)
 {
 	uint32_t nv = (uint32_t)(b.positions.size() / 3);
 	if (b.indices.empty()) {
@@ -544,7 +545,13 @@ int finish_mesh(Builder &b, const tinygltf::Model &m, struct mesh *out)
 	}
 	if (mesh_alloc(out, nv, (uint32_t)b.indices.size(), b.any_uvs))
 		return -ENOMEM;
-	mesh_fit_positions(b.positions.data(), nv, out->positions);
+	if (fit && fit->measure)
+		mesh_box(b.positions.data(), nv, fit->has_center ? fit->center : nullptr,
+			 fit->measured, &fit->radius2);
+	if (fit && fit->use_fit)
+		mesh_fit_to(b.positions.data(), nv, fit->center, fit->scale, out->positions);
+	else
+		mesh_fit_positions(b.positions.data(), nv, out->positions);
 	std::memcpy(out->normals, b.normals.data(), b.normals.size() * sizeof(float));
 	std::memcpy(out->indices, b.indices.data(), b.indices.size() * sizeof(uint32_t));
 	std::vector<GltfPart> parts;
@@ -624,7 +631,7 @@ void read_materials(const Builder &b, const tinygltf::Model &m, unsigned texture
 } // namespace
 
 int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_options *o,
-		    const GltfImages &images, struct mesh *out)
+		    const GltfImages &images, struct mesh *out, GltfFit *fit)
 {
 	Builder b;
 	Pose pose;
@@ -632,7 +639,7 @@ int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_opti
 	b.name = name;
 	b.want_colors = (o->textures & GLTF_TEXTURE_BASE_COLOR) != 0;
 	b.textures = o->textures;
-	if (prepare(m, name, &pose, &b.error) &&
+	if (gltf_anim_load(name, m, o, &b.error) && prepare(m, name, &pose, &b.error) &&
 	    gltf_ext::choose_scene(m, o->scene, o->scene_setting, &scene, &b.error)) {
 		std::vector<int> roots;
 		if (scene >= 0)
@@ -643,11 +650,11 @@ int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_opti
 					roots.push_back((int)i);
 		add_scene(b, m, roots, "scenes[" + std::to_string(scene) + "]", pose);
 	}
-	ret = b.error.empty() ? finish_mesh(b, m, out) : -EINVAL;
+	ret = b.error.empty() ? finish_mesh(b, m, out, fit) : -EINVAL;
 	std::string shown = gltf_ext::escape(name);
 	if (ret == -EINVAL && !b.error.empty())
 		log_err("%s: %s", shown.c_str(), gltf_ext::escape(b.error).c_str());
-	else if (ret == 0)
+	else if (ret == 0 && !(fit && fit->measure))
 		log_info("%s: %u vertices, %u triangles", shown.c_str(), out->vertex_count,
 			 out->index_count / 3);
 	if (ret == 0 && b.not_triangles)
@@ -657,5 +664,9 @@ int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_opti
 		read_materials(b, m, o->textures, images, out);
 	gltf_keep_colors(out,
 			 b.uniform_set && b.any_colors && b.colors.empty() ? b.uniform : nullptr);
+	if (ret && o->anim) {
+		mesh_anim_free(*o->anim);
+		*o->anim = nullptr;
+	}
 	return ret;
 }

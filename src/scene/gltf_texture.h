@@ -5,6 +5,8 @@
 #ifndef MK_GLTF_TEXTURE_H
 #define MK_GLTF_TEXTURE_H
 
+#include <stdbool.h>
+
 /* The material textures a caller may ask to have decoded. */
 enum gltf_texture {
 	GLTF_TEXTURE_NORMAL = 1u << 0,	  /* normalTexture */
@@ -16,6 +18,8 @@ enum gltf_texture {
 	GLTF_TEXTURE_BASE_COLOR = 1u << 3,
 };
 
+struct mesh_anim;
+
 /* What to load beyond the geometry. */
 struct gltf_options {
 	unsigned textures; /* enum gltf_texture bits */
@@ -26,6 +30,19 @@ struct gltf_options {
 	/* How a refusal of `scene` names where it came from, e.g. "[scene]
 	 * model_scene"; NULL: not named. */
 	const char *scene_setting;
+	/* Set: the file's animations into *anim (scene/anim.h; NULL when it
+	 * has none or they are malformed, which is a warning: the still
+	 * model loads). NULL: animations are not read. */
+	struct mesh_anim **anim;
+	/* pose: the model posed as the clips `animation` names ("auto" or
+	 * NULL: the first; "off": none; "all": every one; a name or an
+	 * index) show it `time` seconds after they start, played at `speed`
+	 * (0: 1) with `loop` (enum anim_loop); a name the file lacks is an
+	 * error naming `animation_setting`. false: the rest pose. */
+	bool pose;
+	const char *animation, *animation_setting;
+	double time, speed;
+	int loop;
 };
 
 #endif

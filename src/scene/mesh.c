@@ -160,6 +160,36 @@ void mesh_fit_positions(const double *world, uint32_t count, float *out)
 			out[i * 3 + k] = (float)((world[i * 3 + k] - c[k]) * scale);
 }
 
+void mesh_box(const double *world, uint32_t count, const double *center, double box[6], double *r2)
+{
+	*r2 = 0.0;
+	for (int k = 0; k < 3; k++) {
+		box[k] = INFINITY;
+		box[3 + k] = -INFINITY;
+	}
+	for (uint32_t i = 0; i < count; i++) {
+		double d2 = 0.0;
+
+		for (int k = 0; k < 3; k++) {
+			double v = world[i * 3 + k];
+
+			box[k] = fmin(box[k], v);
+			box[3 + k] = fmax(box[3 + k], v);
+			if (center)
+				d2 += (v - center[k]) * (v - center[k]);
+		}
+		*r2 = fmax(*r2, d2);
+	}
+}
+
+void mesh_fit_to(const double *world, uint32_t count, const double center[3], double scale,
+		 float *out)
+{
+	for (uint32_t i = 0; i < count; i++)
+		for (int k = 0; k < 3; k++)
+			out[i * 3 + k] = (float)((world[i * 3 + k] - center[k]) * scale);
+}
+
 struct weld_key {
 	const float *p;
 	uint32_t v;

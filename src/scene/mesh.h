@@ -133,6 +133,14 @@ int mesh_weld(const float *positions, uint32_t count, uint32_t *rep);
  * from the origin or at an extreme scale keeps its precision) and scale
  * them into the unit sphere. A degenerate extent leaves the scale at 1. */
 void mesh_fit_positions(const double *world, uint32_t count, float *out);
+/* The box (lo xyz, hi xyz) of count positions, and with a centre the
+ * squared distance of the farthest from it (*r2; 0 without). */
+void mesh_box(const double *world, uint32_t count, const double *center, double box[6], double *r2);
+/* positions = (world - center) * scale: the fit of mesh_fit_positions with
+ * its centre and scale given (an animated model fitted once for its
+ * whole clip). */
+void mesh_fit_to(const double *world, uint32_t count, const double center[3], double scale,
+		 float *out);
 
 /* Area-weighted smooth normals for the triangles idx[0..index_count) over
  * vertices [first, first + count): vertices at the same position share one

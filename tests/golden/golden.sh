@@ -22,6 +22,7 @@ scenes="$scenes parts-textures parts-mask parts-blend parts-leaf parts-normals p
 scenes="$scenes caption-latin caption-rtl caption-logo"
 scenes="$scenes frame-up frame-start-view"
 scenes="$scenes render-scale-half"
+scenes="$scenes morph-t1 morph-t3 morph-pingpong skin-t1 nodes-t1.7"
 mkdir -p "$out" "$models"
 "$TOOLS/mkmodels" "$models" >/dev/null
 
@@ -139,6 +140,28 @@ render() {
 	caption-logo)
 		$k -c matcaps/gold.png --caption-size 16 --caption-position bottom --caption-box none \
 			--logo "$m/logo.png" --caption 'Matcap & Co.' --output "$o"
+		;;
+	# Poses of Khronos's SimpleMorph (two targets, weights keyed each
+	# second over 4 s) at fixed times: --time on its one clip; pingpong
+	# at 5 s plays back to the pose at 3 s.
+	morph-t1 | morph-t3)
+		$k -c matcaps/gold.png --model tests/corpus/khronos/SimpleMorph.gltf \
+			--time "${1#morph-t}" --output "$o"
+		;;
+	morph-pingpong)
+		$k -c matcaps/gold.png --model tests/corpus/khronos/SimpleMorph.gltf \
+			--time 5 --loop pingpong --output "$o"
+		;;
+	# A skin (RiggedSimple: two joints bend a cylinder) and node
+	# animation of a rigid part (BoxAnimated: the inner box turns from
+	# 1.25 s), as three.js's AnimationMixer poses them (tests/README).
+	skin-t1)
+		$k -c matcaps/pearl.png --model tests/corpus/khronos/RiggedSimple.gltf \
+			--time 1 --output "$o"
+		;;
+	nodes-t1.7)
+		$k -c matcaps/pearl.png --model tests/corpus/khronos/BoxAnimated.gltf \
+			--time 1.7 --output "$o"
 		;;
 	# [display] render_scale 0.5: the knot drawn at 160x120 and scaled
 	# up by the GL pass (render/render_scale.c), filtered linearly.

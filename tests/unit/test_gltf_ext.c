@@ -128,7 +128,7 @@ static int load_text(struct fixture *f, const char *name, const char *scene, cha
 		     size_t err_size, struct mesh *out, const char *fmt, ...)
 {
 	char path[128], log[128];
-	struct gltf_options o = {0, scene, NULL};
+	struct gltf_options o = {.scene = scene};
 	va_list ap;
 	FILE *fp;
 	int saved, ret;
