@@ -273,7 +273,7 @@ static void start_models(struct kiosk *k, uint64_t now_ns)
 {
 	struct kiosk_models_parts parts = {k->app,     k->content,	    k->renderer,
 					   k->display, &k->applied.content, k->worker,
-					   &k->counts};
+					   &k->counts, kiosk_look_changed,  k};
 
 	kiosk_models_free(k->models);
 	k->models = kiosk_models_new(&parts, now_ns);

@@ -169,3 +169,26 @@ void kiosk_service_matcaps(struct kiosk *k, const struct pollfd *fds, uint64_t n
 	if (now >= k->rescan_at)
 		rescan_matcaps(k);
 }
+
+void kiosk_look_changed(void *ctx, unsigned what)
+{
+	struct kiosk *k = ctx;
+
+	if (what & CONTENT_OWN_MATCAP) {
+		struct app_msg m = {.kind = APP_MATCAPS};
+
+		/* The set's first image is on the GPU now: the cycle starts
+		 * there, and the watch follows the set. */
+		m.matcaps.count = k->content->set ? matcap_set_count(k->content->set) : 1;
+		m.matcaps.shown = 0;
+		app_apply(k->app, &m);
+		k->shown_matcap = 0;
+		k->matcap_set_id++;
+		kiosk_watch_matcaps(k);
+	}
+	if (what & CONTENT_OWN_BACKGROUND) {
+		struct view v = content_view(content_settings(k->content, &k->applied.content));
+
+		memcpy(k->view.background, v.background, sizeof(k->view.background));
+	}
+}

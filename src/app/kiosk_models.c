@@ -59,13 +59,30 @@ static void tell_frame(struct kiosk_models *m)
 	app_apply(m->p.app, &msg);
 }
 
+/* The file name of model's NAME.ini; "" when it has none. */
+static const char *ini_name(const char *model, char *buf, size_t n)
+{
+	const char *slash;
+
+	if (!model_settings_path(model, buf, n))
+		return "";
+	slash = strrchr(buf, '/');
+	return slash ? slash + 1 : buf;
+}
+
 static void watch_models(struct kiosk_models *m)
 {
 	const char *spec = m->p.config->model;
 
+	char ini[PATH_MAX];
+
 	/* A list names several places: each of them is read at a reload. */
 	if (!strchr(spec, ','))
 		m->watch = folder_watch_new(spec);
+	/* One file: its folder is watched for its name, and its NAME.ini's. */
+	if (m->watch && !model_spec_is_many(spec) && *ini_name(spec, ini, sizeof(ini)) &&
+	    folder_watch_also(m->watch, ini_name(spec, ini, sizeof(ini))))
+		log_warn("%s: its settings file is not watched (no memory)", spec);
 }
 
 struct kiosk_models *kiosk_models_new(const struct kiosk_models_parts *parts, uint64_t now_ns)
@@ -133,6 +150,7 @@ static int show(struct kiosk_models *m, struct content *fresh, int index)
 {
 	struct content old;
 	int ret = content_upload_model(fresh, m->p.renderer);
+	unsigned own;
 
 	if (ret) {
 		m->p.counts->model_load_failures++;
@@ -145,6 +163,13 @@ static int show(struct kiosk_models *m, struct content *fresh, int index)
 		return ret;
 	}
 	content_take_model(m->p.content, fresh, &old);
+	own = m->p.content->own_look;
+	m->p.content->own_look = 0;
+	if (own && content_upload_look(m->p.content, m->p.renderer))
+		log_err("%s: its matcap or background does not fit on the GPU",
+			m->p.content->model_path);
+	if (own && m->p.look_changed)
+		m->p.look_changed(m->p.ctx, own);
 	tell_frame(m);
 	/* Its cache write and sync are waited for on the worker. */
 	worker_retire(m->p.worker, &old);
@@ -189,8 +214,8 @@ static void start(struct kiosk_models *m, int from, int step)
 
 	m->requested = from;
 	m->asked_ns = monotonic_ns();
-	if (model_loader_start(m->loader, m->list, m->p.config, from, step, m->shown, d->width,
-			       d->height)) {
+	if (model_loader_start(m->loader, m->list, m->p.config, &m->p.content->look, from, step,
+			       m->shown, d->width, d->height)) {
 		tell_app(m, m->shown);
 		m->asked = app_state(m->p.app)->model;
 	}
@@ -225,11 +250,18 @@ static bool arrived_path(void *ctx, const char *path)
 static void note_arrived(void *ctx, const char *folder, const char *name)
 {
 	struct kiosk_models *m = ctx;
-	char path[PATH_MAX];
-	bool one_file = !model_spec_is_many(m->p.config->model);
+	const char *spec = m->p.config->model;
+	char path[PATH_MAX], ini[PATH_MAX];
+	bool one_file = !model_spec_is_many(spec);
 
+	/* One file: the watch reports its name or its NAME.ini's alone. */
+	if (one_file && !strcmp(name, ini_name(spec, ini, sizeof(ini)))) {
+		free(m->settings_changed);
+		m->settings_changed = strdup(spec);
+		return;
+	}
 	if (one_file)
-		snprintf(path, sizeof(path), "%s", m->p.config->model);
+		snprintf(path, sizeof(path), "%s", spec);
 	else
 		snprintf(path, sizeof(path), "%s/%s", folder, name);
 	if (!one_file && settings_of(m, path))

@@ -26,6 +26,10 @@ struct kiosk_models_parts {
 	const struct content_config *config; /* [scene] model and how to prepare one */
 	struct worker *worker;		     /* the content worker, shared with the loop */
 	struct status_counts *counts;	     /* model loads counted here */
+	/* A model swapped in with its own matcaps or background (or back
+	 * to kiosk.ini's): what (CONTENT_OWN_*) is on the GPU now. */
+	void (*look_changed)(void *ctx, unsigned what);
+	void *ctx;
 };
 
 struct kiosk_models;

@@ -118,6 +118,10 @@ void kiosk_content_start_jobs(struct kiosk *k);
  * may be new). */
 bool kiosk_content_service(struct kiosk *k, const struct pollfd *fds);
 void kiosk_watch_matcaps(struct kiosk *k);
+/* kiosk_models_parts.look_changed: a model's own matcaps or background
+ * (or kiosk.ini's again) are on the GPU: the cycle, the watch and the
+ * clear colour follow. */
+void kiosk_look_changed(void *ctx, unsigned what);
 void kiosk_service_matcaps(struct kiosk *k, const struct pollfd *fds, uint64_t now);
 /* src/app/kiosk.c: the settings of a reload whose content is on the GPU now. */
 void kiosk_apply_reload(struct kiosk *k, uint64_t now_ns);

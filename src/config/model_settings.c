@@ -10,16 +10,18 @@
 
 /* The keys a model's own file may hold; key NULL: the whole section. What
  * stays with the kiosk (the display, the devices, attract mode's timing)
- * or with the matcaps and the background (shared by every model, and
- * swapped apart from the model) is not here. A section of another
- * feature that is per model is one more line ({"caption", NULL}), and
- * the error messages list it too. */
+ * is not here. Its matcaps and background are decoded with the model on
+ * the worker where they differ from those on screen (content_look.c).
+ * A section of another feature that is per model is one more line
+ * ({"caption", NULL}), and the error messages list it too. */
 static const struct {
 	const char *section, *key;
 } model_keys[] = {
-    {"frame", NULL},	     {"material", NULL}, {"scene", "mode"},	  {"scene", "fit"},
-    {"scene", "yaw"},	     {"scene", "pitch"}, {"scene", "base_color"}, {"scene", "model_scene"},
-    {"scene", "lod_pixels"}, {"caption", NULL},
+    {"frame", NULL},	     {"material", NULL},	{"scene", "mode"},
+    {"scene", "fit"},	     {"scene", "yaw"},		{"scene", "pitch"},
+    {"scene", "base_color"}, {"scene", "model_scene"},	{"scene", "lod_pixels"},
+    {"scene", "matcap"},     {"scene", "matcap_first"}, {"display", "background"},
+    {"caption", NULL},
 };
 
 #define MODEL_KEYS (sizeof(model_keys) / sizeof(model_keys[0]))

@@ -1,7 +1,8 @@
 /* A model's own settings: NAME.ini beside NAME.glb (or NAME.gltf) holds
- * the keys that make sense per model ([frame], [material] and some of
- * [scene]), read over kiosk.ini's while that model is shown. One table
- * (model_settings.c) says which keys those are. */
+ * the keys that make sense per model ([frame], [material], some of
+ * [scene] with its matcaps, and [display] background), read over
+ * kiosk.ini's while that model is shown. One table (model_settings.c)
+ * says which keys those are. */
 #ifndef MK_MODEL_SETTINGS_H
 #define MK_MODEL_SETTINGS_H
 

@@ -203,7 +203,7 @@ static struct matcap_set *open_matcaps(const struct content_config *o, const cha
 	return set;
 }
 
-static int load_matcap(const struct content_config *o, bool strict, struct content *s)
+int content_load_matcap(const struct content_config *o, bool strict, struct content *s)
 {
 	const char *path = o->matcap ? o->matcap : content_default_matcaps();
 	int ret = -ENOENT;
@@ -386,10 +386,14 @@ int content_load(struct content *s, const struct content_config *o, bool strict)
 
 	memset(s, 0, sizeof(*s));
 	ret = load_the_model(s, o, strict);
+	/* The first model's own matcaps and background, where it names them. */
 	if (!ret)
-		ret = content_load_background(o, strict, &s->background, &s->background_image);
+		ret = content_load_background(content_settings(s, o), strict, &s->background,
+					      &s->background_image);
 	if (!ret)
-		ret = load_matcap(o, strict, s);
+		ret = content_load_matcap(content_settings(s, o), strict, s);
+	if (!ret)
+		ret = content_look_set(&s->look, content_settings(s, o));
 	if (!ret)
 		ret = material_load(&s->material, &content_settings(s, o)->material, &s->mesh,
 				    strict);
@@ -401,7 +405,7 @@ int content_load(struct content *s, const struct content_config *o, bool strict)
 }
 
 int content_load_model(struct content *s, const struct content_config *o, const char *path,
-		       int width, int height)
+		       const struct content_look *shown, int width, int height)
 {
 	int ret;
 
@@ -413,6 +417,8 @@ int content_load_model(struct content *s, const struct content_config *o, const 
 		    material_load(&s->material, &content_settings(s, o)->material, &s->mesh, true);
 	if (!ret)
 		ret = content_prepare(s, o, width, height);
+	if (!ret)
+		ret = content_load_look(s, content_settings(s, o), shown);
 	if (!ret)
 		ret = load_caption(s, content_settings(s, o), false);
 	if (ret)
@@ -446,15 +452,26 @@ void content_take_model(struct content *shown, struct content *fresh, struct con
 	old->model_path = kept.model_path;
 	old->caption = kept.caption;
 	old->own = kept.own;
+	/* The look's text: fresh's equals kept's where it has none of its own. */
+	old->look = kept.look;
 	*shown = *fresh;
-	shown->matcap = kept.matcap;
-	shown->set = kept.set;
-	shown->matcap_path = kept.matcap_path;
-	shown->matcap_first = kept.matcap_first;
-	shown->background = kept.background;
-	shown->background_image = kept.background_image;
-	/* fresh had no matcaps or background of its own: nothing of it is
-	 * left to free. */
+	if (fresh->own_look & CONTENT_OWN_MATCAP) {
+		old->matcap = kept.matcap;
+		old->set = kept.set;
+		old->matcap_path = kept.matcap_path;
+		old->matcap_first = kept.matcap_first;
+	} else {
+		shown->matcap = kept.matcap;
+		shown->set = kept.set;
+		shown->matcap_path = kept.matcap_path;
+		shown->matcap_first = kept.matcap_first;
+	}
+	if (fresh->own_look & CONTENT_OWN_BACKGROUND) {
+		old->background_image = kept.background_image;
+	} else {
+		shown->background = kept.background;
+		shown->background_image = kept.background_image;
+	}
 	memset(fresh, 0, sizeof(*fresh));
 }
 
@@ -466,6 +483,7 @@ void content_release(struct content *s)
 	matcap_set_free(s->set);
 	free(s->matcap_path);
 	free(s->matcap_first);
+	content_look_release(&s->look);
 	memset(s, 0, sizeof(*s));
 }
 

@@ -17,6 +17,17 @@
 
 #include <stdbool.h>
 
+/* The settings' text a content's matcaps and background came from
+ * ([scene] matcap, matcap_first, [display] background; NULL: the
+ * default): another model's that differs is decoded with it. */
+struct content_look {
+	char *matcap, *matcap_first, *background;
+};
+
+/* content.own_look: what of a model's content is its own, to be shown
+ * with it in place of the one on screen. */
+enum { CONTENT_OWN_MATCAP = 1u << 0, CONTENT_OWN_BACKGROUND = 1u << 1 };
+
 struct content {
 	char *model_path; /* the file the mesh came from; NULL: the built-in knot */
 	/* The mesh as loaded and prepared; once prepared for the cache
@@ -42,6 +53,8 @@ struct content {
 	/* The model's settings: the caller's with its NAME.ini over them
 	 * (config/model_settings.h); NULL: the caller's (the built-in knot). */
 	struct content_config *own;
+	struct content_look look; /* what matcaps and background came from */
+	unsigned own_look;	  /* CONTENT_OWN_*: set by content_load_model */
 };
 
 /* strict: every file the settings name must load (a one-shot render is
@@ -61,15 +74,34 @@ int content_prepare(struct content *s, const struct content_config *c, int width
  * (left empty), so a second upload of s is content_upload_model's. */
 int content_upload(struct content *s, struct renderer *r);
 /* Another model of a folder or list, for a worker thread: the model of
- * path alone (no matcaps), loaded strictly and prepared for a width x
- * height display, with no GL call. On failure s is left empty. */
+ * path, loaded strictly and prepared for a width x height display, with
+ * no GL call; with its matcaps and background only where they differ
+ * from shown's (its NAME.ini names its own, or the model on screen had
+ * its own and this one goes back to c's): s->own_look says which. On
+ * failure s is left empty. */
 int content_load_model(struct content *s, const struct content_config *c, const char *path,
-		       int width, int height);
+		       const struct content_look *shown, int width, int height);
 /* The model of fresh (from content_load_model) into shown, whose own
  * model goes to old (for content_release, where waiting for its cache
- * write costs nothing: the worker); shown keeps its matcaps. fresh is
- * left empty. */
+ * write costs nothing: the worker); shown keeps its matcaps and
+ * background unless fresh brought its own (own_look, left set: the
+ * caller uploads them with content_upload_look). fresh is left empty. */
 void content_take_model(struct content *shown, struct content *fresh, struct content *old);
+/* On the worker: s's matcaps and background from c where they differ
+ * from shown's (content_load_model); a file that fails is replaced by
+ * the default, and the journal says so. 0 or -ENOMEM. */
+int content_load_look(struct content *s, const struct content_config *c,
+		      const struct content_look *shown);
+/* The look's text of c, copied into l (released first). 0 or -ENOMEM. */
+int content_look_set(struct content_look *l, const struct content_config *c);
+int content_look_copy(struct content_look *to, const struct content_look *from);
+void content_look_release(struct content_look *l);
+/* Hand s's own matcap and background (own_look) to the renderer; their
+ * images are given back. */
+int content_upload_look(struct content *s, struct renderer *r);
+/* Open the matcaps c names (c's default folder when none); strict: a
+ * named one that fails fails, else the built-in clay replaces it. */
+int content_load_matcap(const struct content_config *c, bool strict, struct content *s);
 /* Hand the mesh alone (and its material) to the renderer. The glTF's
  * decoded maps (mesh.material's images, copied into material) are given
  * back once on the GPU; the material's own images and the mesh stay, so

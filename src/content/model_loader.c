@@ -15,6 +15,7 @@ struct model_loader {
 	/* The job: read by the worker alone while busy. */
 	struct model_list *list;
 	struct content_config config;
+	struct content_look shown_look; /* what the model on screen is shown with */
 	int from, step, shown, width, height;
 	/* Its result. */
 	struct content result;
@@ -25,7 +26,8 @@ static int try_load(void *ctx, const char *path)
 {
 	struct model_loader *l = ctx;
 
-	return content_load_model(&l->result, &l->config, path, l->width, l->height);
+	return content_load_model(&l->result, &l->config, path, &l->shown_look, l->width,
+				  l->height);
 }
 
 static void run(struct worker_job *j)
@@ -66,6 +68,7 @@ void model_loader_free(struct model_loader *l)
 	if (!l)
 		return;
 	content_config_release(&l->config);
+	content_look_release(&l->shown_look);
 	content_release(&l->result);
 	free(l);
 }
@@ -76,13 +79,15 @@ bool model_loader_busy(const struct model_loader *l)
 }
 
 int model_loader_start(struct model_loader *l, struct model_list *list,
-		       const struct content_config *c, int from, int step, int shown, int width,
-		       int height)
+		       const struct content_config *c, const struct content_look *look, int from,
+		       int step, int shown, int width, int height)
 {
 	int ret;
 
 	if (l->busy || worker_busy(l->worker))
 		return -EBUSY;
+	if (content_look_copy(&l->shown_look, look))
+		return -ENOMEM;
 	if (content_config_copy(&l->config, c))
 		return -ENOMEM;
 	content_release(&l->result);

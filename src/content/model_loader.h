@@ -26,11 +26,12 @@ bool model_loader_busy(const struct model_loader *l);
  * steps of step (model_list_pick), for a width x height display; step 0:
  * that one model alone (a file that changed). The list
  * is the job's until model_loader_finish; c (the content settings, how to
- * load and prepare a model) is copied. 0, or a negative errno (the worker
+ * load and prepare a model) and look (what the model on screen is shown
+ * with: content_load_model) are copied. 0, or a negative errno (the worker
  * busy, no memory, or no thread). */
 int model_loader_start(struct model_loader *l, struct model_list *list,
-		       const struct content_config *c, int from, int step, int shown, int width,
-		       int height);
+		       const struct content_config *c, const struct content_look *look, int from,
+		       int step, int shown, int width, int height);
 /* From ready(): the index picked (-1: none loaded; shown: every other one
  * failed) and, for another index, its model in out. Returns -EAGAIN while
  * the job runs. */

@@ -104,6 +104,27 @@ static void check_image(struct check *c, const char *section, const char *key, c
 		found(c, section, key, path, load_image(path));
 }
 
+/* A model's own matcaps and background (its NAME.ini) that the loader
+ * replaced by the defaults: they do not load. */
+static void check_own_look(struct check *c, const struct content *s)
+{
+	const struct content_config *own = s->own;
+	char ini[PATH_MAX];
+
+	if (!own || !s->own_look || !model_settings_path(s->model_path, ini, sizeof(ini)))
+		return;
+	if ((s->own_look & CONTENT_OWN_MATCAP) && own->matcap && !s->matcap_path) {
+		log_err("%s: [scene] matcap = '%s': does not load (above)", ini, own->matcap);
+		c->bad_files++;
+	}
+	if ((s->own_look & CONTENT_OWN_BACKGROUND) && own->background &&
+	    background_names_image(own->background) && s->background.kind != BACKGROUND_IMAGE) {
+		log_err("%s: [display] background = '%s': does not load (above)", ini,
+			own->background);
+		c->bad_files++;
+	}
+}
+
 /* A folder's or list's models each (the kiosk passes over one that fails,
  * with a line in the journal, but it was named to be shown). */
 static void check_models(struct check *c, const struct content_config *cfg)
@@ -111,6 +132,7 @@ static void check_models(struct check *c, const struct content_config *cfg)
 	const char *spec = cfg->model;
 	struct model_list *l;
 	struct content s;
+	struct content_look look = {0};
 
 	if (!spec || !*spec)
 		return; /* the built-in knot */
@@ -126,12 +148,20 @@ static void check_models(struct check *c, const struct content_config *cfg)
 		int ret;
 
 		log_clear_last_error();
-		ret = content_load_model(&s, cfg, path, c->o->display.width, c->o->display.height);
+		/* A model's own matcaps and background (its NAME.ini) are
+		 * opened too: those that differ from the kiosk's. */
+		ret = content_look_set(&look, cfg);
+		if (!ret)
+			ret = content_load_model(&s, cfg, path, &look, c->o->display.width,
+						 c->o->display.height);
+		if (!ret)
+			check_own_look(c, &s);
 		if (!ret)
 			content_release(&s);
 		found(c, "scene", "model", path, ret);
 	}
 	model_list_free(l);
+	content_look_release(&look);
 }
 
 static void check_matcaps(struct check *c)

@@ -28,6 +28,7 @@ struct folder_watch {
 	int fd;
 	char *folder;
 	char *name; /* the one file that counts, or NULL for all */
+	char *also; /* a second name that counts with it (folder_watch_also) */
 };
 
 void folder_watch_free(struct folder_watch *w)
@@ -38,6 +39,7 @@ void folder_watch_free(struct folder_watch *w)
 		close(w->fd);
 	free(w->folder);
 	free(w->name);
+	free(w->also);
 	free(w);
 }
 
@@ -94,7 +96,17 @@ static bool counts(const struct folder_watch *w, const struct inotify_event *ev)
 {
 	/* A lost queue or a gone folder: look at everything. */
 	return (ev->mask & (IN_Q_OVERFLOW | IN_DELETE_SELF | IN_MOVE_SELF)) || !w->name ||
-	       (ev->len && strcmp(ev->name, w->name) == 0);
+	       (ev->len &&
+		(strcmp(ev->name, w->name) == 0 || (w->also && strcmp(ev->name, w->also) == 0)));
+}
+
+int folder_watch_also(struct folder_watch *w, const char *name)
+{
+	if (!w->name)
+		return 0;
+	free(w->also);
+	w->also = strdup(name);
+	return w->also ? 0 : -ENOMEM;
 }
 
 bool folder_watch_read_names(struct folder_watch *w, folder_watch_arrived_fn arrived, void *ctx)

@@ -13,6 +13,10 @@ struct folder_watch;
 /* path is a folder (any name in it counts) or a file (its folder is
  * watched, and only that name counts). Returns NULL after logging. */
 struct folder_watch *folder_watch_new(const char *path);
+/* A watch of one file: name (in the same folder) counts too (a model's
+ * NAME.ini beside it). 0 (a folder's watch counts every name anyway), or
+ * -ENOMEM. */
+int folder_watch_also(struct folder_watch *w, const char *name);
 void folder_watch_free(struct folder_watch *w);
 int folder_watch_fd(const struct folder_watch *w);
 /* Read what is ready; true when something of interest changed. */

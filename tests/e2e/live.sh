@@ -194,4 +194,44 @@ step "slow reload: SIGTERM exits 0 (status $status)" [ $status -eq 0 ]
 step "slow reload: no sanitizer report" sh -c "! grep -qE 'Sanitizer|runtime error' '$dir/slow/stderr'"
 kill $listener 2>/dev/null
 wait $listener 2>/dev/null
+# A model's own matcap and background (its NAME.ini): swapped in with it
+# (attract mode steps the folder each second), and kiosk.ini's again with
+# the next model; then a single model file's NAME.ini, watched: written,
+# the model is loaded again with it.
+look=$dir/look
+mkdir -p "$look/m" "$look/one" "$look/run"
+cp "$model" "$look/m/a.glb"
+cp "$model" "$look/m/b.glb"
+cp "$model" "$look/one/s.glb"
+cp matcaps/gold.png matcaps/pearl.png "$look/"
+printf '[scene]\nmatcap = ../pearl.png\n[display]\nbackground = #304050\n' >"$look/m/a.ini"
+printf '[kiosk]\nattract_after = 1\nattract_model_seconds = 1\n[scene]\nmodel = %s\nmatcap = %s\n' \
+	"$look/m" "$look/gold.png" >"$look/m.ini"
+printf '[scene]\nmodel = %s\n' "$look/one/s.glb" >"$look/one.ini"
+look_kiosk() { # CONFIG LOG
+	ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 RUNTIME_DIRECTORY=$look/run \
+		"$kiosk" --backend "$offscreen" --size 64x64 --config "$1" --keyboard none --camera off \
+		-v 2>"$2" &
+	look_pid=$!
+}
+look_kiosk "$look/m.ini" "$look/stderr"
+step "own look: the next model goes back to kiosk.ini's matcap" \
+	wait_for "$look/stderr" "b.glb: shown with the matcaps $look/gold.png"
+step "own look: a model's own matcap is swapped in with it" \
+	wait_for "$look/stderr" "a.glb: shown with the matcaps $look/m/../pearl.png"
+step "own look: ... with its own background" \
+	wait_for "$look/stderr" "a.glb: shown on the background #304050"
+kill -TERM $look_pid
+wait $look_pid
+look_kiosk "$look/one.ini" "$look/one.log"
+wait_for "$look/one.log" "ready: the first frame"
+printf '[display]\nbackground = #203040\n' >"$look/one/s.ini"
+step "own look: a single model's NAME.ini written loads it again" \
+	wait_for "$look/one.log" "s.glb: its settings changed: loading it again"
+step "own look: ... with its background" \
+	wait_for "$look/one.log" "s.glb: shown on the background #203040"
+kill -TERM $look_pid
+wait $look_pid
+step "own look: no sanitizer report" \
+	sh -c "! grep -qE 'Sanitizer|runtime error' '$look/stderr' '$look/one.log'"
 echo "ok every step ran"

@@ -20,7 +20,7 @@ scenes="$scenes sphere-vertex-color sphere-base-map sphere-base-map-off"
 scenes="$scenes background-color background-gradient background-image fit-long fit-long-half"
 scenes="$scenes parts-textures parts-mask parts-blend parts-leaf parts-normals parts-iridescence"
 scenes="$scenes caption-latin caption-rtl caption-logo"
-scenes="$scenes frame-up frame-start-view"
+scenes="$scenes frame-up frame-start-view frame-own-look"
 scenes="$scenes render-scale-half"
 scenes="$scenes morph-t1 morph-t3 morph-pingpong skin-t1 nodes-t1.7"
 mkdir -p "$out" "$models"
@@ -109,6 +109,15 @@ render() {
 		cp "$m/long.glb" "$m/long-up.glb"
 		printf '[frame]\nup = +x\norientation = 0 0 30\n' >"$m/long-up.ini"
 		$k -c matcaps/gold.png --model "$m/long-up.glb" --output "$o"
+		;;
+	# [scene] matcap and [display] background from the model's own
+	# NAME.ini, over the command line's: the pearl matcap on a blue grey,
+	# not the gold one on the default grey.
+	frame-own-look)
+		cp "$m/long.glb" "$m/long-look.glb"
+		printf '[scene]\nmatcap = %s/matcaps/pearl.png\n[display]\nbackground = #304050\n' \
+			"$PWD" >"$m/long-look.ini"
+		$k -c matcaps/gold.png --model "$m/long-look.glb" --output "$o"
 		;;
 	frame-start-view)
 		$k -c matcaps/gold.png --model "$m/long.glb" --start-yaw 60 --start-pitch 45 \

@@ -57,6 +57,9 @@ static void paths(void **state)
 	assert_true(model_settings_allowed("material", "detail_map"));
 	assert_true(model_settings_allowed("scene", "fit"));
 	assert_false(model_settings_allowed("scene", "model"));
+	assert_true(model_settings_allowed("scene", "matcap"));
+	assert_true(model_settings_allowed("display", "background"));
+	assert_false(model_settings_allowed("display", "rotation"));
 	assert_false(model_settings_allowed("kiosk", "attract_after"));
 }
 
@@ -152,6 +155,73 @@ static void changed_file(void **state)
 	options_release(&o);
 }
 
+/* A model's own matcap and background (NAME.ini): decoded with the model
+ * where they differ from those on screen, swapped in with it; a model
+ * without them brings kiosk.ini's back; the same look decodes nothing. */
+static void own_look(void **state)
+{
+	struct options o;
+	struct content_config own;
+	struct content_look kiosk = {0};
+	struct content shown = {0}, fresh = {0}, old, back = {0}, same = {0};
+	char m[256], png[300], cmd[700];
+
+	(void)state;
+	base(&o);
+	snprintf(png, sizeof(png), "%s/shiny.png", dir);
+	snprintf(cmd, sizeof(cmd), "cp matcaps/black-shiny.png '%s'", png);
+	assert_int_equal(system(cmd), 0);
+	write_file("vase.ini", "[scene]\nmatcap = shiny.png\n[display]\nbackground = #102030\n");
+	model(m, sizeof(m), "vase.glb");
+	assert_int_equal(content_config_copy(&own, &o.content), 0);
+	assert_int_equal(model_settings_read(&own, m), OPTIONS_OK);
+	assert_string_equal(own.matcap, png); /* from the NAME.ini's folder */
+	assert_int_equal(content_look_set(&kiosk, &o.content), 0);
+
+	fresh.model_path = strdup(m);
+	assert_int_equal(content_load_look(&fresh, &own, &kiosk), 0);
+	assert_int_equal(fresh.own_look, CONTENT_OWN_MATCAP | CONTENT_OWN_BACKGROUND);
+	assert_int_equal(matcap_set_count(fresh.set), 1);
+	assert_string_equal(matcap_set_path(fresh.set, 0), png);
+	assert_true(fresh.matcap.width > 0);
+	assert_int_equal(fresh.background.kind, BACKGROUND_COLOR);
+
+	/* Swapped in: the model's look is shown's, the kiosk's goes to old. */
+	assert_int_equal(content_look_copy(&shown.look, &kiosk), 0);
+	shown.matcap_path = strdup("kiosk-matcaps");
+	content_take_model(&shown, &fresh, &old);
+	assert_string_equal(shown.matcap_path, png);
+	assert_string_equal(shown.look.matcap, png);
+	assert_string_equal(shown.look.background, "#102030");
+	assert_string_equal(old.matcap_path, "kiosk-matcaps");
+	assert_null(old.look.matcap);
+	assert_null(fresh.set);
+	content_release(&old);
+
+	/* Back to a model without its own: kiosk.ini's, decoded again. */
+	back.model_path = strdup("cup.glb");
+	assert_int_equal(content_load_look(&back, &o.content, &shown.look), 0);
+	assert_int_equal(back.own_look, CONTENT_OWN_MATCAP | CONTENT_OWN_BACKGROUND);
+	assert_null(back.look.matcap);
+	assert_null(back.look.background);
+	assert_true(back.matcap.width > 0); /* the shipped folder, or the clay */
+	assert_int_equal(back.background.kind, BACKGROUND_COLOR); /* the default grey */
+
+	/* Another model with the look on screen: nothing decoded. */
+	same.model_path = strdup("jug.glb");
+	assert_int_equal(content_load_look(&same, &own, &shown.look), 0);
+	assert_int_equal(same.own_look, 0);
+	assert_null(same.set);
+	assert_int_equal(same.matcap.width, 0);
+
+	content_release(&same);
+	content_release(&back);
+	content_release(&shown);
+	content_look_release(&kiosk);
+	content_config_release(&own);
+	options_release(&o);
+}
+
 static int setup(void **state)
 {
 	(void)state;
@@ -171,10 +241,8 @@ static int teardown(void **state)
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
-	    cmocka_unit_test(paths),
-	    cmocka_unit_test(good_file),
-	    cmocka_unit_test(bad_keys),
-	    cmocka_unit_test(changed_file),
+	    cmocka_unit_test(paths),	    cmocka_unit_test(good_file), cmocka_unit_test(bad_keys),
+	    cmocka_unit_test(changed_file), cmocka_unit_test(own_look),
 	};
 
 	return cmocka_run_group_tests(tests, setup, teardown);
