@@ -500,6 +500,16 @@ static void note_step(struct kiosk *k)
 
 	if (step > k->longest_step_ns)
 		k->longest_step_ns = step;
+	if (!k->reload_timed)
+		return;
+	if (step > k->reload_longest_ns)
+		k->reload_longest_ns = step;
+	/* The pass after the upload has drawn the new content: done. */
+	if (k->reload_applied) {
+		log_info("reload: the loop's longest step during it took %.1f ms",
+			 (double)k->reload_longest_ns / 1e6);
+		k->reload_timed = false;
+	}
 }
 
 /* One pass: draw when the state changed, sleep until something happens,

@@ -83,6 +83,8 @@ static void start_reload(struct kiosk *k)
 	log_clear_last_error();
 	log_info("reload: reading the settings, the model and the matcaps again");
 	k->reload_frames = k->frames_drawn;
+	k->reload_longest_ns = 0;
+	k->reload_timed = true;
 	if (reload_start(&k->reload, k->worker, k->argc, k->argv, k->display->width,
 			 k->display->height)) {
 		k->counts.reload_failures++;

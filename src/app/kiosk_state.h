@@ -101,6 +101,10 @@ struct kiosk {
 	 * what a page flip or an input may wait for (the bench reads it). */
 	uint64_t woke_ns;
 	uint64_t longest_step_ns;
+	/* The same, from a reload's start to the first step after its
+	 * upload; logged then (the figure of issue 22 on the board). */
+	uint64_t reload_longest_ns;
+	bool reload_timed;
 	int caption_at[2];	  /* where the caption is shown (it drifts) */
 	unsigned caption_plane;	  /* the caption picture on an overlay plane; 0: none */
 	unsigned caption_refused; /* the one no plane took (drawn with GL) */

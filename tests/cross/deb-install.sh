@@ -60,6 +60,10 @@ check "the service is installed, not enabled" sh -c \
 	"! ls $root/etc/systemd/system/*.wants/matcap-kiosk.service 2>/dev/null | grep -q ."
 check "the installed program is built for $arch" sh -c \
 	"[ \"\$(chroot $root dpkg-query -W -f='\${Architecture}' matcap-kiosk)\" = $arch ]"
+# The test hooks (-DMK_TEST_HOOKS: MK_TEST_PREPARE_DELAY_MS) are for the
+# sanitizer builds and tests/vm/systemd-test.sh's own build, never shipped.
+check "the packaged program has no test hook" sh -c \
+	"! grep -q MK_TEST_PREPARE_DELAY_MS $root/usr/bin/matcap-kiosk"
 check "matcap-kiosk --version" sh -c "chroot $root /usr/bin/matcap-kiosk --version |
 	grep -qx 'matcap-kiosk $(dpkg-deb -f "$deb" Version)'"
 check "the installed program renders offscreen with the installed matcaps" in_root \

@@ -26,7 +26,8 @@ step() { # NAME COMMAND...: one result line
 # wait_for FILE PATTERN [COUNT]: until PATTERN is on COUNT lines (10 s at most).
 wait_for() {
 	i=0
-	while [ "$(grep -c -- "$2" "$1" 2>/dev/null)" -lt "${3:-1}" ]; do
+	# grep -c prints nothing for a file not there yet: that counts 0.
+	while n=$(grep -c -- "$2" "$1" 2>/dev/null); [ "${n:-0}" -lt "${3:-1}" ]; do
 		i=$((i + 1))
 		[ $i -gt 200 ] && return 1
 		sleep 0.05
@@ -199,6 +200,7 @@ wait $listener 2>/dev/null
 # the next model; then a single model file's NAME.ini, watched: written,
 # the model is loaded again with it.
 look=$dir/look
+rm -rf "$look" # a NAME.ini left by an earlier run would not change when written
 mkdir -p "$look/m" "$look/one" "$look/run"
 cp "$model" "$look/m/a.glb"
 cp "$model" "$look/m/b.glb"

@@ -104,6 +104,27 @@ gcc -std=c11 -O2 -o "$work/usr/local/bin/vm-grab" "$HERE/tools/vm-grab.c" \
 
 # The guest test, and a unit that notes the console's mode before the kiosk.
 mkdir -p "$work/usr/local/lib/vm-systemd"
+# For its reload under WatchdogSec=3s: the kiosk built with the test hooks
+# (-DMK_TEST_HOOKS: MK_TEST_PREPARE_DELAY_MS holds a reload's preparation),
+# beside the test, not in BINDIR; the drop-in of that check alone runs it.
+# The shipped build (make, the .deb) has no -DMK_TEST_HOOKS; the guest and
+# tests/cross/deb-install.sh check that it has no hook.
+hooks=build/vm-systemd/hooks
+make -s -C "$REPO" BUILD=$hooks KIOSK=$hooks/matcap-kiosk OPT="-O2 -g -DMK_TEST_HOOKS" \
+	$hooks/matcap-kiosk >/dev/null || die "the kiosk with the test hooks does not build"
+cp "$REPO/$hooks/matcap-kiosk" "$work/usr/local/lib/vm-systemd/matcap-kiosk-hooks"
+# The model it reloads, where the service user may read it: the bench's
+# 100k-triangle knot, or SYSTEMD_VM_MODEL=knot-1m (the loop's longest step
+# during its reload is the figure of issue 22; minutes under TCG).
+make -s -C "$REPO" build/tools/mkmodels >/dev/null || die "mkmodels does not build"
+mkdir -p "$CACHE/models"
+[ -s "$CACHE/models/knot-1m.glb" ] || "$REPO/build/tools/mkmodels" "$CACHE/models" --bench \
+	>/dev/null || die "mkmodels failed"
+model=${SYSTEMD_VM_MODEL:-knot-100k}
+[ -s "$CACHE/models/$model.glb" ] || die "no model $model (mkmodels --bench writes knot-10k, -100k, -1m)"
+mkdir -p "$work/srv/matcap-kiosk"
+cp "$CACHE/models/$model.glb" "$work/srv/matcap-kiosk/"
+echo "/srv/matcap-kiosk/$model.glb" >"$work/usr/local/lib/vm-systemd/reload-model"
 cp "$HERE/systemd-guest.sh" "$work/usr/local/lib/vm-systemd/guest.sh"
 cat >"$work/etc/systemd/system/vm-systemd-before.service" <<'EOF'
 [Unit]

@@ -68,6 +68,76 @@ check "systemctl reload: the new config is read" until_ok 30 journal_has "reload
 check "... by the same process" [ "$(prop MainPID)" = "$pid" ]
 check "... still showing the scene" shows_scene
 
+# A reload that takes longer than WatchdogSec=3s (issue 22): the kiosk
+# built with the test hooks (systemd-build.sh) holds the preparation of a
+# bench knot 5 s on its worker, so the reload outlasts the watchdog
+# whatever the guest's speed. systemd must not kill it: the loop draws,
+# flips and pings meanwhile (attract mode turns the model, so every pass
+# draws), and the knot shows after. The shipped binary has no such hook.
+check "the installed kiosk has no test hook (built without -DMK_TEST_HOOKS)" sh -c \
+	"! grep -q MK_TEST_PREPARE_DELAY_MS /usr/local/bin/matcap-kiosk"
+cp /etc/matcap-kiosk/kiosk.ini /run/kiosk.ini.before-slow
+echo "vm-systemd: the drop-in ($(date +%T))" >/dev/console
+mkdir -p "/etc/systemd/system/$unit.d"
+printf '%s\n' "[Service]" "ExecStart=" \
+	"ExecStart=/usr/local/lib/vm-systemd/matcap-kiosk-hooks --config /etc/matcap-kiosk/kiosk.ini" \
+	"WatchdogSec=3s" "Environment=MK_TEST_PREPARE_DELAY_MS=5000" \
+	>"/etc/systemd/system/$unit.d/slow-reload.conf"
+# 640x480: llvmpipe under TCG draws a 1024x768 frame in up to 2.5 s, and
+# a flip pending for half of WatchdogSec= stops the pings by design.
+sed -i 's/^attract_after = .*/attract_after = 1/; s/^;mode = .*/mode = 640x480/' \
+	/etc/matcap-kiosk/kiosk.ini
+echo "vm-systemd: the hooked kiosk with WatchdogSec=3s starts ($(date +%T))" >/dev/console
+systemctl daemon-reload
+systemctl restart --no-block "$unit"
+check "slow reload: the hooked kiosk runs with WatchdogSec=3s" until_ok 120 sh -c \
+	"[ \$(systemctl show -p ActiveState --value $unit) = active ] &&
+	 [ \$(systemctl show -p WatchdogUSec --value $unit) = 3s ]"
+[ "$(prop ActiveState)" = active ] ||
+	systemctl status --no-pager -n 30 "$unit" | sed 's/^/vm-systemd:   /' >/dev/console
+pid=$(prop MainPID)
+restarts=$(prop NRestarts)
+timeouts=$(journalctl -b --no-pager -o cat | grep -c "$unit: Watchdog timeout")
+model=$(cat /usr/local/lib/vm-systemd/reload-model)
+sed -i "s|^;model = .*|model = $model|" /etc/matcap-kiosk/kiosk.ini
+sleep 2 # attract mode on: frames drawn without input
+since=$(date '+%F %T')
+t0=$(date +%s)
+echo "vm-systemd: reloading $model ($(date +%T))" >/dev/console
+systemctl reload --no-block "$unit"
+reload_log() { journalctl -b -u "$unit" --since "$since" --no-pager -o cat; }
+# Done, or failed (then the checks below say so at once).
+until_ok 900 sh -c "journalctl -b -u $unit --since '$since' --no-pager -o cat |
+	grep -qE 'reload: done|keeping the scene on screen' ||
+	[ \$(systemctl show -p MainPID --value $unit) != $pid ]"
+check "slow reload: done" sh -c "journalctl -b -u $unit --since '$since' --no-pager -o cat |
+	grep -q 'reload: done'"
+took=$(($(date +%s) - t0))
+frames=$(reload_log | sed -n 's/.*reload: done (\([0-9]*\) frames drawn meanwhile).*/\1/p')
+check "... it took longer than WatchdogSec=3s (${took} s)" [ "$took" -gt 3 ]
+check "... not killed: the same process, no restart, no watchdog timeout" sh -c \
+	"[ \$(systemctl show -p MainPID --value $unit) = $pid ] &&
+	 [ \$(systemctl show -p NRestarts --value $unit) = $restarts ] &&
+	 [ \$(journalctl -b --no-pager -o cat | grep -c '$unit: Watchdog timeout') = $timeouts ]"
+check "... frames drawn and flipped during it (${frames:-none})" [ "${frames:-0}" -ge 5 ]
+check "... the new model shows after" sh -c \
+	"RUNTIME_DIRECTORY=/run/matcap-kiosk /usr/local/bin/matcap-kiosk --status |
+	 grep -q '\"model\": \"$model\"'"
+check "... on vkms" shows_scene
+until_ok 30 sh -c "journalctl -b -u $unit --since '$since' --no-pager -o cat |
+	grep -q 'longest step during it'"
+longest=$(reload_log | sed -n 's/.*longest step during it took \([0-9.]*\) ms.*/\1/p')
+echo "vm-systemd: the loop's longest step during the reload of $model: ${longest:-?} ms"
+check "... the loop's longest step during it is logged (${longest:-none} ms)" [ -n "$longest" ]
+# What the kiosk and systemd said meanwhile (a kill would show here).
+journalctl -b --since "$since" --no-pager -o short-monotonic |
+	grep -E "matcap-kiosk|$unit" | grep -vE 'GPIO|plymouth' | head -40 | sed 's/^/vm-systemd:   /'
+rm -r "/etc/systemd/system/$unit.d"
+cp /run/kiosk.ini.before-slow /etc/matcap-kiosk/kiosk.ini
+systemctl daemon-reload
+systemctl restart --no-block "$unit"
+until_ok 60 sh -c "[ \$(systemctl show -p ActiveState --value $unit) = active ]"
+
 # A config error stops the kiosk with 78 and is not restarted.
 cp /etc/matcap-kiosk/kiosk.ini /run/kiosk.ini.good
 printf '[kiosk]\nno_such_key = 1\n' >>/etc/matcap-kiosk/kiosk.ini

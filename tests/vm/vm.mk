@@ -12,7 +12,9 @@
 #                    the camera), with their OSMesa references; one script
 #                    alone: make check T=kms (tests/check.sh)
 #   make vm-systemd  the installed unit in a Debian root booted with systemd
-#                    (tests/vm/systemd-test.sh); not part of `make test`
+#                    (tests/vm/systemd-test.sh), with a reload that outlasts
+#                    WatchdogSec=3s; not part of `make test` (about 3 min with
+#                    its Debian root cached, 2.5 min more to debootstrap it)
 #   make vm-clean    drop the cache (next build downloads and rebuilds)
 #
 # Knobs: VM_TESTS (guest scripts), VM_BINS (host binaries to carry in),
