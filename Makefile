@@ -33,7 +33,7 @@ BUILD   ?= build
 # call goes through the table in src/render/gl.c (the README, "How it is put
 # together"). Their headers are still found through pkg-config.
 PKGS_LINK    := egl gbm libdrm libudev libpng libturbojpeg tinygltf inih libsystemd libgpiod libevdev \
-		libcamera draco
+		libcamera draco freetype2 harfbuzz fribidi
 # Mesa 25.1 and later have no OSMesa: without its headers the osmesa
 # backend is left out (OSMESA=0 leaves it out by hand) and offscreen
 # rendering, the tests' included, goes through egl-headless.
@@ -76,27 +76,28 @@ SRC_STATE   := state/app state/view state/power state/schedule
 SRC_DISPLAY := display/backlight display/cec display/cec_link display/display display/display_egl display/display_kms display/kms_scale \
 	       display/display_osmesa \
 	       display/drm display/drm_atomic display/drm_legacy display/egl_util display/hotplug \
-	       display/kms_fb
+	       display/kms_fb display/kms_overlay
 SRC_INPUT   := input/action input/button input/gesture input/touch_decode input/gpio \
 	       input/gpio_$(GPIOD_API) input/keyboard input/touch
 SRC_CAMERA  := camera/camera_feed camera/camera_link camera/camera_math camera/camera_proto \
 	       camera/camera_texture
 SRC_RENDER  := render/background render/bake render/draw_list render/framing render/gl render/poster render/render_scale \
-	       render/render render/render_draw render/shader render/shading
+	       render/caption render/render render/render_draw render/shader render/shading
 SRC_SCENE   := scene/lod scene/material scene/mesh scene/mesh_cache scene/mesh_cache_fields scene/mesh_cache_key scene/mesh_gen scene/mesh_pack scene/subdivide scene/tangent \
-	       scene/texture
+	       scene/texture scene/caption scene/caption_text
 SRC_SCENE   += scene/anim scene/anim_sampler scene/anim_palette
 SRC_UTIL    := util/file util/folder_watch util/image util/log util/math3d
 LIB_C  := $(SRC_APP) $(SRC_OPS) $(SRC_CONTENT) $(SRC_CONFIG) $(SRC_STATE) $(SRC_DISPLAY) $(SRC_INPUT) $(SRC_CAMERA) $(SRC_RENDER) $(SRC_SCENE) $(SRC_UTIL)
 # The C++ shims, each behind a C header (gltf_ext.h is internal to the glTF one).
 LIB_CC := scene/gltf scene/gltf_mesh scene/gltf_fs scene/gltf_material scene/gltf_ext scene/gltf_files scene/gltf_pose \
 	  scene/gltf_draco camera/camera
-LIB_CC += scene/gltf_words scene/gltf_anim scene/gltf_fit
+LIB_CC += scene/gltf_words scene/gltf_anim scene/gltf_fit scene/gltf_name
 SHADERS := shaders/mapping.glsl shaders/matcap.vert shaders/matcap.frag shaders/material.glsl
 SHADERS += shaders/camera.vert shaders/camera.frag
 SHADERS += shaders/poster.vert shaders/poster.frag
 SHADERS += shaders/scale.vert shaders/scale.frag
 SHADERS += shaders/background.vert shaders/background.frag
+SHADERS += shaders/caption.vert shaders/caption.frag
 
 LIB_OBJS := $(LIB_C:%=$(BUILD)/%.o) $(LIB_CC:%=$(BUILD)/%.o) $(BUILD)/shaders_embedded.o
 
@@ -149,12 +150,14 @@ CLANG_VERSION ?= $(if $(filter bookworm,$(OS_CODENAME)),14,19)
 APT_GET       := $(if $(filter 0,$(shell id -u)),,sudo) env DEBIAN_FRONTEND=noninteractive apt-get
 # make deps: what building and running need, nothing more (a Pi gets no
 # test bench). procps brings /bin/kill, which the unit's ExecReload names
-# (a minimal Debian 13 has none); libcamera-ipa runs the camera matcap.
+# (a minimal Debian 13 has none); libcamera-ipa runs the camera matcap;
+# FreeType, HarfBuzz and FriBidi shape [caption]'s text, in DejaVu Sans
+# (fonts-dejavu-core) unless [caption] font names another.
 DEBIAN_PACKAGES := make gcc g++ pkg-config libegl-dev libgles-dev \
 	libegl-mesa0 libgl1-mesa-dri libgbm-dev libdrm-dev libtinygltf-dev nlohmann-json3-dev \
 	libpng-dev libturbojpeg0-dev libinih-dev libudev-dev libsystemd-dev \
 	libgpiod-dev libevdev-dev libcamera-dev libcamera-ipa libmeshoptimizer-dev libdraco-dev \
-	procps
+	libfreetype-dev libharfbuzz-dev libfribidi-dev fonts-dejavu-core procps
 # make deps-test: the test bench on top. The unit tests' cmocka and zlib;
 # systemd-analyze for the unit; clang for the fuzzers; valgrind for the
 # soak; gnuplot for make report; the virtual board (qemu, busybox, kernel

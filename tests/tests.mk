@@ -18,6 +18,7 @@ UNIT_TESTS  += model_list gltf_words settings_files
 UNIT_TESTS  += status poster file metrics background framing
 UNIT_TESTS  += kiosk_reload app_frame model_settings render_scale
 UNIT_TESTS  += anim anim_palette
+UNIT_TESTS  += caption
 TOOLS_DIR   := $(BUILD)/tools
 ASAN_BUILD  := $(BUILD)/asan
 # MK_TEST_HOOKS: the test hooks (MK_TEST_PREPARE_DELAY_MS, src/app/reload.c)
@@ -124,6 +125,13 @@ $(TOOLS_DIR)/bench_quality: tests/bench/bench_quality.c tests/bench/bench_qualit
 		$(LIB_OBJS) $(ORACLE_OBJS) $(TEST_LIBS)
 
 test-tools: $(TOOLS_DIR)/bench_quality
+
+# The caption's cost a frame, for `make bench`.
+$(TOOLS_DIR)/bench_caption: tests/bench/bench_caption.c $(LIB_OBJS)
+	@mkdir -p $(@D)
+	$(CC) $(TEST_CFLAGS) -o $@ $< $(LIB_OBJS) $(TEST_LIBS)
+
+test-tools: $(TOOLS_DIR)/bench_caption
 
 # The unit tests and a second kiosk binary, built with AddressSanitizer and
 # UndefinedBehaviorSanitizer in a build folder of their own: malformed

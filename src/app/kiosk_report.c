@@ -2,6 +2,7 @@
 #include "app/kiosk_state.h"
 #include "ops/screen.h"
 #include "render/shading.h"
+#include "scene/caption.h"
 #include "util/clock.h"
 #include "util/log.h"
 
@@ -38,6 +39,9 @@ void kiosk_report_status(struct kiosk *k)
 	report(k, &r, last_error, sizeof(last_error));
 	have = k->frames_drawn > 0 && status_server_wants_frame(k->status) &&
 	       k->display->read_frame(k->display, &frame) == 0;
+	/* On its plane the caption is not in the frame GL drew: put in. */
+	if (have && k->caption_plane)
+		caption_blend(&k->content->caption, k->caption_at[0], k->caption_at[1], &frame);
 	status_server_answer(k->status, &r, have ? &frame : NULL);
 	image_release(&frame);
 }

@@ -105,6 +105,9 @@ struct kiosk {
 	 * upload; logged then (the figure of issue 22 on the board). */
 	uint64_t reload_longest_ns;
 	bool reload_timed;
+	int caption_at[2];	  /* where the caption is shown (it drifts) */
+	unsigned caption_plane;	  /* the caption picture on an overlay plane; 0: none */
+	unsigned caption_refused; /* the one no plane took (drawn with GL) */
 };
 
 void kiosk_tell_app(struct kiosk *k, enum app_msg_kind kind);

@@ -109,6 +109,7 @@ static int render_frames(const struct options *o, const struct content *s, struc
 			renderer_draw(r, &v, w, h);
 			render_scale_end(scale);
 			/* Full-resolution overlays draw here, as in the live loop. */
+			renderer_draw_caption(r, &v, 0, d->width, d->height);
 			ret = d->present(d);
 		}
 		times[i] = now_ms() - t;

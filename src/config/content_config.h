@@ -5,6 +5,7 @@
 #define MK_CONTENT_CONFIG_H
 
 #include "render/shading.h"
+#include "scene/caption.h"
 #include "scene/material.h"
 #include "state/view.h"
 
@@ -32,7 +33,8 @@ struct content_config {
 	double lod_pixels; /* simplify to this error on the display; 0: off */
 	int rotation;	   /* the panel's, degrees */
 	struct material_config material;
-	struct frame_config frame; /* [frame]: orientation, start view, limits, stops */
+	struct frame_config frame;     /* [frame]: orientation, start view, limits, stops */
+	struct caption_config caption; /* [caption] */
 };
 
 #endif

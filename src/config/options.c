@@ -92,9 +92,16 @@ static void list_sections(char *buf, size_t n)
 /* value: [display] background names a file when it is a picture's name. */
 static bool names_files(const struct option_def *d, const char *value)
 {
-	static const char *const keys[] = {
-	    "model",	  "matcap",	      "poster",		  "include",
-	    "detail_map", "displacement_map", "iridescence_ramp", NULL};
+	static const char *const keys[] = {"model",
+					   "matcap",
+					   "poster",
+					   "include",
+					   "detail_map",
+					   "displacement_map",
+					   "iridescence_ramp",
+					   "font",
+					   "logo",
+					   NULL};
 
 	if (d->kind != K_STRING || d->section == OPTION_CLI)
 		return false;
@@ -328,6 +335,26 @@ static void check_background(struct file_state *st)
 		text, err, BACKGROUND_EXPECTED);
 }
 
+/* Counts an error for each [caption] colour this file set that does not
+ * parse (the font and the logo are the content's to load, as a model). */
+static void check_caption(struct file_state *st)
+{
+	const struct caption_config *c = &st->opts->content.caption;
+	const char *keys[2] = {"color", "box"}, *values[2] = {c->color, c->box};
+
+	for (int i = 0; i < 2; i++) {
+		int at = st->seen_line[find_key("caption", keys[i]) - option_defs];
+		unsigned char rgba[4];
+
+		if (!at || (i == 1 && !strcmp(values[i], "none")) ||
+		    caption_parse_color(values[i], rgba))
+			continue;
+		st->errors++;
+		log_err("%s:%d: [caption] %s = '%s' is not valid; expected %s%s", st->path, at,
+			keys[i], values[i], i ? "none or " : "", CAPTION_COLOR_EXPECTED);
+	}
+}
+
 static int frame_line(const struct file_state *st, const char *key)
 {
 	return st->seen_line[find_key("frame", key) - option_defs];
@@ -392,6 +419,7 @@ enum options_status options_read_stream(struct options *o, const char *path, con
 	check_schedule(&st);
 	check_background(&st);
 	check_frame(&st);
+	check_caption(&st);
 	if (ret > 0)
 		log_err("%s:%d: not an INI line; expected [section], key = value or a comment",
 			path, ret);

@@ -28,6 +28,7 @@ const struct options_section_rule options_sections[OPTIONS_SECTIONS] = {
     [OPTIONS_STATUS] = {"status", OPTIONS_LIVE, NULL,
 			"at once; a metrics file no longer named is removed"},
     [OPTIONS_FRAME] = {"frame", OPTIONS_LIVE, NULL, "at once"},
+    [OPTIONS_CAPTION] = {"caption", OPTIONS_LIVE, NULL, "at once"},
 };
 
 static const char *const backend_names[] = {"auto", "kms", "osmesa", "egl-headless", NULL};
@@ -43,6 +44,10 @@ static const char *const import_names[] = {"auto", "off", NULL};       /* enum c
 static const char *const loop_names[] = {"repeat", "once", "pingpong", NULL}; /* enum anim_loop */
 static const char *const antialias_names[] = {"auto", "off", "2", "4", "8", NULL};
 static const char *const base_color_names[] = {"auto", "off", NULL}; /* enum material_switch */
+static const char *const position_names[] = {
+    "bottom-left", "bottom-right", "top-left", "top-right",
+    "bottom",	   "top",	   NULL}; /* enum caption_position */
+static const char *const drift_names[] = {"off", "on", NULL};
 /* A number with a word for 0: its first choice (render_scale's auto). */
 static const char *const auto_names[] = {"auto", NULL};
 static const char *const up_names[] = {"+y", "-y", "+z", "-z", "+x", "-x", NULL}; /* frame_up */
@@ -65,7 +70,8 @@ _Static_assert(
 	sizeof(enum app_action) == sizeof(int) && sizeof(enum button_active) == sizeof(int) &&
 	sizeof(enum button_bias) == sizeof(int) && sizeof(enum camera_feed_use) == sizeof(int) &&
 	sizeof(enum camera_feed_import) == sizeof(int) &&
-	sizeof(enum display_antialias) == sizeof(int) && sizeof(enum frame_up) == sizeof(int),
+	sizeof(enum display_antialias) == sizeof(int) && sizeof(enum frame_up) == sizeof(int) &&
+	sizeof(enum caption_position) == sizeof(int),
     "enums are ints");
 
 const struct option_def option_defs[OPTION_DEFS] = {
@@ -325,6 +331,28 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "next-stop and prev-stop"},
     {"stop-seconds", 0, OPTIONS_FRAME, "stop_seconds", K_DOUBLE, AT(content.frame.stop_seconds), 0,
      3600, 0, NULL, "S", "attract mode plays the stops in turn, each this long; 0: it turns"},
+    {"caption", 0, OPTIONS_CAPTION, "text", K_STRING, AT(content.caption.text), 0, 0, 0, NULL,
+     "TEXT",
+     "a caption over the model, UTF-8 (any script; \\n breaks the line); auto: the model's "
+     "name (its glTF title or scene name, else its file's); default: none"},
+    {"caption-font", 0, OPTIONS_CAPTION, "font", K_STRING, AT(content.caption.font), 0, 0, 0, NULL,
+     "FILE", "a TrueType/OpenType font (default: DejaVu Sans, fonts-dejavu-core)"},
+    {"caption-size", 0, OPTIONS_CAPTION, "size", K_DOUBLE, AT(content.caption.size), 6, 400, 0,
+     NULL, "PX", "the text's size in pixels of the panel"},
+    {"caption-color", 0, OPTIONS_CAPTION, "color", K_STRING, AT(content.caption.color), 0, 0, 0,
+     NULL, "COLOR", "the text's colour, #rrggbb or #rrggbbaa (default: white)"},
+    {"caption-box", 0, OPTIONS_CAPTION, "box", K_STRING, AT(content.caption.box), 0, 0, 0, NULL,
+     "COLOR", "the box behind it, #rrggbbaa, aa its opacity (default: #00000099); none: no box"},
+    {"caption-padding", 0, OPTIONS_CAPTION, "padding", K_INT, AT(content.caption.padding), 0, 400,
+     1, NULL, "PX", "pixels inside the box, and between the box and the screen's edge"},
+    {"caption-position", 0, OPTIONS_CAPTION, "position", K_CHOICE, AT(content.caption.position), 0,
+     0, 0, position_names, "WHERE",
+     "bottom-left, bottom-right, top-left, top-right, bottom or top"},
+    {"caption-drift", 0, OPTIONS_CAPTION, "drift", K_CHOICE, AT(content.caption.drift), 0, 0, 0,
+     drift_names, "WHEN",
+     "on: the caption moves a few pixels over hours against burn-in; off: it stays"},
+    {"logo", 0, OPTIONS_CAPTION, "logo", K_STRING, AT(content.caption.logo), 0, 0, 0, NULL, "FILE",
+     "a PNG/JPEG shown at its own size in the caption's box, left of the text"},
 };
 
 const char *backend_name(enum backend_kind kind)
@@ -354,6 +382,9 @@ void option_defaults(struct options *o)
 	o->content.yaw = -30.0;
 	o->content.lod_pixels = 4.0;
 	o->content.fit = CONTENT_FIT_DEFAULT;
+	o->content.caption.size = CAPTION_SIZE_DEFAULT;
+	o->content.caption.padding = 12;
+	o->content.caption.drift = true;
 	o->content.anim_speed = 1.0;
 	o->content.anim_time = -1.0; /* no --time: the rest pose */
 	material_config_defaults(&o->content.material);

@@ -46,6 +46,10 @@ struct content {
 	struct background_spec background; /* its path is NULL once decoded */
 	struct image background_image;	   /* decoded once, when it is an image */
 	double zoom; /* the fit (render/framing.h) on the display prepared for; 0: none */
+	/* The caption's picture (scene/caption.h), this model's; empty: none.
+	 * Kept after the upload: the overlay plane is filled from it. */
+	struct image caption;
+	struct caption_config caption_place; /* its position, padding, drift; no strings */
 	/* The model's settings: the caller's with its NAME.ini over them
 	 * (config/model_settings.h); NULL: the caller's (the built-in knot). */
 	struct content_config *own;

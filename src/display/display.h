@@ -68,6 +68,14 @@ struct display {
 	 * is presented; the first frame after waking sets the mode again.
 	 * Returns 0 or a negative errno after logging. */
 	int (*set_power)(struct display *d, bool on);
+	/* The caption on a plane of its own over the frame (kms_overlay.h):
+	 * img (premultiplied RGBA, identified by serial) at x, y of the
+	 * upright panel. 0: on a plane from the next frame on, or moved there
+	 * at once for the same serial; -ENOTSUP: no plane takes it, draw it
+	 * with GL. img NULL: off. NULL where there are no planes; ctx:
+	 * overlay_ctx. */
+	int (*overlay)(void *ctx, const struct image *img, unsigned serial, int x, int y);
+	void *overlay_ctx;
 	void (*destroy)(struct display *d);
 };
 

@@ -7,6 +7,7 @@
 #include "display/egl_util.h"
 #include "display/hotplug.h"
 #include "display/kms_fb.h"
+#include "display/kms_overlay.h"
 #include "display/kms_scale.h"
 #include "util/log.h"
 
@@ -630,6 +631,8 @@ static void init_base(struct display_kms *k, const struct display_config *cfg)
 	k->base.get_fd = kms_get_fd;
 	k->base.dispatch = kms_dispatch;
 	k->base.set_power = kms_set_power;
+	k->base.overlay = kms_overlay_display;
+	k->base.overlay_ctx = &k->drm;
 	k->base.destroy = kms_destroy;
 	k->drm.fd = k->gpu_fd = k->epoll_fd = k->timer_fd = -1;
 	k->dpy = EGL_NO_DISPLAY;

@@ -45,7 +45,8 @@ struct drm {
 	double scale_want;
 	/* What the CRTC showed before our first modeset, restored on exit. */
 	drmModeCrtc *saved_crtc;
-	void *priv; /* the atomic backend's property ids */
+	void *priv;		     /* the atomic backend's property ids */
+	struct kms_overlay *overlay; /* the caption's plane (kms_overlay.h); NULL: none */
 };
 
 /* Open path, or find the first primary node with a connected connector

@@ -2,6 +2,7 @@
  * event. No in- or out-fences are used: vc4 on the Raspberry Pi has none,
  * and the flip event already tells the loop when the frame is on screen. */
 #include "display/drm.h"
+#include "display/kms_overlay.h"
 #include "util/log.h"
 
 #include <errno.h>
@@ -176,6 +177,7 @@ static int atomic_flip(struct drm *drm, uint32_t fb, bool modeset)
 		flags |= DRM_MODE_ATOMIC_ALLOW_MODESET;
 	}
 	add_plane(req, drm, a, fb);
+	kms_overlay_add(drm, req);
 	if (drmModeAtomicCommit(drm->fd, req, flags, drm)) {
 		ret = -errno;
 		if (modeset)
@@ -200,6 +202,9 @@ static void atomic_disable(struct drm *drm)
 	drmModeAtomicAddProperty(req, drm->crtc_id, a->prop[P_CRTC_ACTIVE], 0);
 	drmModeAtomicAddProperty(req, a->plane_id, a->prop[P_FB_ID], 0);
 	drmModeAtomicAddProperty(req, a->plane_id, a->prop[P_CRTC_ID], 0);
+	/* The caption's plane too; the next frame's test puts it back. */
+	kms_overlay_set(drm, NULL, 0, 0, 0);
+	kms_overlay_add(drm, req);
 	drmModeAtomicCommit(drm->fd, req, DRM_MODE_ATOMIC_ALLOW_MODESET, NULL);
 	drmModeAtomicFree(req);
 }
@@ -226,6 +231,7 @@ static void atomic_destroy(struct drm *drm)
 
 	if (a && a->mode_blob)
 		drmModeDestroyPropertyBlob(drm->fd, a->mode_blob);
+	kms_overlay_free(drm);
 	free(a);
 	drm->priv = NULL;
 }

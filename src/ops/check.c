@@ -7,6 +7,7 @@
 #include "content/model_list.h"
 #include "content/matcap_set.h"
 #include "render/background.h"
+#include "scene/caption.h"
 #include "util/image.h"
 #include "util/log.h"
 
@@ -203,6 +204,23 @@ static void check_matcaps(struct check *c)
 	matcap_set_free(set);
 }
 
+/* The caption's font, drawn once as the kiosk draws it, and its logo. */
+static void check_caption(struct check *c, const struct caption_config *cap)
+{
+	struct caption_config font = {.text = "Ag", .size = cap->size, .font = cap->font};
+	struct image img;
+	int ret;
+
+	if (!caption_wanted(cap))
+		return;
+	check_image(c, "caption", "logo", cap->logo);
+	log_clear_last_error();
+	ret = caption_render(&font, NULL, &img);
+	image_release(&img);
+	if (ret || cap->font)
+		found(c, "caption", "font", cap->font ? cap->font : CAPTION_FONT_DEFAULT, ret);
+}
+
 static void list_files(struct check *c)
 {
 	const char *const *files;
@@ -239,6 +257,7 @@ int check_config_run(const struct options *o, FILE *out)
 	check_image(&c, "display", "poster", o->poster);
 	if (o->content.background && background_names_image(o->content.background))
 		check_image(&c, "display", "background", o->content.background);
+	check_caption(&c, &o->content.caption);
 	if (c.bad_settings) {
 		log_err("%s: %d model%s own settings file%s errors (above)", name, c.bad_settings,
 			c.bad_settings == 1 ? "'s" : "s'", c.bad_settings == 1 ? " has" : "s have");

@@ -70,6 +70,7 @@ void renderer_free(struct renderer *r)
 	drop_surfaces(r);
 	draw_list_release(&r->list);
 	background_free(r->background);
+	caption_gl_free(r->caption);
 	free(r);
 }
 
@@ -274,6 +275,40 @@ int renderer_set_background(struct renderer *r, const struct background_spec *s,
 	background_free(r->background);
 	r->background = b;
 	return 0;
+}
+
+int renderer_set_caption(struct renderer *r, const struct image *img,
+			 const struct caption_config *c)
+{
+	struct caption_gl *cap = img && img->rgba ? caption_gl_new(r->gl, img, c) : NULL;
+
+	if (img && img->rgba && !cap)
+		return -EINVAL;
+	caption_gl_free(r->caption);
+	r->caption = cap;
+	r->caption_serial += cap != NULL;
+	return 0;
+}
+
+unsigned renderer_caption_serial(const struct renderer *r)
+{
+	return r->caption ? r->caption_serial : 0;
+}
+
+bool renderer_caption_at(const struct renderer *r, const struct view *v, double seconds, int width,
+			 int height, int out[2])
+{
+	if (!r->caption)
+		return false;
+	caption_gl_at(r->caption, seconds, width, height, v->rotation, out);
+	return true;
+}
+
+void renderer_draw_caption(struct renderer *r, const struct view *v, double seconds, int width,
+			   int height)
+{
+	if (r->caption)
+		caption_gl_draw(r->caption, seconds, width, height, v->rotation);
 }
 
 void renderer_set_matcap_filter(struct renderer *r, enum matcap_filter filter)

@@ -3,6 +3,7 @@
 #define MK_RENDER_H
 
 #include "render/background.h"
+#include "scene/caption.h"
 #include "render/gl.h"
 #include "util/image.h"
 #include "scene/material.h"
@@ -41,6 +42,23 @@ int renderer_set_packed(struct renderer *r, const struct mesh_packed *m);
  * then the one before stays. */
 int renderer_set_background(struct renderer *r, const struct background_spec *s,
 			    const struct image *img);
+
+/* The caption drawn over every frame from now on (img: its picture from
+ * caption_render, uploaded here once; NULL or empty: none). Returns 0, or
+ * a negative errno after logging, and then the one before stays. */
+int renderer_set_caption(struct renderer *r, const struct image *img,
+			 const struct caption_config *c);
+/* Blend the caption over the frame, at seconds of its drift: call it last,
+ * after the scene (and after any scaling of it: full resolution). */
+void renderer_draw_caption(struct renderer *r, const struct view *v, double seconds, int width,
+			   int height);
+/* Where the caption's top-left corner is at seconds; false: no caption.
+ * The loop redraws when it moved. */
+bool renderer_caption_at(const struct renderer *r, const struct view *v, double seconds, int width,
+			 int height, int out[2]);
+/* Which caption picture is set, 1, 2, ... (a new one each set); 0: none.
+ * An overlay plane is tested once per picture. */
+unsigned renderer_caption_serial(const struct renderer *r);
 
 /* How renderer_set_mesh stores the vertices (scene/mesh_pack.h); the
  * default: compact. */

@@ -4,6 +4,7 @@
 #define MK_RENDER_PRIV_H
 
 #include "render/background.h"
+#include "render/caption.h"
 #include "render/draw_list.h"
 #include "render/gl.h"
 #include "render/shader.h"
@@ -57,6 +58,8 @@ struct renderer {
 	int matcap_side;	       /* its shorter side, texels */
 	bool matcap_mipmapped;	       /* its minifying filter now reads the chain */
 	struct background *background; /* NULL: the view's clear colour */
+	struct caption_gl *caption;    /* NULL: none */
+	unsigned caption_serial;       /* bumped with each caption set */
 };
 
 /* The matcap's minifying filter for a viewport (render.c). */

@@ -49,3 +49,14 @@ awk -v f=$first_100k -v m=$frame_100k -v r=$rss_100k -v rf=$ref_first -v rm=$ref
 	printf "- 100k-triangle frame: %.1f ms vs %d ms: %.1fx faster (goal 3x)\n", m, rm, rm / m
 	printf "- memory: %.0f MiB vs %.0f MiB: %.1fx smaller (goal 20x)\n", r / 1024, rr / 1024, rr / r
 }'
+
+# [caption]: what its one quad costs a frame on the GL path, measured
+# alone by bench_caption (frames with and without it taken in turn: the
+# difference is smaller than one kiosk run's noise), and what its picture
+# costs once per model on the content worker.
+"$TOOLS/mkmodels" "$out" >/dev/null
+echo
+for backend in osmesa egl-headless; do
+	"$TOOLS/bench_caption" $backend 1280x720 "$out/logo.png"
+	"$TOOLS/bench_caption" $backend 1920x1080 "$out/logo.png"
+done

@@ -20,7 +20,7 @@ echo "$keys" | while read -r section key; do
 	fi
 done
 rules=$($kiosk --help | sed -n 's/^  \[\([a-z]*\)\] *\(.*\)$/\1 \2/p')
-[ "$(echo "$rules" | wc -l)" -eq 11 ] || { echo "no reload rule per section in --help"; exit 1; }
+[ "$(echo "$rules" | wc -l)" -eq 12 ] || { echo "no reload rule per section in --help"; exit 1; }
 echo "$rules" | while read -r section says; do
 	if ! awk -v s="[$section]" -v line="; On reload: $says." '
 		/^\[/ { in_s = ($0 == s) }

@@ -38,6 +38,10 @@ ref() { # NAME SIZE [ARGS]...
 ref knot-1024x768 1024x768
 ref knot-1024x768-rot90 1024x768 --rotate 90
 ref knot-800x600 800x600
+# [caption] (kms.sh): the font goes to the guest in the share.
+cp /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf "$out/ref/"
+ref knot-1024x768-caption 1024x768 --caption 'Amphora,\nכד' \
+	--caption-font "$out/ref/DejaVuSans.ttf" --caption-drift off
 ref knot-1024x768-half 1024x768 --render-scale 0.5
 # A drag turns the model and keeps the scale [scene] fit chose at the start
 # view (pitch 20): the turned references are drawn at that scale.

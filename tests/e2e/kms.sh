@@ -115,6 +115,54 @@ vm_check "rotation 90: matches the OSMesa reference turned for the panel" \
 	matches "$REF/knot-1024x768-rot90.png" rot90.png
 kiosk_stop TERM
 
+# ---- [caption] on vkms's overlay plane (loaded with enable_overlay=1):
+# an atomic test commit puts it there and GL draws none (the primary
+# plane's frame is the reference without it); the atomic state shows the
+# plane with its ARGB picture; the wall clock set 45 minutes on drifts it
+# (x 0 to 6, y 6 to 5 pixels): the plane moves, the model's frame is the
+# same framebuffer, not drawn again.  The font comes from the share (the
+# guest has no /usr/share/fonts).
+CAPTION="--caption Amphora,\\nכד --caption-font $REF/DejaVuSans.ttf"
+plane_pos() { # the caption plane's crtc-pos in the atomic state, or nothing
+	awk '/^plane\[/ { p = 0 } /format=AR24/ { p = 1 } p && /crtc-pos=/ { print $1 }' \
+		/sys/kernel/debug/dri/0/state
+}
+plane_on() { [ -n "$(plane_pos)" ]; }
+plane_moved() { plane_on && [ "$(plane_pos)" != "$pos1" ]; }
+clock_set "2026-01-01 00:00:00" unsynced
+kiosk_start plane.log $CAPTION --log-level debug
+wait_log 90 plane.log "is on overlay plane"
+wait_until 20 plane_on
+show plane.log
+pos1=$(plane_pos)
+fb1=$(vm-grab -o plane.png | sed -n 's/.* fb \([0-9]*\) .*/\1/p')
+echo "caption plane: $pos1 over fb $fb1"
+vm_check "caption: an atomic test commit put it on an overlay plane" \
+	has plane.log "kms: the caption (.*) is on overlay plane"
+vm_check "caption: the atomic state shows it on an ARGB overlay plane of the CRTC ($pos1)" \
+	test -n "$pos1"
+vm_check "caption on the plane: the model's frame has no caption drawn by GL" \
+	matches "$REF/knot-1024x768.png" plane.png
+clock_set "2026-01-01 00:45:00" unsynced
+wait_until 30 plane_moved
+pos2=$(plane_pos)
+fb2=$(vm-grab -o plane-drift.png | sed -n 's/.* fb \([0-9]*\) .*/\1/p')
+echo "caption plane after 45 minutes: $pos2 over fb $fb2"
+vm_check "caption drift: the plane moved ($pos1 to $pos2)" \
+	sh -c "[ -n '$pos2' ] && [ '$pos1' != '$pos2' ]"
+vm_check "caption drift: the model's frame was not drawn again (fb $fb1, $fb2)" \
+	sh -c "[ -n '$fb1' ] && [ '$fb1' = '$fb2' ] && cmp plane.png plane-drift.png"
+vm_check "caption drift: moved by the plane alone (log)" has plane.log "caption: its plane moved"
+kiosk_stop TERM
+
+# ---- [caption] where no plane takes it (legacy KMS has none): GL draws
+# it over the model, as the OSMesa reference.
+kiosk_start caption.log $CAPTION --caption-drift off --kms-api legacy
+grab_when_shown caption.log caption.png "$HOLD_FB"
+vm_check "caption: no plane with legacy KMS: drawn by GL, as the OSMesa reference" \
+	matches "$REF/knot-1024x768-caption.png" caption.png
+kiosk_stop TERM
+
 # ---- legacy, on a named device; a chosen mode on a named connector
 kiosk_start legacy.log --kms-api legacy --device /dev/dri/card0
 grab_when_shown legacy.log legacy.png "$HOLD_FB"

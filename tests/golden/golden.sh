@@ -19,6 +19,7 @@ scenes="$scenes sphere-beetle-gltf sphere-displaced sphere-lit sphere-lit-beside
 scenes="$scenes sphere-vertex-color sphere-base-map sphere-base-map-off"
 scenes="$scenes background-color background-gradient background-image fit-long fit-long-half"
 scenes="$scenes parts-textures parts-mask parts-blend parts-leaf parts-normals parts-iridescence"
+scenes="$scenes caption-latin caption-rtl caption-logo"
 scenes="$scenes frame-up frame-start-view frame-own-look"
 scenes="$scenes render-scale-half"
 scenes="$scenes morph-t1 morph-t3 morph-pingpong skin-t1 nodes-t1.7"
@@ -130,6 +131,24 @@ render() {
 	# below); two halves each with its own iridescent film.
 	parts-textures | parts-mask | parts-blend | parts-leaf | parts-normals | parts-iridescence)
 		$k -c matcaps/pearl.png --model "$m/$1.glb" --output "$o"
+		;;
+	# [caption]: Latin with kerning (AV, Te) and a ligature (fi) in two
+	# lines; Hebrew (its brackets mirrored, a number left to right
+	# inside) and Arabic (its letters joined) read right to left, top
+	# right, in colour on a tinted box; a logo (blended by its alpha)
+	# beside a line, centred at the bottom, no box.
+	caption-latin)
+		$k -c matcaps/gold.png --caption-size 16 \
+			--caption 'AVATAR Te fine office\nLent by the city museum' --output "$o"
+		;;
+	caption-rtl)
+		$k -c matcaps/gold.png --caption-size 16 --caption-position top-right \
+			--caption-color '#ffe8a0' --caption-box '#30206080' \
+			--caption 'כד עתיק (מאה 5)\nمزهرية أثرية' --output "$o"
+		;;
+	caption-logo)
+		$k -c matcaps/gold.png --caption-size 16 --caption-position bottom --caption-box none \
+			--logo "$m/logo.png" --caption 'Matcap & Co.' --output "$o"
 		;;
 	# Poses of Khronos's SimpleMorph (two targets, weights keyed each
 	# second over 4 s) at fixed times: --time on its one clip; pingpong

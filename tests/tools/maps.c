@@ -2,6 +2,7 @@
 #include "util/image.h"
 
 #include <math.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -186,11 +187,42 @@ static int write_base(const char *dir)
 	return bad;
 }
 
+/* [caption] logo: a 40x40 orange ring on a blue disc, its edge and the
+ * ring's hole see-through with soft edges, so the golden shows the logo
+ * blended (premultiplied) over the caption's box. */
+static int write_logo(const char *dir)
+{
+	struct image img;
+	char path[4096];
+	int ret;
+
+	if (image_alloc(&img, 40, 40))
+		return 1;
+	for (int y = 0; y < 40; y++)
+		for (int x = 0; x < 40; x++) {
+			uint8_t *p = img.rgba + (y * 40 + x) * 4;
+			double r = hypot(x + 0.5 - 20, y + 0.5 - 20);
+			double a =
+			    fmin(fmax(19.5 - r, 0), 1) * (r < 6 ? fmin(fmax(r - 5, 0), 1) : 1);
+			bool ring = r > 11 && r < 16;
+
+			p[0] = ring ? 240 : 40;
+			p[1] = ring ? 140 : 90;
+			p[2] = ring ? 30 : 200;
+			p[3] = (uint8_t)lround(a * 255);
+		}
+	snprintf(path, sizeof(path), "%s/logo.png", dir);
+	ret = image_write_png(path, &img) != 0;
+	image_release(&img);
+	return ret;
+}
+
 int maps_write(const char *dir)
 {
 	char path[4096];
 	FILE *f;
-	int bad = write_relief(dir) | write_height(dir) | write_ramp(dir) | write_base(dir);
+	int bad = write_relief(dir) | write_height(dir) | write_ramp(dir) | write_base(dir) |
+		  write_logo(dir);
 
 	snprintf(path, sizeof(path), "%s/corrupt.png", dir);
 	f = fopen(path, "wb");

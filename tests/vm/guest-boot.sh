@@ -23,7 +23,7 @@ t_start=$(cut -d' ' -f1 /proc/uptime)
 modprobe configfs && mount -t configfs configfs /sys/kernel/config
 mount -t debugfs debugfs /sys/kernel/debug 2>/dev/null || true
 failed=""
-modprobe vkms enable_writeback=1 enable_cursor=1 || failed="$failed vkms"
+modprobe vkms enable_writeback=1 enable_cursor=1 enable_overlay=1 || failed="$failed vkms"
 modprobe gpio-sim || failed="$failed gpio-sim"
 modprobe vimc || failed="$failed vimc"
 modprobe -a uinput evdev || failed="$failed uinput/evdev"

@@ -1,0 +1,74 @@
+/* [caption]: a few lines of text and a logo over the model, drawn once
+ * into a picture on the CPU (any thread) when the text changes, then
+ * shown as one quad or on an overlay plane. Text is shaped by HarfBuzz
+ * (kerning, ligatures, Arabic joining), put in visual order by FriBidi
+ * (right-to-left runs) and drawn by FreeType. */
+#ifndef MK_CAPTION_H
+#define MK_CAPTION_H
+
+#include "util/image.h"
+
+#include <stdbool.h>
+#include <stddef.h>
+
+/* fonts-dejavu-core (a Depends of the package): Latin, Greek, Cyrillic,
+ * Hebrew and Arabic. */
+#define CAPTION_FONT_DEFAULT "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"
+
+enum caption_position {
+	CAPTION_BOTTOM_LEFT,
+	CAPTION_BOTTOM_RIGHT,
+	CAPTION_TOP_LEFT,
+	CAPTION_TOP_RIGHT,
+	CAPTION_BOTTOM,
+	CAPTION_TOP,
+};
+
+/* What [caption] accepts, for the error messages. */
+#define CAPTION_COLOR_EXPECTED "a colour #rrggbb or #rrggbbaa (aa: opacity)"
+
+struct caption_config {
+	char *text;  /* "\n" starts a line; "auto": the model's name; NULL: none */
+	char *font;  /* a TrueType/OpenType file; NULL: CAPTION_FONT_DEFAULT */
+	char *color; /* the text's; NULL: white */
+	char *box;   /* the box behind it; NULL: black at 60%; "none": no box */
+	char *logo;  /* a PNG/JPEG drawn left of the text at its own size; NULL: none */
+	double size; /* the text's size in pixels (em); 0: the default */
+	int padding; /* pixels inside the box, and from the screen's edge */
+	enum caption_position position;
+	bool drift; /* move a few pixels over hours against burn-in */
+};
+
+/* The default size, in pixels of the panel. */
+#define CAPTION_SIZE_DEFAULT 28
+
+/* Whether c shows anything (a text or a logo). */
+bool caption_wanted(const struct caption_config *c);
+
+/* Parse "#rrggbb" or "#rrggbbaa" into straight RGBA bytes; false when
+ * text is neither. */
+bool caption_parse_color(const char *text, unsigned char out[4]);
+
+/* The text c shows: c->text with "\n" made line breaks, or name for
+ * "auto" (NULL name: nothing). Malloc'd; NULL when there is none. */
+char *caption_text(const struct caption_config *c, const char *name);
+
+/* Draw c (its text, or name for "auto") into out: premultiplied RGBA, the
+ * box's size, rows top first. The font and the logo are read here.
+ * Returns 0, -ENOENT when c shows nothing (out empty), or a negative
+ * errno after logging what failed (the file and why). */
+int caption_render(const struct caption_config *c, const char *name, struct image *out);
+
+/* Blend the caption's picture over frame (straight RGBA, opaque) with its
+ * top-left corner at x, y, clipped: the frame --status reads back when an
+ * overlay plane shows the caption, as the screen shows it. */
+void caption_blend(const struct image *cap, int x, int y, struct image *frame);
+
+/* Where the caption's top-left corner goes on a width x height screen
+ * (already turned for the panel), its drift at seconds added: within
+ * +-CAPTION_DRIFT_PX, each axis on its own period of hours, whole pixels. */
+#define CAPTION_DRIFT_PX 6
+void caption_place(const struct caption_config *c, int cw, int ch, int width, int height,
+		   double seconds, int out[2]);
+
+#endif

@@ -1,0 +1,100 @@
+/* What the caption's quad costs a frame on the GL path, alone: frames of
+ * the same size cleared, every other one with the caption blended over
+ * it, each finished (glFinish) and timed, the two kinds taken in turn so
+ * that a busy machine slows both alike; the medians and their
+ * difference. Its picture (FreeType, HarfBuzz, FriBidi) is drawn once, as
+ * the kiosk draws it on the content worker, and timed apart.
+ *   bench_caption BACKEND WxH LOGO [FRAMES]   (BACKEND: osmesa or egl-headless) */
+#include "display/display.h"
+#include "render/caption.h"
+#include "scene/caption.h"
+#include "util/log.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+static double now_ms(void)
+{
+	struct timespec ts;
+
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return ts.tv_sec * 1e3 + ts.tv_nsec / 1e6;
+}
+
+static int compare(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+
+	return (x > y) - (x < y);
+}
+
+static double median(double *v, int n)
+{
+	qsort(v, (size_t)n, sizeof(*v), compare);
+	return v[n / 2];
+}
+
+static double frame(struct display *d, const struct caption_gl *cap)
+{
+	double t = now_ms();
+
+	d->gl.ClearColor(0.1f, 0.1f, 0.1f, 1);
+	d->gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+	if (cap)
+		caption_gl_draw(cap, 0, d->width, d->height, 0);
+	d->gl.Finish();
+	return now_ms() - t;
+}
+
+int main(int argc, char **argv)
+{
+	struct display_config cfg = {0};
+	struct caption_config c = {.text = "Amphora, Attic, 5th c. BC\\nLent by the city museum",
+				   .size = 32,
+				   .padding = 12};
+	struct display *d = NULL;
+	struct caption_gl *cap;
+	struct image img;
+	int n = argc > 4 ? atoi(argv[4]) : 400;
+	double *off, *on, t;
+
+	if (argc < 4 || sscanf(argv[2], "%dx%d", &cfg.width, &cfg.height) != 2 || n < 2) {
+		fprintf(stderr, "usage: bench_caption osmesa|egl-headless WxH LOGO [FRAMES]\n");
+		return 2;
+	}
+	log_set_level(LOG_WARN);
+	c.logo = argv[3];
+#ifdef MK_HAVE_OSMESA
+	if (!strcmp(argv[1], "osmesa"))
+		d = display_osmesa_new(&cfg);
+#endif
+	if (!strcmp(argv[1], "egl-headless"))
+		d = display_egl_new(&cfg);
+	if (!d || d->begin_frame(d))
+		return 1;
+	t = now_ms();
+	if (caption_render(&c, NULL, &img))
+		return 1;
+	t = now_ms() - t;
+	cap = caption_gl_new(&d->gl, &img, &c);
+	off = calloc((size_t)n, sizeof(*off));
+	on = calloc((size_t)n, sizeof(*on));
+	if (!cap || !off || !on)
+		return 1;
+	frame(d, cap); /* the first draw compiles and uploads */
+	for (int i = 0; i < n; i++) {
+		off[i] = frame(d, NULL);
+		on[i] = frame(d, cap);
+	}
+	printf("%s %dx%d caption %dx%d: picture %.1f ms once; frame %.3f ms, with caption %.3f "
+	       "ms: %.3f ms a frame\n",
+	       argv[1], cfg.width, cfg.height, img.width, img.height, t, median(off, n),
+	       median(on, n), median(on, n) - median(off, n));
+	free(off);
+	free(on);
+	image_release(&img);
+	caption_gl_free(cap);
+	return 0;
+}

@@ -1,0 +1,363 @@
+/* [caption]: the colours and the text's escapes, the placement in each
+ * position and its drift (bounded, a pixel at a time, none when off), the
+ * picture (kerning narrows "AV", a line break adds a line, the box and
+ * the text's colour premultiplied, a bad font or logo named), and the
+ * quad on a real GL (OSMesa, or EGL where Mesa has no OSMesa): pixel for
+ * pixel where the viewer sees it, on an upright panel and one turned a
+ * quarter. */
+#include "display/display.h"
+#include "render/caption.h"
+#include "scene/caption.h"
+#include "scene/gltf_name.h"
+#include "util/log.h"
+
+#include <errno.h>
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include <cmocka.h>
+
+#define W 96
+#define H 64
+
+static void colors(void **state)
+{
+	unsigned char c[4];
+
+	(void)state;
+	assert_true(caption_parse_color("#ff8000", c));
+	assert_int_equal(c[0], 255);
+	assert_int_equal(c[1], 128);
+	assert_int_equal(c[2], 0);
+	assert_int_equal(c[3], 255);
+	assert_true(caption_parse_color("#00000080", c));
+	assert_int_equal(c[3], 128);
+	assert_false(caption_parse_color("ff8000", c));
+	assert_false(caption_parse_color("#ff80", c));
+	assert_false(caption_parse_color("#gg8000", c));
+	assert_false(caption_parse_color(NULL, c));
+}
+
+static void texts(void **state)
+{
+	struct caption_config c = {.text = "Vase\\nLent by \\\\ us"};
+	char *t = caption_text(&c, "knot");
+
+	(void)state;
+	assert_string_equal(t, "Vase\nLent by \\ us");
+	free(t);
+	c.text = "auto";
+	t = caption_text(&c, "amphora");
+	assert_string_equal(t, "amphora");
+	free(t);
+	assert_null(caption_text(&c, NULL));
+	c.text = NULL;
+	assert_null(caption_text(&c, "amphora"));
+	assert_false(caption_wanted(&c));
+	c.logo = "logo.png";
+	assert_true(caption_wanted(&c));
+}
+
+static void placed(void **state)
+{
+	struct caption_config c = {.padding = 10};
+	int at[2];
+
+	(void)state;
+	c.position = CAPTION_BOTTOM_LEFT;
+	caption_place(&c, 100, 40, 800, 600, 0, at);
+	assert_int_equal(at[0], 10);
+	assert_int_equal(at[1], 550);
+	c.position = CAPTION_TOP_RIGHT;
+	caption_place(&c, 100, 40, 800, 600, 0, at);
+	assert_int_equal(at[0], 690);
+	assert_int_equal(at[1], 10);
+	c.position = CAPTION_BOTTOM;
+	caption_place(&c, 100, 40, 800, 600, 0, at);
+	assert_int_equal(at[0], 350);
+	assert_int_equal(at[1], 550);
+	/* Off: the same place at any hour. */
+	caption_place(&c, 100, 40, 800, 600, 12345.0, at);
+	assert_int_equal(at[0], 350);
+}
+
+/* Over two days, minute by minute: within the bound, a pixel at a time,
+ * and it does move on both axes. */
+static void drifts(void **state)
+{
+	struct caption_config c = {.padding = 10, .drift = true};
+	int at[2], before[2], lo[2] = {1 << 20, 1 << 20}, hi[2] = {-(1 << 20), -(1 << 20)};
+
+	(void)state;
+	caption_place(&c, 100, 40, 800, 600, 0, before);
+	assert_int_equal(before[0], 10);
+	for (int m = 1; m <= 48 * 60; m++) {
+		caption_place(&c, 100, 40, 800, 600, m * 60.0, at);
+		for (int k = 0; k < 2; k++) {
+			assert_true(abs(at[k] - before[k]) <= 1);
+			lo[k] = at[k] < lo[k] ? at[k] : lo[k];
+			hi[k] = at[k] > hi[k] ? at[k] : hi[k];
+			before[k] = at[k];
+		}
+	}
+	assert_int_equal(lo[0], 10 - CAPTION_DRIFT_PX);
+	assert_int_equal(hi[0], 10 + CAPTION_DRIFT_PX);
+	assert_int_equal(lo[1], 550 - CAPTION_DRIFT_PX);
+	assert_int_equal(hi[1], 550 + CAPTION_DRIFT_PX);
+}
+
+/* --status's frame with the plane's caption put in: premultiplied over,
+ * clipped at the frame's edge. */
+static void blended(void **state)
+{
+	struct image cap, frame;
+
+	(void)state;
+	assert_int_equal(image_alloc(&cap, 2, 1), 0);
+	assert_int_equal(image_alloc(&frame, 2, 2), 0);
+	memcpy(cap.rgba, (uint8_t[]){128, 0, 0, 128, 0, 0, 0, 0}, 8);
+	memset(frame.rgba, 200, 16);
+	caption_blend(&cap, 1, 1, &frame);
+	assert_int_equal(frame.rgba[12], 128 + 200 * 127 / 255);
+	assert_int_equal(frame.rgba[13], 200 * 127 / 255);
+	assert_int_equal(frame.rgba[0], 200);
+	assert_int_equal(frame.rgba[8], 200);
+	image_release(&cap);
+	image_release(&frame);
+}
+
+static int width_of(const char *text)
+{
+	struct caption_config c = {.text = (char *)text, .size = 40, .box = "none"};
+	struct image img;
+	int w;
+
+	assert_int_equal(caption_render(&c, NULL, &img), 0);
+	w = img.width;
+	image_release(&img);
+	return w;
+}
+
+/* HarfBuzz applies the font's kerning: "AV" is narrower than "A" and "V"
+ * apart (each picture is one pixel wider than its text). */
+static void kerned(void **state)
+{
+	(void)state;
+	assert_true(width_of("AV") - 1 < width_of("A") - 1 + width_of("V") - 1 - 1);
+}
+
+static void pictured(void **state)
+{
+	struct caption_config c = {
+	    .text = "Ag", .size = 20, .padding = 4, .color = "#ff0000", .box = "#0000ff80"};
+	struct image one, two;
+	const uint8_t *corner;
+
+	(void)state;
+	assert_int_equal(caption_render(&c, NULL, &one), 0);
+	/* The box premultiplied: blue at half. */
+	corner = one.rgba;
+	assert_int_equal(corner[0], 0);
+	assert_int_equal(corner[2], 128);
+	assert_int_equal(corner[3], 128);
+	c.text = "Ag\\nAg";
+	assert_int_equal(caption_render(&c, NULL, &two), 0);
+	assert_int_equal(two.width, one.width);
+	assert_true(two.height > one.height + 15);
+	/* Some pixel is the text's red, fully covered. */
+	{
+		bool red = false;
+
+		for (long i = 0; i < (long)one.width * one.height && !red; i++)
+			red = one.rgba[i * 4] == 255 && one.rgba[i * 4 + 3] == 255;
+		assert_true(red);
+	}
+	image_release(&one);
+	image_release(&two);
+}
+
+static void refused(void **state)
+{
+	struct caption_config c = {.text = "x", .size = 20};
+	struct image img;
+
+	(void)state;
+	c.font = "/nonexistent/font.ttf";
+	assert_int_equal(caption_render(&c, NULL, &img), -EINVAL);
+	assert_null(img.rgba);
+	c.font = NULL;
+	c.logo = "/nonexistent/logo.png";
+	assert_true(caption_render(&c, NULL, &img) < 0);
+	assert_null(img.rgba);
+	c.logo = NULL;
+	c.color = "red";
+	assert_int_equal(caption_render(&c, NULL, &img), -EINVAL);
+	c.color = NULL;
+	c.text = NULL;
+	assert_int_equal(caption_render(&c, NULL, &img), -ENOENT);
+}
+
+static void write_file(const char *path, const void *data, size_t n)
+{
+	FILE *f = fopen(path, "wb");
+
+	assert_non_null(f);
+	assert_int_equal(fwrite(data, 1, n, f), n);
+	fclose(f);
+}
+
+static void put_u32(unsigned char *p, uint32_t v)
+{
+	for (int k = 0; k < 4; k++)
+		p[k] = (unsigned char)(v >> (8 * k));
+}
+
+/* [caption] text = auto: asset.extras.title first, else the scene shown
+ * ([scene] model_scene by index or name, else "scene", else the first),
+ * from a .gltf and from a GLB's JSON chunk; nothing from a file that names
+ * none or is not glTF. */
+static void named(void **state)
+{
+	static const char titled[] =
+	    "{\"asset\":{\"version\":\"2.0\",\"extras\":{\"title\":\"Amphora \u05db\"}},"
+	    "\"scenes\":[{\"name\":\"A\"}]}";
+	static const char scenes[] = "{\"asset\":{\"version\":\"2.0\"},\"scene\":1,"
+				     "\"scenes\":[{\"name\":\"First\"},{\"name\":\"Second\"}]}";
+	static const char bare[] = "{\"asset\":{\"version\":\"2.0\"}}";
+	char dir[] = "/tmp/test_caption.XXXXXX", path[64];
+	unsigned char glb[20 + sizeof(scenes) + 3] = "glTF";
+	size_t json = (sizeof(scenes) - 1 + 3) & ~(size_t)3;
+	char *name;
+
+	(void)state;
+	assert_non_null(mkdtemp(dir));
+	snprintf(path, sizeof(path), "%s/t.gltf", dir);
+	write_file(path, titled, sizeof(titled) - 1);
+	name = gltf_model_name(path, NULL);
+	assert_string_equal(name, "Amphora \xd7\x9b");
+	free(name);
+	write_file(path, scenes, sizeof(scenes) - 1);
+	name = gltf_model_name(path, NULL);
+	assert_string_equal(name, "Second");
+	free(name);
+	name = gltf_model_name(path, "0");
+	assert_string_equal(name, "First");
+	free(name);
+	assert_null(gltf_model_name(path, "7"));
+	/* The same as a GLB: the JSON chunk, padded with spaces. */
+	put_u32(glb + 4, 2);
+	put_u32(glb + 8, (uint32_t)(20 + json));
+	put_u32(glb + 12, (uint32_t)json);
+	put_u32(glb + 16, 0x4E4F534Au);
+	memset(glb + 20, ' ', json);
+	memcpy(glb + 20, scenes, sizeof(scenes) - 1);
+	snprintf(path, sizeof(path), "%s/t.glb", dir);
+	write_file(path, glb, 20 + json);
+	name = gltf_model_name(path, NULL);
+	assert_string_equal(name, "Second");
+	free(name);
+	write_file(path, bare, sizeof(bare) - 1);
+	assert_null(gltf_model_name(path, NULL));
+	write_file(path, "not json", 8);
+	assert_null(gltf_model_name(path, NULL));
+	unlink(path);
+	snprintf(path, sizeof(path), "%s/t.gltf", dir);
+	unlink(path);
+	rmdir(dir);
+}
+
+static int setup(void **state)
+{
+	struct display_config cfg = {.width = W, .height = H};
+	struct display *d;
+
+	log_set_level(LOG_ERR);
+#ifdef MK_HAVE_OSMESA
+	d = display_osmesa_new(&cfg);
+#else
+	d = display_egl_new(&cfg);
+#endif
+	if (!d || d->begin_frame(d))
+		return -1;
+	*state = d;
+	return 0;
+}
+
+/* The display is left open, as in test_background.c: Mesa's context
+ * teardown leaks inside the library. */
+const char *__lsan_default_suppressions(void);
+const char *__lsan_default_suppressions(void)
+{
+	return "leak:libOSMesa\nleak:libLLVM\nleak:display_osmesa_new\nleak:display_egl_new\n";
+}
+
+static const uint8_t *pixel(const struct image *f, int x, int y)
+{
+	return f->rgba + ((size_t)y * (size_t)f->width + (size_t)x) * 4;
+}
+
+/* A 4x2 picture, its top-left texel red, the rest green, top-left on a
+ * panel cleared black: at (pad, pad) upright; turned a quarter, the
+ * viewer's top-left is where rotation 90 puts the frame's pixel. */
+static void drawn(struct display *d, int rotation, int x, int y)
+{
+	struct caption_config c = {.padding = 3, .position = CAPTION_TOP_LEFT};
+	struct image img, f;
+	struct caption_gl *cap;
+
+	assert_int_equal(image_alloc(&img, 4, 2), 0);
+	for (int i = 0; i < 8; i++) {
+		uint8_t px[4] = {i ? 0 : 255, i ? 255 : 0, 0, 255};
+
+		memcpy(img.rgba + i * 4, px, 4);
+	}
+	cap = caption_gl_new(&d->gl, &img, &c);
+	assert_non_null(cap);
+	assert_int_equal(d->begin_frame(d), 0);
+	d->gl.ClearColor(0, 0, 0, 1);
+	d->gl.Clear(GL_COLOR_BUFFER_BIT);
+	caption_gl_draw(cap, 0, W, H, rotation);
+	assert_int_equal(d->read_frame(d, &f), 0);
+	assert_int_equal(pixel(&f, x, y)[0], 255);
+	assert_int_equal(pixel(&f, x, y)[1], 0);
+	assert_int_equal(pixel(&f, 0, 0)[1], 0);
+	image_release(&f);
+	image_release(&img);
+	caption_gl_free(cap);
+}
+
+static void upright(void **state)
+{
+	drawn(*state, 0, 3, 3);
+}
+
+/* Turned 90 degrees as poster.c and the renderer turn theirs (the
+ * turned screen's x runs up the frame, its y to the right): its top-left
+ * corner is the frame's bottom-left. */
+static void turned(void **state)
+{
+	drawn(*state, 90, 3, H - 1 - 3);
+}
+
+int main(void)
+{
+	const struct CMUnitTest pure[] = {
+	    cmocka_unit_test(colors),  cmocka_unit_test(texts),	 cmocka_unit_test(placed),
+	    cmocka_unit_test(drifts),  cmocka_unit_test(kerned), cmocka_unit_test(pictured),
+	    cmocka_unit_test(refused), cmocka_unit_test(named),	 cmocka_unit_test(blended),
+	};
+	const struct CMUnitTest gl[] = {
+	    cmocka_unit_test(upright),
+	    cmocka_unit_test(turned),
+	};
+	int failed = cmocka_run_group_tests_name("caption picture", pure, NULL, NULL);
+
+	return failed + cmocka_run_group_tests_name("caption drawn", gl, setup, NULL);
+}
