@@ -223,6 +223,12 @@ static uint64_t caption_deadline(struct kiosk *k, uint64_t now)
 	if (d->overlay && plane_possible(k) && k->frames_drawn && serial != k->caption_plane &&
 	    serial != k->caption_refused)
 		kiosk_tell_app(k, APP_DISPLAY_BACK);
+	/* Another picture than the plane's (a stop's text, or back from
+	 * one): the next frame puts it on the plane or draws it with GL. */
+	if (k->caption_plane && serial != k->caption_plane) {
+		kiosk_tell_app(k, APP_DISPLAY_BACK);
+		return now + 10000000000ull;
+	}
 	if (at[0] == k->caption_at[0] && at[1] == k->caption_at[1])
 		return now + 10000000000ull;
 	if (k->caption_plane && !d->overlay(d->overlay_ctx, img, serial, at[0], at[1])) {
