@@ -22,6 +22,8 @@
 #include <unistd.h>
 #include <cmocka.h>
 
+#include "offscreen.h"
+
 #define W 96
 #define H 64
 
@@ -195,27 +197,9 @@ static void relative(void **state)
 /* The drawing. */
 static int setup(void **state)
 {
-	struct display_config cfg = {.width = W, .height = H};
-	struct display *d;
-
 	log_set_level(LOG_ERR);
-#ifdef MK_HAVE_OSMESA
-	d = display_osmesa_new(&cfg);
-#else
-	d = display_egl_new(&cfg);
-#endif
-	if (!d || d->begin_frame(d))
-		return -1;
-	*state = d;
-	return 0;
-}
-
-/* The display is left open, as in test_poster.c: Mesa's context teardown
- * leaks inside the library. */
-const char *__lsan_default_suppressions(void);
-const char *__lsan_default_suppressions(void)
-{
-	return "leak:libOSMesa\nleak:libLLVM\nleak:display_osmesa_new\nleak:display_egl_new\n";
+	*state = offscreen_open(W, H);
+	return *state ? 0 : -1;
 }
 
 static void draw(struct display *d, const char *text, const struct image *img, int rotation,

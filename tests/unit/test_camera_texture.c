@@ -15,6 +15,8 @@
 #include <string.h>
 #include <cmocka.h>
 
+#include "offscreen.h"
+
 #define SIDE 64 /* the frame and the matcap: one texel per pixel */
 
 struct fixture {
@@ -24,17 +26,12 @@ struct fixture {
 
 static int setup(void **state)
 {
-	struct display_config cfg = {.width = 16, .height = 16};
 	struct fixture *f = calloc(1, sizeof(*f));
 
 	if (!f)
 		return -1;
-#ifdef MK_HAVE_OSMESA
-	f->d = display_osmesa_new(&cfg);
-#else /* Mesa without OSMesa: the same renders through EGL */
-	f->d = display_egl_new(&cfg);
-#endif
-	if (!f->d || f->d->begin_frame(f->d))
+	f->d = offscreen_open(16, 16);
+	if (!f->d)
 		return -1;
 	f->t = camera_texture_new(&f->d->gl, NULL, SIDE, false);
 	if (!f->t)
@@ -47,18 +44,12 @@ static int setup(void **state)
  * leaves LeakSanitizer nothing to name them by (tests/e2e/live.sh turns leak
  * checks off for it). Kept loaded, they can be suppressed by library,
  * and everything of ours is still checked. */
-const char *__lsan_default_suppressions(void);
-const char *__lsan_default_suppressions(void)
-{
-	return "leak:libOSMesa\nleak:libLLVM\nleak:display_osmesa_new\nleak:display_egl_new\n";
-}
-
 static int teardown(void **state)
 {
 	struct fixture *f = *state;
 
 	camera_texture_free(f->t);
-	/* The display is left open: see __lsan_default_suppressions. */
+	/* The display is left open: see offscreen.h. */
 	free(f);
 	return 0;
 }
