@@ -58,7 +58,10 @@ CXXFLAGS  ?=
 ALL_CFLAGS   = -std=c11 -D_GNU_SOURCE -D_FILE_OFFSET_BITS=64 $(OPT) $(WARN) -Isrc -I$(BUILD) \
 	       $(PKG_CFLAGS) $(if $(filter 1,$(OSMESA)),-DMK_HAVE_OSMESA) \
 	       -DMK_VERSION='"$(VERSION)"' -DMK_MATCAP_DIR='"$(DATADIR)/matcaps"' $(CFLAGS)
-ALL_CXXFLAGS = -std=c++17 $(OPT) $(WARN) -Isrc $(PKG_CFLAGS) $(CXXFLAGS)
+# The C++ shims share structs and calls with the C side (file_read_at's
+# off_t): the same file offset size, or a 32-bit build (armhf) passes a
+# 32-bit offset where C reads 64 bits.
+ALL_CXXFLAGS = -std=c++17 -D_FILE_OFFSET_BITS=64 $(OPT) $(WARN) -Isrc $(PKG_CFLAGS) $(CXXFLAGS)
 # meshoptimizer (Debian's 0.18) ships no .pc file; it is C++, and the link
 # already brings libstdc++.
 LDLIBS    = $(PKG_LIBS) -lmeshoptimizer -ldl -lm
