@@ -25,6 +25,8 @@
 
 #include <cmocka.h>
 
+#include "offscreen.h"
+
 #define W 96
 #define H 64
 
@@ -276,27 +278,9 @@ static void named(void **state)
 
 static int setup(void **state)
 {
-	struct display_config cfg = {.width = W, .height = H};
-	struct display *d;
-
 	log_set_level(LOG_ERR);
-#ifdef MK_HAVE_OSMESA
-	d = display_osmesa_new(&cfg);
-#else
-	d = display_egl_new(&cfg);
-#endif
-	if (!d || d->begin_frame(d))
-		return -1;
-	*state = d;
-	return 0;
-}
-
-/* The display is left open, as in test_background.c: Mesa's context
- * teardown leaks inside the library. */
-const char *__lsan_default_suppressions(void);
-const char *__lsan_default_suppressions(void)
-{
-	return "leak:libOSMesa\nleak:libLLVM\nleak:display_osmesa_new\nleak:display_egl_new\n";
+	*state = offscreen_open(W, H);
+	return *state ? 0 : -1;
 }
 
 static const uint8_t *pixel(const struct image *f, int x, int y)
