@@ -34,6 +34,10 @@ struct gltf_options {
 	 * has none or they are malformed, which is a warning: the still
 	 * model loads). NULL: animations are not read. */
 	struct mesh_anim **anim;
+	/* Set: what live playback needs beside the mesh into *play
+	 * (scene/anim_play.h), for a pose fitted over its clip; NULL when
+	 * the model cannot play (the journal says why). */
+	struct anim_play **play;
 	/* pose: the model posed as the clips `animation` names ("auto" or
 	 * NULL: the first; "off": none; "all": every one; a name or an
 	 * index) show it `time` seconds after they start, played at `speed`

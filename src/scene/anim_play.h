@@ -1,0 +1,78 @@
+/* What live playback keeps beside the baked mesh (scene/mesh.h), so that
+ * the loop thread poses the model each frame from the clip's samplers and
+ * the node worlds alone: no file, no re-bake. Each part (a glTF primitive
+ * as a node shows it) remembers its vertices in the mesh, the node it
+ * follows, its skin and its morph targets; the vertices keep their
+ * primitive's own (mesh-local) positions and normals, JOINTS_0 and
+ * WEIGHTS_0. anim_play_pose writes the mesh's positions and normals as the
+ * loader's bake would at that pose (the same maths: morphs, then the skin
+ * or the node's world, then the clip's fit), on the CPU. Pure: no GL. */
+#ifndef MK_ANIM_PLAY_H
+#define MK_ANIM_PLAY_H
+
+#include "scene/anim.h"
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+struct anim_play_skin {
+	uint32_t joint_count;
+	int *joints;	     /* node of each joint */
+	float *inverse_bind; /* 16 a joint, column-major (identity when the file has none) */
+};
+
+struct anim_play_part {
+	int node; /* the node that shows it: its world, its morph weights */
+	int skin; /* into anim_play.skins; -1: rigid, it follows node */
+	/* The node has a skin this primitive does not use: drawn as it is
+	 * (at the skeleton's root, as the spec says), its morphs alone. */
+	bool at_root;
+	uint32_t first_vertex, vertex_count;
+	/* Its normals as the file gives them; false: generated each pose
+	 * from its triangles (indices: index_count, into the mesh's vertices). */
+	bool has_normals;
+	uint32_t index_count;
+	uint32_t *indices;
+	/* Morph targets: target_count deltas of vertex_count xyz each
+	 * (normals NULL when the targets move none). */
+	uint32_t target_count;
+	float *target_positions, *target_normals;
+};
+
+struct anim_play {
+	struct mesh_anim *anim;
+	/* The clip's fit: drawn positions are (world - center) * scale. */
+	double center[3], scale;
+	uint32_t vertex_count;
+	float *positions, *normals; /* each part's own, xyz per mesh vertex */
+	uint16_t *joints;	    /* 4 per vertex; NULL: no part is skinned */
+	float *weights;		    /* 4 per vertex */
+	uint32_t part_count, skin_count;
+	struct anim_play_part *parts;
+	struct anim_play_skin *skins;
+	/* Scratch of anim_play_pose: node worlds, joint matrices, a part's
+	 * morphed vertices (sized at load: no allocation a frame). */
+	float (*worlds)[16];
+	float (*joint_matrices)[16];
+	float *morphed;
+	uint32_t joint_max, part_vertex_max;
+};
+
+/* The allocations of the scratch, once parts and skins are filled. 0 or
+ * -ENOMEM. */
+int anim_play_finish(struct anim_play *p);
+/* positions and normals (xyz per vertex, p->vertex_count) at a pose. */
+void anim_play_pose(struct anim_play *p, const struct anim_pose *pose, float *positions,
+		    float *normals);
+/* Frees p, its anim and everything it holds (NULL: nothing). */
+void anim_play_free(struct anim_play *p);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif
