@@ -24,17 +24,20 @@
 #define KNOT_TUBULAR 256
 #define KNOT_RADIAL  32
 
-/* path NULL: the built-in knot. */
-static int load_model(const char *path, const struct content_config *o, struct mesh *mesh)
+/* path NULL: the built-in knot. The live kiosk keeps what playback needs
+ * in *play (posed at 0 s, fitted over its clip); NULL: a still. */
+static int load_model(const char *path, const struct content_config *o, struct mesh *mesh,
+		      struct anim_play **play)
 {
 	if (path) {
 		struct gltf_options g = {.textures = material_gltf_textures(&o->material),
 					 .scene = o->model_scene,
 					 .scene_setting = "[scene] model_scene",
-					 .pose = o->anim_time >= 0,
+					 .play = o->anim_live ? play : NULL,
+					 .pose = o->anim_time >= 0 || o->anim_live,
 					 .animation = o->animation,
 					 .animation_setting = "[scene] animation",
-					 .time = o->anim_time,
+					 .time = o->anim_time >= 0 ? o->anim_time : 0,
 					 .speed = o->anim_speed,
 					 .loop = o->anim_loop};
 
@@ -61,8 +64,9 @@ static int content_cache_lookup(struct content *s, const struct content_config *
 	if (!ret && c->model_scene)
 		s->cache_key.settings =
 		    mesh_cache_hash(c->model_scene, strlen(c->model_scene), s->cache_key.settings);
-	/* A pose (--time) is another mesh. */
-	if (!ret && c->anim_time >= 0) {
+	/* A pose (--time) is another mesh, and so is the live kiosk's (an
+	 * animated model is never stored: content_prepare). */
+	if (!ret && (c->anim_time >= 0 || c->anim_live)) {
 		double t[3] = {c->anim_time, c->anim_speed, c->anim_loop};
 		const char *a = c->animation ? c->animation : "auto";
 
@@ -125,7 +129,7 @@ static void content_cache_pack(struct content *s, int width, int height)
 	struct mesh_material *materials = s->mesh.materials;
 	uint32_t material_count = s->mesh.material_count;
 
-	if (!s->cacheable || decoded_images(&s->mesh) ||
+	if (!s->cacheable || s->play || decoded_images(&s->mesh) ||
 	    mesh_pack(&s->mesh, VERTEX_COMPACT, &s->packed))
 		return;
 	s->cache_key.width = (uint32_t)width;
@@ -265,7 +269,7 @@ static int load_mesh(struct content *s, const struct content_config *o, const ch
 	if (ret)
 		return ret;
 	o = s->own;
-	return content_cache_lookup(s, o, path) ? load_model(path, o, &s->mesh) : 0;
+	return content_cache_lookup(s, o, path) ? load_model(path, o, &s->mesh, &s->play) : 0;
 }
 
 struct try_ctx {
@@ -433,6 +437,7 @@ static void release_model(struct content *s)
 	mesh_packed_release(&s->packed);
 	mesh_cache_entry_free(s->cached);
 	mesh_release(&s->mesh);
+	anim_play_free(s->play);
 	material_release(&s->material);
 	free(s->model_path);
 	image_release(&s->caption);
@@ -445,6 +450,7 @@ void content_take_model(struct content *shown, struct content *fresh, struct con
 
 	memset(old, 0, sizeof(*old));
 	old->mesh = kept.mesh;
+	old->play = kept.play;
 	old->cached = kept.cached;
 	old->packed = kept.packed;
 	old->writer = kept.writer;
@@ -549,7 +555,7 @@ int content_prepare(struct content *s, const struct content_config *o, int width
 		mesh_cache_entry_free(s->cached);
 		s->cached = NULL;
 		mesh_release(&s->mesh);
-		ret = load_model(s->model_path, o, &s->mesh);
+		ret = load_model(s->model_path, o, &s->mesh, &s->play);
 	}
 	if (!ret)
 		ret = material_prepare_mesh(&s->material, &s->mesh, width, height);
@@ -559,6 +565,9 @@ int content_prepare(struct content *s, const struct content_config *o, int width
 	if (!ret)
 		content_frame(s, o, width, height);
 	if (!ret)
+		content_play_check(s);
+	/* No level of detail for a model that plays (content.h). */
+	if (!ret && !s->play)
 		ret = lod_prepare_mesh(&s->mesh, displaced ? 0.0 : o->lod_pixels / s->zoom, width,
 				       height, NULL);
 	if (!ret)
@@ -596,6 +605,8 @@ int content_upload_model(struct content *s, struct renderer *r)
 		ret = renderer_set_packed(r, mesh_cache_entry_mesh(s->cached));
 	else if (!ret && s->packed.vertex_count)
 		ret = renderer_set_packed(r, &s->packed);
+	else if (!ret && s->play)
+		ret = renderer_set_mesh_live(r, &s->mesh);
 	else if (!ret)
 		ret = renderer_set_mesh(r, &s->mesh);
 	/* On the GPU now: the entry's pages leave the process, the packed

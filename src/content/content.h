@@ -10,6 +10,7 @@
 #include "content/matcap_set.h"
 #include "render/background.h"
 #include "scene/material.h"
+#include "scene/anim_play.h"
 #include "scene/mesh.h"
 #include "scene/mesh_cache.h"
 #include "render/render.h"
@@ -53,6 +54,13 @@ struct content {
 	/* The model's settings: the caller's with its NAME.ini over them
 	 * (config/model_settings.h); NULL: the caller's (the built-in knot). */
 	struct content_config *own;
+	/* What live playback needs beside the mesh (scene/anim_play.h); NULL:
+	 * a still. Its mesh keeps its arrays (neither packed nor cached: the
+	 * cache would have to store the parts, skins and targets too) and has
+	 * no level of detail: the poses write its vertices by number, and a
+	 * simplified skin would need its joints and weights carried through
+	 * each collapse. */
+	struct anim_play *play;
 	struct content_look look; /* what matcaps and background came from */
 	unsigned own_look;	  /* CONTENT_OWN_*: set by content_load_model */
 };
@@ -102,6 +110,11 @@ int content_upload_look(struct content *s, struct renderer *r);
 /* Open the matcaps c names (c's default folder when none); strict: a
  * named one that fails fails, else the built-in clay replaces it. */
 int content_load_matcap(const struct content_config *c, bool strict, struct content *s);
+/* src/content/content_play.c: the material's preparation (a
+ * displacement's subdivision, generated tangents) may give the mesh other
+ * vertices than those the poses write: then it shows its first pose and
+ * the journal says so. */
+void content_play_check(struct content *s);
 /* Hand the mesh alone (and its material) to the renderer. The glTF's
  * decoded maps (mesh.material's images, copied into material) are given
  * back once on the GPU; the material's own images and the mesh stay, so

@@ -20,6 +20,7 @@
 	X(PFNGLBINDTEXTUREPROC, BindTexture)                                                       \
 	X(PFNGLBLENDFUNCSEPARATEPROC, BlendFuncSeparate)                                           \
 	X(PFNGLBUFFERDATAPROC, BufferData)                                                         \
+	X(PFNGLBUFFERSUBDATAPROC, BufferSubData)                                                   \
 	X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus)                                 \
 	X(PFNGLCLEARPROC, Clear)                                                                   \
 	X(PFNGLCLEARCOLORPROC, ClearColor)                                                         \

@@ -69,6 +69,7 @@ void renderer_free(struct renderer *r)
 	drop_texture(r->gl, &r->ramp);
 	drop_surfaces(r);
 	draw_list_release(&r->list);
+	free(r->live_scratch);
 	background_free(r->background);
 	caption_gl_free(r->caption);
 	free(r);
@@ -165,7 +166,10 @@ int renderer_set_packed(struct renderer *r, const struct mesh_packed *m)
 	bool tangents = material_needs_tangents(f);
 	bool colors = material_needs_colors(f);
 	bool used[SHADER_ATTR_COUNT] = {true, true, uvs, tangents, colors};
+	bool live = r->live_next;
 	int ret = upload_indices(r, m);
+
+	r->live_next = r->live = false;
 
 	r->drawn = m->format;
 	r->position_scale = m->position_scale;
@@ -184,8 +188,18 @@ int renderer_set_packed(struct renderer *r, const struct mesh_packed *m)
 			r->attr_bytes[a] = 0;
 		}
 	}
-	free(r->list.gather); /* uploaded: only the draws are kept */
-	r->list.gather = NULL;
+	/* Uploaded: only the draws are kept (a live mesh keeps its gather and
+	 * room for a pose gathered). */
+	free(r->live_scratch);
+	r->live_scratch = NULL;
+	if (live && r->list.gather &&
+	    !(r->live_scratch = malloc((size_t)r->list.gather_count * 12 + 1)))
+		ret = -ENOMEM;
+	if (!live) {
+		free(r->list.gather);
+		r->list.gather = NULL;
+	}
+	r->live = live && !ret;
 	if (!ret && r->gl->GetError() == GL_OUT_OF_MEMORY) {
 		log_err("render: out of GPU memory for %u vertices", m->vertex_count);
 		ret = -ENOMEM;
@@ -202,6 +216,41 @@ int renderer_set_mesh(struct renderer *r, const struct mesh *m)
 		ret = renderer_set_packed(r, &packed);
 	mesh_packed_release(&packed);
 	return ret;
+}
+
+int renderer_set_mesh_live(struct renderer *r, const struct mesh *m)
+{
+	struct mesh_packed packed;
+	int ret = mesh_pack(m, VERTEX_FLOAT32, &packed);
+
+	/* Its gather (16-bit chunks) is kept: each pose is gathered alike. */
+	r->live_next = true;
+	if (!ret)
+		ret = renderer_set_packed(r, &packed);
+	mesh_packed_release(&packed);
+	return ret;
+}
+
+/* One float32 array of xyz per vertex into its buffer, gathered as it was
+ * uploaded. */
+static void replace_xyz(struct renderer *r, int a, const float *src)
+{
+	const struct draw_list *l = &r->list;
+	size_t count = l->gather ? l->gather_count : (size_t)r->attr_bytes[a] / 12;
+	float *g = l->gather ? r->live_scratch : NULL;
+
+	for (size_t i = 0; g && i < count; i++)
+		memcpy(g + i * 3, src + (size_t)l->gather[i] * 3, 12);
+	r->gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo[a]);
+	r->gl->BufferSubData(GL_ARRAY_BUFFER, 0, (GLsizeiptr)(count * 12), g ? g : src);
+}
+
+void renderer_set_vertices(struct renderer *r, const float *positions, const float *normals)
+{
+	if (!r->live || r->drawn != VERTEX_FLOAT32)
+		return;
+	replace_xyz(r, SHADER_ATTR_POSITION, positions);
+	replace_xyz(r, SHADER_ATTR_NORMAL, normals);
 }
 
 /* repeat: the detail map tiles (glTF's default) and is mipmapped, so a

@@ -33,6 +33,12 @@ void renderer_free(struct renderer *r);
  * read. Without it the renderer draws the plain matcap. */
 int renderer_set_material(struct renderer *r, const struct material *m);
 int renderer_set_mesh(struct renderer *r, const struct mesh *m);
+/* A mesh whose poses replace its positions and normals (live playback,
+ * scene/anim_play.h): float32 arrays, whatever the vertex format set. */
+int renderer_set_mesh_live(struct renderer *r, const struct mesh *m);
+/* The live mesh's positions and normals (xyz per vertex of the mesh set)
+ * from now on; nothing for a mesh not set live. */
+void renderer_set_vertices(struct renderer *r, const float *positions, const float *normals);
 /* The same from arrays already in the GPU's format (a mapped cache entry),
  * uploaded as they are; m may be unmapped once it returns. */
 int renderer_set_packed(struct renderer *r, const struct mesh_packed *m);

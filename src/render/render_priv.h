@@ -60,6 +60,10 @@ struct renderer {
 	struct background *background; /* NULL: the view's clear colour */
 	struct caption_gl *caption;    /* NULL: none */
 	unsigned caption_serial;       /* bumped with each caption set */
+	/* A mesh that plays live (renderer_set_mesh_live): float32 arrays its
+	 * poses replace; live_scratch: room for a pose gathered into chunks. */
+	bool live, live_next;
+	float *live_scratch;
 };
 
 /* The matcap's minifying filter for a viewport (render.c). */
