@@ -112,8 +112,9 @@ int content_upload_look(struct content *s, struct renderer *r);
 int content_load_matcap(const struct content_config *c, bool strict, struct content *s);
 /* src/content/content_play.c: the material's preparation (a
  * displacement's subdivision, generated tangents) may give the mesh other
- * vertices than those the poses write: then it shows its first pose and
- * the journal says so. */
+ * vertices than those the poses write, or tangents a feature reads (they
+ * are not posed): then it shows its first pose and the journal says so.
+ * Tangents no feature reads are dropped. */
 void content_play_check(struct content *s);
 /* Hand the mesh alone (and its material) to the renderer. The glTF's
  * decoded maps (mesh.material's images, copied into material) are given

@@ -3,8 +3,16 @@
 #include "content/content.h"
 #include "util/log.h"
 
+#include <stdlib.h>
+
 void content_play_check(struct content *s)
 {
+	/* The file's tangents, where no feature reads them, are not posed:
+	 * they are left out, as the upload would leave them. */
+	if (s->play && s->mesh.tangents && !material_needs_tangents(s->material.features)) {
+		free(s->mesh.tangents);
+		s->mesh.tangents = NULL;
+	}
 	if (!s->play || (s->play->vertex_count == s->mesh.vertex_count && !s->mesh.tangents))
 		return;
 	log_warn("%s: its animation does not play with this material's subdivision or tangents; "
