@@ -82,10 +82,10 @@ SRC_INPUT   := input/action input/button input/gesture input/touch_decode input/
 SRC_CAMERA  := camera/camera_feed camera/camera_link camera/camera_math camera/camera_proto \
 	       camera/camera_texture
 SRC_RENDER  := render/background render/bake render/draw_list render/framing render/gl render/poster render/render_scale \
-	       render/caption render/render render/render_draw render/shader render/shading
+	       render/caption render/render render/render_draw render/render_skin render/shader render/shading
 SRC_SCENE   := scene/lod scene/material scene/mesh scene/mesh_cache scene/mesh_cache_fields scene/mesh_cache_key scene/mesh_gen scene/mesh_pack scene/subdivide scene/tangent \
 	       scene/texture scene/caption scene/caption_text
-SRC_SCENE   += scene/anim scene/anim_sampler scene/anim_palette scene/anim_play
+SRC_SCENE   += scene/anim scene/anim_sampler scene/anim_palette scene/anim_play scene/anim_play_gpu
 SRC_UTIL    := util/file util/folder_watch util/image util/log util/math3d
 LIB_C  := $(SRC_APP) $(SRC_OPS) $(SRC_CONTENT) $(SRC_CONFIG) $(SRC_STATE) $(SRC_DISPLAY) $(SRC_INPUT) $(SRC_CAMERA) $(SRC_RENDER) $(SRC_SCENE) $(SRC_UTIL)
 # The C++ shims, each behind a C header (gltf_ext.h is internal to the glTF one).

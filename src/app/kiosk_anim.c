@@ -16,6 +16,7 @@ struct kiosk_anim {
 	uint64_t due_ns;      /* the next frame */
 	uint64_t fade_ns;     /* a crossfade started then; 0: none */
 	bool held;	      /* the clock stood still: it goes on from the next step */
+	float *rows;	      /* the bone palette's rows (skinned on the GPU) */
 };
 
 struct kiosk_anim *kiosk_anim_new(void)
@@ -29,6 +30,8 @@ struct kiosk_anim *kiosk_anim_new(void)
 
 static void drop_poses(struct kiosk_anim *a)
 {
+	free(a->rows);
+	a->rows = NULL;
 	anim_pose_free(a->pose);
 	anim_pose_free(a->from);
 	anim_pose_free(a->mix);
@@ -81,14 +84,15 @@ static void set_up(struct kiosk_anim *a, const struct content *c, const struct k
 	a->pose = anim_pose_new(a->play->anim);
 	a->from = anim_pose_new(a->play->anim);
 	a->mix = anim_pose_new(a->play->anim);
-	if (clip < 0 || !a->pose || !a->from || !a->mix) {
+	a->rows = c->play_gpu ? malloc((size_t)a->play->bones * 12 * sizeof(float)) : NULL;
+	if (clip < 0 || !a->pose || !a->from || !a->mix || (c->play_gpu && !a->rows)) {
 		drop_poses(a);
 		return;
 	}
 	a->first_clip = clip;
 	start_clip(a, in->config, clip, now);
-	log_info("%s: plays animation %d of %zu (%s, %.2f s) live, posed on the CPU", c->model_path,
-		 clip, a->play->anim->clip_count,
+	log_info("%s: plays animation %d of %zu (%s, %.2f s) live", c->model_path, clip,
+		 a->play->anim->clip_count,
 		 a->play->anim->clips[clip].name ? a->play->anim->clips[clip].name : "unnamed",
 		 a->play->anim->clips[clip].duration);
 }
@@ -120,8 +124,18 @@ static void pose_now(struct kiosk_anim *a, struct content *c, struct renderer *r
 	} else {
 		a->fade_ns = 0;
 	}
-	anim_play_pose(c->play, shown, c->mesh.positions, c->mesh.normals);
-	renderer_set_vertices(r, c->mesh.positions, c->mesh.normals);
+	if (!c->play_gpu) {
+		anim_play_pose(c->play, shown, c->mesh.positions, c->mesh.normals);
+		renderer_set_vertices(r, c->mesh.positions, c->mesh.normals);
+		return;
+	}
+	anim_play_bones(c->play, shown, a->rows);
+	renderer_set_bones(r, a->rows);
+	/* Morph targets move the parts' own arrays (on the CPU). */
+	if (c->play->morphs) {
+		anim_play_morph(c->play, shown, c->mesh.positions, c->mesh.normals);
+		renderer_set_vertices(r, c->mesh.positions, c->mesh.normals);
+	}
 }
 
 bool kiosk_anim_step(struct kiosk_anim *a, struct content *c, struct renderer *r,

@@ -606,7 +606,7 @@ int content_upload_model(struct content *s, struct renderer *r)
 	else if (!ret && s->packed.vertex_count)
 		ret = renderer_set_packed(r, &s->packed);
 	else if (!ret && s->play)
-		ret = renderer_set_mesh_live(r, &s->mesh);
+		ret = content_play_upload(s, r);
 	else if (!ret)
 		ret = renderer_set_mesh(r, &s->mesh);
 	/* On the GPU now: the entry's pages leave the process, the packed

@@ -61,6 +61,7 @@ struct content {
 	 * simplified skin would need its joints and weights carried through
 	 * each collapse. */
 	struct anim_play *play;
+	bool play_gpu;		  /* uploaded skinned on the GPU (content_play_upload) */
 	struct content_look look; /* what matcaps and background came from */
 	unsigned own_look;	  /* CONTENT_OWN_*: set by content_load_model */
 };
@@ -116,6 +117,10 @@ int content_load_matcap(const struct content_config *c, bool strict, struct cont
  * are not posed): then it shows its first pose and the journal says so.
  * Tangents no feature reads are dropped. */
 void content_play_check(struct content *s);
+/* The mesh of a content that plays, to the renderer: skinned on the GPU
+ * where its bones fit the GPU's palette, else posed on the CPU (the
+ * journal says which, and why). */
+int content_play_upload(struct content *s, struct renderer *r);
 /* Hand the mesh alone (and its material) to the renderer. The glTF's
  * decoded maps (mesh.material's images, copied into material) are given
  * back once on the GPU; the material's own images and the mesh stay, so

@@ -3,6 +3,7 @@
 #include "util/log.h"
 #include "render/draw_list.h"
 #include "render/shader.h"
+#include "scene/anim_palette.h"
 #include "scene/texture.h"
 
 #include <errno.h>
@@ -30,6 +31,9 @@ struct renderer *renderer_new(const struct gl *gl, const char *shader_dir)
 	 * against a supersampled reference, large and small on screen. */
 	r->matcap_filter = MATCAP_FILTER_AUTO;
 	gl->GenBuffers(SHADER_ATTR_COUNT, r->vbo);
+	gl->GenBuffers(2, r->skin_vbo);
+	r->bone_limit =
+	    anim_palette_size(gl->caps.max_vertex_uniform_vectors, RENDER_SKIN_RESERVED);
 	gl->GenBuffers(1, &r->ibo);
 	gl->GenTextures(1, &r->matcap);
 	return r;
@@ -63,6 +67,8 @@ void renderer_free(struct renderer *r)
 		return;
 	drop_programs(r);
 	r->gl->DeleteBuffers(SHADER_ATTR_COUNT, r->vbo);
+	r->gl->DeleteBuffers(2, r->skin_vbo);
+	free(r->bone_rows);
 	r->gl->DeleteBuffers(1, &r->ibo);
 	r->gl->DeleteTextures(1, &r->matcap);
 	drop_texture(r->gl, &r->detail);
@@ -170,9 +176,10 @@ int renderer_set_packed(struct renderer *r, const struct mesh_packed *m)
 	int ret = upload_indices(r, m);
 
 	r->live_next = r->live = false;
-
 	r->drawn = m->format;
 	r->position_scale = m->position_scale;
+	if (!ret)
+		ret = render_skin_set(r);
 	if (!ret && r->mode_set)
 		prepare_variants(r);
 	/* Colours without an array are one constant (material vertex_color). */
@@ -505,6 +512,7 @@ static void find_uniforms(const struct gl *gl, struct program *p)
 	p->base_color = gl->GetUniformLocation(p->id, "u_base_color");
 	p->shininess = gl->GetUniformLocation(p->id, "u_shininess");
 	p->alpha = gl->GetUniformLocation(p->id, "u_alpha");
+	p->bones = gl->GetUniformLocation(p->id, "u_bones");
 }
 
 /* A range's program variant by its alphaMode (enum mesh_alpha) and sides;
@@ -531,8 +539,14 @@ static struct program *program_get(struct renderer *r, enum shading_mode mode, b
 
 	if (p->id)
 		return p;
-	if (shader_source_matcap(&src, r->shader_dir, features, mode, ortho, lit, r->highp) ||
-	    shader_program_build(r->gl, &src, &id))
+	if (shader_source_matcap(&src, r->shader_dir, features, mode, ortho, lit, r->highp))
+		return NULL;
+	if (r->bones) { /* a model skinned on the GPU (render_skin.c) */
+		src.bones = (int)r->bones;
+		src.attributes[SHADER_ATTR_JOINTS] = "a_joints";
+		src.attributes[SHADER_ATTR_WEIGHTS] = "a_weights";
+	}
+	if (shader_program_build(r->gl, &src, &id))
 		return NULL;
 	p->id = id;
 	p->features = features;
@@ -563,6 +577,22 @@ static void prepare_variants(struct renderer *r)
 			r->variants[side][v] = q ? q : (struct program *)p[side];
 		}
 	}
+}
+
+int render_skin_set(struct renderer *r)
+{
+	uint32_t bones = r->bones_next;
+
+	r->bones_next = 0;
+	if (bones == r->bones)
+		return 0;
+	r->bones = bones;
+	if (!bones) {
+		r->gl->DisableVertexAttribArray(SHADER_ATTR_JOINTS);
+		r->gl->DisableVertexAttribArray(SHADER_ATTR_WEIGHTS);
+	}
+	drop_programs(r);
+	return r->mode_set ? renderer_set_mode(r, r->mode, r->ortho) : 0;
 }
 
 int renderer_set_mode(struct renderer *r, enum shading_mode mode, bool ortho)

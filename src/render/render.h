@@ -39,6 +39,19 @@ int renderer_set_mesh_live(struct renderer *r, const struct mesh *m);
 /* The live mesh's positions and normals (xyz per vertex of the mesh set)
  * from now on; nothing for a mesh not set live. */
 void renderer_set_vertices(struct renderer *r, const float *positions, const float *normals);
+/* A mesh skinned on the GPU: its positions and normals the parts' own
+ * (scene/anim_play.h), each vertex's four bones (indices as floats) and
+ * weights, a palette of `bones` (no more than renderer_bone_palette):
+ * programs that skin are built for it. Float32 arrays, replaced where its
+ * morph targets move them (renderer_set_vertices). */
+int renderer_set_mesh_skinned(struct renderer *r, const struct mesh *m, const float *joints,
+			      const float *weights, uint32_t bones);
+/* The palette's rows from now on: 12 floats a bone (rows of 3x4). */
+void renderer_set_bones(struct renderer *r, const float *rows);
+/* The bones a palette holds on this GPU (from GL_MAX_VERTEX_UNIFORM_VECTORS),
+ * or fewer as set (0: every model skins on the CPU; the bench and tests). */
+uint32_t renderer_bone_palette(const struct renderer *r);
+void renderer_set_bone_limit(struct renderer *r, uint32_t bones);
 /* The same from arrays already in the GPU's format (a mapped cache entry),
  * uploaded as they are; m may be unmapped once it returns. */
 int renderer_set_packed(struct renderer *r, const struct mesh_packed *m);

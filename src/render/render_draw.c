@@ -92,6 +92,7 @@ static void bind_arrays(const struct renderer *r, uint32_t base)
 					(const void *)(uintptr_t)(base * stride));
 		gl->EnableVertexAttribArray((GLuint)a);
 	}
+	render_skin_bind(r, base);
 }
 
 /* The GL state the draws of one frame pass through, set only where it
@@ -111,6 +112,7 @@ static void use_program(const struct renderer *r, struct draw_state *st, const s
 	gl->UniformMatrix4fv(p->modelview, 1, GL_FALSE, st->mv);
 	gl->UniformMatrix4fv(p->projection, 1, GL_FALSE, st->proj);
 	gl->UniformMatrix3fv(p->normal_matrix, 1, GL_FALSE, st->nm);
+	render_skin_uniforms(r, p);
 	set_uniforms(r, p);
 	st->program = p;
 	st->surface = UINT32_MAX;

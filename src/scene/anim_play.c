@@ -65,6 +65,19 @@ static void morph_part(struct anim_play *p, const struct anim_play_part *part,
 	}
 }
 
+void anim_play_morph(struct anim_play *p, const struct anim_pose *pose, float *positions,
+		     float *normals)
+{
+	for (uint32_t i = 0; i < p->part_count; i++) {
+		const struct anim_play_part *part = &p->parts[i];
+		size_t at = (size_t)part->first_vertex * 3, count = (size_t)part->vertex_count * 3;
+
+		morph_part(p, part, pose);
+		memcpy(positions + at, p->morphed, count * sizeof(float));
+		memcpy(normals + at, p->morphed + count, count * sizeof(float));
+	}
+}
+
 /* The cofactor matrix of m's 3x3 (the normal matrix up to a scale), as
  * the bake takes it: negated where m mirrors. */
 static void normal_matrix(const float *m, double n[9])
@@ -220,6 +233,10 @@ void anim_play_free(struct anim_play *p)
 	free(p->worlds);
 	free(p->joint_matrices);
 	free(p->morphed);
+	free(p->gpu_joints);
+	free(p->gpu_weights);
+	free(p->skin_bone);
+	free(p->node_bone);
 	mesh_anim_free(p->anim);
 	free(p);
 }

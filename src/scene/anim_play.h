@@ -60,6 +60,15 @@ struct anim_play {
 	float (*joint_matrices)[16];
 	float *morphed;
 	uint32_t joint_max, part_vertex_max;
+	/* The GPU path (anim_play_gpu_prepare): one palette of bones for the
+	 * whole model, bone 0 the fit alone, then every skin's joints, then
+	 * the nodes rigid parts follow; each vertex's four bones (as floats,
+	 * as the shader reads them) and weights. bones 0: the CPU path. */
+	uint32_t bones;
+	float *gpu_joints, *gpu_weights;
+	uint32_t *skin_bone; /* per skin, its first bone */
+	int *node_bone;	     /* per node, the bone of the rigid parts it shows; 0: none */
+	bool morphs;	     /* some part has targets: its own arrays change a frame */
 };
 
 /* The allocations of the scratch, once parts and skins are filled. 0 or
@@ -68,6 +77,19 @@ int anim_play_finish(struct anim_play *p);
 /* positions and normals (xyz per vertex, p->vertex_count) at a pose. */
 void anim_play_pose(struct anim_play *p, const struct anim_pose *pose, float *positions,
 		    float *normals);
+/* The GPU path: the bones the model needs in one palette; with no more
+ * than `palette`, its vertices' bones and weights (an unweighted vertex
+ * and a part at the skeleton's root take bone 0). 0, -E2BIG (more bones:
+ * the CPU path), -ENOTSUP (a part's normals are generated from its posed
+ * triangles: the CPU path) or -ENOMEM. Called again, it decides again. */
+int anim_play_gpu_prepare(struct anim_play *p, uint32_t palette);
+/* The palette at a pose: 3 rows of 4 floats a bone (a 3x4 matrix), the
+ * node worlds and inverse binds with the clip's fit. */
+void anim_play_bones(struct anim_play *p, const struct anim_pose *pose, float *rows);
+/* The parts' own positions and normals with the pose's morph weights
+ * (the GPU path's arrays; the CPU path's before its skin). */
+void anim_play_morph(struct anim_play *p, const struct anim_pose *pose, float *positions,
+		     float *normals);
 /* Frees p, its anim and everything it holds (NULL: nothing). */
 void anim_play_free(struct anim_play *p);
 

@@ -5,9 +5,9 @@
 # loaded once each for its fit) and warm (the posed mesh from the cache),
 # start-up and peak RSS, median of three. Then live playback a frame
 # (bench_anim_live): the 100k knot skinned and turned by an animation
-# (mkmodels), RiggedSimple's skin and AnimatedMorphCube's morph, posed on
-# the CPU (the one path there is: skinning in the vertex shader is not
-# there yet) and drawn, against the same model's still.
+# (mkmodels), RiggedSimple's skin and AnimatedMorphCube's morph, skinned
+# on the GPU (the bones a frame) and posed on the CPU (the arrays a
+# frame), drawn, against the same model's still.
 # Models from Debian's assimp-testmodels: a skin and a morph.
 # Environment: KIOSK, TOOLS.
 set -eu
@@ -44,18 +44,20 @@ for m in simple_skin/simple_skin.gltf \
 done
 
 echo
-echo "## live playback a frame, posed on the CPU ($(uname -m), $(nproc) cores, median of 100)"
+echo "## live playback a frame ($(uname -m), $(nproc) cores, median of 100)"
 echo
 echo "The still keeps its level of detail ([scene] lod_pixels); a model that plays has none."
 echo
-echo "| model | backend | vertices | triangles | pose + arrays ms | draw ms | still triangles | still draw ms |"
-echo "|---|---|---|---|---|---|---|---|"
+echo "| model | path | backend | vertices | triangles | pose ms | draw ms | still triangles | still draw ms |"
+echo "|---|---|---|---|---|---|---|---|---|"
 "$TOOLS/mkmodels" "$out" --bench >/dev/null
 for m in "$out/knot-100k-turning.glb" tests/corpus/khronos/RiggedSimple.gltf \
 	"$a/glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf"; do
 	[ -f "$m" ] || continue
 	for backend in osmesa egl-headless; do
-		"$TOOLS/bench_anim_live" $backend 1280x720 "$m" 100 ||
-			echo "| $(basename "$m") | $backend | - | - | - | - | - | did not run |"
+		for path in gpu cpu; do
+			"$TOOLS/bench_anim_live" $backend 1280x720 "$m" 100 $path ||
+				echo "| $(basename "$m") | $path | $backend | - | - | - | - | - | did not run |"
+		done
 	done
 done

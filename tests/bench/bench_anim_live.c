@@ -1,13 +1,16 @@
 /* What live playback costs a frame (issue 26), printed and never asserted:
  * a model loaded as the live kiosk loads it, played by its animation
  * player (src/app/kiosk_anim.h) a 30th of a second a frame, each frame
- * posed on the CPU (samplers, node worlds, skin or morphs, the fit) and
- * its arrays replaced, then drawn and finished (glFinish); beside it the
+ * posed (samplers, node worlds, skin or morphs, the fit) and its bones or
+ * arrays replaced, then drawn and finished (glFinish); beside it the
  * same model as a still (no pose, its compact arrays, its level of
  * detail), frames taken in turn so that a busy machine slows both alike.
- * One row of medians: vertices and triangles played, ms to pose and
- * replace the arrays, ms to draw; the still's triangles and ms to draw.
- *   bench_anim_live osmesa|egl-headless WxH MODEL [FRAMES] */
+ * One row of medians: the path, vertices and triangles played, ms to pose
+ * and set the bones or arrays, ms to draw; the still's triangles and ms
+ * to draw.
+ * The pose is the GPU's (skinning in the vertex shader, the bones set a
+ * frame) where the model fits its palette, or with `cpu` the CPU's.
+ *   bench_anim_live osmesa|egl-headless WxH MODEL [FRAMES [cpu]] */
 #include "app/kiosk_anim.h"
 #include "config/settings.h"
 #include "content/content.h"
@@ -47,7 +50,7 @@ struct shown {
 	struct view v;
 };
 
-static int show(struct display *d, const char *model, bool live, struct shown *out)
+static int show(struct display *d, const char *model, bool live, uint32_t bones, struct shown *out)
 {
 	struct options o;
 
@@ -58,6 +61,8 @@ static int show(struct display *d, const char *model, bool live, struct shown *o
 	o.content.anim_fps = 0;
 	out->c = o.content;
 	out->r = renderer_new(&d->gl, NULL);
+	if (out->r)
+		renderer_set_bone_limit(out->r, bones);
 	if (!out->r || content_load(&out->s, &out->c, true) ||
 	    content_prepare(&out->s, &out->c, d->width, d->height) ||
 	    content_upload(&out->s, out->r) || renderer_set_mode(out->r, out->c.mode, out->c.ortho))
@@ -88,7 +93,8 @@ int main(int argc, char **argv)
 	uint64_t next, now = 1000000000ull;
 
 	if (argc < 4 || sscanf(argv[2], "%dx%d", &cfg.width, &cfg.height) != 2 || n < 2) {
-		fprintf(stderr, "usage: bench_anim_live osmesa|egl-headless WxH MODEL [FRAMES]\n");
+		fprintf(stderr,
+			"usage: bench_anim_live osmesa|egl-headless WxH MODEL [FRAMES [cpu]]\n");
 		return 2;
 	}
 	log_set_level(LOG_WARN);
@@ -99,8 +105,9 @@ int main(int argc, char **argv)
 #endif
 	if (!strcmp(argv[1], "egl-headless"))
 		d = display_egl_new(&cfg);
-	if (!d || d->begin_frame(d) || !a || show(d, argv[3], true, &live) ||
-	    show(d, argv[3], false, &still))
+	if (!d || d->begin_frame(d) || !a ||
+	    show(d, argv[3], true, argc > 5 && !strcmp(argv[5], "cpu") ? 0 : UINT32_MAX, &live) ||
+	    show(d, argv[3], false, 0, &still))
 		return 1;
 	in.config = &live.c;
 	pose = calloc((size_t)n, sizeof(*pose));
@@ -120,9 +127,9 @@ int main(int argc, char **argv)
 		drawn[i] = draw(d, &live);
 		plain[i] = draw(d, &still);
 	}
-	printf("| %s | %s %dx%d | %u | %u | %.3f | %.3f | %u | %.3f |\n", strrchr(argv[3], '/') + 1,
-	       argv[1], cfg.width, cfg.height, live.s.mesh.vertex_count,
-	       live.s.mesh.index_count / 3, median(pose, n), median(drawn, n),
-	       still.s.mesh.index_count / 3, median(plain, n));
+	printf("| %s | %s | %s %dx%d | %u | %u | %.3f | %.3f | %u | %.3f |\n",
+	       strrchr(argv[3], '/') + 1, live.s.play_gpu ? "GPU" : "CPU", argv[1], cfg.width,
+	       cfg.height, live.s.mesh.vertex_count, live.s.mesh.index_count / 3, median(pose, n),
+	       median(drawn, n), still.s.mesh.index_count / 3, median(plain, n));
 	return 0;
 }

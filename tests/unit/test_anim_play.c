@@ -7,6 +7,7 @@
 #include "scene/anim_play.h"
 #include "scene/gltf.h"
 
+#include <errno.h>
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -100,6 +101,81 @@ static void nodes(void **state)
 	each_time("tests/corpus/khronos/AnimatedTriangle.gltf");
 }
 
+/* The vertex shader's skinning (shaders/matcap.vert, SKIN_BONES) in C:
+ * each vertex by its four bones' rows, over the weights' sum. */
+static void mirror_vertex(const struct anim_play *p, const float *rows, uint32_t v, float out[3],
+			  float n[3])
+{
+	const float *j = p->gpu_joints + (size_t)v * 4, *w = p->gpu_weights + (size_t)v * 4;
+	const float *at = p->positions + (size_t)v * 3, *nv = p->normals + (size_t)v * 3;
+	float total = w[0] + w[1] + w[2] + w[3], r[12] = {0};
+	double len = 0;
+
+	for (int k = 0; k < 4; k++)
+		for (int i = 0; i < 12; i++)
+			r[i] += w[k] / total * rows[(size_t)(int)(j[k] + 0.5f) * 12 + i];
+	for (int i = 0; i < 3; i++) {
+		out[i] =
+		    r[i * 4] * at[0] + r[i * 4 + 1] * at[1] + r[i * 4 + 2] * at[2] + r[i * 4 + 3];
+		n[i] = r[i * 4] * nv[0] + r[i * 4 + 1] * nv[1] + r[i * 4 + 2] * nv[2];
+		len += (double)n[i] * n[i];
+	}
+	for (int i = 0; i < 3; i++)
+		n[i] = (float)(n[i] / sqrt(len));
+}
+
+/* The GPU path's bones, through the shader's maths, pose the mesh as the
+ * CPU path does (no morphs here: those stay on the CPU). */
+static void gpu_mirror_at(const char *path, double t)
+{
+	struct anim_play *play = NULL;
+	struct gltf_options o = {.pose = true, .time = t, .speed = 1, .play = &play};
+	struct mesh still;
+	struct anim_pose *pose;
+	float *rows, v[3], n[3];
+	double dp = 0, dn = 0;
+
+	if (access(path, R_OK))
+		return;
+	assert_int_equal(gltf_load_options(path, &o, &still), 0);
+	/* A part without normals of its own takes the CPU path. */
+	if (anim_play_gpu_prepare(play, 1000) == -ENOTSUP) {
+		print_message("%s: normals generated, the CPU path\n", path);
+		anim_play_free(play);
+		mesh_release(&still);
+		return;
+	}
+	assert_int_equal(anim_play_gpu_prepare(play, 1), -E2BIG);
+	assert_int_equal(anim_play_gpu_prepare(play, 1000), 0);
+	pose = anim_pose_new(play->anim);
+	anim_pose_apply(play->anim, &play->anim->clips[0], t, pose);
+	rows = calloc((size_t)play->bones * 12, sizeof(float));
+	anim_play_bones(play, pose, rows);
+	for (uint32_t i = 0; i < still.vertex_count; i++) {
+		mirror_vertex(play, rows, i, v, n);
+		for (int k = 0; k < 3; k++) {
+			dp = fmax(dp, fabs(v[k] - still.positions[i * 3 + k]));
+			dn = fmax(dn, fabs(n[k] - still.normals[i * 3 + k]));
+		}
+	}
+	print_message("%s at %.2f s on the GPU's maths: %u bones, positions off by %g, normals "
+		      "by %g\n",
+		      path, t, play->bones, dp, dn);
+	assert_true(dp < 1e-5 && dn < 1e-4);
+	free(rows);
+	anim_pose_free(pose);
+	anim_play_free(play);
+	mesh_release(&still);
+}
+
+static void gpu_mirror(void **state)
+{
+	(void)state;
+	gpu_mirror_at("tests/corpus/khronos/RiggedSimple.gltf", 0.9);
+	gpu_mirror_at(ASSIMP "simple_skin/simple_skin.gltf", 1.3);
+	gpu_mirror_at("tests/corpus/khronos/BoxAnimated.gltf", 1.7);
+}
+
 /* No animation: nothing kept, and the very mesh a load without it gives. */
 static void still_model_unchanged(void **state)
 {
@@ -125,6 +201,7 @@ int main(void)
 	    cmocka_unit_test(morph),
 	    cmocka_unit_test(skin),
 	    cmocka_unit_test(nodes),
+	    cmocka_unit_test(gpu_mirror),
 	    cmocka_unit_test(still_model_unchanged),
 	};
 	return cmocka_run_group_tests_name("anim_play", tests, NULL, NULL);

@@ -1,0 +1,96 @@
+/* A model skinned on the GPU (render.h renderer_set_mesh_skinned): its
+ * vertices' four bones and weights in two arrays of their own, and the
+ * palette's rows set on every program that skins. A model without it
+ * keeps today's programs (no SKIN_BONES), arrays and uniforms. */
+#include "render/render.h"
+#include "render/render_priv.h"
+#include "scene/anim_palette.h"
+#include "util/log.h"
+
+#include <errno.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+uint32_t renderer_bone_palette(const struct renderer *r)
+{
+	return r->bone_limit;
+}
+
+void renderer_set_bone_limit(struct renderer *r, uint32_t bones)
+{
+	uint32_t gpu =
+	    anim_palette_size(r->gl->caps.max_vertex_uniform_vectors, RENDER_SKIN_RESERVED);
+
+	r->bone_limit = bones < gpu ? bones : gpu;
+}
+
+/* One array of 4 floats a vertex, gathered into 16-bit chunks as the
+ * mesh's were. */
+static int upload_vec4(struct renderer *r, GLuint vbo, const float *src, uint32_t count)
+{
+	const struct draw_list *l = &r->list;
+	size_t n = l->gather ? l->gather_count : count;
+	float *g = l->gather ? malloc(n * 16 + 1) : NULL;
+
+	if (l->gather && !g)
+		return -ENOMEM;
+	for (size_t i = 0; g && i < n; i++)
+		memcpy(g + i * 4, src + (size_t)l->gather[i] * 4, 16);
+	r->gl->BindBuffer(GL_ARRAY_BUFFER, vbo);
+	r->gl->BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(n * 16), g ? g : src, GL_STATIC_DRAW);
+	free(g);
+	return 0;
+}
+
+int renderer_set_mesh_skinned(struct renderer *r, const struct mesh *m, const float *joints,
+			      const float *weights, uint32_t bones)
+{
+	struct mesh_packed packed;
+	float *rows = calloc((size_t)bones * 12 + 1, sizeof(float));
+	int ret = rows && bones ? mesh_pack(m, VERTEX_FLOAT32, &packed) : -ENOMEM;
+
+	if (ret) {
+		free(rows);
+		return ret;
+	}
+	free(r->bone_rows);
+	r->bone_rows = rows;
+	for (uint32_t b = 0; b < bones; b++) /* the identity until posed */
+		rows[b * 12] = rows[b * 12 + 5] = rows[b * 12 + 10] = 1.0f;
+	r->live_next = true;
+	r->bones_next = bones;
+	ret = renderer_set_packed(r, &packed);
+	mesh_packed_release(&packed);
+	if (!ret)
+		ret = upload_vec4(r, r->skin_vbo[0], joints, m->vertex_count);
+	if (!ret)
+		ret = upload_vec4(r, r->skin_vbo[1], weights, m->vertex_count);
+	return ret;
+}
+
+void renderer_set_bones(struct renderer *r, const float *rows)
+{
+	if (r->bones)
+		memcpy(r->bone_rows, rows, (size_t)r->bones * 12 * sizeof(float));
+}
+
+void render_skin_bind(const struct renderer *r, uint32_t base)
+{
+	if (!r->bones)
+		return;
+	for (int a = 0; a < 2; a++) {
+		GLuint at = a ? SHADER_ATTR_WEIGHTS : SHADER_ATTR_JOINTS;
+
+		r->gl->BindBuffer(GL_ARRAY_BUFFER, r->skin_vbo[a]);
+		r->gl->VertexAttribPointer(at, 4, GL_FLOAT, GL_FALSE, 0,
+					   (const void *)(uintptr_t)(base * 16u));
+		r->gl->EnableVertexAttribArray(at);
+	}
+}
+
+void render_skin_uniforms(const struct renderer *r, const struct program *p)
+{
+	if (p->bones >= 0 && r->bones)
+		r->gl->Uniform4fv(p->bones, (GLsizei)r->bones * 3, r->bone_rows);
+}
