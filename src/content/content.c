@@ -34,6 +34,7 @@ static int load_model(const char *path, const struct content_config *o, struct m
 					 .scene = o->model_scene,
 					 .scene_setting = "[scene] model_scene",
 					 .play = o->anim_live ? play : NULL,
+					 .animation_optional = o->anim_live,
 					 .pose = o->anim_time >= 0 || o->anim_live,
 					 .animation = o->animation,
 					 .animation_setting = "[scene] animation",

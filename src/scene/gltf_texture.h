@@ -44,6 +44,9 @@ struct gltf_options {
 	 * (0: 1) with `loop` (enum anim_loop); a name the file lacks is an
 	 * error naming `animation_setting`. false: the rest pose. */
 	bool pose;
+	/* A clip the file lacks is a warning and the rest pose (the live
+	 * kiosk: a folder's other models may have it), not an error. */
+	bool animation_optional;
 	const char *animation, *animation_setting;
 	double time, speed;
 	int loop;

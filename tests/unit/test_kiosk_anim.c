@@ -263,6 +263,23 @@ static void still_models_cost_nothing(void **state)
 	content_release(&s);
 }
 
+/* A clip the file lacks is no error in the live kiosk (a folder's other
+ * models may have it): the model loads, still, in its rest pose. */
+static void a_clip_it_lacks_shows_still(void **state)
+{
+	(void)state;
+	struct content_config c = config("tests/corpus/khronos/RiggedSimple.gltf", -1);
+	struct content s;
+
+	c.animation = "walk";
+	assert_int_equal(content_load(&s, &c, true), 0);
+	assert_null(s.play);
+	content_release(&s);
+	c.anim_live = false; /* a still (--time) names the setting: an error */
+	c.anim_time = 1;
+	assert_int_not_equal(content_load(&s, &c, true), 0);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -270,6 +287,7 @@ int main(void)
 	    cmocka_unit_test(frames_at_the_rate),
 	    cmocka_unit_test(next_animation_crossfades),
 	    cmocka_unit_test(still_models_cost_nothing),
+	    cmocka_unit_test(a_clip_it_lacks_shows_still),
 	};
 	setenv("XDG_CACHE_HOME", "/nonexistent", 1); /* no cache: each load is parsed */
 	return cmocka_run_group_tests_name("kiosk_anim", tests, open_display, NULL);
