@@ -39,7 +39,7 @@ struct renderer *renderer_new(const struct gl *gl, const char *shader_dir)
 	return r;
 }
 
-static void drop_programs(struct renderer *r)
+void render_drop_programs(struct renderer *r)
 {
 	struct program *p = &r->programs[0][0][0][0];
 
@@ -65,7 +65,7 @@ void renderer_free(struct renderer *r)
 {
 	if (!r)
 		return;
-	drop_programs(r);
+	render_drop_programs(r);
 	r->gl->DeleteBuffers(SHADER_ATTR_COUNT, r->vbo);
 	r->gl->DeleteBuffers(2, r->skin_vbo);
 	free(r->bone_rows);
@@ -225,41 +225,6 @@ int renderer_set_mesh(struct renderer *r, const struct mesh *m)
 	return ret;
 }
 
-int renderer_set_mesh_live(struct renderer *r, const struct mesh *m)
-{
-	struct mesh_packed packed;
-	int ret = mesh_pack(m, VERTEX_FLOAT32, &packed);
-
-	/* Its gather (16-bit chunks) is kept: each pose is gathered alike. */
-	r->live_next = true;
-	if (!ret)
-		ret = renderer_set_packed(r, &packed);
-	mesh_packed_release(&packed);
-	return ret;
-}
-
-/* One float32 array of xyz per vertex into its buffer, gathered as it was
- * uploaded. */
-static void replace_xyz(struct renderer *r, int a, const float *src)
-{
-	const struct draw_list *l = &r->list;
-	size_t count = l->gather ? l->gather_count : (size_t)r->attr_bytes[a] / 12;
-	float *g = l->gather ? r->live_scratch : NULL;
-
-	for (size_t i = 0; g && i < count; i++)
-		memcpy(g + i * 3, src + (size_t)l->gather[i] * 3, 12);
-	r->gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo[a]);
-	r->gl->BufferSubData(GL_ARRAY_BUFFER, 0, (GLsizeiptr)(count * 12), g ? g : src);
-}
-
-void renderer_set_vertices(struct renderer *r, const float *positions, const float *normals)
-{
-	if (!r->live || r->drawn != VERTEX_FLOAT32)
-		return;
-	replace_xyz(r, SHADER_ATTR_POSITION, positions);
-	replace_xyz(r, SHADER_ATTR_NORMAL, normals);
-}
-
 /* repeat: the detail map tiles (glTF's default) and is mipmapped, so a
  * far, dense map does not shimmer; it has power-of-two sides for that.
  * The ramp is read by angle: clamped, no mipmaps, so any size is legal in
@@ -412,7 +377,7 @@ int renderer_set_precision(struct renderer *r, bool highp)
 	if (highp == r->highp)
 		return 0;
 	r->highp = highp;
-	drop_programs(r);
+	render_drop_programs(r);
 	return r->mode_set ? renderer_set_mode(r, r->mode, r->ortho) : 0;
 }
 
@@ -489,7 +454,7 @@ int renderer_set_material(struct renderer *r, const struct material *m)
 	if (ret)
 		log_err("render: cannot upload the material's textures");
 	if (!ret && changed) {
-		drop_programs(r);
+		render_drop_programs(r);
 		if (r->mode_set)
 			ret = renderer_set_mode(r, r->mode, r->ortho);
 	}
@@ -541,7 +506,7 @@ static struct program *program_get(struct renderer *r, enum shading_mode mode, b
 		return p;
 	if (shader_source_matcap(&src, r->shader_dir, features, mode, ortho, lit, r->highp))
 		return NULL;
-	if (r->bones) { /* a model skinned on the GPU (render_skin.c) */
+	if (r->bones) { /* a model skinned on the GPU (render_live.c) */
 		src.bones = (int)r->bones;
 		src.attributes[SHADER_ATTR_JOINTS] = "a_joints";
 		src.attributes[SHADER_ATTR_WEIGHTS] = "a_weights";
@@ -577,22 +542,6 @@ static void prepare_variants(struct renderer *r)
 			r->variants[side][v] = q ? q : (struct program *)p[side];
 		}
 	}
-}
-
-int render_skin_set(struct renderer *r)
-{
-	uint32_t bones = r->bones_next;
-
-	r->bones_next = 0;
-	if (bones == r->bones)
-		return 0;
-	r->bones = bones;
-	if (!bones) {
-		r->gl->DisableVertexAttribArray(SHADER_ATTR_JOINTS);
-		r->gl->DisableVertexAttribArray(SHADER_ATTR_WEIGHTS);
-	}
-	drop_programs(r);
-	return r->mode_set ? renderer_set_mode(r, r->mode, r->ortho) : 0;
 }
 
 int renderer_set_mode(struct renderer *r, enum shading_mode mode, bool ortho)

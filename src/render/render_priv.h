@@ -70,7 +70,7 @@ struct renderer {
 	 * poses replace; live_scratch: room for a pose gathered into chunks. */
 	bool live, live_next;
 	float *live_scratch;
-	/* Skinned on the GPU (render_skin.c): the palette's bones (0: no
+	/* Skinned on the GPU (render_live.c): the palette's bones (0: no
 	 * skinning, today's programs), its rows (12 floats a bone), the
 	 * bone limit (GL_MAX_VERTEX_UNIFORM_VECTORS' palette, or less for the
 	 * bench), the bones' indices and weights arrays. */
@@ -79,10 +79,12 @@ struct renderer {
 	GLuint skin_vbo[2];
 };
 
-/* render.c: the palette of the mesh being set (bones_next, else none)
- * in place, the programs rebuilt when it changed (the skinning arrays
- * disabled when none skins). render_skin.c: the skinning arrays bound
- * from vertex `base`; the palette's rows for a program that skins. */
+/* render.c: every program dropped (built again on use). render_live.c:
+ * the palette of the mesh being set (bones_next, else none) in place, the
+ * programs rebuilt when it changed (the skinning arrays disabled when
+ * none skins); the skinning arrays bound from vertex `base`; the
+ * palette's rows for a program that skins. */
+void render_drop_programs(struct renderer *r);
 int render_skin_set(struct renderer *r);
 void render_skin_bind(const struct renderer *r, uint32_t base);
 void render_skin_uniforms(const struct renderer *r, const struct program *p);

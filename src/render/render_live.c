@@ -1,7 +1,9 @@
-/* A model skinned on the GPU (render.h renderer_set_mesh_skinned): its
- * vertices' four bones and weights in two arrays of their own, and the
- * palette's rows set on every program that skins. A model without it
- * keeps today's programs (no SKIN_BONES), arrays and uniforms. */
+/* A mesh that plays its animation: posed on the CPU, its float32
+ * positions and normals replaced a frame (renderer_set_mesh_live); or
+ * skinned on the GPU (renderer_set_mesh_skinned): its vertices' four
+ * bones and weights in two arrays of their own, and the palette's rows
+ * set on every program that skins. A model without animation keeps
+ * today's programs (no SKIN_BONES), arrays and uniforms. */
 #include "render/render.h"
 #include "render/render_priv.h"
 #include "scene/anim_palette.h"
@@ -11,6 +13,57 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+
+int renderer_set_mesh_live(struct renderer *r, const struct mesh *m)
+{
+	struct mesh_packed packed;
+	int ret = mesh_pack(m, VERTEX_FLOAT32, &packed);
+
+	/* Its gather (16-bit chunks) is kept: each pose is gathered alike. */
+	r->live_next = true;
+	if (!ret)
+		ret = renderer_set_packed(r, &packed);
+	mesh_packed_release(&packed);
+	return ret;
+}
+
+/* One float32 array of xyz per vertex into its buffer, gathered as it was
+ * uploaded. */
+static void replace_xyz(struct renderer *r, int a, const float *src)
+{
+	const struct draw_list *l = &r->list;
+	size_t count = l->gather ? l->gather_count : (size_t)r->attr_bytes[a] / 12;
+	float *g = l->gather ? r->live_scratch : NULL;
+
+	for (size_t i = 0; g && i < count; i++)
+		memcpy(g + i * 3, src + (size_t)l->gather[i] * 3, 12);
+	r->gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo[a]);
+	r->gl->BufferSubData(GL_ARRAY_BUFFER, 0, (GLsizeiptr)(count * 12), g ? g : src);
+}
+
+void renderer_set_vertices(struct renderer *r, const float *positions, const float *normals)
+{
+	if (!r->live || r->drawn != VERTEX_FLOAT32)
+		return;
+	replace_xyz(r, SHADER_ATTR_POSITION, positions);
+	replace_xyz(r, SHADER_ATTR_NORMAL, normals);
+}
+
+int render_skin_set(struct renderer *r)
+{
+	uint32_t bones = r->bones_next;
+
+	r->bones_next = 0;
+	if (bones == r->bones)
+		return 0;
+	r->bones = bones;
+	if (!bones) {
+		r->gl->DisableVertexAttribArray(SHADER_ATTR_JOINTS);
+		r->gl->DisableVertexAttribArray(SHADER_ATTR_WEIGHTS);
+	}
+	render_drop_programs(r);
+	return r->mode_set ? renderer_set_mode(r, r->mode, r->ortho) : 0;
+}
 
 uint32_t renderer_bone_palette(const struct renderer *r)
 {
