@@ -8,6 +8,7 @@
 
 struct kiosk_anim {
 	const struct anim_play *play; /* the content's it was set up for */
+	unsigned serial;	      /* the renderer's mesh it was set up for */
 	struct anim_pose *pose, *from, *mix;
 	struct anim_clock clock;
 	int first_clip, clip; /* the setting's, and the one playing; -1: none */
@@ -65,14 +66,15 @@ static void start_clip(struct kiosk_anim *a, const struct content_config *cfg, i
 
 /* The clip [scene] animation names for this content; "all" plays the
  * first (a clock per clip would be needed), "off" none. */
-static void set_up(struct kiosk_anim *a, const struct content *c, const struct kiosk_anim_input *in,
-		   uint64_t now)
+static void set_up(struct kiosk_anim *a, const struct content *c, const struct renderer *r,
+		   const struct kiosk_anim_input *in, uint64_t now)
 {
 	const char *want = in->config->animation ? in->config->animation : "auto";
 	int clip;
 
 	drop_poses(a);
 	a->play = c->play;
+	a->serial = renderer_mesh_serial(r);
 	a->clip = -1;
 	a->fade_ns = 0;
 	a->clip_step = in->clip_step;
@@ -141,12 +143,14 @@ static void pose_now(struct kiosk_anim *a, struct content *c, struct renderer *r
 bool kiosk_anim_step(struct kiosk_anim *a, struct content *c, struct renderer *r,
 		     const struct kiosk_anim_input *in, uint64_t now, uint64_t *next)
 {
-	bool fresh = a->play != c->play;
+	/* Another mesh uploaded (another model, or one put back): set up
+	 * again, whatever its address. */
+	bool fresh = a->play != c->play || a->serial != renderer_mesh_serial(r);
 	double fps = in->config->anim_fps;
 
 	*next = CLOCK_NEVER;
 	if (fresh)
-		set_up(a, c, in, now);
+		set_up(a, c, r, in, now);
 	if (a->clip < 0)
 		return false;
 	if (in->clip_step != a->clip_step)

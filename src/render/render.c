@@ -176,6 +176,7 @@ int renderer_set_packed(struct renderer *r, const struct mesh_packed *m)
 	int ret = upload_indices(r, m);
 
 	r->live_next = r->live = false;
+	r->mesh_serial++;
 	r->drawn = m->format;
 	r->position_scale = m->position_scale;
 	if (!ret)

@@ -48,6 +48,9 @@ int renderer_set_mesh_skinned(struct renderer *r, const struct mesh *m, const fl
 			      const float *weights, uint32_t bones);
 /* The palette's rows from now on: 12 floats a bone (rows of 3x4). */
 void renderer_set_bones(struct renderer *r, const float *rows);
+/* Which mesh is set, 1, 2, ... (a new one each set): a player knows its
+ * model's arrays are the ones on the GPU. */
+unsigned renderer_mesh_serial(const struct renderer *r);
 /* The bones a palette holds on this GPU (from GL_MAX_VERTEX_UNIFORM_VECTORS),
  * or fewer as set (0: every model skins on the CPU; the bench and tests). */
 uint32_t renderer_bone_palette(const struct renderer *r);

@@ -65,6 +65,11 @@ int render_skin_set(struct renderer *r)
 	return r->mode_set ? renderer_set_mode(r, r->mode, r->ortho) : 0;
 }
 
+unsigned renderer_mesh_serial(const struct renderer *r)
+{
+	return r->mesh_serial;
+}
+
 uint32_t renderer_bone_palette(const struct renderer *r)
 {
 	return r->bone_limit;

@@ -75,6 +75,7 @@ struct renderer {
 	 * bone limit (GL_MAX_VERTEX_UNIFORM_VECTORS' palette, or less for the
 	 * bench), the bones' indices and weights arrays. */
 	uint32_t bones, bones_next, bone_limit;
+	unsigned mesh_serial; /* bumped with each mesh set */
 	float *bone_rows;
 	GLuint skin_vbo[2];
 };

@@ -229,6 +229,11 @@ static void next_animation_crossfades(void **state)
 		off_start = fmax(off_start, fabs(s.mesh.positions[i] - start[i]));
 	}
 	assert_true(off_before > 1e-3 && off_start > 1e-3);
+	/* The same model uploaded again (a swap put back): its arrays are new
+	 * on the GPU, and the player poses them at once. */
+	assert_false(kiosk_anim_step(a, &s, r, &in, T0 + 1126000000ull, &next));
+	assert_int_equal(content_upload_model(&s, r), 0);
+	assert_true(kiosk_anim_step(a, &s, r, &in, T0 + 1127000000ull, &next));
 	free(before);
 	free(start);
 	kiosk_anim_free(a);
