@@ -172,12 +172,23 @@ static bool plane_possible(const struct kiosk *k)
 	return k->display->overlay && !k->view.rotation && !k->display->plane_scaled;
 }
 
+/* The caption's picture of the stop the app shows ([frame] stops), the
+ * one the renderer then draws: both were drawn on the worker. */
+static const struct image *caption_picture(struct kiosk *k)
+{
+	int stop = app_state(k->app)->stop;
+
+	renderer_show_stop(k->renderer, stop);
+	return content_caption(k->content, stop);
+}
+
 /* The caption on an overlay plane where the display has one that takes it
  * (tested once per picture, after a first frame set the mode): true, and
  * GL draws none. */
 static bool caption_on_plane(struct kiosk *k)
 {
 	struct display *d = k->display;
+	const struct image *img = caption_picture(k);
 	unsigned serial = renderer_caption_serial(k->renderer);
 
 	if (!d->overlay)
@@ -188,8 +199,7 @@ static bool caption_on_plane(struct kiosk *k)
 		k->caption_plane = 0;
 		return false;
 	}
-	if (d->overlay(d->overlay_ctx, &k->content->caption, serial, k->caption_at[0],
-		       k->caption_at[1])) {
+	if (d->overlay(d->overlay_ctx, img, serial, k->caption_at[0], k->caption_at[1])) {
 		k->caption_refused = serial;
 		k->caption_plane = 0;
 		return false;
@@ -205,6 +215,7 @@ static bool caption_on_plane(struct kiosk *k)
 static uint64_t caption_deadline(struct kiosk *k, uint64_t now)
 {
 	struct display *d = k->display;
+	const struct image *img = caption_picture(k);
 	unsigned serial = renderer_caption_serial(k->renderer);
 	int at[2];
 
@@ -213,10 +224,15 @@ static uint64_t caption_deadline(struct kiosk *k, uint64_t now)
 	if (d->overlay && plane_possible(k) && k->frames_drawn && serial != k->caption_plane &&
 	    serial != k->caption_refused)
 		kiosk_tell_app(k, APP_DISPLAY_BACK);
+	/* Another picture than the plane's (a stop's text, or back from
+	 * one): the next frame puts it on the plane or draws it with GL. */
+	if (k->caption_plane && serial != k->caption_plane) {
+		kiosk_tell_app(k, APP_DISPLAY_BACK);
+		return now + 10000000000ull;
+	}
 	if (at[0] == k->caption_at[0] && at[1] == k->caption_at[1])
 		return now + 10000000000ull;
-	if (k->caption_plane &&
-	    !d->overlay(d->overlay_ctx, &k->content->caption, serial, at[0], at[1])) {
+	if (k->caption_plane && !d->overlay(d->overlay_ctx, img, serial, at[0], at[1])) {
 		log_debug("caption: its plane moved to %d,%d", at[0], at[1]);
 		memcpy(k->caption_at, at, sizeof(at));
 	} else {
@@ -251,6 +267,7 @@ static int draw(struct kiosk *k, uint64_t now)
 	/* The frame is full size again: full-resolution overlays (the
 	 * caption, the logo) draw here, at d->width x d->height, before the
 	 * present. */
+	caption_picture(k);
 	renderer_caption_at(k->renderer, &k->view, caption_clock(), d->width, d->height,
 			    k->caption_at);
 	if (!caption_on_plane(k))

@@ -41,7 +41,8 @@ void kiosk_report_status(struct kiosk *k)
 	       k->display->read_frame(k->display, &frame) == 0;
 	/* On its plane the caption is not in the frame GL drew: put in. */
 	if (have && k->caption_plane)
-		caption_blend(&k->content->caption, k->caption_at[0], k->caption_at[1], &frame);
+		caption_blend(content_caption(k->content, app_state(k->app)->stop),
+			      k->caption_at[0], k->caption_at[1], &frame);
 	status_server_answer(k->status, &r, have ? &frame : NULL);
 	image_release(&frame);
 }

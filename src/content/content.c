@@ -4,7 +4,6 @@
 #include "render/bake.h"
 #include "render/framing.h"
 #include "scene/gltf.h"
-#include "scene/gltf_name.h"
 #include "scene/lod.h"
 #include "util/log.h"
 
@@ -346,45 +345,6 @@ int content_load_background(const struct content_config *o, bool strict,
 	return 0;
 }
 
-/* The name "auto" shows: the glTF's title or scene name, else the model
- * file's, without folder and extension (the built-in knot has none).
- * Malloc'd, or NULL. */
-static char *model_name(const char *path, const char *scene)
-{
-	const char *base = path ? strrchr(path, '/') : NULL, *dot;
-	char *named = path ? gltf_model_name(path, scene) : NULL;
-
-	if (named)
-		return named;
-
-	base = base ? base + 1 : path;
-	if (!base || !*base)
-		return NULL;
-	dot = strrchr(base, '.');
-	return strndup(base, dot && dot != base ? (size_t)(dot - base) : strlen(base));
-}
-
-/* The caption's picture, drawn here on the worker (FreeType and HarfBuzz
- * are no work for the loop thread): once per content, so per model. A
- * caption that fails is left out (the journal says why), unless strict. */
-static int load_caption(struct content *s, const struct content_config *o, bool strict)
-{
-	char *name = o->caption.text && !strcmp(o->caption.text, "auto")
-			 ? model_name(s->model_path, o->model_scene)
-			 : NULL;
-	int ret;
-
-	s->caption_place = (struct caption_config){.padding = o->caption.padding,
-						   .position = o->caption.position,
-						   .drift = o->caption.drift};
-	ret =
-	    caption_wanted(&o->caption) ? caption_render(&o->caption, name, &s->caption) : -ENOENT;
-	free(name);
-	if (ret == -ENOENT || (ret && !strict))
-		return 0;
-	return ret;
-}
-
 int content_load(struct content *s, const struct content_config *o, bool strict)
 {
 	int ret;
@@ -403,7 +363,7 @@ int content_load(struct content *s, const struct content_config *o, bool strict)
 		ret = material_load(&s->material, &content_settings(s, o)->material, &s->mesh,
 				    strict);
 	if (!ret)
-		ret = load_caption(s, content_settings(s, o), strict);
+		ret = content_load_captions(s, content_settings(s, o), strict);
 	if (ret)
 		content_release(s);
 	return ret;
@@ -425,7 +385,7 @@ int content_load_model(struct content *s, const struct content_config *o, const 
 	if (!ret)
 		ret = content_load_look(s, content_settings(s, o), shown);
 	if (!ret)
-		ret = load_caption(s, content_settings(s, o), false);
+		ret = content_load_captions(s, content_settings(s, o), false);
 	if (ret)
 		content_release(s);
 	return ret;
@@ -441,7 +401,7 @@ static void release_model(struct content *s)
 	anim_play_free(s->play);
 	material_release(&s->material);
 	free(s->model_path);
-	image_release(&s->caption);
+	content_release_captions(s);
 	free_own(s);
 }
 
@@ -458,6 +418,7 @@ void content_take_model(struct content *shown, struct content *fresh, struct con
 	old->material = kept.material;
 	old->model_path = kept.model_path;
 	old->caption = kept.caption;
+	memcpy(old->stop_caption, kept.stop_caption, sizeof(old->stop_caption));
 	old->own = kept.own;
 	/* The look's text: fresh's equals kept's where it has none of its own. */
 	old->look = kept.look;
@@ -620,6 +581,9 @@ int content_upload_model(struct content *s, struct renderer *r)
 		release_decoded_maps(&s->mesh);
 	if (!ret)
 		ret = renderer_set_caption(r, &s->caption, &s->caption_place);
+	if (!ret)
+		ret = renderer_set_stop_captions(r, s->stop_caption, CAPTION_STOPS,
+						 &s->caption_place);
 	/* The parse, the preparation and the upload freed far more than the
 	 * scene keeps; malloc holds freed heap for reuse, and a kiosk reuses
 	 * little: back to the system before the first frame. */

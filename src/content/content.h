@@ -50,6 +50,9 @@ struct content {
 	/* The caption's picture (scene/caption.h), this model's; empty: none.
 	 * Kept after the upload: the overlay plane is filled from it. */
 	struct image caption;
+	/* The picture of each of [frame] stops' texts, in the caption's
+	 * style; empty: a stop without text (the caption is shown). */
+	struct image stop_caption[CAPTION_STOPS];
 	struct caption_config caption_place; /* its position, padding, drift; no strings */
 	/* The model's settings: the caller's with its NAME.ini over them
 	 * (config/model_settings.h); NULL: the caller's (the built-in knot). */
@@ -130,6 +133,14 @@ int content_upload_model(struct content *s, struct renderer *r);
  * up and orientation, then its or [scene]'s yaw and pitch), with the
  * clear colour of the background. Its zoom is not set. */
 struct view content_view(const struct content_config *c);
+/* Draw s's caption and its stops' pictures (content_caption.c), c's
+ * [caption] and [frame] stops. A picture that fails is left out (the
+ * journal says why), unless strict. */
+int content_load_captions(struct content *s, const struct content_config *c, bool strict);
+void content_release_captions(struct content *s);
+/* The picture shown at stop (the app state's; -1: none): the stop's, else
+ * the caption (empty: nothing). */
+const struct image *content_caption(const struct content *s, int stop);
 /* The settings s's model is shown with: its own, else c. */
 const struct content_config *content_settings(const struct content *s,
 					      const struct content_config *c);

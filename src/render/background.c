@@ -241,9 +241,5 @@ void background_draw(const struct background *b, int width, int height, int rota
 		gl->BindTexture(GL_TEXTURE_2D, b->texture);
 		gl->Uniform1i(b->image, 0);
 	}
-	gl->BindBuffer(GL_ARRAY_BUFFER, 0);
-	gl->EnableVertexAttribArray(SHADER_ATTR_POSITION);
-	gl->VertexAttribPointer(SHADER_ATTR_POSITION, 2, GL_FLOAT, GL_FALSE, 0, quad);
-	gl->DrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-	gl->DisableVertexAttribArray(SHADER_ATTR_POSITION);
+	gl_draw_quad(gl, SHADER_ATTR_POSITION, quad);
 }

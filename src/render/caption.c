@@ -87,11 +87,7 @@ void caption_gl_draw(const struct caption_gl *cap, double seconds, int width, in
 	gl->Uniform1i(cap->image, 0);
 	gl->ActiveTexture(GL_TEXTURE0);
 	gl->BindTexture(GL_TEXTURE_2D, cap->tex);
-	gl->BindBuffer(GL_ARRAY_BUFFER, 0);
-	gl->EnableVertexAttribArray(SHADER_ATTR_POSITION);
-	gl->VertexAttribPointer(SHADER_ATTR_POSITION, 2, GL_FLOAT, GL_FALSE, 0, quad);
-	gl->DrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-	gl->DisableVertexAttribArray(SHADER_ATTR_POSITION);
+	gl_draw_quad(gl, SHADER_ATTR_POSITION, quad);
 	gl->UseProgram(0);
 	gl->Disable(GL_BLEND);
 }

@@ -82,3 +82,12 @@ GLuint gl_texture_picture(const struct gl *gl, int width, int height, const void
 	gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 	return tex;
 }
+
+void gl_draw_quad(const struct gl *gl, GLuint attr, const float corners[8])
+{
+	gl->BindBuffer(GL_ARRAY_BUFFER, 0);
+	gl->EnableVertexAttribArray(attr);
+	gl->VertexAttribPointer(attr, 2, GL_FLOAT, GL_FALSE, 0, corners);
+	gl->DrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+	gl->DisableVertexAttribArray(attr);
+}

@@ -138,4 +138,9 @@ bool gl_extension_listed(const char *list, const char *name);
  * RGBA bytes, one level, linear, clamped. Returns the texture, bound. */
 GLuint gl_texture_picture(const struct gl *gl, int width, int height, const void *rgba);
 
+/* A quad of four corners (xy each, a triangle strip) from client memory,
+ * the attribute attr fed from it: what the pictures over the frame draw
+ * (the poster, the background, the caption, the render-scale pass). */
+void gl_draw_quad(const struct gl *gl, GLuint attr, const float corners[8]);
+
 #endif

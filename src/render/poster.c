@@ -36,11 +36,7 @@ static void draw_image(const struct gl *gl, GLuint program, const struct image *
 	gl->Uniform4f(gl->GetUniformLocation(program, "u_turn"), turn[0], turn[1], turn[2],
 		      turn[3]);
 	gl->Uniform1i(gl->GetUniformLocation(program, "u_image"), 0);
-	gl->BindBuffer(GL_ARRAY_BUFFER, 0);
-	gl->EnableVertexAttribArray(SHADER_ATTR_POSITION);
-	gl->VertexAttribPointer(SHADER_ATTR_POSITION, 2, GL_FLOAT, GL_FALSE, 0, quad);
-	gl->DrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-	gl->DisableVertexAttribArray(SHADER_ATTR_POSITION);
+	gl_draw_quad(gl, SHADER_ATTR_POSITION, quad);
 	gl->UseProgram(0);
 	gl->DeleteTextures(1, &tex);
 }

@@ -20,6 +20,7 @@ struct renderer *renderer_new(const struct gl *gl, const char *shader_dir)
 		return NULL;
 	r->gl = gl;
 	r->shader_dir = shader_dir;
+	r->stop = -1;
 	/* A CPU rasteriser emulates 16-bit mediump with conversions: there
 	 * highp is faster as well as exact (the mediump rows of
 	 * tests/bench/report/speed-error.md: about twice as slow). A GPU runs
@@ -78,6 +79,8 @@ void renderer_free(struct renderer *r)
 	free(r->live_scratch);
 	background_free(r->background);
 	caption_gl_free(r->caption);
+	for (int i = 0; i < CAPTION_STOPS; i++)
+		caption_gl_free(r->stop_caption[i]);
 	free(r);
 }
 
@@ -308,29 +311,78 @@ int renderer_set_caption(struct renderer *r, const struct image *img,
 		return -EINVAL;
 	caption_gl_free(r->caption);
 	r->caption = cap;
-	r->caption_serial += cap != NULL;
+	r->caption_serial = cap ? ++r->serials : 0;
 	return 0;
+}
+
+int renderer_set_stop_captions(struct renderer *r, const struct image *imgs, int count,
+			       const struct caption_config *c)
+{
+	struct caption_gl *caps[CAPTION_STOPS] = {0};
+	int i;
+
+	for (i = 0; i < count && i < CAPTION_STOPS; i++)
+		if (imgs[i].rgba && !(caps[i] = caption_gl_new(r->gl, &imgs[i], c)))
+			break;
+	if (i < count && i < CAPTION_STOPS) {
+		while (i--)
+			caption_gl_free(caps[i]);
+		return -EINVAL;
+	}
+	for (i = 0; i < CAPTION_STOPS; i++) {
+		caption_gl_free(r->stop_caption[i]);
+		r->stop_caption[i] = caps[i];
+		r->stop_serial[i] = caps[i] ? ++r->serials : 0;
+	}
+	return 0;
+}
+
+void renderer_show_stop(struct renderer *r, int stop)
+{
+	r->stop = stop;
+}
+
+/* The picture shown: the stop's where it has one, else the caption. */
+static const struct caption_gl *shown(const struct renderer *r, unsigned *serial)
+{
+	int i = r->stop;
+
+	if (i >= 0 && i < CAPTION_STOPS && r->stop_caption[i]) {
+		*serial = r->stop_serial[i];
+		return r->stop_caption[i];
+	}
+	*serial = r->caption ? r->caption_serial : 0;
+	return r->caption;
 }
 
 unsigned renderer_caption_serial(const struct renderer *r)
 {
-	return r->caption ? r->caption_serial : 0;
+	unsigned serial;
+
+	shown(r, &serial);
+	return serial;
 }
 
 bool renderer_caption_at(const struct renderer *r, const struct view *v, double seconds, int width,
 			 int height, int out[2])
 {
-	if (!r->caption)
+	unsigned serial;
+	const struct caption_gl *cap = shown(r, &serial);
+
+	if (!cap)
 		return false;
-	caption_gl_at(r->caption, seconds, width, height, v->rotation, out);
+	caption_gl_at(cap, seconds, width, height, v->rotation, out);
 	return true;
 }
 
 void renderer_draw_caption(struct renderer *r, const struct view *v, double seconds, int width,
 			   int height)
 {
-	if (r->caption)
-		caption_gl_draw(r->caption, seconds, width, height, v->rotation);
+	unsigned serial;
+	const struct caption_gl *cap = shown(r, &serial);
+
+	if (cap)
+		caption_gl_draw(cap, seconds, width, height, v->rotation);
 }
 
 void renderer_set_matcap_filter(struct renderer *r, enum matcap_filter filter)

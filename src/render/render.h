@@ -70,6 +70,15 @@ int renderer_set_background(struct renderer *r, const struct background_spec *s,
  * a negative errno after logging, and then the one before stays. */
 int renderer_set_caption(struct renderer *r, const struct image *img,
 			 const struct caption_config *c);
+/* The pictures of [frame] stops' texts (imgs[i]: stop i's; empty: that
+ * stop shows the caption), uploaded here once, as renderer_set_caption's.
+ * Returns 0, or -EINVAL after logging (the old ones kept). */
+int renderer_set_stop_captions(struct renderer *r, const struct image *imgs, int count,
+			       const struct caption_config *c);
+/* Which picture the caption calls below use from now on: stop's (the app
+ * state's stop; -1: none) where it has one, else the caption. Picking is
+ * all the loop thread does: every picture is uploaded already. */
+void renderer_show_stop(struct renderer *r, int stop);
 /* Blend the caption over the frame, at seconds of its drift: call it last,
  * after the scene (and after any scaling of it: full resolution). */
 void renderer_draw_caption(struct renderer *r, const struct view *v, double seconds, int width,
@@ -78,7 +87,8 @@ void renderer_draw_caption(struct renderer *r, const struct view *v, double seco
  * The loop redraws when it moved. */
 bool renderer_caption_at(const struct renderer *r, const struct view *v, double seconds, int width,
 			 int height, int out[2]);
-/* Which caption picture is set, 1, 2, ... (a new one each set); 0: none.
+/* Which caption picture is shown, 1, 2, ... (each picture set has its
+ * own; a stop's too); 0: none.
  * An overlay plane is tested once per picture. */
 unsigned renderer_caption_serial(const struct renderer *r);
 

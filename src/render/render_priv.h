@@ -65,7 +65,13 @@ struct renderer {
 	bool matcap_mipmapped;	       /* its minifying filter now reads the chain */
 	struct background *background; /* NULL: the view's clear colour */
 	struct caption_gl *caption;    /* NULL: none */
-	unsigned caption_serial;       /* bumped with each caption set */
+	unsigned caption_serial;       /* its picture's; 0: none */
+	/* The pictures of [frame] stops' texts; NULL: that stop shows the
+	 * caption. */
+	struct caption_gl *stop_caption[CAPTION_STOPS];
+	unsigned stop_serial[CAPTION_STOPS];
+	int stop;	  /* the stop shown (renderer_show_stop); -1: none */
+	unsigned serials; /* the last picture's serial: each picture set has its own */
 	/* A mesh that plays live (renderer_set_mesh_live): float32 arrays its
 	 * poses replace; live_scratch: room for a pose gathered into chunks. */
 	bool live, live_next;

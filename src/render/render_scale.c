@@ -293,11 +293,7 @@ void render_scale_end(struct render_scale *s)
 	gl->ActiveTexture(GL_TEXTURE0);
 	gl->BindTexture(GL_TEXTURE_2D, s->color);
 	gl->Uniform1i(gl->GetUniformLocation(s->program, "u_image"), 0);
-	gl->BindBuffer(GL_ARRAY_BUFFER, 0);
-	gl->EnableVertexAttribArray(SHADER_ATTR_POSITION);
-	gl->VertexAttribPointer(SHADER_ATTR_POSITION, 2, GL_FLOAT, GL_FALSE, 0, quad);
-	gl->DrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-	gl->DisableVertexAttribArray(SHADER_ATTR_POSITION);
+	gl_draw_quad(gl, SHADER_ATTR_POSITION, quad);
 	gl->UseProgram(0);
 	s->scaled = false;
 }

@@ -39,6 +39,10 @@ struct caption_config {
 	bool drift; /* move a few pixels over hours against burn-in */
 };
 
+/* The most pictures of [frame] stops' texts a model has, each drawn as
+ * the caption is (state/view.h's FRAME_STOPS at most). */
+#define CAPTION_STOPS 8
+
 /* The default size, in pixels of the panel. */
 #define CAPTION_SIZE_DEFAULT 28
 

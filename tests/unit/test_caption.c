@@ -7,6 +7,7 @@
  * quarter. */
 #include "display/display.h"
 #include "render/caption.h"
+#include "render/render.h"
 #include "scene/caption.h"
 #include "scene/gltf_name.h"
 #include "util/log.h"
@@ -346,6 +347,67 @@ static void turned(void **state)
 	drawn(*state, 90, 3, H - 1 - 3);
 }
 
+/* A 2x2 picture of one colour. */
+static void solid(struct image *img, uint8_t r, uint8_t g)
+{
+	assert_int_equal(image_alloc(img, 2, 2), 0);
+	for (int i = 0; i < 4; i++)
+		memcpy(img->rgba + i * 4, (uint8_t[4]){r, g, 0, 255}, 4);
+}
+
+static uint8_t green_at(struct display *d, struct renderer *r)
+{
+	struct view v = {0};
+	struct image f;
+	uint8_t g;
+
+	assert_int_equal(d->begin_frame(d), 0);
+	d->gl.ClearColor(0, 0, 0, 1);
+	d->gl.Clear(GL_COLOR_BUFFER_BIT);
+	renderer_draw_caption(r, &v, 0, W, H);
+	assert_int_equal(d->read_frame(d, &f), 0);
+	g = pixel(&f, 3, 3)[1];
+	assert_int_equal(pixel(&f, 3, 3)[0], 255 - g);
+	image_release(&f);
+	return g;
+}
+
+/* [frame] stops: the renderer shows the picture of the stop the app is
+ * at (green) where it has one, else the caption (red), each picture with
+ * its own serial (a new plane buffer for each). */
+static void stop_picked(void **state)
+{
+	struct display *d = *state;
+	struct caption_config c = {.padding = 3, .position = CAPTION_TOP_LEFT};
+	struct image caption, stops[2] = {{0}};
+	struct renderer *r = renderer_new(&d->gl, NULL);
+	unsigned serial;
+
+	assert_non_null(r);
+	solid(&caption, 255, 0);
+	solid(&stops[0], 0, 255);
+	assert_int_equal(renderer_set_caption(r, &caption, &c), 0);
+	assert_int_equal(renderer_set_stop_captions(r, stops, 2, &c), 0);
+	serial = renderer_caption_serial(r);
+	assert_int_not_equal(serial, 0);
+	assert_int_equal(green_at(d, r), 0);
+	renderer_show_stop(r, 0);
+	assert_int_equal(green_at(d, r), 255);
+	assert_int_not_equal(renderer_caption_serial(r), serial);
+	assert_int_not_equal(renderer_caption_serial(r), 0);
+	renderer_show_stop(r, 1); /* no text: the caption */
+	assert_int_equal(green_at(d, r), 0);
+	assert_int_equal(renderer_caption_serial(r), serial);
+	renderer_show_stop(r, 0);
+	assert_int_equal(green_at(d, r), 255);
+	renderer_show_stop(r, -1);
+	assert_int_equal(green_at(d, r), 0);
+	assert_int_equal(renderer_caption_serial(r), serial);
+	renderer_free(r);
+	image_release(&caption);
+	image_release(&stops[0]);
+}
+
 int main(void)
 {
 	const struct CMUnitTest pure[] = {
@@ -356,6 +418,7 @@ int main(void)
 	const struct CMUnitTest gl[] = {
 	    cmocka_unit_test(upright),
 	    cmocka_unit_test(turned),
+	    cmocka_unit_test(stop_picked),
 	};
 	int failed = cmocka_run_group_tests_name("caption picture", pure, NULL, NULL);
 

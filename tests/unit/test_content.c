@@ -4,6 +4,7 @@
 #include "util/log.h"
 #include "config/options.h"
 #include "content/content.h"
+#include "state/app.h"
 
 #include <errno.h>
 #include <poll.h>
@@ -269,10 +270,68 @@ static void watch_takes_synced_files_once_renamed(void **state)
 	folder_watch_free(w);
 }
 
+static void step(struct app *a, uint64_t t, enum app_action act)
+{
+	struct app_msg m = {.kind = APP_INPUT, .input = {.time_ns = t, .action = act}};
+
+	m.input.pressed = true;
+	app_apply(a, &m);
+	m.input.pressed = false;
+	app_apply(a, &m);
+}
+
+/* [frame] stops: each stop's text drawn with the model, in the caption's
+ * style; the app's stop picks its picture (content_caption, as the loop
+ * thread does), a stop without text and no stop pick the caption. */
+static void stop_captions(void **state)
+{
+	char stops[] = "90 10 1.5 \"The handle\"; -90 0 1 \"Maker's mark\"; 0 -20 2";
+	struct content_config o = {.matcap = "/nonexistent/mc",
+				   .caption = {.text = "Jug", .size = 20, .padding = 4}};
+	struct app_config c = {.turn_speed = 1, .mode = SHADING_VIEW};
+	struct content s;
+	struct app *a;
+
+	(void)state;
+	frame_config_defaults(&o.frame);
+	o.frame.stops = stops;
+	assert_int_equal(content_load(&s, &o, false), 0);
+	assert_non_null(s.caption.rgba);
+	assert_non_null(s.stop_caption[0].rgba);
+	assert_non_null(s.stop_caption[1].rgba);
+	assert_null(s.stop_caption[2].rgba);
+	/* Longer texts than "Jug", in the caption's size: wider boxes. */
+	assert_true(s.stop_caption[0].width > s.caption.width);
+	assert_true(s.stop_caption[1].width > s.caption.width);
+	content_app_frame(&o, &c.frame, &c.rest);
+	a = app_new(&c, 1, 0);
+	assert_ptr_equal(content_caption(&s, app_state(a)->stop), &s.caption);
+	step(a, 0, ACTION_NEXT_STOP);
+	assert_ptr_equal(content_caption(&s, app_state(a)->stop), &s.stop_caption[0]);
+	step(a, 1, ACTION_NEXT_STOP);
+	assert_ptr_equal(content_caption(&s, app_state(a)->stop), &s.stop_caption[1]);
+	step(a, 2, ACTION_NEXT_STOP);
+	assert_int_equal(app_state(a)->stop, 2);
+	assert_ptr_equal(content_caption(&s, app_state(a)->stop), &s.caption);
+	step(a, 3, ACTION_PREV_STOP);
+	assert_ptr_equal(content_caption(&s, app_state(a)->stop), &s.stop_caption[1]);
+	app_free(a);
+	content_release(&s);
+	/* No [caption]: the stops' texts are still shown, the rest nothing. */
+	o.caption = (struct caption_config){.padding = 4};
+	assert_int_equal(content_load(&s, &o, false), 0);
+	assert_null(s.caption.rgba);
+	assert_non_null(s.stop_caption[0].rgba);
+	assert_null(content_caption(&s, -1)->rgba);
+	assert_ptr_equal(content_caption(&s, 0), &s.stop_caption[0]);
+	content_release(&s);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(falls_back_unless_strict),
+	    cmocka_unit_test(stop_captions),
 	    cmocka_unit_test_setup_teardown(rescans_the_folder, make_dir, remove_dir),
 	    cmocka_unit_test_setup_teardown(matcap_first, make_dir, remove_dir),
 	    cmocka_unit_test_setup_teardown(second_parse_sees_the_new_file, make_dir, remove_dir),

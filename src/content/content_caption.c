@@ -1,0 +1,103 @@
+/* The caption's pictures of a content: the [caption] one, and one for the
+ * text of each of [frame] stops in the caption's style, all drawn on the
+ * worker when the model loads. The loop thread only picks the one of the
+ * stop shown: no text is drawn on the frame thread. */
+#include "content/content.h"
+#include "scene/gltf_name.h"
+#include "util/log.h"
+
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* The content's stop pictures are indexed as the app state's stops. */
+_Static_assert(CAPTION_STOPS >= FRAME_STOPS, "a picture for every stop");
+
+/* The name "auto" shows: the glTF's title or scene name, else the model
+ * file's, without folder and extension (the built-in knot has none).
+ * Malloc'd, or NULL. */
+static char *model_name(const char *path, const char *scene)
+{
+	const char *base = path ? strrchr(path, '/') : NULL, *dot;
+	char *named = path ? gltf_model_name(path, scene) : NULL;
+
+	if (named)
+		return named;
+
+	base = base ? base + 1 : path;
+	if (!base || !*base)
+		return NULL;
+	dot = strrchr(base, '.');
+	return strndup(base, dot && dot != base ? (size_t)(dot - base) : strlen(base));
+}
+
+/* The caption's picture, drawn here on the worker (FreeType and HarfBuzz
+ * are no work for the loop thread): once per content, so per model. A
+ * caption that fails is left out (the journal says why), unless strict. */
+static int load_caption(struct content *s, const struct content_config *o, bool strict)
+{
+	char *name = o->caption.text && !strcmp(o->caption.text, "auto")
+			 ? model_name(s->model_path, o->model_scene)
+			 : NULL;
+	int ret;
+
+	ret =
+	    caption_wanted(&o->caption) ? caption_render(&o->caption, name, &s->caption) : -ENOENT;
+	free(name);
+	if (ret == -ENOENT || (ret && !strict))
+		return 0;
+	return ret;
+}
+
+/* Each stop's text as the caption would show it: its font, size, colour,
+ * box, position and logo, the stop's text for [caption] text (shown
+ * whether or not [caption] has one: the stop's text is what the stop is
+ * for). The text is taken as it is: a stop named "auto" says "auto". */
+static int load_stops(struct content *s, const struct content_config *o, bool strict)
+{
+	struct app_frame f;
+	struct quat rest;
+
+	content_app_frame(o, &f, &rest);
+	for (int i = 0; i < f.stop_count && i < CAPTION_STOPS; i++) {
+		struct caption_config c = o->caption;
+		int ret;
+
+		if (!f.stops[i].text[0])
+			continue;
+		c.text = f.stops[i].text;
+		ret = caption_render(&c, f.stops[i].text, &s->stop_caption[i]);
+		if (ret && ret != -ENOENT && strict)
+			return ret;
+		if (ret && ret != -ENOENT)
+			log_warn("[frame] stops: stop %d's text is not shown", i + 1);
+	}
+	return 0;
+}
+
+int content_load_captions(struct content *s, const struct content_config *o, bool strict)
+{
+	int ret;
+
+	s->caption_place = (struct caption_config){.padding = o->caption.padding,
+						   .position = o->caption.position,
+						   .drift = o->caption.drift};
+	ret = load_caption(s, o, strict);
+	if (!ret)
+		ret = load_stops(s, o, strict);
+	return ret;
+}
+
+void content_release_captions(struct content *s)
+{
+	image_release(&s->caption);
+	for (int i = 0; i < CAPTION_STOPS; i++)
+		image_release(&s->stop_caption[i]);
+}
+
+const struct image *content_caption(const struct content *s, int stop)
+{
+	if (stop >= 0 && stop < CAPTION_STOPS && s->stop_caption[stop].rgba)
+		return &s->stop_caption[stop];
+	return &s->caption;
+}
