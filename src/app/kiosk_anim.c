@@ -155,10 +155,14 @@ bool kiosk_anim_step(struct kiosk_anim *a, struct content *c, struct renderer *r
 		return false;
 	if (in->clip_step != a->clip_step)
 		next_clip(a, in, now);
-	/* Held: the clock stays where it is, and no frame is due. */
+	/* Held: the clock stays where it is, and no frame is due; a new
+	 * mesh still gets its first pose (on the GPU path its arrays are the
+	 * parts' own, unposed, until the bones are set). */
 	if (!in->running || in->paused) {
 		a->held = true;
-		return false;
+		if (fresh)
+			pose_now(a, c, r, now);
+		return fresh;
 	}
 	if (a->held)
 		a->last_ns = now;

@@ -194,6 +194,13 @@ static void frames_at_the_rate(void **state)
 	in.paused = false;
 	assert_true(kiosk_anim_step(a, &s, r, &in, now + 1000000000ull, &next));
 	assert_true(fabs(kiosk_anim_time(a) - held) < 1e-6);
+	/* A model uploaded while held is posed once (its first pose), and
+	 * asks for nothing more. */
+	in.running = false;
+	assert_int_equal(content_upload_model(&s, r), 0);
+	assert_true(kiosk_anim_step(a, &s, r, &in, now + 1100000000ull, &next));
+	assert_int_equal(next, CLOCK_NEVER);
+	assert_false(kiosk_anim_step(a, &s, r, &in, now + 1200000000ull, &next));
 	kiosk_anim_free(a);
 	renderer_free(r);
 	content_release(&s);
