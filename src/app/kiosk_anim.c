@@ -140,6 +140,22 @@ static void pose_now(struct kiosk_anim *a, struct content *c, struct renderer *r
 	}
 }
 
+/* Until the next frame: the cap's period, or longer while the clip's
+ * pose holds (STEP keys alone: the animation's own rate); 1 ms past the
+ * key, so that its pose is the new one. */
+static uint64_t frame_wait(const struct kiosk_anim *a, double fps)
+{
+	const struct anim_clock *k = &a->clock;
+	uint64_t period = fps > 0 ? (uint64_t)(1e9 / fps) : 0;
+	bool back = k->loop == ANIM_PINGPONG && k->phase_ns > k->duration_ns;
+	double hold = anim_clip_hold(&a->play->anim->clips[a->clip], anim_clock_time(k), back);
+	double wait = hold / k->speed * 1e9 + 1e6;
+
+	if (hold <= 0 || a->fade_ns || wait < (double)period)
+		return period;
+	return wait < 1e18 ? (uint64_t)wait : (uint64_t)1e18;
+}
+
 bool kiosk_anim_step(struct kiosk_anim *a, struct content *c, struct renderer *r,
 		     const struct kiosk_anim_input *in, uint64_t now, uint64_t *next)
 {
@@ -174,7 +190,7 @@ bool kiosk_anim_step(struct kiosk_anim *a, struct content *c, struct renderer *r
 	anim_clock_advance(&a->clock, now - a->last_ns);
 	a->last_ns = now;
 	pose_now(a, c, r, now);
-	a->due_ns = now + (fps > 0 ? (uint64_t)(1e9 / fps) : 0);
+	a->due_ns = now + frame_wait(a, fps);
 	/* once, ended: nothing moves until the clip changes. */
 	if (anim_clock_moving(&a->clock) || a->fade_ns)
 		*next = a->due_ns;

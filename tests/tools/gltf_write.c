@@ -247,9 +247,10 @@ static void write_anim(FILE *f, const struct gltf_write_opts *o, int view, int a
 	else
 		fprintf(f,
 			"\"animations\":[{\"name\":\"turn\",\"samplers\":[{\"input\":%d,"
-			"\"output\":%d}],\"channels\":[{\"sampler\":0,\"target\":{\"node\":%d,"
+			"\"output\":%d%s}],\"channels\":[{\"sampler\":0,\"target\":{\"node\":%d,"
 			"\"path\":\"rotation\"}}]}],",
-			accessor, accessor + 1, o->anim_node);
+			accessor, accessor + 1, o->anim_step ? ",\"interpolation\":\"STEP\"" : "",
+			o->anim_node);
 }
 
 static void write_json(FILE *f, const struct mesh *m, const struct gltf_write_opts *o,

@@ -50,6 +50,7 @@ struct gltf_write_opts {
 	 * data: URI). */
 	int anim_node;
 	int with_anim;
+	int anim_step; /* its keys STEP instead of LINEAR */
 };
 
 /* Writes path (and, for GLTF_EXTERNAL_BIN, path with .bin for .gltf).

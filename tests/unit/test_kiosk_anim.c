@@ -10,6 +10,7 @@
 #include "content/content.h"
 #include "display/display.h"
 #include "util/clock.h"
+#include "gltf_write.h"
 
 #include <math.h>
 #include <setjmp.h>
@@ -206,6 +207,50 @@ static void frames_at_the_rate(void **state)
 	content_release(&s);
 }
 
+/* A clip of STEP keys alone (a sphere's node turned at 0, 1 and 2 s)
+ * draws at its own rate: a frame when a key comes, none between, however
+ * high animation_fps is. */
+static void step_keys_draw_at_their_rate(void **state)
+{
+	(void)state;
+	char dir[] = "/tmp/mk-step-XXXXXX", path[64];
+	struct gltf_write_opts o = {.index_bytes = 4,
+				    .with_normals = 1,
+				    .bad_index = -1,
+				    .with_anim = 1,
+				    .anim_node = 0,
+				    .anim_step = 1};
+	struct mesh sphere;
+	struct content_config c;
+	struct content s;
+	struct renderer *r;
+	struct kiosk_anim *a = kiosk_anim_new();
+	struct kiosk_anim_input in = {.running = true};
+	uint64_t next;
+	int frames = 0;
+
+	assert_non_null(mkdtemp(dir));
+	snprintf(path, sizeof(path), "%s/step.glb", dir);
+	assert_int_equal(mesh_uv_sphere(&sphere, 12, 8), 0);
+	assert_int_equal(gltf_write(path, &sphere, &o), 0);
+	c = config(path, -1);
+	c.anim_fps = 60;
+	in.config = &c;
+	r = shown(&s, &c);
+	assert_non_null(s.play);
+	assert_true(kiosk_anim_step(a, &s, r, &in, T0, &next));
+	assert_int_equal(next, T0 + 1001000000ull); /* the key at 1 s, not 1/60 s */
+	for (int i = 1; i <= 1999; i++)
+		frames += kiosk_anim_step(a, &s, r, &in, T0 + i * 1000000ull, &next);
+	assert_int_equal(frames, 1);
+	kiosk_anim_free(a);
+	renderer_free(r);
+	content_release(&s);
+	mesh_release(&sphere);
+	unlink(path);
+	rmdir(dir);
+}
+
 /* next-animation: the pose shown blends into the next clip's (here the
  * same clip again from its start) over KIOSK_ANIM_FADE_NS. */
 static void next_animation_crossfades(void **state)
@@ -297,6 +342,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(frames_equal_stills),
 	    cmocka_unit_test(frames_at_the_rate),
+	    cmocka_unit_test(step_keys_draw_at_their_rate),
 	    cmocka_unit_test(next_animation_crossfades),
 	    cmocka_unit_test(still_models_cost_nothing),
 	    cmocka_unit_test(a_clip_it_lacks_shows_still),
