@@ -135,8 +135,15 @@ static void pose_now(struct kiosk_anim *a, struct content *c, struct renderer *r
 	renderer_set_bones(r, a->rows);
 	/* Morph targets move the parts' own arrays (on the CPU). */
 	if (c->play->morphs) {
+		const struct anim_play_split *sp = c->play_split;
+
 		anim_play_morph(c->play, shown, c->mesh.positions, c->mesh.normals);
-		renderer_set_vertices(r, c->mesh.positions, c->mesh.normals);
+		if (sp) { /* in the split's order */
+			anim_play_split_gather(sp, c->mesh.positions, 3, sp->positions);
+			anim_play_split_gather(sp, c->mesh.normals, 3, sp->normals);
+		}
+		renderer_set_vertices(r, sp ? sp->positions : c->mesh.positions,
+				      sp ? sp->normals : c->mesh.normals);
 	}
 }
 

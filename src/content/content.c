@@ -398,7 +398,7 @@ static void release_model(struct content *s)
 	mesh_packed_release(&s->packed);
 	mesh_cache_entry_free(s->cached);
 	mesh_release(&s->mesh);
-	anim_play_free(s->play);
+	content_play_release(s);
 	material_release(&s->material);
 	free(s->model_path);
 	content_release_captions(s);
@@ -412,6 +412,7 @@ void content_take_model(struct content *shown, struct content *fresh, struct con
 	memset(old, 0, sizeof(*old));
 	old->mesh = kept.mesh;
 	old->play = kept.play;
+	old->play_split = kept.play_split;
 	old->cached = kept.cached;
 	old->packed = kept.packed;
 	old->writer = kept.writer;

@@ -64,7 +64,9 @@ struct content {
 	 * simplified skin would need its joints and weights carried through
 	 * each collapse. */
 	struct anim_play *play;
-	bool play_gpu;		  /* uploaded skinned on the GPU (content_play_upload) */
+	bool play_gpu; /* uploaded skinned on the GPU (content_play_upload) */
+	/* Its palette cut into draws (more bones than one holds); NULL: one. */
+	struct anim_play_split *play_split;
 	struct content_look look; /* what matcaps and background came from */
 	unsigned own_look;	  /* CONTENT_OWN_*: set by content_load_model */
 };
@@ -121,8 +123,10 @@ int content_load_matcap(const struct content_config *c, bool strict, struct cont
  * Tangents no feature reads are dropped. */
 void content_play_check(struct content *s);
 /* The mesh of a content that plays, to the renderer: skinned on the GPU
- * where its bones fit the GPU's palette, else posed on the CPU (the
- * journal says which, and why). */
+ * where its bones fit the GPU's palette or each draw's, once cut into
+ * draws that fit, else posed on the CPU (the journal says which, and
+ * why). content_play_release: what playback holds, given back. */
+void content_play_release(struct content *s);
 int content_play_upload(struct content *s, struct renderer *r);
 /* Hand the mesh alone (and its material) to the renderer. The glTF's
  * decoded maps (mesh.material's images, copied into material) are given

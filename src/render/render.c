@@ -68,15 +68,13 @@ void renderer_free(struct renderer *r)
 		return;
 	render_drop_programs(r);
 	r->gl->DeleteBuffers(SHADER_ATTR_COUNT, r->vbo);
-	r->gl->DeleteBuffers(2, r->skin_vbo);
-	free(r->bone_rows);
+	render_live_free(r);
 	r->gl->DeleteBuffers(1, &r->ibo);
 	r->gl->DeleteTextures(1, &r->matcap);
 	drop_texture(r->gl, &r->detail);
 	drop_texture(r->gl, &r->ramp);
 	drop_surfaces(r);
 	draw_list_release(&r->list);
-	free(r->live_scratch);
 	background_free(r->background);
 	caption_gl_free(r->caption);
 	for (int i = 0; i < CAPTION_STOPS; i++)

@@ -44,9 +44,20 @@ void renderer_set_vertices(struct renderer *r, const float *positions, const flo
  * weights, a palette of `bones` (no more than renderer_bone_palette):
  * programs that skin are built for it. Float32 arrays, replaced where its
  * morph targets move them (renderer_set_vertices). */
+struct skin_palettes {
+	uint32_t total; /* the bones renderer_set_bones sets */
+	uint32_t range_count;
+	const uint32_t *first, *count; /* per range of the mesh, into bones */
+	const uint16_t *bones;	       /* each range's palette, numbers among total */
+};
+/* split: the palette cut into draws (scene/anim_play.h anim_play_split):
+ * each of m's ranges draws with its own bones, `bones` the largest
+ * draw's; NULL: one palette of `bones` for every draw. */
 int renderer_set_mesh_skinned(struct renderer *r, const struct mesh *m, const float *joints,
-			      const float *weights, uint32_t bones);
-/* The palette's rows from now on: 12 floats a bone (rows of 3x4). */
+			      const float *weights, uint32_t bones,
+			      const struct skin_palettes *split);
+/* The palette's rows from now on: 12 floats a bone (rows of 3x4), every
+ * bone of a split's total. */
 void renderer_set_bones(struct renderer *r, const float *rows);
 /* Which mesh is set, 1, 2, ... (a new one each set): a player knows its
  * model's arrays are the ones on the GPU. */

@@ -100,6 +100,7 @@ static void bind_arrays(const struct renderer *r, uint32_t base)
 struct draw_state {
 	const struct program *program;
 	uint32_t surface, base;
+	uint32_t palette; /* the range whose split palette is set; UINT32_MAX: none */
 	bool culled, blending;
 	const float *mv, *proj, *nm;
 };
@@ -116,6 +117,7 @@ static void use_program(const struct renderer *r, struct draw_state *st, const s
 	set_uniforms(r, p);
 	st->program = p;
 	st->surface = UINT32_MAX;
+	st->palette = UINT32_MAX;
 }
 
 static void draw_item(struct renderer *r, struct draw_state *st, int side,
@@ -127,6 +129,7 @@ static void draw_item(struct renderer *r, struct draw_state *st, int side,
 
 	if (p != st->program)
 		use_program(r, st, p);
+	render_skin_palette(r, p, it->range, &st->palette);
 	if (it->surface != st->surface) {
 		set_surface(r, p, it->surface);
 		st->surface = it->surface;

@@ -49,10 +49,23 @@ void renderer_set_vertices(struct renderer *r, const float *positions, const flo
 	replace_xyz(r, SHADER_ATTR_NORMAL, normals);
 }
 
+static void drop_palettes(struct renderer *r)
+{
+	free(r->palette_first);
+	free(r->palette_count);
+	free(r->palette_bones);
+	free(r->palette_rows);
+	r->palette_first = r->palette_count = NULL;
+	r->palette_bones = NULL;
+	r->palette_rows = NULL;
+	r->range_count = 0;
+}
+
 int render_skin_set(struct renderer *r)
 {
 	uint32_t bones = r->bones_next;
 
+	drop_palettes(r); /* a split's are set after its mesh */
 	r->bones_next = 0;
 	if (bones == r->bones)
 		return 0;
@@ -68,6 +81,14 @@ int render_skin_set(struct renderer *r)
 unsigned renderer_mesh_serial(const struct renderer *r)
 {
 	return r->mesh_serial;
+}
+
+void render_live_free(struct renderer *r)
+{
+	r->gl->DeleteBuffers(2, r->skin_vbo);
+	free(r->bone_rows);
+	free(r->live_scratch);
+	drop_palettes(r);
 }
 
 uint32_t renderer_bone_palette(const struct renderer *r)
@@ -101,11 +122,35 @@ static int upload_vec4(struct renderer *r, GLuint vbo, const float *src, uint32_
 	return 0;
 }
 
+/* A split's palettes, copied: each range's bones among the total. */
+static int set_palettes(struct renderer *r, const struct skin_palettes *sp)
+{
+	size_t n = 0;
+
+	for (uint32_t i = 0; i < sp->range_count; i++)
+		n = sp->first[i] + sp->count[i] > n ? sp->first[i] + sp->count[i] : n;
+	r->palette_first = malloc((size_t)sp->range_count * 4 + 4);
+	r->palette_count = malloc((size_t)sp->range_count * 4 + 4);
+	r->palette_bones = malloc(n * 2 + 2);
+	r->palette_rows = malloc((size_t)r->bones * 48 + 4);
+	if (!r->palette_first || !r->palette_count || !r->palette_bones || !r->palette_rows) {
+		drop_palettes(r);
+		return -ENOMEM;
+	}
+	memcpy(r->palette_first, sp->first, (size_t)sp->range_count * 4);
+	memcpy(r->palette_count, sp->count, (size_t)sp->range_count * 4);
+	memcpy(r->palette_bones, sp->bones, n * 2);
+	r->range_count = sp->range_count;
+	return 0;
+}
+
 int renderer_set_mesh_skinned(struct renderer *r, const struct mesh *m, const float *joints,
-			      const float *weights, uint32_t bones)
+			      const float *weights, uint32_t bones,
+			      const struct skin_palettes *split)
 {
 	struct mesh_packed packed;
-	float *rows = calloc((size_t)bones * 12 + 1, sizeof(float));
+	uint32_t total = split ? split->total : bones;
+	float *rows = calloc((size_t)total * 12 + 1, sizeof(float));
 	int ret = rows && bones ? mesh_pack(m, VERTEX_FLOAT32, &packed) : -ENOMEM;
 
 	if (ret) {
@@ -114,7 +159,8 @@ int renderer_set_mesh_skinned(struct renderer *r, const struct mesh *m, const fl
 	}
 	free(r->bone_rows);
 	r->bone_rows = rows;
-	for (uint32_t b = 0; b < bones; b++) /* the identity until posed */
+	r->bone_total = total;
+	for (uint32_t b = 0; b < total; b++) /* the identity until posed */
 		rows[b * 12] = rows[b * 12 + 5] = rows[b * 12 + 10] = 1.0f;
 	r->live_next = true;
 	r->bones_next = bones;
@@ -124,13 +170,15 @@ int renderer_set_mesh_skinned(struct renderer *r, const struct mesh *m, const fl
 		ret = upload_vec4(r, r->skin_vbo[0], joints, m->vertex_count);
 	if (!ret)
 		ret = upload_vec4(r, r->skin_vbo[1], weights, m->vertex_count);
+	if (!ret && split)
+		ret = set_palettes(r, split);
 	return ret;
 }
 
 void renderer_set_bones(struct renderer *r, const float *rows)
 {
 	if (r->bones)
-		memcpy(r->bone_rows, rows, (size_t)r->bones * 12 * sizeof(float));
+		memcpy(r->bone_rows, rows, (size_t)r->bone_total * 12 * sizeof(float));
 }
 
 void render_skin_bind(const struct renderer *r, uint32_t base)
@@ -149,6 +197,23 @@ void render_skin_bind(const struct renderer *r, uint32_t base)
 
 void render_skin_uniforms(const struct renderer *r, const struct program *p)
 {
-	if (p->bones >= 0 && r->bones)
+	/* A split palette's rows are set per draw (render_skin_palette). */
+	if (p->bones >= 0 && r->bones && !r->range_count)
 		r->gl->Uniform4fv(p->bones, (GLsizei)r->bones * 3, r->bone_rows);
+}
+
+void render_skin_palette(struct renderer *r, const struct program *p, uint32_t range,
+			 uint32_t *shown)
+{
+	uint32_t n;
+
+	if (!r->range_count || p->bones < 0 || range == *shown || range >= r->range_count)
+		return;
+	n = r->palette_count[range];
+	for (uint32_t i = 0; i < n; i++)
+		memcpy(r->palette_rows + (size_t)i * 12,
+		       r->bone_rows + (size_t)r->palette_bones[r->palette_first[range] + i] * 12,
+		       48);
+	r->gl->Uniform4fv(p->bones, (GLsizei)n * 3, r->palette_rows);
+	*shown = range;
 }

@@ -84,6 +84,13 @@ struct renderer {
 	unsigned mesh_serial; /* bumped with each mesh set */
 	float *bone_rows;
 	GLuint skin_vbo[2];
+	/* A palette split into draws (renderer_set_palettes): the bones of
+	 * all (bone_total rows in bone_rows), each range's palette in them,
+	 * and the rows of the one drawn (bones of them at most). */
+	uint32_t bone_total, range_count;
+	uint32_t *palette_first, *palette_count;
+	uint16_t *palette_bones;
+	float *palette_rows;
 };
 
 /* render.c: every program dropped (built again on use). render_live.c:
@@ -92,9 +99,15 @@ struct renderer {
  * none skins); the skinning arrays bound from vertex `base`; the
  * palette's rows for a program that skins. */
 void render_drop_programs(struct renderer *r);
+/* What render_live.c holds, given back (renderer_free). */
+void render_live_free(struct renderer *r);
 int render_skin_set(struct renderer *r);
 void render_skin_bind(const struct renderer *r, uint32_t base);
 void render_skin_uniforms(const struct renderer *r, const struct program *p);
+/* A split palette's: the rows of the range's bones, when it is another
+ * range's palette than *shown (UINT32_MAX: none yet). */
+void render_skin_palette(struct renderer *r, const struct program *p, uint32_t range,
+			 uint32_t *shown);
 /* The matcap's minifying filter for a viewport (render.c). */
 void render_matcap_choose_filter(struct renderer *r, const int vp[4]);
 

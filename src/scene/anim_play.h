@@ -11,6 +11,7 @@
 #define MK_ANIM_PLAY_H
 
 #include "scene/anim.h"
+#include "scene/mesh.h"
 
 #include <stdbool.h>
 #include <stdint.h>
@@ -80,8 +81,8 @@ void anim_play_pose(struct anim_play *p, const struct anim_pose *pose, float *po
 /* The GPU path: the bones the model needs in one palette; with no more
  * than `palette`, its vertices' bones and weights (an unweighted vertex
  * and a part at the skeleton's root take bone 0). 0, -E2BIG (more bones:
- * the CPU path), -ENOTSUP (a part's normals are generated from its posed
- * triangles: the CPU path) or -ENOMEM. Called again, it decides again. */
+ * the arrays are made for anim_play_split to cut), -ENOTSUP (a part's normals are generated from
+ * its posed triangles: the CPU path) or -ENOMEM. Called again, it decides again. */
 int anim_play_gpu_prepare(struct anim_play *p, uint32_t palette);
 /* The palette at a pose: 3 rows of 4 floats a bone (a 3x4 matrix), the
  * node worlds and inverse binds with the clip's fit. */
@@ -90,6 +91,31 @@ void anim_play_bones(struct anim_play *p, const struct anim_pose *pose, float *r
  * (the GPU path's arrays; the CPU path's before its skin). */
 void anim_play_morph(struct anim_play *p, const struct anim_pose *pose, float *positions,
 		     float *normals);
+/* The GPU path when the bones outnumber the palette: every draw range
+ * of m split (scene/anim_palette.h) into draws of at most `palette`
+ * bones, the vertices two draws share copied, each vertex's bones
+ * renumbered into its draw's palette. A vertex of the split is the mesh's
+ * vertex source[i]. */
+struct anim_play_split {
+	uint32_t vertex_count, index_count, range_count;
+	uint32_t *source;
+	uint32_t *indices;
+	struct mesh_range *ranges; /* one a draw, its range's material */
+	uint32_t *palette_first;   /* per range, into bones */
+	uint32_t *palette_count;
+	uint16_t *bones;	    /* the draws' palettes, one after another */
+	uint32_t palette_max;	    /* the largest draw's */
+	float *joints, *weights;    /* 4 per vertex of the split */
+	float *positions, *normals; /* xyz per vertex of the split: room to gather into */
+};
+/* Anim_play_gpu_prepare's bones split so; 0, -E2BIG (a triangle alone
+ * needs more: the CPU path) or -ENOMEM. */
+int anim_play_split(const struct anim_play *p, const struct mesh *m, uint32_t palette,
+		    struct anim_play_split *out);
+void anim_play_split_release(struct anim_play_split *s);
+/* to[i] = from[source[i]], `width` floats each, for the split's vertices. */
+void anim_play_split_gather(const struct anim_play_split *s, const float *from, int width,
+			    float *to);
 /* Frees p, its anim and everything it holds (NULL: nothing). */
 void anim_play_free(struct anim_play *p);
 

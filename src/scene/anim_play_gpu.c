@@ -74,10 +74,6 @@ int anim_play_gpu_prepare(struct anim_play *p, uint32_t palette)
 	if (!p->skin_bone || !p->node_bone)
 		return -ENOMEM;
 	p->bones = count_bones(p);
-	if (p->bones > palette) {
-		p->bones = 0;
-		return -E2BIG;
-	}
 	p->gpu_joints = calloc(n + 1, sizeof(float));
 	p->gpu_weights = calloc(n + 1, sizeof(float));
 	if (!p->gpu_joints || !p->gpu_weights) {
@@ -99,7 +95,7 @@ int anim_play_gpu_prepare(struct anim_play *p, uint32_t palette)
 			p->gpu_weights[(size_t)v * 4] = 1.0f;
 		}
 	}
-	return 0;
+	return p->bones > palette ? -E2BIG : 0;
 }
 
 /* rows = fit x m, as 3 rows of 4 (double on the way: the fit's centre
