@@ -3,6 +3,9 @@
 // CAMERA_ORTHO when the projection is orthographic. DETAIL_MAP and
 // DETAIL_NORMAL add the UV and the tangent frame, and only then; BASE_COLOR
 // the vertex colour, BASE_MAP the UV through the base map's transform.
+// SKIN_BONES (a model that plays its animation on the GPU) poses each
+// vertex by its four bones of the palette: rows of 3x4 matrices that hold
+// the node worlds, inverse binds and the model's fit.
 
 attribute vec3 a_position;
 attribute vec3 a_normal;
@@ -25,6 +28,12 @@ attribute vec4 a_tangent;
 varying vec4 v_tangent;
 #endif
 
+#ifdef SKIN_BONES
+attribute vec4 a_joints;
+attribute vec4 a_weights;
+uniform vec4 u_bones[SKIN_BONES * 3];
+#endif
+
 uniform mat4 u_modelview;
 uniform mat4 u_projection;
 uniform mat3 u_normal_matrix;
@@ -38,8 +47,27 @@ varying vec3 v_eye;
 
 void main()
 {
+#ifdef SKIN_BONES
+	// The weights' blend of the bones' rows, over their sum (as the CPU
+	// path: scene/anim_play.c); every vertex has a bone of weight.
+	vec4 r0 = vec4(0.0), r1 = vec4(0.0), r2 = vec4(0.0);
+	float total = a_weights.x + a_weights.y + a_weights.z + a_weights.w;
+	for (int k = 0; k < 4; k++) {
+		float w = a_weights[k] / total;
+		int j = int(a_joints[k] + 0.5) * 3;
+		r0 += w * u_bones[j];
+		r1 += w * u_bones[j + 1];
+		r2 += w * u_bones[j + 2];
+	}
+	vec4 at = vec4(a_position, 1.0);
+	vec3 posed = vec3(dot(r0, at), dot(r1, at), dot(r2, at));
+	vec3 turned = vec3(dot(r0.xyz, a_normal), dot(r1.xyz, a_normal), dot(r2.xyz, a_normal));
+	vec4 p = u_modelview * vec4(posed, 1.0);
+	vec3 n = u_normal_matrix * safe_normalize(turned);
+#else
 	vec4 p = u_modelview * vec4(a_position, 1.0);
 	vec3 n = u_normal_matrix * a_normal;
+#endif
 #ifdef CAMERA_ORTHO
 	vec3 eye = vec3(0.0, 0.0, -1.0);
 #else

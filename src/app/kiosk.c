@@ -1,4 +1,5 @@
 #include "app/kiosk.h"
+#include "app/kiosk_anim.h"
 #include "app/kiosk_report.h"
 #include "app/kiosk_state.h"
 #include "app/signals.h"
@@ -541,6 +542,7 @@ static int loop_once(struct kiosk *k, int sig_fd)
 
 	service_screen(k, now);
 	kiosk_content_start_jobs(k);
+	next = earliest(next, kiosk_play_animation(k, now, awake(k)), CLOCK_NEVER);
 	if (app_state(k->app)->dirty && awake(k) && !k->display->waiting && (ret = draw(k, now)))
 		return ret;
 	service_camera(k, 0);
@@ -623,8 +625,10 @@ struct kiosk *kiosk_new(const struct kiosk_parts *p, uint64_t now_ns)
 	k->shown_ortho = p->options->content.ortho;
 	k->scale = render_scale_new(&p->display->gl, p->options->display.render_scale,
 				    p->display->samples, p->options->shader_dir);
-	if (!k->scale || kiosk_content_start(k) || options_copy(&k->started, p->options) ||
-	    options_copy(&k->applied, p->options) || configure(k, now_ns)) {
+	k->anim = kiosk_anim_new();
+	if (!k->scale || !k->anim || kiosk_content_start(k) ||
+	    options_copy(&k->started, p->options) || options_copy(&k->applied, p->options) ||
+	    configure(k, now_ns)) {
 		kiosk_free(k);
 		return NULL;
 	}
@@ -649,6 +653,7 @@ void kiosk_free(struct kiosk *k)
 	metrics_free(k->metrics);
 	app_free(k->app);
 	render_scale_free(k->scale);
+	kiosk_anim_free(k->anim);
 	options_release(&k->started);
 	options_release(&k->applied);
 	free(k);

@@ -1,7 +1,8 @@
 /* The live loop's state, shared by the files that make up the loop:
  * src/app/kiosk.c (the loop, the devices, a reload applied),
  * src/app/kiosk_content.c (the content worker's jobs) and
- * src/app/kiosk_report.c (what --status and the metrics say). Nothing
+ * src/app/kiosk_report.c (what --status and the metrics say) and
+ * src/app/kiosk_anim.c (the animation's frames). Nothing
  * else includes it: the rest of the program sees struct kiosk as opaque
  * (src/app/kiosk.h). */
 #ifndef MK_KIOSK_STATE_H
@@ -28,6 +29,8 @@
 #include <poll.h>
 #include <stdbool.h>
 #include <stdint.h>
+
+struct kiosk_anim; /* app/kiosk_anim.h */
 
 /* Input sources at most (kiosk_add_input). */
 #define KIOSK_MAX_INPUTS 16
@@ -108,9 +111,14 @@ struct kiosk {
 	int caption_at[2];	  /* where the caption is shown (it drifts) */
 	unsigned caption_plane;	  /* the caption picture on an overlay plane; 0: none */
 	unsigned caption_refused; /* the one no plane took (drawn with GL) */
+	struct kiosk_anim *anim;  /* the animation player (kiosk_anim.h) */
 };
 
 void kiosk_tell_app(struct kiosk *k, enum app_msg_kind kind);
+/* src/app/kiosk_anim.c: the animation's pose at now, a frame asked for
+ * when it changed; returns when the next frame is due (CLOCK_NEVER:
+ * none). */
+uint64_t kiosk_play_animation(struct kiosk *k, uint64_t now, bool awake);
 /* src/app/kiosk_content.c: the content worker's jobs (reload, matcap,
  * the matcap folder). */
 int kiosk_content_start(struct kiosk *k);

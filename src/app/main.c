@@ -312,7 +312,11 @@ static int show(struct options *o, char **argv, enum exit_code *display_code)
 	struct content content = {0};
 	struct display *display = NULL;
 	int posters = 0, err = -ENODEV;
-	int ret = before_display(o, &content);
+	int ret;
+
+	/* Only the live kiosk plays an animation; a still is drawn as it was. */
+	o->content.anim_live = live && o->content.anim_time < 0;
+	ret = before_display(o, &content);
 
 	if (!ret && !(display = open_display(o, &err))) {
 		*display_code = display_failed(err);
@@ -320,6 +324,7 @@ static int show(struct options *o, char **argv, enum exit_code *display_code)
 	}
 	if (!ret && live && is_live(o))
 		posters = show_poster(o, display);
+	o->content.anim_live = is_live(o) && o->content.anim_time < 0;
 	if (!ret)
 		ret = after_display(o, live, &content);
 	if (!ret)

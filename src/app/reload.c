@@ -78,6 +78,8 @@ int reload_start(struct reload_job *j, struct worker *w, int argc, char **argv, 
 		options_release(&j->fresh);
 		return -EINVAL;
 	}
+	/* A reload is the live kiosk's: its animation plays (main.c). */
+	j->fresh.content.anim_live = j->fresh.content.anim_time < 0;
 	j->width = width;
 	j->height = height;
 	j->ret = -EINPROGRESS;

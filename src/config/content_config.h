@@ -35,6 +35,12 @@ struct content_config {
 	struct material_config material;
 	struct frame_config frame;     /* [frame]: orientation, start view, limits, stops */
 	struct caption_config caption; /* [caption] */
+	/* Live playback: anim_live is set for the live kiosk (not a
+	 * setting); [scene] animation_fps (0: the display's rate) and
+	 * animation_pause_after (seconds without input; 0: never). */
+	bool anim_live;
+	double anim_fps;
+	double anim_pause_after;
 };
 
 #endif

@@ -238,11 +238,17 @@ const struct option_def option_defs[OPTION_DEFS] = {
      NULL, "SCENE", "which of the model's glTF scenes: an index or a name (default: its own)"},
     {"animation", 0, OPTIONS_SCENE, "animation", K_STRING, AT(content.animation), 0, 0, 0, NULL,
      "WHICH",
-     "the glTF animation posed for --time: auto (the first), off, all, an index or a name"},
+     "the glTF animation played, or posed for --time: auto (the first), off, all, an index or a "
+     "name"},
     {"loop", 0, OPTIONS_SCENE, "loop", K_CHOICE, AT(content.anim_loop), 0, 0, 0, loop_names, "HOW",
      "how the animation goes on past its end: repeat, once (holds the last frame), pingpong"},
     {"speed", 0, OPTIONS_SCENE, "speed", K_DOUBLE, AT(content.anim_speed), 0.01, 100, 0, NULL, "X",
      "the animation's speed (1: as the file has it)"},
+    {"animation-fps", 0, OPTIONS_SCENE, "animation_fps", K_DOUBLE, AT(content.anim_fps), 0, 240, 0,
+     NULL, "FPS", "frames per second at most while the animation plays; 0: the display's rate"},
+    {"animation-pause-after", 0, OPTIONS_SCENE, "animation_pause_after", K_DOUBLE,
+     AT(content.anim_pause_after), 0, 31536000, 0, NULL, "S",
+     "seconds without input before the animation pauses (no frames drawn); 0: never"},
     {"time", 0, OPTION_CLI, NULL, K_DOUBLE, AT(content.anim_time), 0, 1e9, 0, NULL, "SECONDS",
      "draw the model as its animation poses it this many seconds after it starts (with "
      "--output)"},
@@ -387,6 +393,7 @@ void option_defaults(struct options *o)
 	o->content.caption.drift = true;
 	o->content.anim_speed = 1.0;
 	o->content.anim_time = -1.0; /* no --time: the rest pose */
+	o->content.anim_fps = 30;
 	material_config_defaults(&o->content.material);
 	frame_config_defaults(&o->content.frame);
 	o->log_level = LOG_INFO;

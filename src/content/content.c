@@ -23,17 +23,21 @@
 #define KNOT_TUBULAR 256
 #define KNOT_RADIAL  32
 
-/* path NULL: the built-in knot. */
-static int load_model(const char *path, const struct content_config *o, struct mesh *mesh)
+/* path NULL: the built-in knot. The live kiosk keeps what playback needs
+ * in *play (posed at 0 s, fitted over its clip); NULL: a still. */
+static int load_model(const char *path, const struct content_config *o, struct mesh *mesh,
+		      struct anim_play **play)
 {
 	if (path) {
 		struct gltf_options g = {.textures = material_gltf_textures(&o->material),
 					 .scene = o->model_scene,
 					 .scene_setting = "[scene] model_scene",
-					 .pose = o->anim_time >= 0,
+					 .play = o->anim_live ? play : NULL,
+					 .animation_optional = o->anim_live,
+					 .pose = o->anim_time >= 0 || o->anim_live,
 					 .animation = o->animation,
 					 .animation_setting = "[scene] animation",
-					 .time = o->anim_time,
+					 .time = o->anim_time >= 0 ? o->anim_time : 0,
 					 .speed = o->anim_speed,
 					 .loop = o->anim_loop};
 
@@ -60,8 +64,9 @@ static int content_cache_lookup(struct content *s, const struct content_config *
 	if (!ret && c->model_scene)
 		s->cache_key.settings =
 		    mesh_cache_hash(c->model_scene, strlen(c->model_scene), s->cache_key.settings);
-	/* A pose (--time) is another mesh. */
-	if (!ret && c->anim_time >= 0) {
+	/* A pose (--time) is another mesh, and so is the live kiosk's (an
+	 * animated model is never stored: content_prepare). */
+	if (!ret && (c->anim_time >= 0 || c->anim_live)) {
 		double t[3] = {c->anim_time, c->anim_speed, c->anim_loop};
 		const char *a = c->animation ? c->animation : "auto";
 
@@ -124,7 +129,7 @@ static void content_cache_pack(struct content *s, int width, int height)
 	struct mesh_material *materials = s->mesh.materials;
 	uint32_t material_count = s->mesh.material_count;
 
-	if (!s->cacheable || decoded_images(&s->mesh) ||
+	if (!s->cacheable || s->play || decoded_images(&s->mesh) ||
 	    mesh_pack(&s->mesh, VERTEX_COMPACT, &s->packed))
 		return;
 	s->cache_key.width = (uint32_t)width;
@@ -264,7 +269,7 @@ static int load_mesh(struct content *s, const struct content_config *o, const ch
 	if (ret)
 		return ret;
 	o = s->own;
-	return content_cache_lookup(s, o, path) ? load_model(path, o, &s->mesh) : 0;
+	return content_cache_lookup(s, o, path) ? load_model(path, o, &s->mesh, &s->play) : 0;
 }
 
 struct try_ctx {
@@ -393,6 +398,7 @@ static void release_model(struct content *s)
 	mesh_packed_release(&s->packed);
 	mesh_cache_entry_free(s->cached);
 	mesh_release(&s->mesh);
+	content_play_release(s);
 	material_release(&s->material);
 	free(s->model_path);
 	content_release_captions(s);
@@ -405,6 +411,8 @@ void content_take_model(struct content *shown, struct content *fresh, struct con
 
 	memset(old, 0, sizeof(*old));
 	old->mesh = kept.mesh;
+	old->play = kept.play;
+	old->play_split = kept.play_split;
 	old->cached = kept.cached;
 	old->packed = kept.packed;
 	old->writer = kept.writer;
@@ -510,7 +518,7 @@ int content_prepare(struct content *s, const struct content_config *o, int width
 		mesh_cache_entry_free(s->cached);
 		s->cached = NULL;
 		mesh_release(&s->mesh);
-		ret = load_model(s->model_path, o, &s->mesh);
+		ret = load_model(s->model_path, o, &s->mesh, &s->play);
 	}
 	if (!ret)
 		ret = material_prepare_mesh(&s->material, &s->mesh, width, height);
@@ -520,6 +528,9 @@ int content_prepare(struct content *s, const struct content_config *o, int width
 	if (!ret)
 		content_frame(s, o, width, height);
 	if (!ret)
+		content_play_check(s);
+	/* No level of detail for a model that plays (content.h). */
+	if (!ret && !s->play)
 		ret = lod_prepare_mesh(&s->mesh, displaced ? 0.0 : o->lod_pixels / s->zoom, width,
 				       height, NULL);
 	if (!ret)
@@ -557,6 +568,8 @@ int content_upload_model(struct content *s, struct renderer *r)
 		ret = renderer_set_packed(r, mesh_cache_entry_mesh(s->cached));
 	else if (!ret && s->packed.vertex_count)
 		ret = renderer_set_packed(r, &s->packed);
+	else if (!ret && s->play)
+		ret = content_play_upload(s, r);
 	else if (!ret)
 		ret = renderer_set_mesh(r, &s->mesh);
 	/* On the GPU now: the entry's pages leave the process, the packed

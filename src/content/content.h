@@ -10,6 +10,7 @@
 #include "content/matcap_set.h"
 #include "render/background.h"
 #include "scene/material.h"
+#include "scene/anim_play.h"
 #include "scene/mesh.h"
 #include "scene/mesh_cache.h"
 #include "render/render.h"
@@ -56,6 +57,16 @@ struct content {
 	/* The model's settings: the caller's with its NAME.ini over them
 	 * (config/model_settings.h); NULL: the caller's (the built-in knot). */
 	struct content_config *own;
+	/* What live playback needs beside the mesh (scene/anim_play.h); NULL:
+	 * a still. Its mesh keeps its arrays (neither packed nor cached: the
+	 * cache would have to store the parts, skins and targets too) and has
+	 * no level of detail: the poses write its vertices by number, and a
+	 * simplified skin would need its joints and weights carried through
+	 * each collapse. */
+	struct anim_play *play;
+	bool play_gpu; /* uploaded skinned on the GPU (content_play_upload) */
+	/* Its palette cut into draws (more bones than one holds); NULL: one. */
+	struct anim_play_split *play_split;
 	struct content_look look; /* what matcaps and background came from */
 	unsigned own_look;	  /* CONTENT_OWN_*: set by content_load_model */
 };
@@ -105,6 +116,18 @@ int content_upload_look(struct content *s, struct renderer *r);
 /* Open the matcaps c names (c's default folder when none); strict: a
  * named one that fails fails, else the built-in clay replaces it. */
 int content_load_matcap(const struct content_config *c, bool strict, struct content *s);
+/* src/content/content_play.c: the material's preparation (a
+ * displacement's subdivision, generated tangents) may give the mesh other
+ * vertices than those the poses write, or tangents a feature reads (they
+ * are not posed): then it shows its first pose and the journal says so.
+ * Tangents no feature reads are dropped. */
+void content_play_check(struct content *s);
+/* The mesh of a content that plays, to the renderer: skinned on the GPU
+ * where its bones fit the GPU's palette or each draw's, once cut into
+ * draws that fit, else posed on the CPU (the journal says which, and
+ * why). content_play_release: what playback holds, given back. */
+void content_play_release(struct content *s);
+int content_play_upload(struct content *s, struct renderer *r);
 /* Hand the mesh alone (and its material) to the renderer. The glTF's
  * decoded maps (mesh.material's images, copied into material) are given
  * back once on the GPU; the material's own images and the mesh stay, so

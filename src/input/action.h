@@ -23,10 +23,12 @@ enum app_action {
 	ACTION_PREV_MODEL,
 	ACTION_NEXT_STOP, /* glide to the next of [frame] stops */
 	ACTION_PREV_STOP,
+	ACTION_PLAY_PAUSE,     /* the model's animation stops where it is, or goes on */
+	ACTION_NEXT_ANIMATION, /* its next clip, crossfaded */
 	ACTION_COUNT
 };
 
-/* "none", "turn-left", ... "prev-stop", then NULL: the config file's names. */
+/* "none", "turn-left", ... "next-animation", then NULL: the config file's names. */
 extern const char *const app_action_names[ACTION_COUNT + 1];
 
 struct app_event {

@@ -35,6 +35,9 @@ static const struct {
     {KEY_P, ACTION_PREV_MODEL},
     {KEY_DOT, ACTION_NEXT_STOP},
     {KEY_COMMA, ACTION_PREV_STOP},
+    {KEY_K, ACTION_PLAY_PAUSE},
+    {KEY_PLAYPAUSE, ACTION_PLAY_PAUSE},
+    {KEY_A, ACTION_NEXT_ANIMATION},
 };
 
 #define N_KEYS (sizeof(keys) / sizeof(keys[0]))

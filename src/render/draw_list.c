@@ -138,7 +138,8 @@ int draw_list_build(struct draw_list *l, const struct mesh_range *ranges, uint32
 				       MESH_ALPHA_OPAQUE,
 				       false,
 				       0,
-				       {g->center[0], g->center[1], g->center[2]}};
+				       {g->center[0], g->center[1], g->center[2]},
+				       r};
 
 		if (surfaces && s < surface_count) {
 			it.alpha_mode = surfaces[s].alpha_mode;

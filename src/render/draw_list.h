@@ -26,6 +26,7 @@ struct draw_item {
 	 * against every surface's together): left out of its program. */
 	unsigned missing;
 	float center[3]; /* model space: blended items are ordered by it */
+	uint32_t range;	 /* the mesh range it draws (of a split palette: its bones) */
 };
 
 struct draw_list {

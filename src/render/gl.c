@@ -29,6 +29,19 @@ static void read_caps(const struct gl *gl, struct gl_caps *caps)
 	caps->element_index_uint = gl_extension_listed(ext, "GL_OES_element_index_uint");
 	caps->depth24 = gl_extension_listed(ext, "GL_OES_depth24");
 	caps->egl_image = gl_extension_listed(ext, "GL_OES_EGL_image");
+	/* A desktop context without ES2 compatibility knows only the
+	 * components (GL_MAX_VERTEX_UNIFORM_COMPONENTS); GLES2's floor else. */
+	caps->max_vertex_uniform_vectors = 0;
+	for (int i = 0; i < 8 && gl->GetError() != GL_NO_ERROR; i++)
+		;
+	gl->GetIntegerv(GL_MAX_VERTEX_UNIFORM_VECTORS, &caps->max_vertex_uniform_vectors);
+	if (gl->GetError() != GL_NO_ERROR || caps->max_vertex_uniform_vectors <= 0) {
+		GLint components = 0;
+
+		gl->GetIntegerv(0x8B4A, &components);
+		caps->max_vertex_uniform_vectors =
+		    gl->GetError() == GL_NO_ERROR && components > 0 ? components / 4 : 128;
+	}
 }
 
 int gl_load(struct gl *gl, gl_get_proc_fn get_proc, void *ctx)

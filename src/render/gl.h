@@ -20,6 +20,7 @@
 	X(PFNGLBINDTEXTUREPROC, BindTexture)                                                       \
 	X(PFNGLBLENDFUNCSEPARATEPROC, BlendFuncSeparate)                                           \
 	X(PFNGLBUFFERDATAPROC, BufferData)                                                         \
+	X(PFNGLBUFFERSUBDATAPROC, BufferSubData)                                                   \
 	X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus)                                 \
 	X(PFNGLCLEARPROC, Clear)                                                                   \
 	X(PFNGLCLEARCOLORPROC, ClearColor)                                                         \
@@ -71,6 +72,7 @@
 	X(PFNGLUNIFORM2FPROC, Uniform2f)                                                           \
 	X(PFNGLUNIFORM3FPROC, Uniform3f)                                                           \
 	X(PFNGLUNIFORM4FPROC, Uniform4f)                                                           \
+	X(PFNGLUNIFORM4FVPROC, Uniform4fv)                                                         \
 	X(PFNGLUNIFORMMATRIX3FVPROC, UniformMatrix3fv)                                             \
 	X(PFNGLUNIFORMMATRIX4FVPROC, UniformMatrix4fv)                                             \
 	X(PFNGLUSEPROGRAMPROC, UseProgram)                                                         \
@@ -108,6 +110,9 @@ struct gl_caps {
 	 * (EGL_EXT_image_dma_buf_import). */
 	void *egl_display;
 	bool dmabuf_import;
+	/* GL_MAX_VERTEX_UNIFORM_VECTORS (at least 128 in GLES2): the bone
+	 * palette of a model skinned on the GPU is sized from it. */
+	int max_vertex_uniform_vectors;
 };
 
 struct gl {

@@ -3,6 +3,7 @@
 #include "util/log.h"
 #include "render/draw_list.h"
 #include "render/shader.h"
+#include "scene/anim_palette.h"
 #include "scene/texture.h"
 
 #include <errno.h>
@@ -31,12 +32,15 @@ struct renderer *renderer_new(const struct gl *gl, const char *shader_dir)
 	 * against a supersampled reference, large and small on screen. */
 	r->matcap_filter = MATCAP_FILTER_AUTO;
 	gl->GenBuffers(SHADER_ATTR_COUNT, r->vbo);
+	gl->GenBuffers(2, r->skin_vbo);
+	r->bone_limit =
+	    anim_palette_size(gl->caps.max_vertex_uniform_vectors, RENDER_SKIN_RESERVED);
 	gl->GenBuffers(1, &r->ibo);
 	gl->GenTextures(1, &r->matcap);
 	return r;
 }
 
-static void drop_programs(struct renderer *r)
+void render_drop_programs(struct renderer *r)
 {
 	struct program *p = &r->programs[0][0][0][0];
 
@@ -62,8 +66,9 @@ void renderer_free(struct renderer *r)
 {
 	if (!r)
 		return;
-	drop_programs(r);
+	render_drop_programs(r);
 	r->gl->DeleteBuffers(SHADER_ATTR_COUNT, r->vbo);
+	render_live_free(r);
 	r->gl->DeleteBuffers(1, &r->ibo);
 	r->gl->DeleteTextures(1, &r->matcap);
 	drop_texture(r->gl, &r->detail);
@@ -168,10 +173,15 @@ int renderer_set_packed(struct renderer *r, const struct mesh_packed *m)
 	bool tangents = material_needs_tangents(f);
 	bool colors = material_needs_colors(f);
 	bool used[SHADER_ATTR_COUNT] = {true, true, uvs, tangents, colors};
+	bool live = r->live_next;
 	int ret = upload_indices(r, m);
 
+	r->live_next = r->live = false;
+	r->mesh_serial++;
 	r->drawn = m->format;
 	r->position_scale = m->position_scale;
+	if (!ret)
+		ret = render_skin_set(r);
 	if (!ret && r->mode_set)
 		prepare_variants(r);
 	/* Colours without an array are one constant (material vertex_color). */
@@ -187,8 +197,18 @@ int renderer_set_packed(struct renderer *r, const struct mesh_packed *m)
 			r->attr_bytes[a] = 0;
 		}
 	}
-	free(r->list.gather); /* uploaded: only the draws are kept */
-	r->list.gather = NULL;
+	/* Uploaded: only the draws are kept (a live mesh keeps its gather and
+	 * room for a pose gathered). */
+	free(r->live_scratch);
+	r->live_scratch = NULL;
+	if (live && r->list.gather &&
+	    !(r->live_scratch = malloc((size_t)r->list.gather_count * 12 + 1)))
+		ret = -ENOMEM;
+	if (!live) {
+		free(r->list.gather);
+		r->list.gather = NULL;
+	}
+	r->live = live && !ret;
 	if (!ret && r->gl->GetError() == GL_OUT_OF_MEMORY) {
 		log_err("render: out of GPU memory for %u vertices", m->vertex_count);
 		ret = -ENOMEM;
@@ -408,7 +428,7 @@ int renderer_set_precision(struct renderer *r, bool highp)
 	if (highp == r->highp)
 		return 0;
 	r->highp = highp;
-	drop_programs(r);
+	render_drop_programs(r);
 	return r->mode_set ? renderer_set_mode(r, r->mode, r->ortho) : 0;
 }
 
@@ -485,7 +505,7 @@ int renderer_set_material(struct renderer *r, const struct material *m)
 	if (ret)
 		log_err("render: cannot upload the material's textures");
 	if (!ret && changed) {
-		drop_programs(r);
+		render_drop_programs(r);
 		if (r->mode_set)
 			ret = renderer_set_mode(r, r->mode, r->ortho);
 	}
@@ -508,6 +528,7 @@ static void find_uniforms(const struct gl *gl, struct program *p)
 	p->base_color = gl->GetUniformLocation(p->id, "u_base_color");
 	p->shininess = gl->GetUniformLocation(p->id, "u_shininess");
 	p->alpha = gl->GetUniformLocation(p->id, "u_alpha");
+	p->bones = gl->GetUniformLocation(p->id, "u_bones");
 }
 
 /* A range's program variant by its alphaMode (enum mesh_alpha) and sides;
@@ -534,8 +555,14 @@ static struct program *program_get(struct renderer *r, enum shading_mode mode, b
 
 	if (p->id)
 		return p;
-	if (shader_source_matcap(&src, r->shader_dir, features, mode, ortho, lit, r->highp) ||
-	    shader_program_build(r->gl, &src, &id))
+	if (shader_source_matcap(&src, r->shader_dir, features, mode, ortho, lit, r->highp))
+		return NULL;
+	if (r->bones) { /* a model skinned on the GPU (render_live.c) */
+		src.bones = (int)r->bones;
+		src.attributes[SHADER_ATTR_JOINTS] = "a_joints";
+		src.attributes[SHADER_ATTR_WEIGHTS] = "a_weights";
+	}
+	if (shader_program_build(r->gl, &src, &id))
 		return NULL;
 	p->id = id;
 	p->features = features;

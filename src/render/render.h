@@ -33,6 +33,39 @@ void renderer_free(struct renderer *r);
  * read. Without it the renderer draws the plain matcap. */
 int renderer_set_material(struct renderer *r, const struct material *m);
 int renderer_set_mesh(struct renderer *r, const struct mesh *m);
+/* A mesh whose poses replace its positions and normals (live playback,
+ * scene/anim_play.h): float32 arrays, whatever the vertex format set. */
+int renderer_set_mesh_live(struct renderer *r, const struct mesh *m);
+/* The live mesh's positions and normals (xyz per vertex of the mesh set)
+ * from now on; nothing for a mesh not set live. */
+void renderer_set_vertices(struct renderer *r, const float *positions, const float *normals);
+/* A mesh skinned on the GPU: its positions and normals the parts' own
+ * (scene/anim_play.h), each vertex's four bones (indices as floats) and
+ * weights, a palette of `bones` (no more than renderer_bone_palette):
+ * programs that skin are built for it. Float32 arrays, replaced where its
+ * morph targets move them (renderer_set_vertices). */
+struct skin_palettes {
+	uint32_t total; /* the bones renderer_set_bones sets */
+	uint32_t range_count;
+	const uint32_t *first, *count; /* per range of the mesh, into bones */
+	const uint16_t *bones;	       /* each range's palette, numbers among total */
+};
+/* split: the palette cut into draws (scene/anim_play.h anim_play_split):
+ * each of m's ranges draws with its own bones, `bones` the largest
+ * draw's; NULL: one palette of `bones` for every draw. */
+int renderer_set_mesh_skinned(struct renderer *r, const struct mesh *m, const float *joints,
+			      const float *weights, uint32_t bones,
+			      const struct skin_palettes *split);
+/* The palette's rows from now on: 12 floats a bone (rows of 3x4), every
+ * bone of a split's total. */
+void renderer_set_bones(struct renderer *r, const float *rows);
+/* Which mesh is set, 1, 2, ... (a new one each set): a player knows its
+ * model's arrays are the ones on the GPU. */
+unsigned renderer_mesh_serial(const struct renderer *r);
+/* The bones a palette holds on this GPU (from GL_MAX_VERTEX_UNIFORM_VECTORS),
+ * or fewer as set (0: every model skins on the CPU; the bench and tests). */
+uint32_t renderer_bone_palette(const struct renderer *r);
+void renderer_set_bone_limit(struct renderer *r, uint32_t bones);
 /* The same from arrays already in the GPU's format (a mapped cache entry),
  * uploaded as they are; m may be unmapped once it returns. */
 int renderer_set_packed(struct renderer *r, const struct mesh_packed *m);

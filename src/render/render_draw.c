@@ -92,6 +92,7 @@ static void bind_arrays(const struct renderer *r, uint32_t base)
 					(const void *)(uintptr_t)(base * stride));
 		gl->EnableVertexAttribArray((GLuint)a);
 	}
+	render_skin_bind(r, base);
 }
 
 /* The GL state the draws of one frame pass through, set only where it
@@ -99,6 +100,7 @@ static void bind_arrays(const struct renderer *r, uint32_t base)
 struct draw_state {
 	const struct program *program;
 	uint32_t surface, base;
+	uint32_t palette; /* the range whose split palette is set; UINT32_MAX: none */
 	bool culled, blending;
 	const float *mv, *proj, *nm;
 };
@@ -111,9 +113,11 @@ static void use_program(const struct renderer *r, struct draw_state *st, const s
 	gl->UniformMatrix4fv(p->modelview, 1, GL_FALSE, st->mv);
 	gl->UniformMatrix4fv(p->projection, 1, GL_FALSE, st->proj);
 	gl->UniformMatrix3fv(p->normal_matrix, 1, GL_FALSE, st->nm);
+	render_skin_uniforms(r, p);
 	set_uniforms(r, p);
 	st->program = p;
 	st->surface = UINT32_MAX;
+	st->palette = UINT32_MAX;
 }
 
 static void draw_item(struct renderer *r, struct draw_state *st, int side,
@@ -125,6 +129,7 @@ static void draw_item(struct renderer *r, struct draw_state *st, int side,
 
 	if (p != st->program)
 		use_program(r, st, p);
+	render_skin_palette(r, p, it->range, &st->palette);
 	if (it->surface != st->surface) {
 		set_surface(r, p, it->surface);
 		st->surface = it->surface;

@@ -14,6 +14,11 @@
 
 enum { UNIT_MATCAP, UNIT_DETAIL, UNIT_RAMP, UNIT_BASE };
 
+/* The vertex shader's vectors besides the bone palette: the model-view
+ * and projection (4 each), the normal matrix and the base map's
+ * transform (3 each), rounded up. */
+#define RENDER_SKIN_RESERVED 16
+
 /* A range's program variant (draw_item_variant): its alphaMode, its sides
  * and the model's features its material lacks. */
 enum { VARIANTS = DRAW_VARIANTS };
@@ -23,6 +28,7 @@ struct program {
 	unsigned features; /* enum material_feature and material_variant bits */
 	GLint modelview, projection, normal_matrix, matcap, detail, ramp, base_map, base_transform;
 	GLint iridescence, hsv, light, base_color, shininess, alpha;
+	GLint bones; /* u_bones: a skinning program's palette; else -1 */
 };
 
 struct renderer {
@@ -66,8 +72,42 @@ struct renderer {
 	unsigned stop_serial[CAPTION_STOPS];
 	int stop;	  /* the stop shown (renderer_show_stop); -1: none */
 	unsigned serials; /* the last picture's serial: each picture set has its own */
+	/* A mesh that plays live (renderer_set_mesh_live): float32 arrays its
+	 * poses replace; live_scratch: room for a pose gathered into chunks. */
+	bool live, live_next;
+	float *live_scratch;
+	/* Skinned on the GPU (render_live.c): the palette's bones (0: no
+	 * skinning, today's programs), its rows (12 floats a bone), the
+	 * bone limit (GL_MAX_VERTEX_UNIFORM_VECTORS' palette, or less for the
+	 * bench), the bones' indices and weights arrays. */
+	uint32_t bones, bones_next, bone_limit;
+	unsigned mesh_serial; /* bumped with each mesh set */
+	float *bone_rows;
+	GLuint skin_vbo[2];
+	/* A palette split into draws (renderer_set_palettes): the bones of
+	 * all (bone_total rows in bone_rows), each range's palette in them,
+	 * and the rows of the one drawn (bones of them at most). */
+	uint32_t bone_total, range_count;
+	uint32_t *palette_first, *palette_count;
+	uint16_t *palette_bones;
+	float *palette_rows;
 };
 
+/* render.c: every program dropped (built again on use). render_live.c:
+ * the palette of the mesh being set (bones_next, else none) in place, the
+ * programs rebuilt when it changed (the skinning arrays disabled when
+ * none skins); the skinning arrays bound from vertex `base`; the
+ * palette's rows for a program that skins. */
+void render_drop_programs(struct renderer *r);
+/* What render_live.c holds, given back (renderer_free). */
+void render_live_free(struct renderer *r);
+int render_skin_set(struct renderer *r);
+void render_skin_bind(const struct renderer *r, uint32_t base);
+void render_skin_uniforms(const struct renderer *r, const struct program *p);
+/* A split palette's: the rows of the range's bones, when it is another
+ * range's palette than *shown (UINT32_MAX: none yet). */
+void render_skin_palette(struct renderer *r, const struct program *p, uint32_t range,
+			 uint32_t *shown);
 /* The matcap's minifying filter for a viewport (render.c). */
 void render_matcap_choose_filter(struct renderer *r, const int vp[4]);
 

@@ -130,6 +130,8 @@ static char *stage_text(const struct shader_source *s, bool fragment)
 		fputs(s->precision, f);
 	for (int i = 0; i < s->define_count; i++)
 		fprintf(f, "#define %s 1\n", s->defines[i]);
+	if (s->bones > 0)
+		fprintf(f, "#define SKIN_BONES %d\n", s->bones);
 	for (int i = 0; ok && i < SHADER_MAX_FILES && files[i]; i++) {
 		body = shader_read(s->dir, files[i]);
 		if (body)
@@ -208,7 +210,7 @@ static int link_program(const struct gl *gl, const struct shader_source *s, GLui
 	*out = gl->CreateProgram();
 	gl->AttachShader(*out, vs);
 	gl->AttachShader(*out, fs);
-	for (int i = 0; i < SHADER_ATTR_COUNT; i++)
+	for (int i = 0; i < SHADER_ATTR_ALL; i++)
 		if (s->attributes[i])
 			gl->BindAttribLocation(*out, (GLuint)i, s->attributes[i]);
 	gl->LinkProgram(*out);

@@ -22,7 +22,12 @@ enum shader_attribute {
 	SHADER_ATTR_UV,
 	SHADER_ATTR_TANGENT,
 	SHADER_ATTR_COLOR,
-	SHADER_ATTR_COUNT
+	SHADER_ATTR_COUNT,
+	/* A skinning program's (SKIN_BONES) bone indices and weights: after
+	 * the mesh's arrays, bound only where a program skins. */
+	SHADER_ATTR_JOINTS = SHADER_ATTR_COUNT,
+	SHADER_ATTR_WEIGHTS,
+	SHADER_ATTR_ALL
 };
 
 #define SHADER_MAX_DEFINES 12
@@ -40,7 +45,9 @@ struct shader_source {
 	int define_count;
 	const char *vertex[SHADER_MAX_FILES]; /* file names, up to the first NULL */
 	const char *fragment[SHADER_MAX_FILES];
-	const char *attributes[SHADER_ATTR_COUNT]; /* bound at their index; NULL: none */
+	const char *attributes[SHADER_ATTR_ALL]; /* bound at their index; NULL: none */
+	/* > 0: "#define SKIN_BONES bones", the skinning palette's size. */
+	int bones;
 };
 
 /* Add "#define name 1". Returns 0, or -ENOSPC when the list is full. */

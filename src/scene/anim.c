@@ -193,6 +193,30 @@ void anim_pose_world(const struct mesh_anim *a, const struct anim_pose *p, float
 	}
 }
 
+double anim_clip_hold(const struct anim_clip *c, double t, bool backward)
+{
+	double gap = backward ? t : c->duration - t;
+
+	for (size_t i = 0; i < c->sampler_count; i++) {
+		const struct anim_sampler *s = &c->samplers[i];
+		size_t k = 0;
+
+		if (s->count < 2)
+			continue; /* one key: a constant */
+		if (s->interp != ANIM_STEP)
+			return 0;
+		while (k < s->count && s->input[k] <= t)
+			k++;
+		/* Forward: the next key changes it; backward: leaving the key
+		 * it holds (k - 1), unless that is the first. */
+		if (!backward && k < s->count)
+			gap = fmin(gap, s->input[k] - t);
+		else if (backward && k >= 2)
+			gap = fmin(gap, t - s->input[k - 1]);
+	}
+	return gap > 0 ? gap : 0;
+}
+
 int anim_clip_find(const struct mesh_anim *a, const char *want)
 {
 	if (!a || a->clip_count == 0 || !want || !strcmp(want, "off") || !strcmp(want, "all"))

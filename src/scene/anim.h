@@ -132,6 +132,14 @@ void anim_pose_blend(const struct mesh_anim *a, struct anim_pose *p, const struc
 void anim_pose_world(const struct mesh_anim *a, const struct anim_pose *p, float (*world)[16]);
 void anim_trs_matrix(const struct anim_trs *trs, float m[16]);
 
+/* How long (clip seconds) a clip's pose holds from t on: 0 when a
+ * sampler moves between its keys (LINEAR, CUBICSPLINE: it changes every
+ * frame); with STEP keys alone, until the next key after t (backward,
+ * pingpong's way back: until t passes below the key it holds), or the
+ * clip's end (start), where the loop goes on. The live kiosk draws no
+ * frame meanwhile. */
+double anim_clip_hold(const struct anim_clip *c, double t, bool backward);
+
 /* The clip a setting names: "auto" (the first), a name, or an index; -1
  * for "off", "all" or no clip; -2 when the name matches none. */
 int anim_clip_find(const struct mesh_anim *a, const char *want);

@@ -294,7 +294,9 @@ bool gltf_anim_clips(const struct mesh_anim *a, const struct gltf_options *o, in
 	       (o->animation_setting ? " (" + std::string(o->animation_setting) + ")" : "") +
 	       ", expected auto, off, all, an index below " + std::to_string(a->clip_count) +
 	       " or an animation's name" + names;
-	return false;
+	if (o->animation_optional)
+		*clip = -1; // the rest pose; err says why
+	return o->animation_optional;
 }
 
 bool gltf_pose_nodes(tinygltf::Model &m, const struct mesh_anim *a, const struct gltf_options *o,
@@ -344,6 +346,11 @@ bool gltf_anim_load(const char *name, tinygltf::Model &m, const struct gltf_opti
 		err->clear();
 	}
 	bool ok = gltf_pose_nodes(m, a, o, err);
+	if (ok && !err->empty()) { // a clip the file lacks, optional
+		log_warn("%s: %s; it shows its rest pose", gltf_ext::escape(name).c_str(),
+			 gltf_ext::escape(*err).c_str());
+		err->clear();
+	}
 	if (o->anim && ok)
 		*o->anim = a;
 	else

@@ -51,6 +51,7 @@ bool measure(const char *name, const tinygltf::Model &m, const struct gltf_optio
 	struct mesh mesh;
 	struct gltf_options geometry = *o; // the pose alone: no clips kept, no maps
 	geometry.anim = nullptr;
+	geometry.play = nullptr;
 	geometry.textures = 0;
 	fit->measure = true;
 	if (gltf_build_mesh(name, copy, &geometry, images, &mesh, fit))

@@ -6,6 +6,7 @@
 #include "scene/gltf_material.h"
 #include "scene/gltf_mesh.h"
 #include "scene/gltf_anim.h"
+#include "scene/gltf_play.h"
 #include "util/log.h"
 
 #include <tiny_gltf.h>
@@ -15,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -27,6 +29,7 @@ struct Range {
 	uint32_t first_vertex, vertex_count, first_index, index_count;
 	bool has_normals, has_tangents;
 	int material;
+	int node, mesh, primitive; // the node showing it, the file's mesh and primitive
 };
 
 struct Builder {
@@ -482,11 +485,16 @@ bool add_mesh(Builder &b, const tinygltf::Model &m, size_t node, const Mat4 worl
 	// own transform does not apply to it, as the spec says); name the
 	// mesh as the file does.
 	int shown = pose.mesh_source[(size_t)n.mesh];
-	for (size_t i = 0; i < mesh.primitives.size(); i++)
+	for (size_t i = 0; i < mesh.primitives.size(); i++) {
+		size_t before = b.ranges.size();
 		if (!add_primitive(b, m, mesh.primitives[i], world,
 				   "meshes[" + std::to_string(shown) + "].primitives[" +
 				       std::to_string(i) + "]"))
 			return false;
+		if (b.ranges.size() > before) // for live playback (gltf_play.h)
+			b.ranges.back().node = (int)node, b.ranges.back().mesh = shown,
+			b.ranges.back().primitive = (int)i;
+	}
 	return true;
 }
 
@@ -628,6 +636,20 @@ void read_materials(const Builder &b, const tinygltf::Model &m, unsigned texture
 			 out->range_count);
 }
 
+// Live playback's data from the file as parsed; else it shows its still.
+void keep_play(const Builder &b, tinygltf::Model &orig, const GltfFit &fit,
+	       const struct gltf_options *o)
+{
+	std::vector<GltfPlayPart> parts;
+	std::string err;
+	for (const Range &r : b.ranges)
+		parts.push_back({r.node, r.mesh, r.primitive, r.first_vertex, r.vertex_count,
+				 r.first_index, r.index_count, r.has_normals});
+	if (!gltf_play_build(orig, parts, b.indices, fit.center, fit.scale, o->play, &err))
+		log_warn("%s: %s; it shows still", gltf_ext::escape(b.name).c_str(),
+			 gltf_ext::escape(err.empty() ? "no animation to play" : err).c_str());
+}
+
 } // namespace
 
 int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_options *o,
@@ -639,6 +661,9 @@ int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_opti
 	b.name = name;
 	b.want_colors = (o->textures & GLTF_TEXTURE_BASE_COLOR) != 0;
 	b.textures = o->textures;
+	std::unique_ptr<tinygltf::Model> orig; // before a pose is baked into it
+	if (o->play && !(*o->play = nullptr) && !m.animations.empty() && fit && fit->use_fit)
+		orig.reset(new tinygltf::Model(m));
 	if (gltf_anim_load(name, m, o, &b.error) && prepare(m, name, &pose, &b.error) &&
 	    gltf_ext::choose_scene(m, o->scene, o->scene_setting, &scene, &b.error)) {
 		std::vector<int> roots;
@@ -662,6 +687,8 @@ int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_opti
 			 shown.c_str(), b.not_triangles);
 	if (ret == 0)
 		read_materials(b, m, o->textures, images, out);
+	if (ret == 0 && orig)
+		keep_play(b, *orig, *fit, o);
 	gltf_keep_colors(out,
 			 b.uniform_set && b.any_colors && b.colors.empty() ? b.uniform : nullptr);
 	if (ret && o->anim) {

@@ -34,12 +34,19 @@ struct gltf_options {
 	 * has none or they are malformed, which is a warning: the still
 	 * model loads). NULL: animations are not read. */
 	struct mesh_anim **anim;
+	/* Set: what live playback needs beside the mesh into *play
+	 * (scene/anim_play.h), for a pose fitted over its clip; NULL when
+	 * the model cannot play (the journal says why). */
+	struct anim_play **play;
 	/* pose: the model posed as the clips `animation` names ("auto" or
 	 * NULL: the first; "off": none; "all": every one; a name or an
 	 * index) show it `time` seconds after they start, played at `speed`
 	 * (0: 1) with `loop` (enum anim_loop); a name the file lacks is an
 	 * error naming `animation_setting`. false: the rest pose. */
 	bool pose;
+	/* A clip the file lacks is a warning and the rest pose (the live
+	 * kiosk: a folder's other models may have it), not an error. */
+	bool animation_optional;
 	const char *animation, *animation_setting;
 	double time, speed;
 	int loop;

@@ -343,6 +343,12 @@ static void press(struct app *a, enum app_action action, uint64_t t)
 	case ACTION_PREV_STOP:
 		step_stop(a, action == ACTION_NEXT_STOP ? 1 : -1, t);
 		break;
+	case ACTION_PLAY_PAUSE:
+		st->anim_paused = !st->anim_paused;
+		break;
+	case ACTION_NEXT_ANIMATION:
+		st->anim_step++;
+		break;
 	case ACTION_RESET:
 		home(a);
 		st->mode = a->cfg.mode;

@@ -3,10 +3,13 @@
 # (--time) against the same model in its rest pose, cold (an empty
 # prepared-mesh cache: the pose is baked, after the clip's key times are
 # loaded once each for its fit) and warm (the posed mesh from the cache),
-# start-up and peak RSS, median of three. Live playback (ms per frame of
-# a skinned model on the GPU and CPU paths, of a morph) is not there yet.
+# start-up and peak RSS, median of three. Then live playback a frame
+# (bench_anim_live): the 100k knot skinned and turned by an animation
+# (mkmodels), RiggedSimple's skin and AnimatedMorphCube's morph, skinned
+# on the GPU (the bones a frame) and posed on the CPU (the arrays a
+# frame), drawn, against the same model's still.
 # Models from Debian's assimp-testmodels: a skin and a morph.
-# Environment: KIOSK.
+# Environment: KIOSK, TOOLS.
 set -eu
 out=$(pwd)/tests/out/bench-anim
 mkdir -p "$out"
@@ -36,6 +39,25 @@ for m in simple_skin/simple_skin.gltf \
 			# shellcheck disable=SC2046 # four numbers, one word each
 			set -- $(medians "$out/runs")
 			echo "| $(basename "$m") | $pose | $cache | $1 | $2 | $3 |"
+		done
+	done
+done
+
+echo
+echo "## live playback a frame ($(uname -m), $(nproc) cores, median of 100)"
+echo
+echo "The still keeps its level of detail ([scene] lod_pixels); a model that plays has none."
+echo
+echo "| model | path | backend | vertices | triangles | pose ms | draw ms | still triangles | still draw ms |"
+echo "|---|---|---|---|---|---|---|---|---|"
+"$TOOLS/mkmodels" "$out" --bench >/dev/null
+for m in "$out/knot-100k-turning.glb" tests/corpus/khronos/RiggedSimple.gltf \
+	"$a/glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf"; do
+	[ -f "$m" ] || continue
+	for backend in osmesa egl-headless; do
+		for path in gpu cpu; do
+			"$TOOLS/bench_anim_live" $backend 1280x720 "$m" 100 $path ||
+				echo "| $(basename "$m") | $path | $backend | - | - | - | - | - | did not run |"
 		done
 	done
 done

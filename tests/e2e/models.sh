@@ -6,7 +6,8 @@
 # comes round. The folder is watched: a model copied in is shown once it
 # is closed (not while half written), a broken one copied in is one line
 # and the picture stays. Then attract mode: no frame while idle, frames
-# once the idle time is up, and none again at once after a key. Ends with
+# once the idle time is up, and none again at once after a key; an
+# animated model flips at animation_fps until animation_pause_after. Ends with
 # "vm: N passed, N failed".
 set -u
 . /repo/tests/e2e/lib.sh
@@ -102,6 +103,21 @@ vkbd_press UP
 sleep 2
 vm_check "a key stops it at once: no page flip for 4 s" same_fb 4
 kiosk_stop TERM
+
+# ---- a model that moves (issue 26): it flips by itself at [scene]
+# animation_fps (4), never faster, until animation_pause_after (6 s) of no
+# input pauses it; the still knot above drew none while idle.
+kiosk_start anim.log --display-mode 640x480 --animation-fps 4 --animation-pause-after 6 \
+	--model /repo/tests/corpus/khronos/AnimatedTriangle.gltf
+wait_log 90 anim.log "ready: the first frame is on the screen"
+vm_check "an animated model plays live" has anim.log "plays animation 0 of 1"
+vm_check "it flips frames by itself" wait_until 5 new_fbs 1
+sleep 6
+vm_check "paused after animation_pause_after: no page flip for 3 s" same_fb 3
+kiosk_stop TERM
+frames=$(number anim.log 's/.* \([0-9]*\) frames drawn.*/\1/p')
+vm_check "at most 4 frames a second over its 6 s ($frames frames), at least 1" \
+	test "$frames" -le 27 -a "$frames" -ge 6
 vkbd_stop
 show models.log | grep -E 'model|error|warning' | head -30
 vm_summary

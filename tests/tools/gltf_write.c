@@ -220,6 +220,39 @@ static void skin_accessors(FILE *f, const struct mesh *m, const struct gltf_writ
 		view, m->vertex_count, view + 1, m->vertex_count);
 }
 
+/* The turn of with_anim: key times and rotations, as a data: URI. */
+static void write_anim_buffer(FILE *f)
+{
+	float keys[15] = {0, 1, 2, 0, 0, 0, 1, 0, 0, 0.38268343f, 0.92387953f, 0, 0, 0, 1};
+	char *b = base64((const unsigned char *)keys, sizeof(keys));
+
+	fprintf(f, ",{\"byteLength\":%zu,\"uri\":\"data:application/octet-stream;base64,%s\"}",
+		sizeof(keys), b);
+	free(b);
+}
+
+/* Its views, accessors (after views and accessors of their own numbers)
+ * and the animation. */
+static void write_anim(FILE *f, const struct gltf_write_opts *o, int view, int accessor, int part)
+{
+	if (part == 0)
+		fprintf(f, ",{\"buffer\":1,\"byteOffset\":0,\"byteLength\":12}"
+			   ",{\"buffer\":1,\"byteOffset\":12,\"byteLength\":48}");
+	else if (part == 1)
+		fprintf(f,
+			",{\"bufferView\":%d,\"componentType\":5126,\"count\":3,\"type\":"
+			"\"SCALAR\",\"min\":[0],\"max\":[2]},{\"bufferView\":%d,"
+			"\"componentType\":5126,\"count\":3,\"type\":\"VEC4\"}",
+			view, view + 1);
+	else
+		fprintf(f,
+			"\"animations\":[{\"name\":\"turn\",\"samplers\":[{\"input\":%d,"
+			"\"output\":%d%s}],\"channels\":[{\"sampler\":0,\"target\":{\"node\":%d,"
+			"\"path\":\"rotation\"}}]}],",
+			accessor, accessor + 1, o->anim_step ? ",\"interpolation\":\"STEP\"" : "",
+			o->anim_node);
+}
+
 static void write_json(FILE *f, const struct mesh *m, const struct gltf_write_opts *o,
 		       const struct layout *l, const char *uri)
 {
@@ -251,8 +284,18 @@ static void write_json(FILE *f, const struct mesh *m, const struct gltf_write_op
 		write_material(f, o, l);
 	if (o->skin_joints)
 		fprintf(f, "\"skins\":[{\"joints\":[%s]}],", o->skin_joints);
-	fprintf(f, "\"buffers\":[{\"byteLength\":%zu%s%s%s}],", l->size, uri ? ",\"uri\":\"" : "",
+	int views = 6 + 2 * !!o->skin_joints,
+	    accessors = 5 + !!o->color_type + 2 * !!o->skin_joints;
+
+	for (int i = 0; i < 4; i++)
+		views += l->img_path[i] && o->embed_images;
+	if (o->with_anim)
+		write_anim(f, o, views, accessors, 2);
+	fprintf(f, "\"buffers\":[{\"byteLength\":%zu%s%s%s}", l->size, uri ? ",\"uri\":\"" : "",
 		uri ? uri : "", uri ? "\"" : "");
+	if (o->with_anim)
+		write_anim_buffer(f);
+	fprintf(f, "],");
 	fprintf(f, "\"bufferViews\":[{\"buffer\":0,\"byteOffset\":0,\"byteLength\":%zu", l->nrm);
 	if (o->byte_stride)
 		fprintf(f, ",\"byteStride\":%d", o->byte_stride);
@@ -281,6 +324,8 @@ static void write_json(FILE *f, const struct mesh *m, const struct gltf_write_op
 			",{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu}",
 			l->skin, (size_t)m->vertex_count * 4, l->skin + (size_t)m->vertex_count * 4,
 			(size_t)m->vertex_count * 16);
+	if (o->with_anim)
+		write_anim(f, o, views, accessors, 0);
 	fprintf(f, "],");
 	fprintf(f,
 		"\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":%ld,"
@@ -303,6 +348,8 @@ static void write_json(FILE *f, const struct mesh *m, const struct gltf_write_op
 		    o->color_type == 5126 ? "" : ",\"normalized\":true");
 	if (o->skin_joints)
 		skin_accessors(f, m, o, l);
+	if (o->with_anim)
+		write_anim(f, o, views, accessors, 1);
 	fprintf(f, "]}");
 }
 

@@ -45,6 +45,12 @@ struct gltf_write_opts {
 	 * JOINTS_0 and WEIGHTS_0 that blend from the first joint at x = -1 to
 	 * the second at x = 1; the mesh's node names it in node. */
 	const char *skin_joints;
+	/* An animation that turns this node (an index) about z, LINEAR: 0 at
+	 * 0 s, 45 degrees at 1 s, 0 at 2 s; its keys in a second buffer (a
+	 * data: URI). */
+	int anim_node;
+	int with_anim;
+	int anim_step; /* its keys STEP instead of LINEAR */
 };
 
 /* Writes path (and, for GLTF_EXTERNAL_BIN, path with .bin for .gltf).

@@ -3,7 +3,7 @@
  *                         corpus test's torus knots, and the material maps
  *                         and models
  *   mkmodels DIR --bench  also torus knots of about 10k, 100k and 1M triangles,
- *                         and the 100k one textured, skinned and flat-shaded */
+ *                         and the 100k one textured, skinned (still and turning) and flat-shaded */
 #include "gltf_write.h"
 #include "maps.h"
 #include "parts_models.h"
@@ -246,6 +246,11 @@ static int write_bench_forms(const char *dir, const struct mesh *k)
 	o.scenes = "{\"nodes\":[0,1]}";
 	o.skin_joints = "1,2";
 	bad |= put(dir, "knot-100k-skinned.glb", k, o);
+	/* The same bend turned by an animation: live playback's figures. */
+	o.with_anim = 1;
+	o.anim_node = 2;
+	bad |= put(dir, "knot-100k-turning.glb", k, o);
+	o.with_anim = 0;
 	if (split_flat(k, &flat))
 		return 1;
 	o = (struct gltf_write_opts){

@@ -142,6 +142,27 @@ static void loop_modes(void **state)
 	NEAR(anim_clock_time(&c), 0);
 }
 
+/* STEP keys alone hold the pose between keys: the kiosk draws no frame
+ * meanwhile; anything that interpolates moves every frame. */
+static void step_clips_hold(void **state)
+{
+	(void)state;
+	float in[] = {0, 1, 2.5f}, out[] = {0, 1, 2}, lin_in[] = {0, 2}, lin_out[] = {0, 1};
+	float one_in[] = {0}, one_out[] = {5};
+	struct anim_sampler s[3] = {{in, out, 3, 1, ANIM_STEP},
+				    {one_in, one_out, 1, 1, ANIM_LINEAR},
+				    {lin_in, lin_out, 2, 1, ANIM_LINEAR}};
+	struct anim_clip c = {.samplers = s, .sampler_count = 2, .duration = 2.5};
+
+	NEAR(anim_clip_hold(&c, 0.2, false), 0.8);
+	NEAR(anim_clip_hold(&c, 1.0, false), 1.5); /* the next key is the end */
+	NEAR(anim_clip_hold(&c, 2.0, true), 1.0);  /* back below the key at 1 */
+	NEAR(anim_clip_hold(&c, 0.5, true), 0.5);  /* before the key at 1: the start */
+	NEAR(anim_clip_hold(&c, 2.5, false), 0.0);
+	c.sampler_count = 3; /* one that interpolates: every frame */
+	NEAR(anim_clip_hold(&c, 0.2, false), 0.0);
+}
+
 static void a_year_keeps_its_nanoseconds(void **state)
 {
 	(void)state;
@@ -461,6 +482,7 @@ int main(void)
 	    cmocka_unit_test(slerp_the_shorter_way),
 	    cmocka_unit_test(bad_samplers),
 	    cmocka_unit_test(loop_modes),
+	    cmocka_unit_test(step_clips_hold),
 	    cmocka_unit_test(a_year_keeps_its_nanoseconds),
 	    cmocka_unit_test(nodes_parents_first),
 	    cmocka_unit_test(a_deep_chain_costs_a_loop),

@@ -1,0 +1,127 @@
+/* A content's live playback (content.h, scene/anim_play.h): what the
+ * preparation of the mesh leaves it. */
+#include "content/content.h"
+#include "util/log.h"
+
+#include <errno.h>
+#include <stdlib.h>
+
+void content_play_check(struct content *s)
+{
+	/* The file's tangents, where no feature reads them, are not posed:
+	 * they are left out, as the upload would leave them. */
+	if (s->play && s->mesh.tangents && !material_needs_tangents(s->material.features)) {
+		free(s->mesh.tangents);
+		s->mesh.tangents = NULL;
+	}
+	if (!s->play || (s->play->vertex_count == s->mesh.vertex_count && !s->mesh.tangents))
+		return;
+	log_warn("%s: its animation does not play with this material's subdivision or tangents; "
+		 "it shows its first pose",
+		 s->model_path);
+	anim_play_free(s->play);
+	s->play = NULL;
+}
+
+void content_play_release(struct content *s)
+{
+	if (s->play_split)
+		anim_play_split_release(s->play_split);
+	free(s->play_split);
+	anim_play_free(s->play);
+	s->play_split = NULL;
+	s->play = NULL;
+}
+
+/* The split's mesh: its own vertices (the parts' arrays, the UVs and
+ * colours gathered), indices and ranges, the content's materials. */
+static int upload_split(struct content *s, struct renderer *r, struct anim_play_split *sp)
+{
+	struct mesh m = s->mesh;
+	float *uvs = m.uvs ? malloc((size_t)sp->vertex_count * 8 + 4) : NULL;
+	float *colors = m.colors ? malloc((size_t)sp->vertex_count * 16 + 4) : NULL;
+	struct skin_palettes pal = {s->play->bones, sp->range_count, sp->palette_first,
+				    sp->palette_count, sp->bones};
+	int ret = (m.uvs && !uvs) || (m.colors && !colors) ? -ENOMEM : 0;
+
+	anim_play_split_gather(sp, s->play->positions, 3, sp->positions);
+	anim_play_split_gather(sp, s->play->normals, 3, sp->normals);
+	if (uvs)
+		anim_play_split_gather(sp, m.uvs, 2, uvs);
+	if (colors)
+		anim_play_split_gather(sp, m.colors, 4, colors);
+	m.vertex_count = sp->vertex_count;
+	m.index_count = sp->index_count;
+	m.positions = sp->positions;
+	m.normals = sp->normals;
+	m.uvs = uvs;
+	m.colors = colors;
+	m.tangents = NULL;
+	m.indices = sp->indices;
+	m.range_count = sp->range_count;
+	m.ranges = sp->ranges;
+	if (!ret)
+		ret = renderer_set_mesh_skinned(r, &m, sp->joints, sp->weights, sp->palette_max,
+						&pal);
+	free(uvs);
+	free(colors);
+	return ret;
+}
+
+/* More bones than one palette: cut into draws whose bones fit. */
+static int split_palette(struct content *s, struct renderer *r, uint32_t palette)
+{
+	int ret;
+
+	if (s->play_split)
+		anim_play_split_release(s->play_split);
+	else if (!(s->play_split = calloc(1, sizeof(*s->play_split))))
+		return -ENOMEM;
+	ret = anim_play_split(s->play, &s->mesh, palette, s->play_split);
+	if (!ret)
+		ret = upload_split(s, r, s->play_split);
+	if (!ret)
+		log_info("%s: skinned on the GPU in %u draws: %u bones, palettes of at most %u "
+			 "(the GPU's holds %u)",
+			 s->model_path, s->play_split->range_count, s->play->bones,
+			 s->play_split->palette_max, palette);
+	if (ret) {
+		anim_play_split_release(s->play_split);
+		free(s->play_split);
+		s->play_split = NULL;
+	}
+	return ret;
+}
+
+int content_play_upload(struct content *s, struct renderer *r)
+{
+	uint32_t palette = renderer_bone_palette(r);
+	int why = anim_play_gpu_prepare(s->play, palette);
+	struct mesh own = s->mesh;
+
+	if (s->play_split) { /* uploaded again: decided again */
+		anim_play_split_release(s->play_split);
+		free(s->play_split);
+		s->play_split = NULL;
+	}
+	if (why == -E2BIG && palette > 0 && (why = split_palette(s, r, palette)) == 0) {
+		s->play_gpu = true;
+		return 0;
+	}
+	s->play_gpu = why == 0;
+	if (why == -ENOMEM)
+		return why;
+	if (!s->play_gpu) {
+		log_info("%s: posed on the CPU each frame: %s", s->model_path,
+			 why == -E2BIG ? "a triangle's bones alone outnumber the GPU's palette"
+				       : "a part's normals come from its posed triangles");
+		return renderer_set_mesh_live(r, &s->mesh);
+	}
+	log_info("%s: skinned on the GPU: %u bones of a palette of %u", s->model_path,
+		 s->play->bones, palette);
+	/* The parts' own arrays; the bones pose them. */
+	own.positions = s->play->positions;
+	own.normals = s->play->normals;
+	return renderer_set_mesh_skinned(r, &own, s->play->gpu_joints, s->play->gpu_weights,
+					 s->play->bones, NULL);
+}

@@ -1,0 +1,126 @@
+/* What live playback keeps beside the baked mesh (scene/mesh.h), so that
+ * the loop thread poses the model each frame from the clip's samplers and
+ * the node worlds alone: no file, no re-bake. Each part (a glTF primitive
+ * as a node shows it) remembers its vertices in the mesh, the node it
+ * follows, its skin and its morph targets; the vertices keep their
+ * primitive's own (mesh-local) positions and normals, JOINTS_0 and
+ * WEIGHTS_0. anim_play_pose writes the mesh's positions and normals as the
+ * loader's bake would at that pose (the same maths: morphs, then the skin
+ * or the node's world, then the clip's fit), on the CPU. Pure: no GL. */
+#ifndef MK_ANIM_PLAY_H
+#define MK_ANIM_PLAY_H
+
+#include "scene/anim.h"
+#include "scene/mesh.h"
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+struct anim_play_skin {
+	uint32_t joint_count;
+	int *joints;	     /* node of each joint */
+	float *inverse_bind; /* 16 a joint, column-major (identity when the file has none) */
+};
+
+struct anim_play_part {
+	int node; /* the node that shows it: its world, its morph weights */
+	int skin; /* into anim_play.skins; -1: rigid, it follows node */
+	/* The node has a skin this primitive does not use: drawn as it is
+	 * (at the skeleton's root, as the spec says), its morphs alone. */
+	bool at_root;
+	uint32_t first_vertex, vertex_count;
+	/* Its normals as the file gives them; false: generated each pose
+	 * from its triangles (indices: index_count, into the mesh's vertices). */
+	bool has_normals;
+	uint32_t index_count;
+	uint32_t *indices;
+	/* Morph targets: target_count deltas of vertex_count xyz each
+	 * (normals NULL when the targets move none). */
+	uint32_t target_count;
+	float *target_positions, *target_normals;
+};
+
+struct anim_play {
+	struct mesh_anim *anim;
+	/* The clip's fit: drawn positions are (world - center) * scale. */
+	double center[3], scale;
+	uint32_t vertex_count;
+	float *positions, *normals; /* each part's own, xyz per mesh vertex */
+	uint16_t *joints;	    /* 4 per vertex; NULL: no part is skinned */
+	float *weights;		    /* 4 per vertex */
+	uint32_t part_count, skin_count;
+	struct anim_play_part *parts;
+	struct anim_play_skin *skins;
+	/* Scratch of anim_play_pose: node worlds, joint matrices, a part's
+	 * morphed vertices (sized at load: no allocation a frame). */
+	float (*worlds)[16];
+	float (*joint_matrices)[16];
+	float *morphed;
+	uint32_t joint_max, part_vertex_max;
+	/* The GPU path (anim_play_gpu_prepare): one palette of bones for the
+	 * whole model, bone 0 the fit alone, then every skin's joints, then
+	 * the nodes rigid parts follow; each vertex's four bones (as floats,
+	 * as the shader reads them) and weights. bones 0: the CPU path. */
+	uint32_t bones;
+	float *gpu_joints, *gpu_weights;
+	uint32_t *skin_bone; /* per skin, its first bone */
+	int *node_bone;	     /* per node, the bone of the rigid parts it shows; 0: none */
+	bool morphs;	     /* some part has targets: its own arrays change a frame */
+};
+
+/* The allocations of the scratch, once parts and skins are filled. 0 or
+ * -ENOMEM. */
+int anim_play_finish(struct anim_play *p);
+/* positions and normals (xyz per vertex, p->vertex_count) at a pose. */
+void anim_play_pose(struct anim_play *p, const struct anim_pose *pose, float *positions,
+		    float *normals);
+/* The GPU path: the bones the model needs in one palette; with no more
+ * than `palette`, its vertices' bones and weights (an unweighted vertex
+ * and a part at the skeleton's root take bone 0). 0, -E2BIG (more bones:
+ * the arrays are made for anim_play_split to cut), -ENOTSUP (a part's normals are generated from
+ * its posed triangles: the CPU path) or -ENOMEM. Called again, it decides again. */
+int anim_play_gpu_prepare(struct anim_play *p, uint32_t palette);
+/* The palette at a pose: 3 rows of 4 floats a bone (a 3x4 matrix), the
+ * node worlds and inverse binds with the clip's fit. */
+void anim_play_bones(struct anim_play *p, const struct anim_pose *pose, float *rows);
+/* The parts' own positions and normals with the pose's morph weights
+ * (the GPU path's arrays; the CPU path's before its skin). */
+void anim_play_morph(struct anim_play *p, const struct anim_pose *pose, float *positions,
+		     float *normals);
+/* The GPU path when the bones outnumber the palette: every draw range
+ * of m split (scene/anim_palette.h) into draws of at most `palette`
+ * bones, the vertices two draws share copied, each vertex's bones
+ * renumbered into its draw's palette. A vertex of the split is the mesh's
+ * vertex source[i]. */
+struct anim_play_split {
+	uint32_t vertex_count, index_count, range_count;
+	uint32_t *source;
+	uint32_t *indices;
+	struct mesh_range *ranges; /* one a draw, its range's material */
+	uint32_t *palette_first;   /* per range, into bones */
+	uint32_t *palette_count;
+	uint16_t *bones;	    /* the draws' palettes, one after another */
+	uint32_t palette_max;	    /* the largest draw's */
+	float *joints, *weights;    /* 4 per vertex of the split */
+	float *positions, *normals; /* xyz per vertex of the split: room to gather into */
+};
+/* Anim_play_gpu_prepare's bones split so; 0, -E2BIG (a triangle alone
+ * needs more: the CPU path) or -ENOMEM. */
+int anim_play_split(const struct anim_play *p, const struct mesh *m, uint32_t palette,
+		    struct anim_play_split *out);
+void anim_play_split_release(struct anim_play_split *s);
+/* to[i] = from[source[i]], `width` floats each, for the split's vertices. */
+void anim_play_split_gather(const struct anim_play_split *s, const float *from, int width,
+			    float *to);
+/* Frees p, its anim and everything it holds (NULL: nothing). */
+void anim_play_free(struct anim_play *p);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

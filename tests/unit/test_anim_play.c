@@ -1,0 +1,208 @@
+/* Live playback's CPU pose (src/scene/anim_play.h) against the still the
+ * loader bakes (--time): for Khronos and assimp models that skin, morph
+ * and move nodes, the positions and normals anim_play_pose writes at a
+ * clip time equal the mesh loaded posed at that time, with the same fit.
+ * A model without animation keeps nothing for playback and loads as it
+ * did. */
+#include "scene/anim_play.h"
+#include "scene/gltf.h"
+
+#include <errno.h>
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include <cmocka.h>
+
+#define ASSIMP "/usr/share/assimp/models/glTF2/"
+
+static double max_diff(const float *a, const float *b, size_t n)
+{
+	double d = 0;
+
+	for (size_t i = 0; i < n; i++)
+		d = fmax(d, fabs((double)a[i] - b[i]));
+	return d;
+}
+
+/* The still at t, and the live pose at t from what the same load kept. */
+static void pose_equals_still(const char *path, double t)
+{
+	struct anim_play *play = NULL;
+	struct gltf_options o = {.pose = true, .time = t, .speed = 1, .play = &play};
+	struct mesh still;
+	struct anim_pose *pose;
+	struct anim_clock c;
+	float *pos, *nrm;
+
+	assert_int_equal(gltf_load_options(path, &o, &still), 0);
+	assert_non_null(play);
+	assert_int_equal(play->vertex_count, still.vertex_count);
+	pose = anim_pose_new(play->anim);
+	assert_non_null(pose);
+	anim_pose_rest(play->anim, pose);
+	anim_clock_init(&c, play->anim->clips[0].duration, ANIM_REPEAT, 1.0);
+	anim_clock_seek(&c, t);
+	anim_pose_apply(play->anim, &play->anim->clips[0], anim_clock_time(&c), pose);
+	pos = calloc((size_t)still.vertex_count * 3, sizeof(float));
+	nrm = calloc((size_t)still.vertex_count * 3, sizeof(float));
+	assert_non_null(pos);
+	assert_non_null(nrm);
+	anim_play_pose(play, pose, pos, nrm);
+	double dp = max_diff(pos, still.positions, (size_t)still.vertex_count * 3);
+	double dn = max_diff(nrm, still.normals, (size_t)still.vertex_count * 3);
+
+	if (dp >= 1e-5 || dn >= 1e-4)
+		print_message("%s at %.2f s: positions differ by %g, normals by %g\n", path, t, dp,
+			      dn);
+	assert_true(dp < 1e-5);
+	assert_true(dn < 1e-4);
+	free(pos);
+	free(nrm);
+	anim_pose_free(pose);
+	anim_play_free(play);
+	mesh_release(&still);
+}
+
+static void each_time(const char *path)
+{
+	static const double times[] = {0.0, 0.35, 1.0, 1.7, 2.9};
+
+	if (access(path, R_OK)) {
+		print_message("%s: not installed, left out\n", path);
+		return;
+	}
+	for (size_t i = 0; i < sizeof(times) / sizeof(*times); i++)
+		pose_equals_still(path, times[i]);
+}
+
+static void morph(void **state)
+{
+	(void)state;
+	each_time("tests/corpus/khronos/SimpleMorph.gltf");
+	each_time(ASSIMP "glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf");
+}
+
+static void skin(void **state)
+{
+	(void)state;
+	each_time("tests/corpus/khronos/RiggedSimple.gltf");
+	each_time(ASSIMP "simple_skin/simple_skin.gltf");
+}
+
+static void nodes(void **state)
+{
+	(void)state;
+	each_time("tests/corpus/khronos/BoxAnimated.gltf");
+	each_time("tests/corpus/khronos/AnimatedTriangle.gltf");
+}
+
+/* The vertex shader's skinning (shaders/matcap.vert, SKIN_BONES) in C:
+ * each vertex by its four bones' rows, over the weights' sum. */
+static void mirror_vertex(const struct anim_play *p, const float *rows, uint32_t v, float out[3],
+			  float n[3])
+{
+	const float *j = p->gpu_joints + (size_t)v * 4, *w = p->gpu_weights + (size_t)v * 4;
+	const float *at = p->positions + (size_t)v * 3, *nv = p->normals + (size_t)v * 3;
+	float total = w[0] + w[1] + w[2] + w[3], r[12] = {0};
+	double len = 0;
+
+	for (int k = 0; k < 4; k++)
+		for (int i = 0; i < 12; i++)
+			r[i] += w[k] / total * rows[(size_t)(int)(j[k] + 0.5f) * 12 + i];
+	for (int i = 0; i < 3; i++) {
+		out[i] =
+		    r[i * 4] * at[0] + r[i * 4 + 1] * at[1] + r[i * 4 + 2] * at[2] + r[i * 4 + 3];
+		n[i] = r[i * 4] * nv[0] + r[i * 4 + 1] * nv[1] + r[i * 4 + 2] * nv[2];
+		len += (double)n[i] * n[i];
+	}
+	for (int i = 0; i < 3; i++)
+		n[i] = (float)(n[i] / sqrt(len));
+}
+
+/* The GPU path's bones, through the shader's maths, pose the mesh as the
+ * CPU path does (no morphs here: those stay on the CPU). */
+static void gpu_mirror_at(const char *path, double t)
+{
+	struct anim_play *play = NULL;
+	struct gltf_options o = {.pose = true, .time = t, .speed = 1, .play = &play};
+	struct mesh still;
+	struct anim_pose *pose;
+	float *rows, v[3], n[3];
+	double dp = 0, dn = 0;
+
+	if (access(path, R_OK))
+		return;
+	assert_int_equal(gltf_load_options(path, &o, &still), 0);
+	/* A part without normals of its own takes the CPU path. */
+	if (anim_play_gpu_prepare(play, 1000) == -ENOTSUP) {
+		print_message("%s: normals generated, the CPU path\n", path);
+		anim_play_free(play);
+		mesh_release(&still);
+		return;
+	}
+	assert_int_equal(anim_play_gpu_prepare(play, 1), -E2BIG);
+	assert_int_equal(anim_play_gpu_prepare(play, 1000), 0);
+	pose = anim_pose_new(play->anim);
+	anim_pose_apply(play->anim, &play->anim->clips[0], t, pose);
+	rows = calloc((size_t)play->bones * 12, sizeof(float));
+	anim_play_bones(play, pose, rows);
+	for (uint32_t i = 0; i < still.vertex_count; i++) {
+		mirror_vertex(play, rows, i, v, n);
+		for (int k = 0; k < 3; k++) {
+			dp = fmax(dp, fabs(v[k] - still.positions[i * 3 + k]));
+			dn = fmax(dn, fabs(n[k] - still.normals[i * 3 + k]));
+		}
+	}
+	print_message("%s at %.2f s on the GPU's maths: %u bones, positions off by %g, normals "
+		      "by %g\n",
+		      path, t, play->bones, dp, dn);
+	assert_true(dp < 1e-5 && dn < 1e-4);
+	free(rows);
+	anim_pose_free(pose);
+	anim_play_free(play);
+	mesh_release(&still);
+}
+
+static void gpu_mirror(void **state)
+{
+	(void)state;
+	gpu_mirror_at("tests/corpus/khronos/RiggedSimple.gltf", 0.9);
+	gpu_mirror_at(ASSIMP "simple_skin/simple_skin.gltf", 1.3);
+	gpu_mirror_at("tests/corpus/khronos/BoxAnimated.gltf", 1.7);
+}
+
+/* No animation: nothing kept, and the very mesh a load without it gives. */
+static void still_model_unchanged(void **state)
+{
+	(void)state;
+	const char *path = "tests/corpus/khronos/MultipleScenes.gltf";
+	struct anim_play *play = (struct anim_play *)1;
+	struct gltf_options o = {.pose = true, .speed = 1, .play = &play}, plain = {0};
+	struct mesh a, b;
+
+	assert_int_equal(gltf_load_options(path, &o, &a), 0);
+	assert_null(play);
+	assert_int_equal(gltf_load_options(path, &plain, &b), 0);
+	assert_int_equal(a.vertex_count, b.vertex_count);
+	assert_memory_equal(a.positions, b.positions, (size_t)a.vertex_count * 3 * sizeof(float));
+	assert_memory_equal(a.normals, b.normals, (size_t)a.vertex_count * 3 * sizeof(float));
+	mesh_release(&a);
+	mesh_release(&b);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+	    cmocka_unit_test(morph),
+	    cmocka_unit_test(skin),
+	    cmocka_unit_test(nodes),
+	    cmocka_unit_test(gpu_mirror),
+	    cmocka_unit_test(still_model_unchanged),
+	};
+	return cmocka_run_group_tests_name("anim_play", tests, NULL, NULL);
+}

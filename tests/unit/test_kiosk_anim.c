@@ -1,0 +1,359 @@
+/* The live kiosk's animation player (src/app/kiosk_anim.h), drawn through
+ * OSMesa: its frame at a playback time equals the --time still of that
+ * time (RiggedSimple's skin, SimpleMorph's and AnimatedMorphCube's
+ * weights, BoxAnimated's nodes), skinned on the GPU and posed on the CPU,
+ * it asks for frames at animation_fps and none while paused or held, a
+ * next-animation crossfades, and a model without animation gets no
+ * player work and exactly the arrays it had. */
+#include "app/kiosk_anim.h"
+#include "config/settings.h"
+#include "content/content.h"
+#include "display/display.h"
+#include "util/clock.h"
+#include "gltf_write.h"
+
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include <cmocka.h>
+
+#include "offscreen.h"
+
+#define SIZE 96
+#define T0   1000000000ull
+
+static struct display *d;
+
+static int open_display(void **state)
+{
+	(void)state;
+	d = offscreen_open(SIZE, SIZE);
+	return d ? 0 : -1;
+}
+
+static struct content_config config(const char *model, double time)
+{
+	struct options o;
+
+	option_defaults(&o);
+	o.content.model = (char *)model;
+	o.content.anim_time = time;
+	o.content.anim_live = time < 0;
+	o.content.lod_pixels = 0;
+	/* The [scene] fit frames the mesh as loaded (the live one at 0 s):
+	 * one zoom for both. */
+	o.content.zoom = 1.0;
+	return o.content;
+}
+
+/* The content's frame drawn by r (the kiosk's draw: the view and the fit). */
+static void draw(struct renderer *r, const struct content *s, const struct content_config *c,
+		 struct image *out)
+{
+	struct view v = content_view(c);
+
+	v.zoom = (float)s->zoom;
+	assert_int_equal(d->begin_frame(d), 0);
+	renderer_draw(r, &v, SIZE, SIZE);
+	assert_int_equal(display_read_rgba(d, out), 0);
+}
+
+/* The live mesh's arrays are float32: the still is drawn from float32
+ * arrays too, so that only the poses are compared. bones: the palette at
+ * most (0: every model posed on the CPU). */
+static struct renderer *shown_with(struct content *s, const struct content_config *c,
+				   uint32_t bones)
+{
+	struct renderer *r = renderer_new(&d->gl, NULL);
+
+	assert_non_null(r);
+	renderer_set_vertex_format(r, VERTEX_FLOAT32);
+	renderer_set_bone_limit(r, bones);
+	assert_int_equal(content_load(s, c, true), 0);
+	assert_int_equal(content_prepare(s, c, SIZE, SIZE), 0);
+	assert_int_equal(content_upload(s, r), 0);
+	assert_int_equal(renderer_set_mode(r, c->mode, c->ortho), 0);
+	return r;
+}
+
+static struct renderer *shown(struct content *s, const struct content_config *c)
+{
+	return shown_with(s, c, UINT32_MAX);
+}
+
+/* Pixels that differ, and by how much at most (the live pose's float
+ * matrices against the bake's doubles round a shade by a level). */
+static void compare(const struct image *a, const struct image *b, int *pixels, int *most)
+{
+	*pixels = *most = 0;
+	for (int i = 0; i < a->width * a->height; i++) {
+		int diff = 0;
+
+		for (int k = 0; k < 3; k++)
+			diff = fmax(diff, abs(a->rgba[i * 4 + k] - b->rgba[i * 4 + k]));
+		*pixels += diff > 0;
+		*most = diff > *most ? diff : *most;
+	}
+}
+
+/* A clip time the clip's fit samples (a sixteenth of it): the still's fit
+ * at that time is the live one's (gltf_fit.cc). gpu: skinned on the GPU
+ * (where the model can be), else posed on the CPU. */
+static void live_frame_is_the_still(const char *path, int sixteenths, uint32_t bones)
+{
+	struct content_config lc = config(path, -1);
+	struct content live, still;
+	struct renderer *r;
+	struct kiosk_anim *a = kiosk_anim_new();
+	struct kiosk_anim_input in = {.running = true, .config = &lc};
+	double t;
+	uint64_t next;
+	struct image fa, fb;
+	int pixels, most;
+
+	if (access(path, R_OK))
+		return;
+	r = shown_with(&live, &lc, bones);
+	assert_non_null(live.play);
+	if (!bones)
+		assert_false(live.play_gpu);
+	t = live.play->anim->clips[0].duration * sixteenths / 16;
+	assert_true(kiosk_anim_step(a, &live, r, &in, T0, &next));
+	assert_true(kiosk_anim_step(a, &live, r, &in, T0 + (uint64_t)llround(t * 1e9), &next));
+	assert_true(fabs(kiosk_anim_time(a) - t) < 1e-6);
+	draw(r, &live, &lc, &fa);
+
+	struct content_config sc = config(path, t);
+	struct renderer *rs = shown(&still, &sc);
+
+	assert_null(still.play);
+	draw(rs, &still, &sc, &fb);
+	compare(&fa, &fb, &pixels, &most);
+	print_message("%s at %.3f s, %s: %d pixels differ, by %d at most\n", path, t,
+		      !live.play_gpu	? "posed on the CPU"
+		      : live.play_split ? "skinned on the GPU, its palette split"
+					: "skinned on the GPU",
+		      pixels, most);
+	/* A pose off by a hair moves an edge by a whole level or more. */
+	assert_true(most <= 2);
+	image_release(&fa);
+	image_release(&fb);
+	kiosk_anim_free(a);
+	renderer_free(r);
+	renderer_free(rs);
+	content_release(&live);
+	content_release(&still);
+}
+
+static void frames_equal_stills(void **state)
+{
+	/* The CPU path, one palette of two bones (a split into draws where
+	 * the model has more), and one palette of all. */
+	static const uint32_t palettes[] = {0, 2, UINT32_MAX};
+
+	(void)state;
+	for (int i = 0; i < 3; i++) {
+		live_frame_is_the_still("tests/corpus/khronos/RiggedSimple.gltf", 7, palettes[i]);
+		live_frame_is_the_still("tests/corpus/khronos/SimpleMorph.gltf", 5, palettes[i]);
+		live_frame_is_the_still("tests/corpus/khronos/BoxAnimated.gltf", 11, palettes[i]);
+		live_frame_is_the_still("/usr/share/assimp/models/glTF2/glTF-Sample-Models/"
+					"AnimatedMorphCube-glTF/AnimatedMorphCube.gltf",
+					6, palettes[i]);
+	}
+}
+
+/* Frames at animation_fps, none while held; the clock holds with it. */
+static void frames_at_the_rate(void **state)
+{
+	(void)state;
+	struct content_config c = config("tests/corpus/khronos/BoxAnimated.gltf", -1);
+	struct content s;
+	struct renderer *r;
+	struct kiosk_anim *a = kiosk_anim_new();
+	struct kiosk_anim_input in = {.running = true, .config = &c};
+	uint64_t next, now = T0;
+	int frames = 0;
+	double held;
+
+	c.anim_fps = 20;
+	r = shown(&s, &c);
+	assert_true(kiosk_anim_step(a, &s, r, &in, now, &next));
+	assert_int_equal(next, now + 50000000ull);
+	/* A loop woken every millisecond for a second draws 20 frames. */
+	for (int i = 1; i <= 1000; i++)
+		frames += kiosk_anim_step(a, &s, r, &in, now + i * 1000000ull, &next);
+	assert_int_equal(frames, 20);
+	now += 1000000000ull;
+	/* Held (idle past animation_pause_after, asleep, play-pause): no
+	 * frame, no deadline, and the clock stands still. */
+	held = kiosk_anim_time(a);
+	in.running = false;
+	assert_false(kiosk_anim_step(a, &s, r, &in, now + 500000000ull, &next));
+	assert_int_equal(next, CLOCK_NEVER);
+	in.running = true;
+	in.paused = true;
+	assert_false(kiosk_anim_step(a, &s, r, &in, now + 900000000ull, &next));
+	assert_int_equal(next, CLOCK_NEVER);
+	in.paused = false;
+	assert_true(kiosk_anim_step(a, &s, r, &in, now + 1000000000ull, &next));
+	assert_true(fabs(kiosk_anim_time(a) - held) < 1e-6);
+	/* A model uploaded while held is posed once (its first pose), and
+	 * asks for nothing more. */
+	in.running = false;
+	assert_int_equal(content_upload_model(&s, r), 0);
+	assert_true(kiosk_anim_step(a, &s, r, &in, now + 1100000000ull, &next));
+	assert_int_equal(next, CLOCK_NEVER);
+	assert_false(kiosk_anim_step(a, &s, r, &in, now + 1200000000ull, &next));
+	kiosk_anim_free(a);
+	renderer_free(r);
+	content_release(&s);
+}
+
+/* A clip of STEP keys alone (a sphere's node turned at 0, 1 and 2 s)
+ * draws at its own rate: a frame when a key comes, none between, however
+ * high animation_fps is. */
+static void step_keys_draw_at_their_rate(void **state)
+{
+	(void)state;
+	char dir[] = "/tmp/mk-step-XXXXXX", path[64];
+	struct gltf_write_opts o = {.index_bytes = 4,
+				    .with_normals = 1,
+				    .bad_index = -1,
+				    .with_anim = 1,
+				    .anim_node = 0,
+				    .anim_step = 1};
+	struct mesh sphere;
+	struct content_config c;
+	struct content s;
+	struct renderer *r;
+	struct kiosk_anim *a = kiosk_anim_new();
+	struct kiosk_anim_input in = {.running = true};
+	uint64_t next;
+	int frames = 0;
+
+	assert_non_null(mkdtemp(dir));
+	snprintf(path, sizeof(path), "%s/step.glb", dir);
+	assert_int_equal(mesh_uv_sphere(&sphere, 12, 8), 0);
+	assert_int_equal(gltf_write(path, &sphere, &o), 0);
+	c = config(path, -1);
+	c.anim_fps = 60;
+	in.config = &c;
+	r = shown(&s, &c);
+	assert_non_null(s.play);
+	assert_true(kiosk_anim_step(a, &s, r, &in, T0, &next));
+	assert_int_equal(next, T0 + 1001000000ull); /* the key at 1 s, not 1/60 s */
+	for (int i = 1; i <= 1999; i++)
+		frames += kiosk_anim_step(a, &s, r, &in, T0 + i * 1000000ull, &next);
+	assert_int_equal(frames, 1);
+	kiosk_anim_free(a);
+	renderer_free(r);
+	content_release(&s);
+	mesh_release(&sphere);
+	unlink(path);
+	rmdir(dir);
+}
+
+/* next-animation: the pose shown blends into the next clip's (here the
+ * same clip again from its start) over KIOSK_ANIM_FADE_NS. */
+static void next_animation_crossfades(void **state)
+{
+	(void)state;
+	struct content_config c = config("tests/corpus/khronos/SimpleMorph.gltf", -1);
+	struct content s;
+	struct renderer *r = shown(&s, &c);
+	struct kiosk_anim *a = kiosk_anim_new();
+	struct kiosk_anim_input in = {.running = true, .config = &c};
+	uint64_t next;
+	size_t n = (size_t)s.mesh.vertex_count * 3;
+	float *before = malloc(n * sizeof(float)), *start = malloc(n * sizeof(float));
+
+	assert_true(kiosk_anim_step(a, &s, r, &in, T0, &next));
+	memcpy(start, s.mesh.positions, n * sizeof(float)); /* the clip at 0 s */
+	assert_true(kiosk_anim_step(a, &s, r, &in, T0 + 1000000000ull, &next));
+	memcpy(before, s.mesh.positions, n * sizeof(float)); /* at 1 s */
+	in.clip_step = 1;
+	/* Half-way through the fade: between the pose left and the new
+	 * clip's start, not at either. */
+	assert_true(kiosk_anim_step(a, &s, r, &in, T0 + 1000000000ull, &next));
+	assert_true(kiosk_anim_step(a, &s, r, &in, T0 + 1125000000ull, &next));
+	double off_before = 0, off_start = 0;
+
+	for (size_t i = 0; i < n; i++) {
+		off_before = fmax(off_before, fabs(s.mesh.positions[i] - before[i]));
+		off_start = fmax(off_start, fabs(s.mesh.positions[i] - start[i]));
+	}
+	assert_true(off_before > 1e-3 && off_start > 1e-3);
+	/* The same model uploaded again (a swap put back): its arrays are new
+	 * on the GPU, and the player poses them at once. */
+	assert_false(kiosk_anim_step(a, &s, r, &in, T0 + 1126000000ull, &next));
+	assert_int_equal(content_upload_model(&s, r), 0);
+	assert_true(kiosk_anim_step(a, &s, r, &in, T0 + 1127000000ull, &next));
+	free(before);
+	free(start);
+	kiosk_anim_free(a);
+	renderer_free(r);
+	content_release(&s);
+}
+
+/* No animation: no playback data, no frame asked for, and the same
+ * arrays (the compact format) as ever. */
+static void still_models_cost_nothing(void **state)
+{
+	(void)state;
+	struct content_config c = config("tests/corpus/khronos/MultipleScenes.gltf", -1);
+	struct content s;
+	struct renderer *r = renderer_new(&d->gl, NULL);
+	struct kiosk_anim *a = kiosk_anim_new();
+	struct kiosk_anim_input in = {.running = true, .config = &c};
+	struct renderer_stats st;
+
+	assert_int_equal(content_load(&s, &c, true), 0);
+	assert_int_equal(content_prepare(&s, &c, SIZE, SIZE), 0);
+	assert_int_equal(content_upload(&s, r), 0);
+	uint64_t next;
+
+	assert_null(s.play);
+	assert_false(kiosk_anim_step(a, &s, r, &in, T0, &next));
+	assert_int_equal(next, CLOCK_NEVER);
+	renderer_get_stats(r, &st);
+	assert_int_equal(st.format, VERTEX_COMPACT);
+	kiosk_anim_free(a);
+	renderer_free(r);
+	content_release(&s);
+}
+
+/* A clip the file lacks is no error in the live kiosk (a folder's other
+ * models may have it): the model loads, still, in its rest pose. */
+static void a_clip_it_lacks_shows_still(void **state)
+{
+	(void)state;
+	struct content_config c = config("tests/corpus/khronos/RiggedSimple.gltf", -1);
+	struct content s;
+
+	c.animation = "walk";
+	assert_int_equal(content_load(&s, &c, true), 0);
+	assert_null(s.play);
+	content_release(&s);
+	c.anim_live = false; /* a still (--time) names the setting: an error */
+	c.anim_time = 1;
+	assert_int_not_equal(content_load(&s, &c, true), 0);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+	    cmocka_unit_test(frames_equal_stills),
+	    cmocka_unit_test(frames_at_the_rate),
+	    cmocka_unit_test(step_keys_draw_at_their_rate),
+	    cmocka_unit_test(next_animation_crossfades),
+	    cmocka_unit_test(still_models_cost_nothing),
+	    cmocka_unit_test(a_clip_it_lacks_shows_still),
+	};
+	setenv("XDG_CACHE_HOME", "/nonexistent", 1); /* no cache: each load is parsed */
+	return cmocka_run_group_tests_name("kiosk_anim", tests, open_display, NULL);
+}
