@@ -58,9 +58,11 @@ KVER=$(ls "$KDIR/root/lib/modules")
 [ -f "$KDIR/root/lib/modules/$KVER/extra/vkms.ko" ] || die "no vkms.ko under $KDIR"
 
 make -s -j"$(nproc)" -C "$REPO" matcap-kiosk >/dev/null || die "the kiosk does not build"
-# The packages of the kiosk's libraries, as ldd finds them here.
-libpkgs=$(ldd "$REPO/matcap-kiosk" | awk '$2 == "=>" && $3 ~ /^\// {print $3}' |
-	xargs -r realpath | xargs -r dpkg-query -S 2>/dev/null | sed 's/:.*//' | sort -u)
+# The packages of the kiosk's libraries, as ldd finds them here (by the
+# file's name: dpkg may list it under /lib or /usr/lib).
+libpkgs=$(ldd "$REPO/matcap-kiosk" | awk -v d="$(gcc -print-multiarch)" \
+	'$2 == "=>" && $3 ~ /^\// {n = split($3, p, "/"); print "*lib/" d "/" p[n]}' |
+	xargs -r dpkg-query -S 2>/dev/null | sed 's/:.*//' | sort -u)
 
 # closure PACKAGE...: those packages, minbase's (Essential, Priority:
 # required) and what they depend on, as installed here (an alternative or a
