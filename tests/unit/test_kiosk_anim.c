@@ -10,6 +10,7 @@
 #include "content/content.h"
 #include "display/display.h"
 #include "util/clock.h"
+#include "gltf_morph.h"
 #include "gltf_write.h"
 
 #include <math.h>
@@ -189,9 +190,9 @@ static void program_reads(const struct renderer *r, GLint *attributes, bool *mor
 	*morphs = d->gl.GetUniformLocation(st.program, "u_morph_weights") >= 0;
 }
 
-/* The cube's live frame against its still with `limit` attributes, what
+/* The model's live frame against its still with `limit` attributes, what
  * the journal said meanwhile into log. */
-static void morph_frame_logged(uint32_t limit, char *log, size_t size)
+static void morph_frame_logged(const char *model, uint32_t limit, char *log, size_t size)
 {
 	char path[] = "/tmp/mk-morph-log-XXXXXX";
 	int fd = mkstemp(path), saved = dup(2);
@@ -201,7 +202,7 @@ static void morph_frame_logged(uint32_t limit, char *log, size_t size)
 	attribute_limit = limit;
 	fflush(stderr);
 	dup2(fd, 2);
-	live_frame_is_the_still(MORPH_CUBE, 6, UINT32_MAX);
+	live_frame_is_the_still(model, 6, UINT32_MAX);
 	fflush(stderr);
 	dup2(saved, 2);
 	close(saved);
@@ -262,9 +263,9 @@ static void morph_targets_on_the_gpu_or_cpu(void **state)
 	renderer_free(r);
 	content_release(&s);
 
-	morph_frame_logged(9, log, sizeof(log));
+	morph_frame_logged(MORPH_CUBE, 9, log, sizeof(log));
 	assert_non_null(strstr(log, "morph targets on the GPU: 2 of them with normals in 4"));
-	morph_frame_logged(8, log, sizeof(log));
+	morph_frame_logged(MORPH_CUBE, 8, log, sizeof(log));
 	assert_non_null(strstr(log, "morph targets moved on the CPU each frame: the targets need "
 				    "more vertex attributes than the GPU has left (4 attributes, "
 				    "the program leaves 3"));
@@ -278,6 +279,33 @@ static void morph_targets_on_the_gpu_or_cpu(void **state)
 	assert_false(morphs);
 	renderer_free(r);
 	content_release(&s);
+}
+
+/* A sphere of two targets (tests/tools/gltf_morph.c) shown by one node
+ * morphs on the GPU; shown by two nodes, each with its own weights, on
+ * the CPU (a program holds one node's weights), and the journal says
+ * why; both frames equal their stills. */
+static void morphs_of_one_node_or_two(void **state)
+{
+	(void)state;
+	char dir[] = "/tmp/mk-morph-XXXXXX", one[64], two[64], log[8192];
+	struct mesh sphere;
+
+	assert_non_null(mkdtemp(dir));
+	snprintf(one, sizeof(one), "%s/one.glb", dir);
+	snprintf(two, sizeof(two), "%s/two.glb", dir);
+	assert_int_equal(mesh_uv_sphere(&sphere, 12, 8), 0);
+	assert_int_equal(gltf_write_morph(one, &sphere, 1), 0);
+	assert_int_equal(gltf_write_morph(two, &sphere, 2), 0);
+	morph_frame_logged(one, 0, log, sizeof(log));
+	assert_non_null(strstr(log, "morph targets on the GPU: 2 of them with normals"));
+	morph_frame_logged(two, 0, log, sizeof(log));
+	assert_non_null(strstr(log, "morph targets moved on the CPU each frame: parts of several "
+				    "nodes have targets"));
+	mesh_release(&sphere);
+	unlink(one);
+	unlink(two);
+	rmdir(dir);
 }
 
 /* Frames at animation_fps, none while held; the clock holds with it. */
@@ -462,6 +490,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(frames_equal_stills),
 	    cmocka_unit_test(morph_targets_on_the_gpu_or_cpu),
+	    cmocka_unit_test(morphs_of_one_node_or_two),
 	    cmocka_unit_test(frames_at_the_rate),
 	    cmocka_unit_test(step_keys_draw_at_their_rate),
 	    cmocka_unit_test(next_animation_crossfades),
