@@ -4,7 +4,6 @@
 #define MK_RENDER_PRIV_H
 
 #include "render/background.h"
-#include "render/render.h"
 #include "render/caption.h"
 #include "render/draw_list.h"
 #include "render/gl.h"
@@ -129,6 +128,7 @@ bool render_morph_set(struct renderer *r);
 void render_morph_source(const struct renderer *r, struct shader_source *src);
 void render_morph_bind(const struct renderer *r, uint32_t base);
 void render_morph_uniforms(const struct renderer *r, const struct program *p);
+struct skin_morphs; /* render.h */
 int render_morph_upload(struct renderer *r, const struct skin_morphs *m, uint32_t vertex_count);
 void render_morph_free(struct renderer *r);
 /* render_live.c: a program that skins (r->bones), its palette, attributes
