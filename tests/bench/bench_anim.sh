@@ -9,8 +9,8 @@
 # RiggedSimple's skin and AnimatedMorphCube's morph, skinned and morphed
 # on the GPU (the bones and weights a frame), morphed on the CPU and
 # skinned on the GPU (the arrays a frame), and posed on the CPU, drawn,
-# against the same model's still. Then the error of each path
-# (bench_anim_error: the C mirror of the vertex shader against the bake).
+# against the same model's still. What each path costs in error:
+# bench_anim_paths.sh, in the speed-against-error report.
 # Models from Debian's assimp-testmodels: a skin and a morph.
 # Environment: KIOSK, TOOLS.
 set -eu
@@ -68,21 +68,3 @@ for m in "$out/knot-100k-turning.glb" "$out/knot-100k-morphing.glb" \
 	done
 done
 
-echo
-echo "## what live playback's paths cost in error"
-echo
-echo "Poses at 8 times of the clip against the --time still (the bake, in double): the"
-echo "CPU path, and the GPU path through the C mirror of its vertex shader (morph"
-echo "targets, then bones, in binary32 as the vertex stage computes; and with the deltas"
-echo "held as half floats, what GL_OES_vertex_half_float arrays would cost). Largest"
-echo "position error in the fitted radius and in pixels of a 1080-line screen the model"
-echo "fills; largest normal error in degrees."
-echo
-echo "| model | path | position (radius) | position (px at 1080) | normal (degrees) |"
-echo "|---|---|---|---|---|"
-for m in "$out/knot-100k-morphing.glb" "$out/knot-100k-turning.glb" \
-	tests/corpus/khronos/RiggedSimple.gltf "$cube"; do
-	[ -f "$m" ] || continue
-	"$TOOLS/bench_anim_error" "$m" ||
-		echo "| $(basename "$m") | - | - | - | did not run |"
-done
