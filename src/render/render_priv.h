@@ -16,7 +16,7 @@ enum { UNIT_MATCAP, UNIT_DETAIL, UNIT_RAMP, UNIT_BASE };
 
 /* The vertex shader's vectors besides the bone palette: the model-view
  * and projection (4 each), the normal matrix and the base map's
- * transform (3 each), rounded up. */
+ * transform (3 each), and the morph targets' weights (2). */
 #define RENDER_SKIN_RESERVED 16
 
 /* A range's program variant (draw_item_variant): its alphaMode, its sides

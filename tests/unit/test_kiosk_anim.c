@@ -192,7 +192,8 @@ static void program_reads(const struct renderer *r, GLint *attributes, bool *mor
 
 /* The model's live frame against its still with `limit` attributes, what
  * the journal said meanwhile into log. */
-static void morph_frame_logged(const char *model, uint32_t limit, char *log, size_t size)
+static void morph_frame_logged(const char *model, uint32_t limit, uint32_t bones, char *log,
+			       size_t size)
 {
 	char path[] = "/tmp/mk-morph-log-XXXXXX";
 	int fd = mkstemp(path), saved = dup(2);
@@ -202,7 +203,7 @@ static void morph_frame_logged(const char *model, uint32_t limit, char *log, siz
 	attribute_limit = limit;
 	fflush(stderr);
 	dup2(fd, 2);
-	live_frame_is_the_still(model, 6, UINT32_MAX);
+	live_frame_is_the_still(model, 6, bones);
 	fflush(stderr);
 	dup2(saved, 2);
 	close(saved);
@@ -263,9 +264,9 @@ static void morph_targets_on_the_gpu_or_cpu(void **state)
 	renderer_free(r);
 	content_release(&s);
 
-	morph_frame_logged(MORPH_CUBE, 9, log, sizeof(log));
+	morph_frame_logged(MORPH_CUBE, 9, UINT32_MAX, log, sizeof(log));
 	assert_non_null(strstr(log, "morph targets on the GPU: 2 of them with normals in 4"));
-	morph_frame_logged(MORPH_CUBE, 8, log, sizeof(log));
+	morph_frame_logged(MORPH_CUBE, 8, UINT32_MAX, log, sizeof(log));
 	assert_non_null(strstr(log, "morph targets moved on the CPU each frame: the targets need "
 				    "more vertex attributes than the GPU has left (4 attributes, "
 				    "the program leaves 3"));
@@ -282,9 +283,9 @@ static void morph_targets_on_the_gpu_or_cpu(void **state)
 }
 
 /* A sphere of two targets (tests/tools/gltf_morph.c) shown by one node
- * morphs on the GPU; shown by two nodes, each with its own weights, on
- * the CPU (a program holds one node's weights), and the journal says
- * why; both frames equal their stills. */
+ * morphs on the GPU (its palette split into draws too); shown by two nodes, each with its own
+ * weights, on the CPU (a program holds one node's weights), and the journal says why; both frames
+ * equal their stills. */
 static void morphs_of_one_node_or_two(void **state)
 {
 	(void)state;
@@ -297,9 +298,14 @@ static void morphs_of_one_node_or_two(void **state)
 	assert_int_equal(mesh_uv_sphere(&sphere, 12, 8), 0);
 	assert_int_equal(gltf_write_morph(one, &sphere, 1), 0);
 	assert_int_equal(gltf_write_morph(two, &sphere, 2), 0);
-	morph_frame_logged(one, 0, log, sizeof(log));
+	morph_frame_logged(one, 0, UINT32_MAX, log, sizeof(log));
 	assert_non_null(strstr(log, "morph targets on the GPU: 2 of them with normals"));
-	morph_frame_logged(two, 0, log, sizeof(log));
+	/* A palette of one bone: its draws cut, the deltas gathered with
+	 * the vertices. */
+	morph_frame_logged(one, 0, 1, log, sizeof(log));
+	assert_non_null(strstr(log, "skinned on the GPU in 1 draws"));
+	assert_non_null(strstr(log, "morph targets on the GPU: 2 of them with normals"));
+	morph_frame_logged(two, 0, UINT32_MAX, log, sizeof(log));
 	assert_non_null(strstr(log, "morph targets moved on the CPU each frame: parts of several "
 				    "nodes have targets"));
 	mesh_release(&sphere);
