@@ -205,6 +205,32 @@ static void morph_placement(void **state)
 	mesh_release(&m);
 }
 
+/* More targets than the shader adds, or targets on parts of two nodes
+ * (two sets of weights): the CPU's, whatever the room. */
+static void morph_placement_refused(void **state)
+{
+	float deltas[3] = {0};
+	struct anim_play_part parts[2] = {
+	    {.node = 0, .skin = -1, .vertex_count = 1},
+	    {.node = 1, .skin = -1, .first_vertex = 1, .vertex_count = 1}};
+	struct anim_play p = {.vertex_count = 2, .part_count = 1, .parts = parts};
+	const char *why;
+
+	(void)state;
+	parts[0].target_count = ANIM_PLAY_MORPH_MAX + 1;
+	parts[0].target_positions = deltas;
+	assert_int_equal(anim_play_morph_prepare(&p, 100, &why), -E2BIG);
+	assert_non_null(why);
+	assert_true(p.morphs);
+	parts[0].target_count = parts[1].target_count = 1;
+	parts[1].target_positions = deltas;
+	p.part_count = 2;
+	assert_int_equal(anim_play_morph_prepare(&p, 100, &why), -EXDEV);
+	assert_non_null(strstr(why, "several nodes"));
+	assert_int_equal(p.morph_targets, 0);
+	assert_null(p.gpu_morph);
+}
+
 /* No animation: nothing kept, and the very mesh a load without it gives. */
 static void still_model_unchanged(void **state)
 {
@@ -227,9 +253,13 @@ static void still_model_unchanged(void **state)
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
-	    cmocka_unit_test(morph),	       cmocka_unit_test(skin),
-	    cmocka_unit_test(nodes),	       cmocka_unit_test(gpu_mirror),
-	    cmocka_unit_test(morph_placement), cmocka_unit_test(still_model_unchanged),
+	    cmocka_unit_test(morph),
+	    cmocka_unit_test(skin),
+	    cmocka_unit_test(nodes),
+	    cmocka_unit_test(gpu_mirror),
+	    cmocka_unit_test(morph_placement),
+	    cmocka_unit_test(morph_placement_refused),
+	    cmocka_unit_test(still_model_unchanged),
 	};
 	return cmocka_run_group_tests_name("anim_play", tests, NULL, NULL);
 }
