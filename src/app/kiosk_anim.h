@@ -4,7 +4,9 @@
  * and not at all while it does not run (paused by play-pause, by
  * animation_pause_after of no input, or the screen asleep): then the
  * clock holds, and it goes on where it stopped. next-animation crossfades
- * to the next clip. A content without playback costs nothing here. */
+ * to the next clip; a reload of the same model goes on with its clock,
+ * or crossfades where its clip changed. "all" plays every clip together. A content without playback
+ * costs nothing here. */
 #ifndef MK_KIOSK_ANIM_H
 #define MK_KIOSK_ANIM_H
 
@@ -36,7 +38,8 @@ void kiosk_anim_free(struct kiosk_anim *a);
  * none until something changes). */
 bool kiosk_anim_step(struct kiosk_anim *a, struct content *c, struct renderer *r,
 		     const struct kiosk_anim_input *in, uint64_t now, uint64_t *next);
-/* The clip time shown, seconds (for tests and the journal); -1: none. */
+/* The clip time shown, seconds (for tests and the journal; "all": the
+ * first clip's); -1: none. */
 double kiosk_anim_time(const struct kiosk_anim *a);
 
 #endif
