@@ -1,5 +1,6 @@
 #include "app/kiosk_anim.h"
 #include "app/kiosk_state.h"
+#include "state/view.h"
 #include "util/clock.h"
 #include "util/log.h"
 
@@ -17,12 +18,14 @@ struct kiosk_anim {
 	/* The setting's clip, and the one playing; clip_count: all of them;
 	 * -1: none. */
 	int first_clip, clip;
-	int clip_step;	  /* the app state's count of next-animation seen */
-	uint64_t last_ns; /* the clock has run to here */
-	uint64_t due_ns;  /* the next frame */
-	uint64_t fade_ns; /* a crossfade started then; 0: none */
-	bool held;	  /* the clock stood still: it goes on from the next step */
-	float *rows;	  /* the bone palette's rows (skinned on the GPU) */
+	int clip_step;			 /* the app state's count of next-animation seen */
+	uint64_t last_ns;		 /* the clock has run to here */
+	uint64_t due_ns;		 /* the next frame */
+	uint64_t fade_ns;		 /* a crossfade started then; 0: none */
+	bool held;			 /* the clock stood still: it goes on from the next step */
+	char stop_clip[FRAME_STOP_CLIP]; /* the stop's clip last seen; "": none */
+	bool stop_warned;		 /* a stop named a clip this model lacks: said */
+	float *rows;			 /* the bone palette's rows (skinned on the GPU) */
 	/* The file set up for and its shape (its playback may be freed by
 	 * now): a reload of it keeps its clocks or fades from its pose. */
 	char *model;
@@ -133,6 +136,15 @@ static void carry_over(struct kiosk_anim *a, struct anim_pose *shown, struct ani
 	a->fade_ns = now ? now : 1;
 }
 
+/* The clip words name ([scene] animation's: auto, a name, an index; all:
+ * clip_count), -1 for off or none, -2 for a name the model lacks. */
+static int find_clip(const struct kiosk_anim *a, const char *words)
+{
+	if (!strcmp(words, "all"))
+		return a->clip_count ? (int)a->clip_count : -1;
+	return anim_clip_find(a->play->anim, words);
+}
+
 /* The clip [scene] animation names for this content ("all": every clip,
  * each on its own clock; "off": none). */
 static void set_up(struct kiosk_anim *a, const struct content *c, const struct renderer *r,
@@ -160,14 +172,16 @@ static void set_up(struct kiosk_anim *a, const struct content *c, const struct r
 	a->clip = -1;
 	a->fade_ns = 0;
 	a->clip_step = in->clip_step;
+	a->stop_warned = false;
 	if (!a->play)
 		goto out;
 	a->clip_count = a->play->anim->clip_count;
 	a->node_count = a->play->anim->node_count;
 	a->weight_total = a->play->anim->weight_total;
-	clip = anim_clip_find(a->play->anim, want);
-	if (!strcmp(want, "all") && a->clip_count)
-		clip = (int)a->clip_count;
+	clip = find_clip(a, want);
+	if (in->stop_clip && find_clip(a, in->stop_clip) >= 0) /* shown at a stop that plays one */
+		clip = find_clip(a, in->stop_clip);
+	snprintf(a->stop_clip, sizeof(a->stop_clip), "%s", in->stop_clip ? in->stop_clip : "");
 	a->pose = anim_pose_new(a->play->anim);
 	a->from = anim_pose_new(a->play->anim);
 	a->mix = anim_pose_new(a->play->anim);
@@ -189,6 +203,34 @@ out:
 	free(clocks);
 }
 
+/* The pose shown now fades into clip's. */
+static void fade_to(struct kiosk_anim *a, const struct content_config *cfg, int clip, uint64_t now)
+{
+	copy_pose(a->play->anim, a->from, a->fade_ns ? a->mix : a->pose);
+	a->fade_ns = now ? now : 1;
+	start_clip(a, cfg, clip, now);
+}
+
+/* A guided stop reached that names a clip: it plays, faded into, unless
+ * it is the one playing; a name the model lacks is said once a model
+ * (attract mode comes back to the stop every round). */
+static void stop_clip(struct kiosk_anim *a, const struct kiosk_anim_input *in, uint64_t now)
+{
+	int clip;
+
+	snprintf(a->stop_clip, sizeof(a->stop_clip), "%s", in->stop_clip ? in->stop_clip : "");
+	if (!in->stop_clip)
+		return;
+	clip = find_clip(a, in->stop_clip);
+	if (clip == -2 && !a->stop_warned)
+		log_warn("[frame] stops: animation=%s: %s has no such animation; the one playing "
+			 "goes on",
+			 in->stop_clip, a->model ? a->model : "the model");
+	a->stop_warned |= clip == -2;
+	if (clip >= 0 && clip != a->clip)
+		fade_to(a, in->config, clip, now);
+}
+
 /* next-animation: the pose shown now fades into the next clip's ("all"
  * is one more step of the cycle when the setting asks for it). */
 static void next_clip(struct kiosk_anim *a, const struct kiosk_anim_input *in, uint64_t now)
@@ -196,10 +238,8 @@ static void next_clip(struct kiosk_anim *a, const struct kiosk_anim_input *in, u
 	size_t n = a->clip_count + (a->first_clip == (int)a->clip_count);
 	int clip = (int)(((size_t)a->first_clip + (size_t)(unsigned)in->clip_step) % n);
 
-	copy_pose(a->play->anim, a->from, a->fade_ns ? a->mix : a->pose);
-	a->fade_ns = now ? now : 1;
 	a->clip_step = in->clip_step;
-	start_clip(a, in->config, clip, now);
+	fade_to(a, in->config, clip, now);
 }
 
 static void pose_now(struct kiosk_anim *a, struct content *c, struct renderer *r, uint64_t now)
@@ -298,6 +338,8 @@ bool kiosk_anim_step(struct kiosk_anim *a, struct content *c, struct renderer *r
 		return false;
 	if (in->clip_step != a->clip_step)
 		next_clip(a, in, now);
+	if (strcmp(in->stop_clip ? in->stop_clip : "", a->stop_clip))
+		stop_clip(a, in, now);
 	/* Held: the clock stays where it is, and no frame is due; a new
 	 * mesh still gets its first pose (on the GPU path its arrays are the
 	 * parts' own, unposed, until the bones are set). */
@@ -346,6 +388,7 @@ uint64_t kiosk_play_animation(struct kiosk *k, uint64_t now, bool awake)
 	    .running = awake && (cfg->anim_pause_after <= 0 || idle < cfg->anim_pause_after),
 	    .paused = st->anim_paused,
 	    .clip_step = st->anim_step,
+	    .stop_clip = st->stop_animation,
 	    .config = cfg};
 	uint64_t next;
 

@@ -26,6 +26,9 @@ struct kiosk_anim_input {
 	bool running;  /* awake, and input within animation_pause_after */
 	bool paused;   /* play-pause (the app state's anim_paused) */
 	int clip_step; /* next-animation presses (the app state's anim_step) */
+	/* The guided stop's clip (the app state's stop_animation): played,
+	 * crossfaded, from when the stop is reached; NULL: none. */
+	const char *stop_clip;
 	const struct content_config *config; /* the content's settings */
 };
 

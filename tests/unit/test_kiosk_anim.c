@@ -413,6 +413,66 @@ static void all_is_a_step_of_the_cycle(void **state)
 	content_release(&s);
 }
 
+/* A guided stop's animation=: reached, its clip plays from the start,
+ * faded from the pose shown; a clip the model lacks changes nothing; a
+ * model set up at that stop starts with the stop's clip. */
+static void stops_play_their_clip(void **state)
+{
+	(void)state;
+	struct content_config c = config(KHRONOS "BoxAnimated.gltf", -1);
+	struct content s;
+	struct kiosk_anim *a = kiosk_anim_new(), *b = kiosk_anim_new();
+	struct kiosk_anim_input in = {.running = true, .config = &c};
+	struct renderer *r;
+	uint64_t next, at = T0 + 1000000000ull;
+	float *before, *after;
+	size_t n;
+
+	c.animation = "0";
+	r = shown_with(&s, &c, 0);
+	n = (size_t)s.mesh.vertex_count * 3;
+	assert_true(kiosk_anim_step(a, &s, r, &in, T0, &next));
+	assert_true(kiosk_anim_step(a, &s, r, &in, at, &next));
+	before = posed(&s);
+	in.stop_clip = "1";
+	assert_true(kiosk_anim_step(a, &s, r, &in, at, &next));
+	assert_true(kiosk_anim_time(a) < 1e-6); /* clip 1 from its start */
+	after = posed(&s);
+	assert_true(farthest(before, after, n) < 1e-5); /* faded from the pose shown */
+	free(after);
+	/* A clip the model lacks: the one playing goes on. */
+	in.stop_clip = "no such clip";
+	assert_true(kiosk_anim_step(a, &s, r, &in, at + 500000000ull, &next));
+	assert_true(fabs(kiosk_anim_time(a) - 0.5) < 1e-6);
+	/* Set up at a stop with a clip: that clip, as if the setting named
+	 * it (not the setting's, whose pose differs then). */
+	in.stop_clip = "1";
+	assert_true(kiosk_anim_step(b, &s, r, &in, at, &next));
+	assert_true(kiosk_anim_step(b, &s, r, &in, at + 700000000ull, &next));
+	free(before);
+	before = posed(&s);
+	in.stop_clip = NULL;
+	for (int k = 0; k < 2; k++) {
+		c.animation = k ? "0" : "1";
+		kiosk_anim_free(b);
+		b = kiosk_anim_new();
+		assert_int_equal(content_upload_model(&s, r), 0); /* set up again */
+		assert_true(kiosk_anim_step(b, &s, r, &in, at, &next));
+		assert_true(kiosk_anim_step(b, &s, r, &in, at + 700000000ull, &next));
+		after = posed(&s);
+		if (k)
+			assert_true(farthest(before, after, n) > 1e-3);
+		else
+			assert_true(farthest(before, after, n) < 1e-6);
+		free(after);
+	}
+	free(before);
+	kiosk_anim_free(a);
+	kiosk_anim_free(b);
+	renderer_free(r);
+	content_release(&s);
+}
+
 /* No animation: no playback data, no frame asked for, and the same
  * arrays (the compact format) as ever. */
 static void still_models_cost_nothing(void **state)
@@ -466,6 +526,7 @@ int main(void)
 	    cmocka_unit_test(next_animation_crossfades),
 	    cmocka_unit_test(reload_goes_on),
 	    cmocka_unit_test(all_is_a_step_of_the_cycle),
+	    cmocka_unit_test(stops_play_their_clip),
 	    cmocka_unit_test(still_models_cost_nothing),
 	    cmocka_unit_test(a_clip_it_lacks_shows_still),
 	};
