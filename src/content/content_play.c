@@ -14,7 +14,14 @@ void content_play_check(struct content *s)
 		free(s->mesh.tangents);
 		s->mesh.tangents = NULL;
 	}
-	if (!s->play || (s->play->vertex_count == s->mesh.vertex_count && !s->mesh.tangents))
+	if (s->play && s->play->vertex_count == s->mesh.vertex_count && !s->mesh.tangents) {
+		log_info("%s: plays live at full detail and is not cached: a simplified or "
+			 "cached mesh would need its parts' joints, weights and targets carried "
+			 "through each collapse and into the cache",
+			 s->model_path);
+		return;
+	}
+	if (!s->play)
 		return;
 	log_warn("%s: its animation does not play with this material's subdivision or tangents; "
 		 "it shows its first pose",

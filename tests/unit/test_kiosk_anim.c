@@ -25,8 +25,9 @@
 
 #include "offscreen.h"
 
-#define SIZE 96
-#define T0   1000000000ull
+#define SIZE	96
+#define KHRONOS "tests/corpus/khronos/"
+#define T0	1000000000ull
 
 static struct display *d;
 /* The vertex attributes the next renderer may use (0: the GPU's). */
@@ -108,7 +109,8 @@ static void compare(const struct image *a, const struct image *b, int *pixels, i
 /* A clip time the clip's fit samples (a sixteenth of it): the still's fit
  * at that time is the live one's (gltf_fit.cc). gpu: skinned on the GPU
  * (where the model can be), else posed on the CPU. */
-static void live_frame_is_the_still(const char *path, int sixteenths, uint32_t bones)
+static void live_frame_is_the_still(const char *path, char *animation, int sixteenths,
+				    uint32_t bones)
 {
 	struct content_config lc = config(path, -1);
 	struct content live, still;
@@ -122,6 +124,7 @@ static void live_frame_is_the_still(const char *path, int sixteenths, uint32_t b
 
 	if (access(path, R_OK))
 		return;
+	lc.animation = animation;
 	r = shown_with(&live, &lc, bones);
 	assert_non_null(live.play);
 	if (!bones)
@@ -133,12 +136,16 @@ static void live_frame_is_the_still(const char *path, int sixteenths, uint32_t b
 	draw(r, &live, &lc, &fa);
 
 	struct content_config sc = config(path, t);
-	struct renderer *rs = shown(&still, &sc);
+	struct renderer *rs;
+
+	sc.animation = animation;
+	rs = shown(&still, &sc);
 
 	assert_null(still.play);
 	draw(rs, &still, &sc, &fb);
 	compare(&fa, &fb, &pixels, &most);
-	print_message("%s at %.3f s, %s: %d pixels differ, by %d at most\n", path, t,
+	print_message("%s (%s) at %.3f s, %s: %d pixels differ, by %d at most\n", path,
+		      animation ? animation : "auto", t,
 		      !live.play_gpu	? "posed on the CPU"
 		      : live.play_split ? "skinned on the GPU, its palette split"
 					: "skinned on the GPU",
@@ -165,12 +172,14 @@ static void frames_equal_stills(void **state)
 
 	(void)state;
 	for (int i = 0; i < 3; i++) {
-		live_frame_is_the_still("tests/corpus/khronos/RiggedSimple.gltf", 7, palettes[i]);
-		live_frame_is_the_still("tests/corpus/khronos/SimpleMorph.gltf", 5, palettes[i]);
-		live_frame_is_the_still("tests/corpus/khronos/BoxAnimated.gltf", 11, palettes[i]);
+		live_frame_is_the_still(KHRONOS "RiggedSimple.gltf", NULL, 7, palettes[i]);
+		live_frame_is_the_still(KHRONOS "SimpleMorph.gltf", NULL, 5, palettes[i]);
+		live_frame_is_the_still(KHRONOS "BoxAnimated.gltf", NULL, 11, palettes[i]);
+		/* Its two clips together, each on its own clock, as the still. */
+		live_frame_is_the_still(KHRONOS "BoxAnimated.gltf", (char *)"all", 11, palettes[i]);
 		live_frame_is_the_still("/usr/share/assimp/models/glTF2/glTF-Sample-Models/"
 					"AnimatedMorphCube-glTF/AnimatedMorphCube.gltf",
-					6, palettes[i]);
+					NULL, 6, palettes[i]);
 	}
 }
 
@@ -203,7 +212,7 @@ static void morph_frame_logged(const char *model, uint32_t limit, uint32_t bones
 	attribute_limit = limit;
 	fflush(stderr);
 	dup2(fd, 2);
-	live_frame_is_the_still(model, 6, bones);
+	live_frame_is_the_still(model, NULL, 6, bones);
 	fflush(stderr);
 	dup2(saved, 2);
 	close(saved);
@@ -457,6 +466,170 @@ static void next_animation_crossfades(void **state)
 	content_release(&s);
 }
 
+/* BoxAnimated's vertices posed on the CPU as the player shows them. */
+static float *posed(const struct content *s)
+{
+	size_t n = (size_t)s->mesh.vertex_count * 3 * sizeof(float);
+	float *p = malloc(n);
+
+	assert_non_null(p);
+	memcpy(p, s->mesh.positions, n);
+	return p;
+}
+
+static double farthest(const float *a, const float *b, size_t n)
+{
+	double most = 0;
+
+	for (size_t i = 0; i < n; i++)
+		most = fmax(most, fabs(a[i] - b[i]));
+	return most;
+}
+
+/* A reload of the model on screen (its file or its settings changed)
+ * goes on: the same clip keeps its clock, a clip played otherwise starts
+ * from the pose shown and crossfades. */
+static void reload_goes_on(void **state)
+{
+	(void)state;
+	struct content_config c = config(KHRONOS "BoxAnimated.gltf", -1);
+	struct content s[3];
+	struct kiosk_anim *a = kiosk_anim_new();
+	struct kiosk_anim_input in = {.running = true, .config = &c};
+	struct renderer *r;
+	uint64_t next, at = T0 + 1000000000ull;
+	float *before, *after;
+	size_t n;
+
+	c.animation = "1";
+	r = shown_with(&s[0], &c, 0); /* posed on the CPU: its arrays show it */
+	assert_true(kiosk_anim_step(a, &s[0], r, &in, T0, &next));
+	assert_true(kiosk_anim_step(a, &s[0], r, &in, at, &next));
+	assert_true(fabs(kiosk_anim_time(a) - 1.0) < 1e-6);
+	/* Loaded again, the same clip: its clock goes on (not from 0). */
+	assert_int_equal(content_load(&s[1], &c, true), 0);
+	assert_int_equal(content_prepare(&s[1], &c, SIZE, SIZE), 0);
+	assert_int_equal(content_upload(&s[1], r), 0);
+	content_release(&s[0]);
+	assert_true(kiosk_anim_step(a, &s[1], r, &in, at + 500000000ull, &next));
+	assert_true(fabs(kiosk_anim_time(a) - 1.5) < 1e-6);
+	before = posed(&s[1]);
+	n = (size_t)s[1].mesh.vertex_count * 3;
+	/* Played otherwise (here twice as fast; another clip alike, but
+	 * its own fit would move the arrays): the clip starts again, and the
+	 * first frame still shows the pose left, fading from there. */
+	c.anim_speed = 2;
+	assert_int_equal(content_load(&s[2], &c, true), 0);
+	assert_int_equal(content_prepare(&s[2], &c, SIZE, SIZE), 0);
+	assert_int_equal(content_upload(&s[2], r), 0);
+	content_release(&s[1]);
+	assert_true(kiosk_anim_step(a, &s[2], r, &in, at + 500000000ull, &next));
+	assert_true(kiosk_anim_time(a) < 1e-6);
+	after = posed(&s[2]);
+	assert_true(farthest(before, after, n) < 1e-5);
+	free(after);
+	assert_true(kiosk_anim_step(a, &s[2], r, &in, at + 625000000ull, &next));
+	after = posed(&s[2]);
+	assert_true(farthest(before, after, n) > 1e-3); /* fading, not held */
+	free(after);
+	free(before);
+	kiosk_anim_free(a);
+	renderer_free(r);
+	content_release(&s[2]);
+}
+
+/* "all": next-animation steps clip 0, clip 1, then all of them again. */
+static void all_is_a_step_of_the_cycle(void **state)
+{
+	(void)state;
+	struct content_config c = config(KHRONOS "BoxAnimated.gltf", -1);
+	struct content s;
+	struct kiosk_anim *a = kiosk_anim_new();
+	struct kiosk_anim_input in = {.running = true, .config = &c};
+	struct renderer *r;
+	uint64_t next;
+	float *all, *again;
+
+	c.animation = "all";
+	r = shown_with(&s, &c, 0);
+	assert_true(kiosk_anim_step(a, &s, r, &in, T0, &next));
+	assert_true(kiosk_anim_step(a, &s, r, &in, T0 + KIOSK_ANIM_FADE_NS, &next));
+	all = posed(&s); /* both clips at a quarter second */
+	for (int step = 1; step <= 3; step++) {
+		in.clip_step = step; /* each press long after the last fade */
+		assert_true(kiosk_anim_step(a, &s, r, &in, T0 + step * 10000000000ull, &next));
+		assert_true(kiosk_anim_step(
+		    a, &s, r, &in, T0 + step * 10000000000ull + KIOSK_ANIM_FADE_NS, &next));
+	}
+	again = posed(&s); /* all again, a quarter second in */
+	assert_true(farthest(all, again, (size_t)s.mesh.vertex_count * 3) < 1e-4);
+	free(all);
+	free(again);
+	kiosk_anim_free(a);
+	renderer_free(r);
+	content_release(&s);
+}
+
+/* A guided stop's animation=: reached, its clip plays from the start,
+ * faded from the pose shown; a clip the model lacks changes nothing; a
+ * model set up at that stop starts with the stop's clip. */
+static void stops_play_their_clip(void **state)
+{
+	(void)state;
+	struct content_config c = config(KHRONOS "BoxAnimated.gltf", -1);
+	struct content s;
+	struct kiosk_anim *a = kiosk_anim_new(), *b = kiosk_anim_new();
+	struct kiosk_anim_input in = {.running = true, .config = &c};
+	struct renderer *r;
+	uint64_t next, at = T0 + 1000000000ull;
+	float *before, *after;
+	size_t n;
+
+	c.animation = "0";
+	r = shown_with(&s, &c, 0);
+	n = (size_t)s.mesh.vertex_count * 3;
+	assert_true(kiosk_anim_step(a, &s, r, &in, T0, &next));
+	assert_true(kiosk_anim_step(a, &s, r, &in, at, &next));
+	before = posed(&s);
+	in.stop_clip = "1";
+	assert_true(kiosk_anim_step(a, &s, r, &in, at, &next));
+	assert_true(kiosk_anim_time(a) < 1e-6); /* clip 1 from its start */
+	after = posed(&s);
+	assert_true(farthest(before, after, n) < 1e-5); /* faded from the pose shown */
+	free(after);
+	/* A clip the model lacks: the one playing goes on. */
+	in.stop_clip = "no such clip";
+	assert_true(kiosk_anim_step(a, &s, r, &in, at + 500000000ull, &next));
+	assert_true(fabs(kiosk_anim_time(a) - 0.5) < 1e-6);
+	/* Set up at a stop with a clip: that clip, as if the setting named
+	 * it (not the setting's, whose pose differs then). */
+	in.stop_clip = "1";
+	assert_true(kiosk_anim_step(b, &s, r, &in, at, &next));
+	assert_true(kiosk_anim_step(b, &s, r, &in, at + 700000000ull, &next));
+	free(before);
+	before = posed(&s);
+	in.stop_clip = NULL;
+	for (int k = 0; k < 2; k++) {
+		c.animation = k ? "0" : "1";
+		kiosk_anim_free(b);
+		b = kiosk_anim_new();
+		assert_int_equal(content_upload_model(&s, r), 0); /* set up again */
+		assert_true(kiosk_anim_step(b, &s, r, &in, at, &next));
+		assert_true(kiosk_anim_step(b, &s, r, &in, at + 700000000ull, &next));
+		after = posed(&s);
+		if (k)
+			assert_true(farthest(before, after, n) > 1e-3);
+		else
+			assert_true(farthest(before, after, n) < 1e-6);
+		free(after);
+	}
+	free(before);
+	kiosk_anim_free(a);
+	kiosk_anim_free(b);
+	renderer_free(r);
+	content_release(&s);
+}
+
 /* No animation: no playback data, no frame asked for, and the same
  * arrays (the compact format) as ever. */
 static void still_models_cost_nothing(void **state)
@@ -510,9 +683,21 @@ int main(void)
 	    cmocka_unit_test(frames_at_the_rate),
 	    cmocka_unit_test(step_keys_draw_at_their_rate),
 	    cmocka_unit_test(next_animation_crossfades),
+	    cmocka_unit_test(reload_goes_on),
+	    cmocka_unit_test(all_is_a_step_of_the_cycle),
+	    cmocka_unit_test(stops_play_their_clip),
 	    cmocka_unit_test(still_models_cost_nothing),
 	    cmocka_unit_test(a_clip_it_lacks_shows_still),
 	};
-	setenv("XDG_CACHE_HOME", "/nonexistent", 1); /* no cache: each load is parsed */
-	return cmocka_run_group_tests_name("kiosk_anim", tests, open_display, NULL);
+	/* A cache of its own, empty: each load is parsed, and nothing is
+	 * written where a user's or another test's cache is. */
+	char cache[] = "/tmp/mk-anim-cache-XXXXXX", cmd[64];
+	if (!mkdtemp(cache))
+		return 1;
+	setenv("XDG_CACHE_HOME", cache, 1);
+	int failed = cmocka_run_group_tests_name("kiosk_anim", tests, open_display, NULL);
+	snprintf(cmd, sizeof(cmd), "rm -rf %s", cache);
+	if (system(cmd) != 0)
+		fprintf(stderr, "could not remove %s\n", cache);
+	return failed;
 }
