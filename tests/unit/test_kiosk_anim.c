@@ -291,8 +291,6 @@ static void morph_targets_on_the_gpu_or_cpu(void **state)
 	content_release(&s);
 	content_release(&rigged);
 
-	morph_frame_logged(MORPH_CUBE, 9, UINT32_MAX, log, sizeof(log));
-	assert_non_null(strstr(log, "morph targets on the GPU: 2 of them with normals in 4"));
 	morph_frame_logged(MORPH_CUBE, 8, UINT32_MAX, log, sizeof(log));
 	assert_non_null(strstr(log, "morph targets moved on the CPU each frame: the targets need "
 				    "more vertex attributes than the GPU has left (4 attributes, "
