@@ -266,7 +266,13 @@ static void pose_now(struct kiosk_anim *a, struct content *c, struct renderer *r
 	}
 	anim_play_bones(c->play, shown, a->rows);
 	renderer_set_bones(r, a->rows);
-	/* Morph targets move the parts' own arrays (on the CPU). */
+	if (c->play->morph_targets) { /* the vertex shader adds them */
+		float w[ANIM_PLAY_MORPH_MAX];
+
+		anim_play_morph_weights(c->play, shown, w);
+		renderer_set_morph_weights(r, w);
+	}
+	/* Morph targets that did not fit the GPU move the parts' own arrays. */
 	if (c->play->morphs) {
 		const struct anim_play_split *sp = c->play_split;
 

@@ -234,6 +234,7 @@ void anim_play_free(struct anim_play *p)
 	free(p->gpu_weights);
 	free(p->skin_bone);
 	free(p->node_bone);
+	free(p->gpu_morph);
 	mesh_anim_free(p->anim);
 	free(p);
 }

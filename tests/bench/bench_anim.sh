@@ -5,10 +5,14 @@
 # loaded once each for its fit) and warm (the posed mesh from the cache),
 # start-up and peak RSS, median of three. Then live playback a frame
 # (bench_anim_live): the 100k knot skinned and turned by an animation
-# (mkmodels), RiggedSimple's skin and AnimatedMorphCube's morph, skinned
-# on the GPU (the bones a frame) and posed on the CPU (the arrays a
-# frame), drawn, against the same model's still. Last, the live kiosk's
-# start-up and memory with the model playing against the same file still.
+# and the 100k knot morphing (two targets with normals, mkmodels),
+# RiggedSimple's skin and AnimatedMorphCube's morph, skinned and morphed
+# on the GPU (the bones and weights a frame), morphed on the CPU and
+# skinned on the GPU (the arrays a frame), and posed on the CPU, drawn,
+# against the same model's still. What each path costs in error:
+# bench_anim_paths.sh, in the speed-against-error report. Last, the live
+# kiosk's start-up and memory with the model playing against the same
+# file still.
 # Models from Debian's assimp-testmodels: a skin and a morph.
 # Environment: KIOSK, TOOLS.
 set -eu
@@ -52,12 +56,15 @@ echo
 echo "| model | path | backend | vertices | triangles | pose ms | draw ms | still triangles | still draw ms |"
 echo "|---|---|---|---|---|---|---|---|---|"
 "$TOOLS/mkmodels" "$out" --bench >/dev/null
-for m in "$out/knot-100k-turning.glb" tests/corpus/khronos/RiggedSimple.gltf \
-	"$a/glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf"; do
+cube="$a/glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf"
+for m in "$out/knot-100k-turning.glb" "$out/knot-100k-morphing.glb" \
+	tests/corpus/khronos/RiggedSimple.gltf "$cube"; do
 	[ -f "$m" ] || continue
+	paths="gpu cpu"
+	case $m in *morph* | *Morph*) paths="gpu cpu-morphs cpu" ;; esac
 	for backend in osmesa egl-headless; do
-		for path in gpu cpu; do
-			"$TOOLS/bench_anim_live" $backend 1280x720 "$m" 100 $path ||
+		for path in $paths; do
+			"$TOOLS/bench_anim_live" $backend 1280x720 "$m" 100 "$path" ||
 				echo "| $(basename "$m") | $path | $backend | - | - | - | - | - | did not run |"
 		done
 	done

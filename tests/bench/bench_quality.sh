@@ -25,6 +25,9 @@ if [ -n "${KIOSK:-}" ]; then
 		sh tests/bench/bench_scale.sh "$size"
 	done >>"$out/speed-error.md"
 fi
+# Live playback's paths (bench_anim_paths.sh).
+echo >>"$out/speed-error.md"
+sh tests/bench/bench_anim_paths.sh >>"$out/speed-error.md"
 gnuplot -e "dir='$out'" tests/bench/report/speed-error.gp
 cat "$out/speed-error.md"
 echo "plot: $out/speed-error.png"

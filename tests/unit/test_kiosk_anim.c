@@ -10,6 +10,7 @@
 #include "content/content.h"
 #include "display/display.h"
 #include "util/clock.h"
+#include "gltf_morph.h"
 #include "gltf_write.h"
 
 #include <math.h>
@@ -29,6 +30,8 @@
 #define T0	1000000000ull
 
 static struct display *d;
+/* The vertex attributes the next renderer may use (0: the GPU's). */
+static uint32_t attribute_limit;
 
 static int open_display(void **state)
 {
@@ -75,6 +78,7 @@ static struct renderer *shown_with(struct content *s, const struct content_confi
 	assert_non_null(r);
 	renderer_set_vertex_format(r, VERTEX_FLOAT32);
 	renderer_set_bone_limit(r, bones);
+	renderer_set_attribute_limit(r, attribute_limit);
 	assert_int_equal(content_load(s, c, true), 0);
 	assert_int_equal(content_prepare(s, c, SIZE, SIZE), 0);
 	assert_int_equal(content_upload(s, r), 0);
@@ -146,6 +150,9 @@ static void live_frame_is_the_still(const char *path, char *animation, int sixte
 		      : live.play_split ? "skinned on the GPU, its palette split"
 					: "skinned on the GPU",
 		      pixels, most);
+	if (live.play->morph_targets)
+		print_message("  its %u morph targets added in the vertex shader\n",
+			      live.play->morph_targets);
 	/* A pose off by a hair moves an edge by a whole level or more. */
 	assert_true(most <= 2);
 	image_release(&fa);
@@ -174,6 +181,154 @@ static void frames_equal_stills(void **state)
 					"AnimatedMorphCube-glTF/AnimatedMorphCube.gltf",
 					NULL, 6, palettes[i]);
 	}
+}
+
+#define MORPH_CUBE                                                                                 \
+	"/usr/share/assimp/models/glTF2/glTF-Sample-Models/AnimatedMorphCube-glTF/"                \
+	"AnimatedMorphCube.gltf"
+
+/* The program the renderer draws with: its active attributes, and
+ * whether it reads morph weights. */
+static void program_reads(const struct renderer *r, GLint *attributes, bool *morphs)
+{
+	struct renderer_stats st;
+
+	renderer_get_stats(r, &st);
+	assert_true(st.program != 0);
+	d->gl.GetProgramiv(st.program, GL_ACTIVE_ATTRIBUTES, attributes);
+	*morphs = d->gl.GetUniformLocation(st.program, "u_morph_weights") >= 0;
+}
+
+/* The model's live frame against its still with `limit` attributes, what
+ * the journal said meanwhile into log. */
+static void morph_frame_logged(const char *model, uint32_t limit, uint32_t bones, char *log,
+			       size_t size)
+{
+	char path[] = "/tmp/mk-morph-log-XXXXXX";
+	int fd = mkstemp(path), saved = dup(2);
+	ssize_t got;
+
+	assert_true(fd >= 0 && saved >= 0);
+	attribute_limit = limit;
+	fflush(stderr);
+	dup2(fd, 2);
+	live_frame_is_the_still(model, NULL, 6, bones);
+	fflush(stderr);
+	dup2(saved, 2);
+	close(saved);
+	attribute_limit = 0;
+	got = pread(fd, log, size - 1, 0);
+	log[got > 0 ? got : 0] = '\0';
+	close(fd);
+	unlink(path);
+}
+
+/* AnimatedMorphCube's two targets move positions and normals: four
+ * attributes, which a GPU of 9 leaves beside the position, normal, base
+ * colour (a constant, at its location), bones and weights; the vertex
+ * shader adds them and the arrays stay the parts' own. With GLES2's least
+ * (8) they move on the CPU (skinned on the GPU still), and the journal
+ * says why; the frames equal the still either way
+ * (live_frame_is_the_still). A skinned model without targets builds no
+ * morph program: its five attributes, no weights. */
+static void morph_targets_on_the_gpu_or_cpu(void **state)
+{
+	(void)state;
+	struct content_config c = config(MORPH_CUBE, -1);
+	struct kiosk_anim_input in = {.running = true, .config = &c};
+	struct kiosk_anim *a = kiosk_anim_new();
+	struct content s;
+	struct renderer *r;
+	char log[8192];
+	GLint attributes;
+	bool morphs;
+	uint64_t next;
+	size_t n;
+	float *own;
+
+	if (access(MORPH_CUBE, R_OK)) {
+		print_message("%s: not installed, left out\n", MORPH_CUBE);
+		kiosk_anim_free(a);
+		return;
+	}
+	attribute_limit = 9;
+	r = shown(&s, &c);
+	attribute_limit = 0;
+	assert_true(s.play_gpu);
+	assert_int_equal(s.play->morph_targets, 2);
+	assert_true(s.play->morph_normals);
+	/* Position, normal, base colour, bones, weights and the four. */
+	program_reads(r, &attributes, &morphs);
+	assert_int_equal(attributes, 9);
+	assert_true(morphs);
+	n = (size_t)s.mesh.vertex_count * 3;
+	own = malloc(n * sizeof(float));
+	assert_non_null(own);
+	memcpy(own, s.mesh.positions, n * sizeof(float));
+	assert_true(kiosk_anim_step(a, &s, r, &in, T0, &next));
+	assert_true(kiosk_anim_step(a, &s, r, &in, T0 + 1500000000ull, &next));
+	assert_memory_equal(own, s.mesh.positions, n * sizeof(float));
+	free(own);
+	kiosk_anim_free(a);
+	/* The next model, skinned without targets, on the same renderer:
+	 * programs without them (its five attributes, no weights), and the
+	 * cube's arrays no longer bound. */
+	struct content_config rc = config("tests/corpus/khronos/RiggedSimple.gltf", -1);
+	struct content rigged;
+	struct image frame;
+
+	assert_int_equal(content_load(&rigged, &rc, true), 0);
+	assert_int_equal(content_prepare(&rigged, &rc, SIZE, SIZE), 0);
+	assert_int_equal(content_upload(&rigged, r), 0);
+	assert_true(rigged.play_gpu);
+	program_reads(r, &attributes, &morphs);
+	assert_int_equal(attributes, 5);
+	assert_false(morphs);
+	draw(r, &rigged, &rc, &frame);
+	assert_int_equal(d->gl.GetError(), GL_NO_ERROR);
+	image_release(&frame);
+	renderer_free(r);
+	content_release(&s);
+	content_release(&rigged);
+
+	morph_frame_logged(MORPH_CUBE, 8, UINT32_MAX, log, sizeof(log));
+	assert_non_null(strstr(log, "morph targets moved on the CPU each frame: the targets need "
+				    "more vertex attributes than the GPU has left (4 attributes, "
+				    "the program leaves 3"));
+	assert_non_null(strstr(log, "skinned on the GPU"));
+}
+
+/* A sphere of two targets (tests/tools/gltf_morph.c) shown by one node
+ * morphs on the GPU (its palette split into draws too); shown by two
+ * nodes, each with its own weights, on the CPU (a program holds one
+ * node's weights), and the journal says why; the frames equal their
+ * stills. */
+static void morphs_of_one_node_or_two(void **state)
+{
+	(void)state;
+	char dir[] = "/tmp/mk-morph-XXXXXX", one[64], two[64], log[8192];
+	struct mesh sphere;
+
+	assert_non_null(mkdtemp(dir));
+	snprintf(one, sizeof(one), "%s/one.glb", dir);
+	snprintf(two, sizeof(two), "%s/two.glb", dir);
+	assert_int_equal(mesh_uv_sphere(&sphere, 12, 8), 0);
+	assert_int_equal(gltf_write_morph(one, &sphere, 1), 0);
+	assert_int_equal(gltf_write_morph(two, &sphere, 2), 0);
+	morph_frame_logged(one, 0, UINT32_MAX, log, sizeof(log));
+	assert_non_null(strstr(log, "morph targets on the GPU: 2 of them with normals"));
+	/* A palette of one bone: its draws cut, the deltas gathered with
+	 * the vertices. */
+	morph_frame_logged(one, 0, 1, log, sizeof(log));
+	assert_non_null(strstr(log, "skinned on the GPU in 1 draws"));
+	assert_non_null(strstr(log, "morph targets on the GPU: 2 of them with normals"));
+	morph_frame_logged(two, 0, UINT32_MAX, log, sizeof(log));
+	assert_non_null(strstr(log, "morph targets moved on the CPU each frame: parts of several "
+				    "nodes have targets"));
+	mesh_release(&sphere);
+	unlink(one);
+	unlink(two);
+	rmdir(dir);
 }
 
 /* Frames at animation_fps, none while held; the clock holds with it. */
@@ -521,6 +676,8 @@ int main(void)
 {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(frames_equal_stills),
+	    cmocka_unit_test(morph_targets_on_the_gpu_or_cpu),
+	    cmocka_unit_test(morphs_of_one_node_or_two),
 	    cmocka_unit_test(frames_at_the_rate),
 	    cmocka_unit_test(step_keys_draw_at_their_rate),
 	    cmocka_unit_test(next_animation_crossfades),
