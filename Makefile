@@ -85,17 +85,17 @@ SRC_INPUT   := input/action input/button input/gesture input/touch_decode input/
 SRC_CAMERA  := camera/camera_feed camera/camera_link camera/camera_math camera/camera_proto \
 	       camera/camera_texture
 SRC_RENDER  := render/background render/bake render/draw_list render/framing render/gl render/poster render/render_scale \
-	       render/caption render/render render/render_draw render/render_live render/shader render/shading
+	       render/caption render/render render/render_draw render/render_live render/render_morph render/shader render/shading
 SRC_SCENE   := scene/lod scene/material scene/mesh scene/mesh_cache scene/mesh_cache_fields scene/mesh_cache_key scene/mesh_gen scene/mesh_pack scene/subdivide scene/tangent \
 	       scene/texture scene/caption scene/caption_text
-SRC_SCENE   += scene/anim scene/anim_sampler scene/anim_palette scene/anim_play scene/anim_play_gpu scene/anim_play_split
+SRC_SCENE   += scene/anim scene/anim_sampler scene/anim_palette scene/anim_play scene/anim_play_gpu scene/anim_play_split scene/anim_play_morph
 SRC_UTIL    := util/file util/folder_watch util/image util/log util/math3d
 LIB_C  := $(SRC_APP) $(SRC_OPS) $(SRC_CONTENT) $(SRC_CONFIG) $(SRC_STATE) $(SRC_DISPLAY) $(SRC_INPUT) $(SRC_CAMERA) $(SRC_RENDER) $(SRC_SCENE) $(SRC_UTIL)
 # The C++ shims, each behind a C header (gltf_ext.h is internal to the glTF one).
 LIB_CC := scene/gltf scene/gltf_mesh scene/gltf_fs scene/gltf_material scene/gltf_ext scene/gltf_files scene/gltf_pose \
 	  scene/gltf_draco camera/camera
 LIB_CC += scene/gltf_words scene/gltf_anim scene/gltf_fit scene/gltf_name scene/gltf_play
-SHADERS := shaders/mapping.glsl shaders/matcap.vert shaders/matcap.frag shaders/material.glsl
+SHADERS := shaders/mapping.glsl shaders/morph.glsl shaders/matcap.vert shaders/matcap.frag shaders/material.glsl
 SHADERS += shaders/camera.vert shaders/camera.frag
 SHADERS += shaders/poster.vert shaders/poster.frag
 SHADERS += shaders/scale.vert shaders/scale.frag

@@ -5,7 +5,8 @@
 // the vertex colour, BASE_MAP the UV through the base map's transform.
 // SKIN_BONES (a model that plays its animation on the GPU) poses each
 // vertex by its four bones of the palette: rows of 3x4 matrices that hold
-// the node worlds, inverse binds and the model's fit.
+// the node worlds, inverse binds and the model's fit. MORPH_TARGETS (with
+// SKIN_BONES only) adds the morph targets first (morph.glsl, before this).
 
 attribute vec3 a_position;
 attribute vec3 a_normal;
@@ -50,6 +51,10 @@ void main()
 #ifdef SKIN_BONES
 	// The weights' blend of the bones' rows, over their sum (as the CPU
 	// path: scene/anim_play.c); every vertex has a bone of weight.
+	vec3 own = a_position, own_normal = a_normal;
+#ifdef MORPH_TARGETS
+	morph(own, own_normal);
+#endif
 	vec4 r0 = vec4(0.0), r1 = vec4(0.0), r2 = vec4(0.0);
 	float total = a_weights.x + a_weights.y + a_weights.z + a_weights.w;
 	for (int k = 0; k < 4; k++) {
@@ -59,9 +64,9 @@ void main()
 		r1 += w * u_bones[j + 1];
 		r2 += w * u_bones[j + 2];
 	}
-	vec4 at = vec4(a_position, 1.0);
+	vec4 at = vec4(own, 1.0);
 	vec3 posed = vec3(dot(r0, at), dot(r1, at), dot(r2, at));
-	vec3 turned = vec3(dot(r0.xyz, a_normal), dot(r1.xyz, a_normal), dot(r2.xyz, a_normal));
+	vec3 turned = vec3(dot(r0.xyz, own_normal), dot(r1.xyz, own_normal), dot(r2.xyz, own_normal));
 	vec4 p = u_modelview * vec4(posed, 1.0);
 	vec3 n = u_normal_matrix * safe_normalize(turned);
 #else

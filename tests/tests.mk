@@ -30,7 +30,7 @@ TSANITIZE   := -O1 -g -fsanitize=thread -fno-omit-frame-pointer -DMK_TEST_HOOKS
 TEST_LIBS   = $(shell $(PKG_CONFIG) --libs cmocka zlib) $(LDLIBS) -lstdc++
 TEST_CFLAGS = $(ALL_CFLAGS) -Itests -Itests/tools
 # The C mirror of the shaders: the tests' reference, never in the program.
-ORACLE_OBJS := $(BUILD)/oracle/fp16.o $(BUILD)/oracle/shading_double.o \
+ORACLE_OBJS := $(BUILD)/oracle/fp16.o $(BUILD)/oracle/shading_double.o $(BUILD)/oracle/anim_mirror.o \
 	       $(BUILD)/oracle/shading_float.o
 
 $(BUILD)/oracle/%.o: tests/oracle/%.c
@@ -40,18 +40,21 @@ $(BUILD)/oracle/%.o: tests/oracle/%.c
 -include $(wildcard $(BUILD)/oracle/*.d)
 
 $(BUILD)/tests/test_%: tests/unit/test_%.c tests/tools/gltf_write.c tests/tools/gltf_write.h \
-		tests/tools/gltf_parts.c tests/tools/gltf_parts.h $(LIB_OBJS) $(ORACLE_OBJS)
+		tests/tools/gltf_parts.c tests/tools/gltf_parts.h tests/tools/gltf_morph.c \
+		$(LIB_OBJS) $(ORACLE_OBJS)
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) $(LDFLAGS) -o $@ $< tests/tools/gltf_write.c tests/tools/gltf_parts.c \
+		tests/tools/gltf_morph.c \
 		$(LIB_OBJS) $(ORACLE_OBJS) $(TEST_LIBS)
 
 unit-tests: $(UNIT_TESTS:%=$(BUILD)/tests/test_%)
 
 $(TOOLS_DIR)/mkmodels: tests/tools/mkmodels.c tests/tools/gltf_write.c tests/tools/maps.c \
-		tests/tools/gltf_parts.c tests/tools/parts_models.c $(LIB_OBJS)
+		tests/tools/gltf_parts.c tests/tools/parts_models.c tests/tools/gltf_morph.c $(LIB_OBJS)
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) -o $@ $< tests/tools/gltf_write.c tests/tools/maps.c \
-		tests/tools/gltf_parts.c tests/tools/parts_models.c $(LIB_OBJS) $(TEST_LIBS)
+		tests/tools/gltf_parts.c tests/tools/parts_models.c tests/tools/gltf_morph.c \
+		$(LIB_OBJS) $(TEST_LIBS)
 
 $(TOOLS_DIR)/imgdiff: tests/tools/imgdiff.c $(BUILD)/util/image.o $(BUILD)/util/log.o
 	@mkdir -p $(@D)
@@ -139,6 +142,13 @@ $(TOOLS_DIR)/bench_anim_live: tests/bench/bench_anim_live.c $(LIB_OBJS)
 	$(CC) $(TEST_CFLAGS) -o $@ $< $(LIB_OBJS) $(TEST_LIBS)
 
 test-tools: $(TOOLS_DIR)/bench_anim_live
+
+# What its paths cost in error (the C mirror of the vertex shader).
+$(TOOLS_DIR)/bench_anim_error: tests/bench/bench_anim_error.c $(LIB_OBJS) $(ORACLE_OBJS)
+	@mkdir -p $(@D)
+	$(CC) $(TEST_CFLAGS) -o $@ $< $(LIB_OBJS) $(ORACLE_OBJS) $(TEST_LIBS)
+
+test-tools: $(TOOLS_DIR)/bench_anim_error
 
 # The unit tests and a second kiosk binary, built with AddressSanitizer and
 # UndefinedBehaviorSanitizer in a build folder of their own: malformed

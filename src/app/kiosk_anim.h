@@ -4,7 +4,9 @@
  * and not at all while it does not run (paused by play-pause, by
  * animation_pause_after of no input, or the screen asleep): then the
  * clock holds, and it goes on where it stopped. next-animation crossfades
- * to the next clip. A content without playback costs nothing here. */
+ * to the next clip; a reload of the same model goes on with its clock,
+ * or crossfades where its clip changed. "all" plays every clip together. A content without playback
+ * costs nothing here. */
 #ifndef MK_KIOSK_ANIM_H
 #define MK_KIOSK_ANIM_H
 
@@ -24,6 +26,9 @@ struct kiosk_anim_input {
 	bool running;  /* awake, and input within animation_pause_after */
 	bool paused;   /* play-pause (the app state's anim_paused) */
 	int clip_step; /* next-animation presses (the app state's anim_step) */
+	/* The guided stop's clip (the app state's stop_animation): played,
+	 * crossfaded, from when the stop is reached; NULL: none. */
+	const char *stop_clip;
 	const struct content_config *config; /* the content's settings */
 };
 
@@ -36,7 +41,8 @@ void kiosk_anim_free(struct kiosk_anim *a);
  * none until something changes). */
 bool kiosk_anim_step(struct kiosk_anim *a, struct content *c, struct renderer *r,
 		     const struct kiosk_anim_input *in, uint64_t now, uint64_t *next);
-/* The clip time shown, seconds (for tests and the journal); -1: none. */
+/* The clip time shown, seconds (for tests and the journal; "all": the
+ * first clip's); -1: none. */
 double kiosk_anim_time(const struct kiosk_anim *a);
 
 #endif

@@ -14,7 +14,14 @@ void content_play_check(struct content *s)
 		free(s->mesh.tangents);
 		s->mesh.tangents = NULL;
 	}
-	if (!s->play || (s->play->vertex_count == s->mesh.vertex_count && !s->mesh.tangents))
+	if (s->play && s->play->vertex_count == s->mesh.vertex_count && !s->mesh.tangents) {
+		log_info("%s: plays live at full detail and is not cached: a simplified or "
+			 "cached mesh would need its parts' joints, weights and targets carried "
+			 "through each collapse and into the cache",
+			 s->model_path);
+		return;
+	}
+	if (!s->play)
 		return;
 	log_warn("%s: its animation does not play with this material's subdivision or tangents; "
 		 "it shows its first pose",
@@ -33,6 +40,28 @@ void content_play_release(struct content *s)
 	s->play = NULL;
 }
 
+/* The morph targets on the GPU (none: NULL), their deltas gathered into
+ * a split's vertices (*gathered, to free) when sp is set. */
+static const struct skin_morphs *gpu_morphs(const struct anim_play *p,
+					    const struct anim_play_split *sp,
+					    struct skin_morphs *out, float **gathered)
+{
+	uint32_t n = anim_play_morph_attributes(p);
+
+	*gathered = NULL;
+	if (!p->morph_targets)
+		return NULL;
+	*out = (struct skin_morphs){p->morph_targets, p->morph_normals, p->gpu_morph};
+	if (!sp)
+		return out;
+	*gathered = malloc((size_t)sp->vertex_count * 12 * n + 4);
+	for (uint32_t a = 0; *gathered && a < n; a++)
+		anim_play_split_gather(sp, p->gpu_morph + (size_t)a * p->vertex_count * 3, 3,
+				       *gathered + (size_t)a * sp->vertex_count * 3);
+	out->deltas = *gathered;
+	return *gathered ? out : NULL;
+}
+
 /* The split's mesh: its own vertices (the parts' arrays, the UVs and
  * colours gathered), indices and ranges, the content's materials. */
 static int upload_split(struct content *s, struct renderer *r, struct anim_play_split *sp)
@@ -42,7 +71,13 @@ static int upload_split(struct content *s, struct renderer *r, struct anim_play_
 	float *colors = m.colors ? malloc((size_t)sp->vertex_count * 16 + 4) : NULL;
 	struct skin_palettes pal = {s->play->bones, sp->range_count, sp->palette_first,
 				    sp->palette_count, sp->bones};
+	struct skin_morphs mo;
+	float *deltas;
+	const struct skin_morphs *morphs = gpu_morphs(s->play, sp, &mo, &deltas);
 	int ret = (m.uvs && !uvs) || (m.colors && !colors) ? -ENOMEM : 0;
+
+	if (s->play->morph_targets && !morphs)
+		ret = -ENOMEM;
 
 	anim_play_split_gather(sp, s->play->positions, 3, sp->positions);
 	anim_play_split_gather(sp, s->play->normals, 3, sp->normals);
@@ -62,7 +97,8 @@ static int upload_split(struct content *s, struct renderer *r, struct anim_play_
 	m.ranges = sp->ranges;
 	if (!ret)
 		ret = renderer_set_mesh_skinned(r, &m, sp->joints, sp->weights, sp->palette_max,
-						&pal);
+						&pal, morphs);
+	free(deltas);
 	free(uvs);
 	free(colors);
 	return ret;
@@ -93,19 +129,53 @@ static int split_palette(struct content *s, struct renderer *r, uint32_t palette
 	return ret;
 }
 
+/* On the GPU path: its morph targets there when the attributes the
+ * program leaves hold them, else on the CPU (why says why). */
+struct morph_place {
+	uint32_t room, need;
+	const char *why;
+};
+
+static int place_morphs(struct content *s, struct renderer *r, struct morph_place *m)
+{
+	m->room = renderer_morph_room(r);
+	m->need = anim_play_morph_attributes(s->play);
+	return anim_play_morph_prepare(s->play, m->room, &m->why) == -ENOMEM ? -ENOMEM : 0;
+}
+
+/* Once a model: where its morph targets move, and why. */
+static void log_morphs(const struct content *s, const struct morph_place *m)
+{
+	if (s->play->morph_targets)
+		log_info("%s: morph targets on the GPU: %u of them%s in %u vertex attributes of "
+			 "the %u the program leaves",
+			 s->model_path, s->play->morph_targets,
+			 s->play->morph_normals ? " with normals" : "", m->need, m->room);
+	else if (m->why)
+		log_info("%s: morph targets moved on the CPU each frame: %s (%u attributes, the "
+			 "program leaves %u of the GPU's)",
+			 s->model_path, m->why, m->need, m->room);
+}
+
 int content_play_upload(struct content *s, struct renderer *r)
 {
 	uint32_t palette = renderer_bone_palette(r);
 	int why = anim_play_gpu_prepare(s->play, palette);
 	struct mesh own = s->mesh;
+	struct skin_morphs mo;
+	struct morph_place place = {0, 0, NULL};
+	float *none;
 
 	if (s->play_split) { /* uploaded again: decided again */
 		anim_play_split_release(s->play_split);
 		free(s->play_split);
 		s->play_split = NULL;
 	}
+	if ((why == 0 || why == -E2BIG) && place_morphs(s, r, &place))
+		return -ENOMEM;
 	if (why == -E2BIG && palette > 0 && (why = split_palette(s, r, palette)) == 0) {
 		s->play_gpu = true;
+		log_morphs(s, &place);
 		return 0;
 	}
 	s->play_gpu = why == 0;
@@ -115,13 +185,16 @@ int content_play_upload(struct content *s, struct renderer *r)
 		log_info("%s: posed on the CPU each frame: %s", s->model_path,
 			 why == -E2BIG ? "a triangle's bones alone outnumber the GPU's palette"
 				       : "a part's normals come from its posed triangles");
+		anim_play_morph_prepare(s->play, 0, &place.why); /* no arrays for the GPU */
 		return renderer_set_mesh_live(r, &s->mesh);
 	}
+	log_morphs(s, &place);
 	log_info("%s: skinned on the GPU: %u bones of a palette of %u", s->model_path,
 		 s->play->bones, palette);
 	/* The parts' own arrays; the bones pose them. */
 	own.positions = s->play->positions;
 	own.normals = s->play->normals;
 	return renderer_set_mesh_skinned(r, &own, s->play->gpu_joints, s->play->gpu_weights,
-					 s->play->bones, NULL);
+					 s->play->bones, NULL,
+					 gpu_morphs(s->play, NULL, &mo, &none));
 }

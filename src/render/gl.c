@@ -42,6 +42,10 @@ static void read_caps(const struct gl *gl, struct gl_caps *caps)
 		caps->max_vertex_uniform_vectors =
 		    gl->GetError() == GL_NO_ERROR && components > 0 ? components / 4 : 128;
 	}
+	caps->max_vertex_attribs = 0;
+	gl->GetIntegerv(GL_MAX_VERTEX_ATTRIBS, &caps->max_vertex_attribs);
+	if (gl->GetError() != GL_NO_ERROR || caps->max_vertex_attribs < 8)
+		caps->max_vertex_attribs = 8;
 }
 
 int gl_load(struct gl *gl, gl_get_proc_fn get_proc, void *ctx)

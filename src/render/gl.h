@@ -113,6 +113,9 @@ struct gl_caps {
 	/* GL_MAX_VERTEX_UNIFORM_VECTORS (at least 128 in GLES2): the bone
 	 * palette of a model skinned on the GPU is sized from it. */
 	int max_vertex_uniform_vectors;
+	/* GL_MAX_VERTEX_ATTRIBS (at least 8 in GLES2): what the model's
+	 * program leaves of them carries its morph targets on the GPU. */
+	int max_vertex_attribs;
 };
 
 struct gl {

@@ -529,6 +529,7 @@ static void find_uniforms(const struct gl *gl, struct program *p)
 	p->shininess = gl->GetUniformLocation(p->id, "u_shininess");
 	p->alpha = gl->GetUniformLocation(p->id, "u_alpha");
 	p->bones = gl->GetUniformLocation(p->id, "u_bones");
+	p->morph_weights = gl->GetUniformLocation(p->id, "u_morph_weights");
 }
 
 /* A range's program variant by its alphaMode (enum mesh_alpha) and sides;
@@ -557,11 +558,7 @@ static struct program *program_get(struct renderer *r, enum shading_mode mode, b
 		return p;
 	if (shader_source_matcap(&src, r->shader_dir, features, mode, ortho, lit, r->highp))
 		return NULL;
-	if (r->bones) { /* a model skinned on the GPU (render_live.c) */
-		src.bones = (int)r->bones;
-		src.attributes[SHADER_ATTR_JOINTS] = "a_joints";
-		src.attributes[SHADER_ATTR_WEIGHTS] = "a_weights";
-	}
+	render_skin_source(r, &src); /* a model skinned on the GPU (render_live.c) */
 	if (shader_program_build(r->gl, &src, &id))
 		return NULL;
 	p->id = id;

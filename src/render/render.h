@@ -53,9 +53,27 @@ struct skin_palettes {
 /* split: the palette cut into draws (scene/anim_play.h anim_play_split):
  * each of m's ranges draws with its own bones, `bones` the largest
  * draw's; NULL: one palette of `bones` for every draw. */
+/* morphs: the morph targets added in the vertex shader before the skin
+ * (targets of no more than renderer_morph_room's attributes): deltas of
+ * xyz per vertex of m, `targets` arrays of positions, then as many of
+ * normals where normals; NULL: none (programs without MORPH_TARGETS). */
+struct skin_morphs {
+	uint32_t targets;
+	bool normals;
+	const float *deltas;
+};
 int renderer_set_mesh_skinned(struct renderer *r, const struct mesh *m, const float *joints,
 			      const float *weights, uint32_t bones,
-			      const struct skin_palettes *split);
+			      const struct skin_palettes *split, const struct skin_morphs *morphs);
+/* The morph targets' weights from now on (8 floats, those past the
+ * mesh's targets unread). */
+void renderer_set_morph_weights(struct renderer *r, const float *weights);
+/* The vertex attributes (GL_MAX_VERTEX_ATTRIBS, or fewer as set by
+ * renderer_set_attribute_limit: the tests and the bench; 0: the GPU's)
+ * that a skinned model's program leaves for morph targets: less the
+ * mesh's arrays its material reads and the skin's bones and weights. */
+uint32_t renderer_morph_room(const struct renderer *r);
+void renderer_set_attribute_limit(struct renderer *r, uint32_t attributes);
 /* The palette's rows from now on: 12 floats a bone (rows of 3x4), every
  * bone of a split's total. */
 void renderer_set_bones(struct renderer *r, const float *rows);

@@ -2,8 +2,8 @@
  * positions and normals replaced a frame (renderer_set_mesh_live); or
  * skinned on the GPU (renderer_set_mesh_skinned): its vertices' four
  * bones and weights in two arrays of their own, and the palette's rows
- * set on every program that skins. A model without animation keeps
- * today's programs (no SKIN_BONES), arrays and uniforms. */
+ * set on every program that skins (its morph targets: render_morph.c). A model without animation
+ * keeps today's programs (no SKIN_BONES), arrays and uniforms. */
 #include "render/render.h"
 #include "render/render_priv.h"
 #include "scene/anim_palette.h"
@@ -64,10 +64,11 @@ static void drop_palettes(struct renderer *r)
 int render_skin_set(struct renderer *r)
 {
 	uint32_t bones = r->bones_next;
+	bool same_morphs = render_morph_set(r);
 
 	drop_palettes(r); /* a split's are set after its mesh */
 	r->bones_next = 0;
-	if (bones == r->bones)
+	if (bones == r->bones && same_morphs)
 		return 0;
 	r->bones = bones;
 	if (!bones) {
@@ -89,6 +90,17 @@ void render_live_free(struct renderer *r)
 	free(r->bone_rows);
 	free(r->live_scratch);
 	drop_palettes(r);
+	render_morph_free(r);
+}
+
+void render_skin_source(const struct renderer *r, struct shader_source *src)
+{
+	if (!r->bones)
+		return;
+	src->bones = (int)r->bones;
+	src->attributes[SHADER_ATTR_JOINTS] = "a_joints";
+	src->attributes[SHADER_ATTR_WEIGHTS] = "a_weights";
+	render_morph_source(r, src);
 }
 
 uint32_t renderer_bone_palette(const struct renderer *r)
@@ -146,7 +158,7 @@ static int set_palettes(struct renderer *r, const struct skin_palettes *sp)
 
 int renderer_set_mesh_skinned(struct renderer *r, const struct mesh *m, const float *joints,
 			      const float *weights, uint32_t bones,
-			      const struct skin_palettes *split)
+			      const struct skin_palettes *split, const struct skin_morphs *morphs)
 {
 	struct mesh_packed packed;
 	uint32_t total = split ? split->total : bones;
@@ -164,6 +176,8 @@ int renderer_set_mesh_skinned(struct renderer *r, const struct mesh *m, const fl
 		rows[b * 12] = rows[b * 12 + 5] = rows[b * 12 + 10] = 1.0f;
 	r->live_next = true;
 	r->bones_next = bones;
+	r->morph_next = morphs ? morphs->targets : 0;
+	r->morph_normals_next = morphs && morphs->targets && morphs->normals;
 	ret = renderer_set_packed(r, &packed);
 	mesh_packed_release(&packed);
 	if (!ret)
@@ -172,6 +186,8 @@ int renderer_set_mesh_skinned(struct renderer *r, const struct mesh *m, const fl
 		ret = upload_vec4(r, r->skin_vbo[1], weights, m->vertex_count);
 	if (!ret && split)
 		ret = set_palettes(r, split);
+	if (!ret && r->morph_targets)
+		ret = render_morph_upload(r, morphs, m->vertex_count);
 	return ret;
 }
 
@@ -193,6 +209,7 @@ void render_skin_bind(const struct renderer *r, uint32_t base)
 					   (const void *)(uintptr_t)(base * 16u));
 		r->gl->EnableVertexAttribArray(at);
 	}
+	render_morph_bind(r, base);
 }
 
 void render_skin_uniforms(const struct renderer *r, const struct program *p)
@@ -200,6 +217,7 @@ void render_skin_uniforms(const struct renderer *r, const struct program *p)
 	/* A split palette's rows are set per draw (render_skin_palette). */
 	if (p->bones >= 0 && r->bones && !r->range_count)
 		r->gl->Uniform4fv(p->bones, (GLsizei)r->bones * 3, r->bone_rows);
+	render_morph_uniforms(r, p);
 }
 
 void render_skin_palette(struct renderer *r, const struct program *p, uint32_t range,

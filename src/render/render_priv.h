@@ -16,7 +16,7 @@ enum { UNIT_MATCAP, UNIT_DETAIL, UNIT_RAMP, UNIT_BASE };
 
 /* The vertex shader's vectors besides the bone palette: the model-view
  * and projection (4 each), the normal matrix and the base map's
- * transform (3 each), rounded up. */
+ * transform (3 each), and the morph targets' weights (2). */
 #define RENDER_SKIN_RESERVED 16
 
 /* A range's program variant (draw_item_variant): its alphaMode, its sides
@@ -28,7 +28,8 @@ struct program {
 	unsigned features; /* enum material_feature and material_variant bits */
 	GLint modelview, projection, normal_matrix, matcap, detail, ramp, base_map, base_transform;
 	GLint iridescence, hsv, light, base_color, shininess, alpha;
-	GLint bones; /* u_bones: a skinning program's palette; else -1 */
+	GLint bones;	     /* u_bones: a skinning program's palette; else -1 */
+	GLint morph_weights; /* u_morph_weights: a program that morphs; else -1 */
 };
 
 struct renderer {
@@ -91,6 +92,17 @@ struct renderer {
 	uint32_t *palette_first, *palette_count;
 	uint16_t *palette_bones;
 	float *palette_rows;
+	/* Morph targets on the GPU (render_morph.c): targets a vertex (0:
+	 * none, programs without MORPH_TARGETS), whether they move normals,
+	 * as set for the next mesh; their arrays one after another in
+	 * morph_vbo (morph_array bytes each), each array's location, the
+	 * weights set a frame; the attributes allowed (0: the GPU's). */
+	uint32_t morph_targets, morph_next, attribute_limit;
+	bool morph_normals, morph_normals_next;
+	GLuint morph_vbo;
+	size_t morph_array;
+	GLuint morph_location[SHADER_MAX_ATTRIBUTES];
+	float morph_weights[8];
 };
 
 /* render.c: every program dropped (built again on use). render_live.c:
@@ -108,6 +120,20 @@ void render_skin_uniforms(const struct renderer *r, const struct program *p);
  * range's palette than *shown (UINT32_MAX: none yet). */
 void render_skin_palette(struct renderer *r, const struct program *p, uint32_t range,
 			 uint32_t *shown);
+/* render_morph.c: the morph targets of the mesh being set in place
+ * (morph_next); false when they changed (the programs are built again);
+ * a program's source for them; their arrays bound from vertex `base`;
+ * their weights for a program; their buffer given back. */
+bool render_morph_set(struct renderer *r);
+void render_morph_source(const struct renderer *r, struct shader_source *src);
+void render_morph_bind(const struct renderer *r, uint32_t base);
+void render_morph_uniforms(const struct renderer *r, const struct program *p);
+struct skin_morphs; /* render.h */
+int render_morph_upload(struct renderer *r, const struct skin_morphs *m, uint32_t vertex_count);
+void render_morph_free(struct renderer *r);
+/* render_live.c: a program that skins (r->bones), its palette, attributes
+ * and morphs. */
+void render_skin_source(const struct renderer *r, struct shader_source *src);
 /* The matcap's minifying filter for a viewport (render.c). */
 void render_matcap_choose_filter(struct renderer *r, const int vp[4]);
 

@@ -132,6 +132,9 @@ static char *stage_text(const struct shader_source *s, bool fragment)
 		fprintf(f, "#define %s 1\n", s->defines[i]);
 	if (s->bones > 0)
 		fprintf(f, "#define SKIN_BONES %d\n", s->bones);
+	if (s->morph_targets > 0)
+		fprintf(f, "#define MORPH_TARGETS %d\n%s", s->morph_targets,
+			s->morph_normals ? "#define MORPH_NORMALS 1\n" : "");
 	for (int i = 0; ok && i < SHADER_MAX_FILES && files[i]; i++) {
 		body = shader_read(s->dir, files[i]);
 		if (body)
@@ -210,7 +213,7 @@ static int link_program(const struct gl *gl, const struct shader_source *s, GLui
 	*out = gl->CreateProgram();
 	gl->AttachShader(*out, vs);
 	gl->AttachShader(*out, fs);
-	for (int i = 0; i < SHADER_ATTR_ALL; i++)
+	for (int i = 0; i < SHADER_MAX_ATTRIBUTES; i++)
 		if (s->attributes[i])
 			gl->BindAttribLocation(*out, (GLuint)i, s->attributes[i]);
 	gl->LinkProgram(*out);

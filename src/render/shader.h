@@ -29,6 +29,10 @@ enum shader_attribute {
 	SHADER_ATTR_WEIGHTS,
 	SHADER_ATTR_ALL
 };
+/* The locations a program may bind: a model's morph targets take the
+ * ones its program leaves free (render_morph.c), below the GPU's
+ * GL_MAX_VERTEX_ATTRIBS. */
+#define SHADER_MAX_ATTRIBUTES 16
 
 #define SHADER_MAX_DEFINES 12
 #define SHADER_MAX_FILES   3
@@ -45,9 +49,13 @@ struct shader_source {
 	int define_count;
 	const char *vertex[SHADER_MAX_FILES]; /* file names, up to the first NULL */
 	const char *fragment[SHADER_MAX_FILES];
-	const char *attributes[SHADER_ATTR_ALL]; /* bound at their index; NULL: none */
+	const char *attributes[SHADER_MAX_ATTRIBUTES]; /* bound at their index; NULL: none */
 	/* > 0: "#define SKIN_BONES bones", the skinning palette's size. */
 	int bones;
+	/* > 0: "#define MORPH_TARGETS morph_targets" (and MORPH_NORMALS 1
+	 * where they move normals): the deltas shaders/morph.glsl adds. */
+	int morph_targets;
+	bool morph_normals;
 };
 
 /* Add "#define name 1". Returns 0, or -ENOSPC when the list is full. */

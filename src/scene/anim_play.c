@@ -6,6 +6,7 @@
  * node's world and its normal matrix, then the clip's fit. */
 #include "scene/anim_play.h"
 #include "scene/mesh.h"
+#include "util/math3d.h"
 
 #include <errno.h>
 #include <math.h>
@@ -82,15 +83,11 @@ void anim_play_morph(struct anim_play *p, const struct anim_pose *pose, float *p
  * the bake takes it: negated where m mirrors. */
 static void normal_matrix(const float *m, double n[9])
 {
-	double a = m[0], b = m[4], c = m[8], d = m[1], e = m[5], f = m[9], g = m[2], h = m[6],
-	       i = m[10];
-	double det = a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g);
-	double cof[9] = {e * i - f * h,	   -(b * i - c * h), b * f - c * e,
-			 -(d * i - f * g), a * i - c * g,    -(a * f - c * d),
-			 d * h - e * g,	   -(a * h - b * g), a * e - b * d};
+	double d[16];
 
-	for (int k = 0; k < 9; k++)
-		n[k] = det < 0 ? -cof[k] : cof[k];
+	for (int k = 0; k < 16; k++)
+		d[k] = m[k];
+	mat4_normal_matrix(d, n);
 }
 
 static void put_normal(const double n[3], float *out)
@@ -237,6 +234,7 @@ void anim_play_free(struct anim_play *p)
 	free(p->gpu_weights);
 	free(p->skin_bone);
 	free(p->node_bone);
+	free(p->gpu_morph);
 	mesh_anim_free(p->anim);
 	free(p);
 }

@@ -70,6 +70,15 @@ struct anim_play {
 	uint32_t *skin_bone; /* per skin, its first bone */
 	int *node_bone;	     /* per node, the bone of the rigid parts it shows; 0: none */
 	bool morphs;	     /* some part has targets: its own arrays change a frame */
+	/* Morph targets on the GPU (anim_play_morph_prepare): morph_targets
+	 * deltas a vertex (0: none there; the CPU moves them when morphs),
+	 * the weights of morph_node's; gpu_morph: morph_targets arrays of
+	 * xyz per vertex (positions), then as many of normals where
+	 * morph_normals (a vertex of a part without targets: zeros). */
+	uint32_t morph_targets;
+	bool morph_normals;
+	int morph_node;
+	float *gpu_morph;
 };
 
 /* The allocations of the scratch, once parts and skins are filled. 0 or
@@ -91,6 +100,23 @@ void anim_play_bones(struct anim_play *p, const struct anim_pose *pose, float *r
  * (the GPU path's arrays; the CPU path's before its skin). */
 void anim_play_morph(struct anim_play *p, const struct anim_pose *pose, float *positions,
 		     float *normals);
+/* The most targets the vertex shader adds (shaders/morph.glsl). */
+#define ANIM_PLAY_MORPH_MAX 8
+/* After anim_play_gpu_prepare: the morph targets to the GPU when their
+ * deltas fit `room` vertex attributes (a position a target, and a normal
+ * where the targets move normals) and one program holds them (every part
+ * with targets shown by one node: one set of weights); p->morphs is then
+ * false (the arrays stay the parts' own). 0 (none to move, or on the
+ * GPU); else *why says why the CPU moves them (p->morphs stays true):
+ * -ENOSPC (more attributes than room), -E2BIG (more targets than
+ * ANIM_PLAY_MORPH_MAX), -EXDEV (parts of several nodes); or -ENOMEM. */
+int anim_play_morph_prepare(struct anim_play *p, uint32_t room, const char **why);
+/* The attributes the model's targets take on the GPU (0: no targets). */
+uint32_t anim_play_morph_attributes(const struct anim_play *p);
+/* The pose's weights of the GPU's targets: ANIM_PLAY_MORPH_MAX floats,
+ * those past morph_targets 0. */
+void anim_play_morph_weights(const struct anim_play *p, const struct anim_pose *pose,
+			     float *weights);
 /* The GPU path when the bones outnumber the palette: every draw range
  * of m split (scene/anim_palette.h) into draws of at most `palette`
  * bones, the vertices two draws share copied, each vertex's bones

@@ -8,6 +8,7 @@
 #include "scene/gltf_anim.h"
 #include "scene/gltf_play.h"
 #include "util/log.h"
+#include "util/math3d.h"
 
 #include <tiny_gltf.h>
 
@@ -56,22 +57,11 @@ struct Builder {
 
 typedef double Mat4[16]; // column-major, as glTF stores it
 
-// The normal matrix is the inverse transpose of the upper 3x3, which is
-// its cofactor matrix over the determinant. Directions are normalised
-// later, so only the determinant's sign is kept: a negative one mirrors
-// the model, and then the winding must flip too.
+// The normal matrix is the inverse transpose of the upper 3x3: its
+// cofactor matrix up to a scale (util/math3d.h, shared with playback).
 double normal_matrix(const Mat4 m, double n[9])
 {
-	double a = m[0], b = m[4], c = m[8], d = m[1], e = m[5], f = m[9], g = m[2], h = m[6],
-	       i = m[10];
-	double det = a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g);
-	// Cofactors C(row, col), stored column by column.
-	double cof[9] = {e * i - f * h,	   -(b * i - c * h), b * f - c * e,
-			 -(d * i - f * g), a * i - c * g,    -(a * f - c * d),
-			 d * h - e * g,	   -(a * h - b * g), a * e - b * d};
-	for (int k = 0; k < 9; k++)
-		n[k] = det < 0 ? -cof[k] : cof[k];
-	return det;
+	return mat4_normal_matrix(m, n);
 }
 
 // A checked view of one accessor: where element i starts, and how to read

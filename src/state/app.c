@@ -86,6 +86,9 @@ static void set_stop(struct app *a, int stop)
 	a->state.stop = stop;
 	a->state.stop_text =
 	    stop >= 0 && a->cfg.frame.stops[stop].text[0] ? a->cfg.frame.stops[stop].text : NULL;
+	a->state.stop_animation = stop >= 0 && a->cfg.frame.stops[stop].animation[0]
+				      ? a->cfg.frame.stops[stop].animation
+				      : NULL;
 }
 
 static void home(struct app *a)

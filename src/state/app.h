@@ -53,6 +53,8 @@ struct app_state {
 	/* That stop's text (for a caption), or NULL; owned by the app, valid
 	 * until the next message. */
 	const char *stop_text;
+	/* The clip that stop plays ([frame] stops' animation=), or NULL. */
+	const char *stop_animation;
 	bool anim_paused; /* play-pause: the animation is held */
 	int anim_step;	  /* next-animation: how many clips on from the one set */
 };

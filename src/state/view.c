@@ -57,14 +57,42 @@ int frame_base(const struct frame_config *f, struct quat *out, char *err, size_t
 	return 0;
 }
 
-/* One stop: three numbers and an optional quoted text. */
+/* A stop's optional last word, animation=CLIP (after its text, if any),
+ * cut off s into st->animation. */
+static int stop_clip(char *s, struct frame_stop *st, char *err, size_t n)
+{
+	char *q = strrchr(s, '"'), *at = strstr(q ? q : s, "animation=");
+	size_t len;
+
+	if (!at)
+		return 0;
+	*at = '\0';
+	at += strlen("animation=");
+	len = strlen(at); /* to the stop's end: a clip's name may have spaces */
+	while (len && (at[len - 1] == ' ' || at[len - 1] == '\t'))
+		len--;
+	if (!len || len >= FRAME_STOP_CLIP || at[0] == ' ' || at[0] == '\t') {
+		snprintf(err, n,
+			 "a stop's animation= names a clip (its name, an index or all) "
+			 "of up to %d bytes, last in the stop",
+			 FRAME_STOP_CLIP - 1);
+		return -1;
+	}
+	memcpy(st->animation, at, len);
+	return 0;
+}
+
+/* One stop: three numbers, an optional quoted text and an optional clip. */
 static int stop_parse(char *s, struct frame_stop *st, char *err, size_t n)
 {
-	char *q = strchr(s, '"'), *end;
+	char *q, *end;
 	int used = 0;
 	double y, p, z;
 
 	memset(st, 0, sizeof(*st));
+	if (stop_clip(s, st, err, n))
+		return -1;
+	q = strchr(s, '"');
 	if (q) {
 		end = strrchr(q + 1, '"');
 		if (!end) {
@@ -84,8 +112,8 @@ static int stop_parse(char *s, struct frame_stop *st, char *err, size_t n)
 	if (sscanf(s, "%lf %lf %lf %n", &y, &p, &z, &used) != 3 || s[used] || !isfinite(y) ||
 	    !isfinite(p) || !(z > 0 && z <= 20)) {
 		snprintf(err, n,
-			 "each stop is YAW PITCH ZOOM \"text\" (degrees, degrees, a zoom "
-			 "above 0 up to 20)");
+			 "each stop is YAW PITCH ZOOM \"text\" animation=CLIP (degrees, "
+			 "degrees, a zoom above 0 up to 20; the text and clip optional)");
 		return -1;
 	}
 	st->yaw = y * RAD;

@@ -24,6 +24,7 @@ enum frame_up {
 /* Stops at most, and a stop's text at most (bytes, with the NUL). */
 #define FRAME_STOPS	8
 #define FRAME_STOP_TEXT 128
+#define FRAME_STOP_CLIP 64
 
 /* As the settings keep it: degrees; NAN: not set. */
 struct frame_config {
@@ -42,6 +43,9 @@ struct frame_config {
 struct frame_stop {
 	double yaw, pitch, zoom; /* radians, radians, the app's zoom */
 	char text[FRAME_STOP_TEXT];
+	/* The animation played there ([scene] animation's words: a name, an
+	 * index, all); "": the one playing goes on. */
+	char animation[FRAME_STOP_CLIP];
 };
 
 /* In radians, as the app state uses it. */
@@ -60,7 +64,8 @@ void frame_config_defaults(struct frame_config *f);
 /* The model's turn before everything (up, then orientation). 0, or -1
  * with err naming what is wrong. */
 int frame_base(const struct frame_config *f, struct quat *out, char *err, size_t n);
-/* Parse 'yaw pitch zoom "text"; ...' (degrees). The count, or -1 with err. */
+/* Parse 'yaw pitch zoom "text" animation=CLIP; ...' (degrees; the text
+ * and the clip optional). The count, or -1 with err. */
 int frame_stops_parse(const char *text, struct frame_stop *out, int max, char *err, size_t n);
 /* f in radians for the app, with the start yaw and pitch (degrees) that
  * apply when f sets none. -1 with err when its stops do not parse or a

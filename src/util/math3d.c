@@ -182,3 +182,18 @@ struct quat quat_normalize(struct quat q)
 		return quat_identity();
 	return (struct quat){q.w / len, q.x / len, q.y / len, q.z / len};
 }
+
+double mat4_normal_matrix(const double m[16], double n[9])
+{
+	double a = m[0], b = m[4], c = m[8], d = m[1], e = m[5], f = m[9], g = m[2], h = m[6],
+	       i = m[10];
+	double det = a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g);
+	/* Cofactors C(row, col), stored column by column. */
+	double cof[9] = {e * i - f * h,	   -(b * i - c * h), b * f - c * e,
+			 -(d * i - f * g), a * i - c * g,    -(a * f - c * d),
+			 d * h - e * g,	   -(a * h - b * g), a * e - b * d};
+
+	for (int k = 0; k < 9; k++)
+		n[k] = det < 0 ? -cof[k] : cof[k];
+	return det;
+}

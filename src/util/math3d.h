@@ -4,6 +4,10 @@
 
 #include <stdbool.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 struct quat {
 	double w, x, y, z;
 };
@@ -51,5 +55,16 @@ struct quat quat_identity(void);
 struct quat quat_from_axis_angle(double x, double y, double z, double radians);
 struct quat quat_multiply(struct quat a, struct quat b);
 struct quat quat_normalize(struct quat q);
+
+/* The normal matrix of m's 3x3 (column-major, 9 of n) up to a scale:
+ * its cofactor matrix, negated where m mirrors (directions are
+ * normalised later, so only the determinant's sign counts). Returns the
+ * determinant: negative, the winding flips too. The loader's bake and
+ * live playback's CPU pose share it, so that they agree to the bit. */
+double mat4_normal_matrix(const double m[16], double n[9]);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

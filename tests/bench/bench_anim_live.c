@@ -8,9 +8,12 @@
  * One row of medians: the path, vertices and triangles played, ms to pose
  * and set the bones or arrays, ms to draw; the still's triangles and ms
  * to draw.
- * The pose is the GPU's (skinning in the vertex shader, the bones set a
- * frame) where the model fits its palette, or with `cpu` the CPU's.
- *   bench_anim_live osmesa|egl-headless WxH MODEL [FRAMES [cpu]] */
+ * The pose is the GPU's (skinning and morph targets in the vertex shader,
+ * the bones and weights set a frame) where the model fits its palette
+ * and attributes; with `cpu-morphs` the morph targets move the arrays on
+ * the CPU (no attribute left for them), the skin on the GPU; with `cpu`
+ * all is posed on the CPU.
+ *   bench_anim_live osmesa|egl-headless WxH MODEL [FRAMES [gpu|cpu-morphs|cpu]] */
 #include "app/kiosk_anim.h"
 #include "config/settings.h"
 #include "content/content.h"
@@ -50,7 +53,10 @@ struct shown {
 	struct view v;
 };
 
-static int show(struct display *d, const char *model, bool live, uint32_t bones, struct shown *out)
+/* bones: the palette at most (0: the CPU path); cpu_morphs: no attribute
+ * left for morph targets (they move on the CPU, the skin on the GPU). */
+static int show(struct display *d, const char *model, bool live, uint32_t bones, bool cpu_morphs,
+		struct shown *out)
 {
 	struct options o;
 
@@ -61,8 +67,10 @@ static int show(struct display *d, const char *model, bool live, uint32_t bones,
 	o.content.anim_fps = 0;
 	out->c = o.content;
 	out->r = renderer_new(&d->gl, NULL);
-	if (out->r)
+	if (out->r) {
 		renderer_set_bone_limit(out->r, bones);
+		renderer_set_attribute_limit(out->r, cpu_morphs ? 1 : 0);
+	}
 	if (!out->r || content_load(&out->s, &out->c, true) ||
 	    content_prepare(&out->s, &out->c, d->width, d->height) ||
 	    content_upload(&out->s, out->r) || renderer_set_mode(out->r, out->c.mode, out->c.ortho))
@@ -91,10 +99,11 @@ int main(int argc, char **argv)
 	struct kiosk_anim *a = kiosk_anim_new();
 	struct kiosk_anim_input in = {.running = true};
 	uint64_t next, now = 1000000000ull;
+	const char *path = argc > 5 ? argv[5] : "gpu";
 
 	if (argc < 4 || sscanf(argv[2], "%dx%d", &cfg.width, &cfg.height) != 2 || n < 2) {
-		fprintf(stderr,
-			"usage: bench_anim_live osmesa|egl-headless WxH MODEL [FRAMES [cpu]]\n");
+		fprintf(stderr, "usage: bench_anim_live osmesa|egl-headless WxH MODEL [FRAMES "
+				"[gpu|cpu-morphs|cpu]]\n");
 		return 2;
 	}
 	log_set_level(LOG_WARN);
@@ -106,8 +115,9 @@ int main(int argc, char **argv)
 	if (!strcmp(argv[1], "egl-headless"))
 		d = display_egl_new(&cfg);
 	if (!d || d->begin_frame(d) || !a ||
-	    show(d, argv[3], true, argc > 5 && !strcmp(argv[5], "cpu") ? 0 : UINT32_MAX, &live) ||
-	    show(d, argv[3], false, 0, &still))
+	    show(d, argv[3], true, !strcmp(path, "cpu") ? 0 : UINT32_MAX,
+		 !strcmp(path, "cpu-morphs"), &live) ||
+	    show(d, argv[3], false, 0, false, &still))
 		return 1;
 	in.config = &live.c;
 	pose = calloc((size_t)n, sizeof(*pose));
@@ -128,8 +138,13 @@ int main(int argc, char **argv)
 		plain[i] = draw(d, &still);
 	}
 	printf("| %s | %s | %s %dx%d | %u | %u | %.3f | %.3f | %u | %.3f |\n",
-	       strrchr(argv[3], '/') + 1, live.s.play_gpu ? "GPU" : "CPU", argv[1], cfg.width,
-	       cfg.height, live.s.mesh.vertex_count, live.s.mesh.index_count / 3, median(pose, n),
-	       median(drawn, n), still.s.mesh.index_count / 3, median(plain, n));
+	       strrchr(argv[3], '/') + 1,
+	       !live.s.play_gpu		    ? "CPU"
+	       : live.s.play->morphs	    ? "GPU, morphs on the CPU"
+	       : live.s.play->morph_targets ? "GPU, morphs too"
+					    : "GPU",
+	       argv[1], cfg.width, cfg.height, live.s.mesh.vertex_count,
+	       live.s.mesh.index_count / 3, median(pose, n), median(drawn, n),
+	       still.s.mesh.index_count / 3, median(plain, n));
 	return 0;
 }

@@ -18,13 +18,9 @@ if [ -n "${KIOSK:-}" ]; then
 	echo >>"$out/speed-error.md"
 	sh tests/bench/bench_scale.sh 1920x1080 3840x2160 >>"$out/speed-error.md"
 fi
-# [display] render_scale's rows (bench_scale.sh), where the kiosk is built.
-if [ -n "${KIOSK:-}" ]; then
-	for size in 1920x1080 3840x2160; do
-		echo
-		sh tests/bench/bench_scale.sh "$size"
-	done >>"$out/speed-error.md"
-fi
+# Live playback's paths (bench_anim_paths.sh).
+echo >>"$out/speed-error.md"
+sh tests/bench/bench_anim_paths.sh >>"$out/speed-error.md"
 gnuplot -e "dir='$out'" tests/bench/report/speed-error.gp
 cat "$out/speed-error.md"
 echo "plot: $out/speed-error.png"

@@ -3,7 +3,9 @@
  *                         corpus test's torus knots, and the material maps
  *                         and models
  *   mkmodels DIR --bench  also torus knots of about 10k, 100k and 1M triangles,
- *                         and the 100k one textured, skinned (still and turning) and flat-shaded */
+ *                         and the 100k one textured, skinned (still and turning), morphing
+ *                         and flat-shaded */
+#include "gltf_morph.h"
 #include "gltf_write.h"
 #include "maps.h"
 #include "parts_models.h"
@@ -251,6 +253,13 @@ static int write_bench_forms(const char *dir, const struct mesh *k)
 	o.anim_node = 2;
 	bad |= put(dir, "knot-100k-turning.glb", k, o);
 	o.with_anim = 0;
+	/* Two morph targets that move positions and normals, their weights
+	 * keyed: live playback's morph figures. */
+	snprintf(base, sizeof(base), "%s/knot-100k-morphing.glb", dir);
+	if (gltf_write_morph(base, k, 1)) {
+		fprintf(stderr, "mkmodels: cannot write %s\n", base);
+		bad = 1;
+	}
 	if (split_flat(k, &flat))
 		return 1;
 	o = (struct gltf_write_opts){

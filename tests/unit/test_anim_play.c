@@ -1,11 +1,14 @@
 /* Live playback's CPU pose (src/scene/anim_play.h) against the still the
  * loader bakes (--time): for Khronos and assimp models that skin, morph
  * and move nodes, the positions and normals anim_play_pose writes at a
- * clip time equal the mesh loaded posed at that time, with the same fit.
+ * clip time equal the mesh loaded posed at that time, with the same fit;
+ * so do the GPU path's (its bones and morph targets through the vertex
+ * shader's maths in C, tests/oracle/anim_mirror.c).
  * A model without animation keeps nothing for playback and loads as it
  * did. */
 #include "scene/anim_play.h"
 #include "scene/gltf.h"
+#include "oracle/anim_mirror.h"
 
 #include <errno.h>
 #include <math.h>
@@ -18,7 +21,10 @@
 #include <unistd.h>
 #include <cmocka.h>
 
-#define ASSIMP "/usr/share/assimp/models/glTF2/"
+#define ASSIMP	   "/usr/share/assimp/models/glTF2/"
+#define MORPH_CUBE ASSIMP "glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf"
+/* More attributes than any model here needs. */
+#define SHADER_ROOM 16
 
 static double max_diff(const float *a, const float *b, size_t n)
 {
@@ -101,39 +107,17 @@ static void nodes(void **state)
 	each_time("tests/corpus/khronos/AnimatedTriangle.gltf");
 }
 
-/* The vertex shader's skinning (shaders/matcap.vert, SKIN_BONES) in C:
- * each vertex by its four bones' rows, over the weights' sum. */
-static void mirror_vertex(const struct anim_play *p, const float *rows, uint32_t v, float out[3],
-			  float n[3])
-{
-	const float *j = p->gpu_joints + (size_t)v * 4, *w = p->gpu_weights + (size_t)v * 4;
-	const float *at = p->positions + (size_t)v * 3, *nv = p->normals + (size_t)v * 3;
-	float total = w[0] + w[1] + w[2] + w[3], r[12] = {0};
-	double len = 0;
-
-	for (int k = 0; k < 4; k++)
-		for (int i = 0; i < 12; i++)
-			r[i] += w[k] / total * rows[(size_t)(int)(j[k] + 0.5f) * 12 + i];
-	for (int i = 0; i < 3; i++) {
-		out[i] =
-		    r[i * 4] * at[0] + r[i * 4 + 1] * at[1] + r[i * 4 + 2] * at[2] + r[i * 4 + 3];
-		n[i] = r[i * 4] * nv[0] + r[i * 4 + 1] * nv[1] + r[i * 4 + 2] * nv[2];
-		len += (double)n[i] * n[i];
-	}
-	for (int i = 0; i < 3; i++)
-		n[i] = (float)(n[i] / sqrt(len));
-}
-
-/* The GPU path's bones, through the shader's maths, pose the mesh as the
- * CPU path does (no morphs here: those stay on the CPU). */
+/* The GPU path's bones and morph targets, through the shader's maths
+ * (tests/oracle/anim_mirror.c), pose the mesh as the CPU path does. */
 static void gpu_mirror_at(const char *path, double t)
 {
 	struct anim_play *play = NULL;
 	struct gltf_options o = {.pose = true, .time = t, .speed = 1, .play = &play};
 	struct mesh still;
 	struct anim_pose *pose;
-	float *rows, v[3], n[3];
+	float *rows, v[3], n[3], weights[ANIM_PLAY_MORPH_MAX];
 	double dp = 0, dn = 0;
+	const char *why;
 
 	if (access(path, R_OK))
 		return;
@@ -147,20 +131,23 @@ static void gpu_mirror_at(const char *path, double t)
 	}
 	assert_int_equal(anim_play_gpu_prepare(play, 1), -E2BIG);
 	assert_int_equal(anim_play_gpu_prepare(play, 1000), 0);
+	assert_int_equal(anim_play_morph_prepare(play, SHADER_ROOM, &why), 0);
+	assert_false(play->morphs); /* none left to the CPU */
 	pose = anim_pose_new(play->anim);
 	anim_pose_apply(play->anim, &play->anim->clips[0], t, pose);
 	rows = calloc((size_t)play->bones * 12, sizeof(float));
 	anim_play_bones(play, pose, rows);
+	anim_play_morph_weights(play, pose, weights);
 	for (uint32_t i = 0; i < still.vertex_count; i++) {
-		mirror_vertex(play, rows, i, v, n);
+		anim_mirror_vertex(play, rows, weights, i, false, v, n);
 		for (int k = 0; k < 3; k++) {
 			dp = fmax(dp, fabs(v[k] - still.positions[i * 3 + k]));
 			dn = fmax(dn, fabs(n[k] - still.normals[i * 3 + k]));
 		}
 	}
-	print_message("%s at %.2f s on the GPU's maths: %u bones, positions off by %g, normals "
-		      "by %g\n",
-		      path, t, play->bones, dp, dn);
+	print_message("%s at %.2f s on the GPU's maths: %u bones, %u morph targets, positions off "
+		      "by %g, normals by %g\n",
+		      path, t, play->bones, play->morph_targets, dp, dn);
 	assert_true(dp < 1e-5 && dn < 1e-4);
 	free(rows);
 	anim_pose_free(pose);
@@ -174,6 +161,74 @@ static void gpu_mirror(void **state)
 	gpu_mirror_at("tests/corpus/khronos/RiggedSimple.gltf", 0.9);
 	gpu_mirror_at(ASSIMP "simple_skin/simple_skin.gltf", 1.3);
 	gpu_mirror_at("tests/corpus/khronos/BoxAnimated.gltf", 1.7);
+	gpu_mirror_at(MORPH_CUBE, 1.3);
+	gpu_mirror_at(MORPH_CUBE, 3.1);
+}
+
+/* Where the targets go: the GPU when their attributes fit the room, else
+ * the CPU (morphs left set), said why; a model without targets needs none. */
+static void morph_placement(void **state)
+{
+	struct anim_play *play = NULL;
+	struct gltf_options o = {.pose = true, .speed = 1, .play = &play};
+	struct mesh m;
+	const char *why;
+
+	(void)state;
+	if (access(MORPH_CUBE, R_OK))
+		return;
+	assert_int_equal(gltf_load_options(MORPH_CUBE, &o, &m), 0);
+	assert_int_equal(anim_play_gpu_prepare(play, 1000), 0);
+	assert_int_equal(anim_play_morph_attributes(play), 4); /* two, with normals */
+	assert_int_equal(anim_play_morph_prepare(play, 3, &why), -ENOSPC);
+	assert_non_null(why);
+	assert_int_equal(play->morph_targets, 0);
+	assert_true(play->morphs);
+	assert_int_equal(anim_play_morph_prepare(play, 4, &why), 0);
+	assert_int_equal(play->morph_targets, 2);
+	assert_true(play->morph_normals);
+	assert_false(play->morphs);
+	/* Uploaded again to a smaller GPU: decided again. */
+	assert_int_equal(anim_play_morph_prepare(play, 0, &why), -ENOSPC);
+	assert_null(play->gpu_morph);
+	assert_true(play->morphs);
+	anim_play_free(play);
+	mesh_release(&m);
+	play = NULL;
+	assert_int_equal(gltf_load_options("tests/corpus/khronos/RiggedSimple.gltf", &o, &m), 0);
+	assert_int_equal(anim_play_gpu_prepare(play, 1000), 0);
+	assert_int_equal(anim_play_morph_attributes(play), 0);
+	assert_int_equal(anim_play_morph_prepare(play, 0, &why), 0);
+	assert_null(why);
+	assert_int_equal(play->morph_targets, 0);
+	anim_play_free(play);
+	mesh_release(&m);
+}
+
+/* More targets than the shader adds, or targets on parts of two nodes
+ * (two sets of weights): the CPU's, whatever the room. */
+static void morph_placement_refused(void **state)
+{
+	float deltas[3] = {0};
+	struct anim_play_part parts[2] = {
+	    {.node = 0, .skin = -1, .vertex_count = 1},
+	    {.node = 1, .skin = -1, .first_vertex = 1, .vertex_count = 1}};
+	struct anim_play p = {.vertex_count = 2, .part_count = 1, .parts = parts};
+	const char *why;
+
+	(void)state;
+	parts[0].target_count = ANIM_PLAY_MORPH_MAX + 1;
+	parts[0].target_positions = deltas;
+	assert_int_equal(anim_play_morph_prepare(&p, 100, &why), -E2BIG);
+	assert_non_null(why);
+	assert_true(p.morphs);
+	parts[0].target_count = parts[1].target_count = 1;
+	parts[1].target_positions = deltas;
+	p.part_count = 2;
+	assert_int_equal(anim_play_morph_prepare(&p, 100, &why), -EXDEV);
+	assert_non_null(strstr(why, "several nodes"));
+	assert_int_equal(p.morph_targets, 0);
+	assert_null(p.gpu_morph);
 }
 
 /* No animation: nothing kept, and the very mesh a load without it gives. */
@@ -202,6 +257,8 @@ int main(void)
 	    cmocka_unit_test(skin),
 	    cmocka_unit_test(nodes),
 	    cmocka_unit_test(gpu_mirror),
+	    cmocka_unit_test(morph_placement),
+	    cmocka_unit_test(morph_placement_refused),
 	    cmocka_unit_test(still_model_unchanged),
 	};
 	return cmocka_run_group_tests_name("anim_play", tests, NULL, NULL);

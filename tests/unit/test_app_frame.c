@@ -216,7 +216,8 @@ static void stops_step_and_play(void **state)
 	struct app_config c = config();
 	struct frame_config f;
 	struct app *a;
-	char stops[] = "90 10 1.5 \"The handle\"; -90 0 1 \"Maker's mark\"; 0 -20 2";
+	char stops[] = "90 10 1.5 \"The handle\"; -90 0 1 \"Maker's mark\" animation=open; "
+		       "0 -20 2 animation=1";
 
 	(void)state;
 	frame_config_defaults(&f);
@@ -226,8 +227,10 @@ static void stops_step_and_play(void **state)
 	assert_int_equal(c.frame.stop_count, 3);
 	a = app_new(&c, 3, 0);
 	assert_null(app_state(a)->stop_text);
+	assert_null(app_state(a)->stop_animation);
 	press(a, 0, ACTION_NEXT_STOP, true);
 	assert_string_equal(app_state(a)->stop_text, "The handle");
+	assert_null(app_state(a)->stop_animation); /* the clip playing goes on */
 	assert_true(app_moving(a));
 	app_advance(a, 100 * MS);
 	assert_true(app_state(a)->yaw > 0 && app_state(a)->yaw < 90 * DEG);
@@ -240,6 +243,7 @@ static void stops_step_and_play(void **state)
 	app_advance(a, 11 * SEC);
 	assert_int_equal(app_state(a)->stop, 2);
 	assert_null(app_state(a)->stop_text);
+	assert_string_equal(app_state(a)->stop_animation, "1");
 	assert_float_equal(app_state(a)->zoom, 2, 1e-12);
 	press(a, 11 * SEC, ACTION_NEXT_STOP, true);
 	app_advance(a, 16 * SEC);
@@ -255,6 +259,7 @@ static void stops_step_and_play(void **state)
 	app_advance(a, 12 * SEC);
 	assert_int_equal(app_state(a)->stop, 1);
 	assert_string_equal(app_state(a)->stop_text, "Maker's mark");
+	assert_string_equal(app_state(a)->stop_animation, "open");
 	app_advance(a, 21 * SEC);
 	assert_float_equal(app_state(a)->yaw, -90 * DEG, 1e-9);
 	app_advance(a, 30 * SEC);
@@ -281,6 +286,21 @@ static void stops_refused_with_reason(void **state)
 	assert_int_equal(frame_stops_parse("1 2 1;3 4 1 \"ab\";", s, FRAME_STOPS, err, sizeof(err)),
 			 2);
 	assert_string_equal(s[1].text, "ab");
+	/* animation= last, after the text or the numbers, to the stop's end
+	 * (a clip's name may have spaces); a text may say "animation=" itself. */
+	assert_int_equal(frame_stops_parse("1 2 1 animation=all; 3 4 1 \"x animation=y\" "
+					   "animation=Take 1 ",
+					   s, FRAME_STOPS, err, sizeof(err)),
+			 2);
+	assert_string_equal(s[0].animation, "all");
+	assert_string_equal(s[1].text, "x animation=y");
+	assert_string_equal(s[1].animation, "Take 1");
+	assert_int_equal(frame_stops_parse("1 2 1 animation=", s, FRAME_STOPS, err, sizeof(err)),
+			 -1);
+	assert_non_null(strstr(err, "animation="));
+	assert_int_equal(
+	    frame_stops_parse("1 2 1 animation=a \"late text\"", s, FRAME_STOPS, err, sizeof(err)),
+	    -1);
 }
 
 static void rotate(struct quat q, const double p[3], double out[3])

@@ -86,6 +86,7 @@ while IFS="|" read -r label model clip kopt; do
 done <<'LIST'
 animated-triangle|AnimatedTriangle.gltf||
 box-animated|BoxAnimated.gltf||
+box-animated-all|BoxAnimated.gltf|all|--animation all
 rigged-simple|RiggedSimple.gltf||
 morph-cube|AnimatedMorphCube.gltf||
 simple-skin|simple_skin.gltf||
