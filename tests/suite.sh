@@ -516,8 +516,8 @@ test_board() {
 }
 
 # The kiosk as systemd runs it on the board (tests/vm/systemd-test.sh: a
-# Debian root, made once with debootstrap, booted with systemd as PID 1 on
-# the board's kernel with vkms): ready after the first frame, restarted by
+# Debian 12 root made of this machine's installed packages, booted with
+# systemd as PID 1 on the board's kernel with vkms): ready after the first frame, restarted by
 # the watchdog when stopped, and a reload that outlasts WatchdogSec=3s
 # (held by the test hook's MK_TEST_PREPARE_DELAY_MS) not killed, its flips
 # counted; a bad setting not restarted; the console given back.

@@ -1,5 +1,6 @@
 #!/bin/sh
-# Runs each libFuzzer harness from its seeds for FUZZ_SECONDS, then replays
+# Runs each libFuzzer harness from its seeds for FUZZ_SECONDS (as many side
+# by side as there are CPUs for their FUZZ_JOBS workers), then replays
 # every file of tests/fuzz/regressions once (a crash found once stays
 # fixed).
 #   run.sh [HARNESS]...   gltf, image, config, mesh_cache (all when none is named) Prints one line per step, "ok NAME" or "not ok NAME", with the
@@ -19,7 +20,10 @@ out=$(cd "$out" && pwd)
 export FUZZ_GLTF_DIR="$top/tests/fuzz/corpus/gltf"
 harnesses=${*:-gltf image config mesh_cache}
 
-for t in $harnesses; do
+# fuzz_one NAME: one harness for FUZZ_SECONDS; its "ok"/"not ok" line goes
+# to its scratch folder's result, printed in order below.
+fuzz_one() {
+	t=$1
 	work=$out/$t
 	rm -rf "$work"
 	mkdir -p "$work/corpus"
@@ -45,6 +49,23 @@ for t in $harnesses; do
 		grep -A30 -E "ERROR|runtime error|deadly signal" "$work/log" | head -60 >&2
 		echo "not ok $t: crashed after $runs runs (input in $work/, log $work/log)"
 	fi
+}
+
+# The harnesses side by side, as many at a time as there are CPUs for
+# their workers: each still fuzzes FUZZ_SECONDS on a core of its own (one
+# after the other, a 2-core machine idled a core for 80 s of CI).
+cpus=$(nproc 2>/dev/null || echo 1)
+at_once=$((cpus / jobs))
+[ "$at_once" -ge 1 ] || at_once=1
+n=0
+for t in $harnesses; do
+	fuzz_one "$t" >"$out/$t.result" &
+	n=$((n + 1))
+	[ $((n % at_once)) -ne 0 ] || wait
+done
+wait
+for t in $harnesses; do
+	cat "$out/$t.result"
 done
 
 for t in $harnesses; do

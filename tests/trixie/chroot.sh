@@ -15,8 +15,9 @@
 # display, the GPIO buttons and the camera, the ones whose libraries Debian 13
 # changes; the rest test the kernel and our code, which the host's run
 # already covers; empty: all), FUZZ_SECONDS (5 here: the host fuzzes 20 s,
-# the same code), VM_SYSTEMD (0 here: the systemd board's root is Debian 12
-# whichever host boots it, and the host's run does). The board boots Debian 12's kernel (tests/vm/build.sh makes it on
+# the same code), VM_SYSTEMD (0 here: the systemd board's root is made of
+# Debian 12's packages, tests/vm/systemd-build.sh names them; the host's
+# run boots it). The board boots Debian 12's kernel (tests/vm/build.sh makes it on
 # this host, which must then be Debian 12) with Debian 13's libgpiod 2,
 # libcamera 0.4 and Mesa 25 inside: the GPIO and camera tests on those.
 # /proc, /sys and /dev are mounted inside only while this runs; every exit

@@ -14,8 +14,8 @@
 #   make vm-systemd  the installed unit in a Debian root booted with systemd
 #                    (tests/vm/systemd-test.sh), with a reload that outlasts
 #                    WatchdogSec=3s; in `make test` as make check T=systemd-board
-#                    (about 3 min with its Debian root cached, 2.5 min more
-#                    to debootstrap it)
+#                    (about 2 min: its Debian 12 root is made of this
+#                    machine's installed packages, nothing downloaded)
 #   make vm-clean    drop the cache (next build downloads and rebuilds)
 #
 # Knobs: VM_TESTS (guest scripts), VM_BINS (host binaries to carry in),
