@@ -122,7 +122,7 @@ test-tools: $(TOOLS_DIR)/base_color_check
 
 # Speed against error, for `make bench` and `make report`.
 $(TOOLS_DIR)/bench_quality: tests/bench/bench_quality.c tests/bench/bench_quality_report.c \
-		tests/bench/bench_quality.h tests/tools/maps.c $(LIB_OBJS) $(ORACLE_OBJS)
+		tests/bench/bench_quality.h tests/bench/bench_clock.h tests/tools/maps.c $(LIB_OBJS) $(ORACLE_OBJS)
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) -o $@ $< tests/bench/bench_quality_report.c tests/tools/maps.c \
 		$(LIB_OBJS) $(ORACLE_OBJS) $(TEST_LIBS)
@@ -130,14 +130,14 @@ $(TOOLS_DIR)/bench_quality: tests/bench/bench_quality.c tests/bench/bench_qualit
 test-tools: $(TOOLS_DIR)/bench_quality
 
 # The caption's cost a frame, for `make bench`.
-$(TOOLS_DIR)/bench_caption: tests/bench/bench_caption.c $(LIB_OBJS)
+$(TOOLS_DIR)/bench_caption: tests/bench/bench_caption.c tests/bench/bench_clock.h $(LIB_OBJS)
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) -o $@ $< $(LIB_OBJS) $(TEST_LIBS)
 
 test-tools: $(TOOLS_DIR)/bench_caption
 
 # Live playback's cost a frame, for `make bench`.
-$(TOOLS_DIR)/bench_anim_live: tests/bench/bench_anim_live.c $(LIB_OBJS)
+$(TOOLS_DIR)/bench_anim_live: tests/bench/bench_anim_live.c tests/bench/bench_clock.h $(LIB_OBJS)
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) -o $@ $< $(LIB_OBJS) $(TEST_LIBS)
 

@@ -20,31 +20,12 @@
 #include "display/display.h"
 #include "util/log.h"
 
+#include "bench_clock.h"
+
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-
-static double now_ms(void)
-{
-	struct timespec ts;
-
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return ts.tv_sec * 1e3 + ts.tv_nsec / 1e6;
-}
-
-static int compare(const void *a, const void *b)
-{
-	double x = *(const double *)a, y = *(const double *)b;
-
-	return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-	qsort(v, (size_t)n, sizeof(*v), compare);
-	return v[n / 2];
-}
 
 struct shown {
 	struct content_config c;
@@ -82,11 +63,11 @@ static int show(struct display *d, const char *model, bool live, uint32_t bones,
 
 static double draw(struct display *d, struct shown *s)
 {
-	double t = now_ms();
+	double t = bench_now_ms();
 
 	renderer_draw(s->r, &s->v, d->width, d->height);
 	d->gl.Finish();
-	return now_ms() - t;
+	return bench_now_ms() - t;
 }
 
 int main(int argc, char **argv)
@@ -129,11 +110,11 @@ int main(int argc, char **argv)
 	draw(d, &live); /* the first draws compile and upload */
 	draw(d, &still);
 	for (int i = 0; i < n; i++) {
-		double t = now_ms();
+		double t = bench_now_ms();
 
 		now += 33333333ull;
 		kiosk_anim_step(a, &live.s, live.r, &in, now, &next);
-		pose[i] = now_ms() - t;
+		pose[i] = bench_now_ms() - t;
 		drawn[i] = draw(d, &live);
 		plain[i] = draw(d, &still);
 	}
@@ -144,7 +125,7 @@ int main(int argc, char **argv)
 	       : live.s.play->morph_targets ? "GPU, morphs too"
 					    : "GPU",
 	       argv[1], cfg.width, cfg.height, live.s.mesh.vertex_count,
-	       live.s.mesh.index_count / 3, median(pose, n), median(drawn, n),
-	       still.s.mesh.index_count / 3, median(plain, n));
+	       live.s.mesh.index_count / 3, bench_median(pose, n), bench_median(drawn, n),
+	       still.s.mesh.index_count / 3, bench_median(plain, n));
 	return 0;
 }

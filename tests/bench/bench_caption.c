@@ -10,42 +10,23 @@
 #include "scene/caption.h"
 #include "util/log.h"
 
+#include "bench_clock.h"
+
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
-static double now_ms(void)
-{
-	struct timespec ts;
-
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return ts.tv_sec * 1e3 + ts.tv_nsec / 1e6;
-}
-
-static int compare(const void *a, const void *b)
-{
-	double x = *(const double *)a, y = *(const double *)b;
-
-	return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-	qsort(v, (size_t)n, sizeof(*v), compare);
-	return v[n / 2];
-}
-
 static double frame(struct display *d, const struct caption_gl *cap)
 {
-	double t = now_ms();
+	double t = bench_now_ms();
 
 	d->gl.ClearColor(0.1f, 0.1f, 0.1f, 1);
 	d->gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 	if (cap)
 		caption_gl_draw(cap, 0, d->width, d->height, 0);
 	d->gl.Finish();
-	return now_ms() - t;
+	return bench_now_ms() - t;
 }
 
 int main(int argc, char **argv)
@@ -74,10 +55,10 @@ int main(int argc, char **argv)
 		d = display_egl_new(&cfg);
 	if (!d || d->begin_frame(d))
 		return 1;
-	t = now_ms();
+	t = bench_now_ms();
 	if (caption_render(&c, NULL, &img))
 		return 1;
-	t = now_ms() - t;
+	t = bench_now_ms() - t;
 	cap = caption_gl_new(&d->gl, &img, &c);
 	off = calloc((size_t)n, sizeof(*off));
 	on = calloc((size_t)n, sizeof(*on));
@@ -90,8 +71,8 @@ int main(int argc, char **argv)
 	}
 	printf("%s %dx%d caption %dx%d: picture %.1f ms once; frame %.3f ms, with caption %.3f "
 	       "ms: %.3f ms a frame\n",
-	       argv[1], cfg.width, cfg.height, img.width, img.height, t, median(off, n),
-	       median(on, n), median(on, n) - median(off, n));
+	       argv[1], cfg.width, cfg.height, img.width, img.height, t, bench_median(off, n),
+	       bench_median(on, n), bench_median(on, n) - bench_median(off, n));
 	free(off);
 	free(on);
 	image_release(&img);

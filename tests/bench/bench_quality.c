@@ -26,6 +26,8 @@
 #include "render/render.h"
 #include "render/shading.h"
 
+#include "bench_clock.h"
+
 #include <EGL/egl.h>
 #include <errno.h>
 #include <math.h>
@@ -65,21 +67,6 @@ static void read_load(char *out, size_t size)
 		out[strcspn(out, " ")] = '\0'; /* the last minute's */
 	if (f)
 		fclose(f);
-}
-
-static double now_ms(void)
-{
-	struct timespec t;
-
-	clock_gettime(CLOCK_MONOTONIC, &t);
-	return t.tv_sec * 1e3 + t.tv_nsec / 1e6;
-}
-
-static int compare_double(const void *a, const void *b)
-{
-	double x = *(const double *)a, y = *(const double *)b;
-
-	return (x > y) - (x < y);
 }
 
 static const int msaa_asked[] = {DISPLAY_AA_OFF, DISPLAY_AA_2, DISPLAY_AA_4, DISPLAY_AA_8};
@@ -304,7 +291,7 @@ static int measure(struct bench *b, const struct look *lk, const struct material
 	s->vertex_bytes = stats.vertex_bytes;
 	b->last_display = k;
 	for (int i = -warmup; i < n && !ret; i++) {
-		double t = now_ms();
+		double t = bench_now_ms();
 
 		ret = d->begin_frame(d);
 		/* A small scene is drawn in the frame's corner (the viewport):
@@ -313,7 +300,7 @@ static int measure(struct bench *b, const struct look *lk, const struct material
 		if (!ret)
 			ret = d->present(d);
 		if (i >= 0 && s->timed < MAX_FRAMES)
-			s->times[s->timed++] = now_ms() - t;
+			s->times[s->timed++] = bench_now_ms() - t;
 	}
 	if (!ret && frame)
 		ret = d->read_frame(d, &big);
@@ -325,7 +312,7 @@ static int measure(struct bench *b, const struct look *lk, const struct material
 
 static void summarize_times(struct setting *s)
 {
-	qsort(s->times, (size_t)s->timed, sizeof(double), compare_double);
+	qsort(s->times, (size_t)s->timed, sizeof(double), bench_compare_double);
 	s->ms = s->timed ? s->times[s->timed / 2] : 0.0;
 	s->p90 = s->timed ? s->times[(s->timed * 9) / 10] : 0.0;
 }
