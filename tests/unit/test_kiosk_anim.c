@@ -91,17 +91,20 @@ static struct renderer *shown(struct content *s, const struct content_config *c)
 	return shown_with(s, c, UINT32_MAX);
 }
 
-/* Pixels that differ, and by how much at most (the live pose's float
- * matrices against the bake's doubles round a shade by a level). */
-static void compare(const struct image *a, const struct image *b, int *pixels, int *most)
+/* Pixels that differ, by how much at most, and how many by more than
+ * 2/255 (the live pose's float matrices against the bake's doubles round
+ * a shade by a level; a rasteriser without antialiasing, softpipe on
+ * armhf, flips a silhouette pixel whose centre the edge grazes). */
+static void compare(const struct image *a, const struct image *b, int *pixels, int *most, int *over)
 {
-	*pixels = *most = 0;
+	*pixels = *most = *over = 0;
 	for (int i = 0; i < a->width * a->height; i++) {
 		int diff = 0;
 
 		for (int k = 0; k < 3; k++)
 			diff = fmax(diff, abs(a->rgba[i * 4 + k] - b->rgba[i * 4 + k]));
 		*pixels += diff > 0;
+		*over += diff > 2;
 		*most = diff > *most ? diff : *most;
 	}
 }
@@ -120,7 +123,7 @@ static void live_frame_is_the_still(const char *path, char *animation, int sixte
 	double t;
 	uint64_t next;
 	struct image fa, fb;
-	int pixels, most;
+	int pixels, most, over;
 
 	if (access(path, R_OK))
 		return;
@@ -143,18 +146,21 @@ static void live_frame_is_the_still(const char *path, char *animation, int sixte
 
 	assert_null(still.play);
 	draw(rs, &still, &sc, &fb);
-	compare(&fa, &fb, &pixels, &most);
-	print_message("%s (%s) at %.3f s, %s: %d pixels differ, by %d at most\n", path,
-		      animation ? animation : "auto", t,
+	compare(&fa, &fb, &pixels, &most, &over);
+	print_message("%s (%s) at %.3f s, %s: %d pixels differ, by %d at most, %d by more "
+		      "than 2\n",
+		      path, animation ? animation : "auto", t,
 		      !live.play_gpu	? "posed on the CPU"
 		      : live.play_split ? "skinned on the GPU, its palette split"
 					: "skinned on the GPU",
-		      pixels, most);
+		      pixels, most, over);
 	if (live.play->morph_targets)
 		print_message("  its %u morph targets added in the vertex shader\n",
 			      live.play->morph_targets);
-	/* A pose off by a hair moves an edge by a whole level or more. */
-	assert_true(most <= 2);
+	/* Every shade within 2/255 but a few silhouette pixels (0.1%): a
+	 * wrong pose moves whole edges, hundreds of pixels (the weights left
+	 * out: the cube off by 111 levels). */
+	assert_true(over <= SIZE * SIZE / 1000);
 	image_release(&fa);
 	image_release(&fb);
 	kiosk_anim_free(a);
