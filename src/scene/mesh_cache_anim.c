@@ -268,7 +268,8 @@ static bool get_sampler(struct get *g, struct anim_sampler *s)
 	s->interp = (enum anim_interp)interp;
 	s->input = get_array(g, s->count, sizeof(float));
 	/* Checked before the product is made (a 32-bit size_t). */
-	if (g->ok && (size_t)s->width * 3 > g->left / sizeof(float) / s->count)
+	if (g->ok && (size_t)s->width * (s->interp == ANIM_CUBICSPLINE ? 3 : 1) >
+			 g->left / sizeof(float) / s->count)
 		return g->ok = false;
 	s->output = get_array(g, sampler_values(s), sizeof(float));
 	return g->ok && !anim_sampler_check(s);
@@ -327,7 +328,7 @@ static bool get_clip(struct get *g, const struct mesh_anim *a, struct anim_clip 
 
 static bool get_anim(struct get *g, struct mesh_anim *a)
 {
-	a->node_count = get_count(g, 128);
+	a->node_count = get_count(g, 120);
 	a->nodes = calloc(a->node_count + 1, sizeof(*a->nodes));
 	a->order = calloc(a->node_count + 1, sizeof(*a->order));
 	if (!a->nodes || !a->order)
@@ -426,7 +427,7 @@ static bool get_play(struct get *g, struct anim_play *p, uint32_t vertex_count)
 		return g->ok = false;
 	for (uint32_t s = 0; g->ok && s < p->skin_count; s++)
 		get_skin(g, &p->skins[s], p->anim->node_count);
-	p->part_count = get_count(g, 40);
+	p->part_count = get_count(g, 36);
 	p->parts = calloc(p->part_count + 1, sizeof(*p->parts));
 	if (!p->parts)
 		return g->ok = false;
