@@ -3,7 +3,9 @@
  * bone 0 holds the clip's fit alone (an unweighted vertex, a part drawn
  * at the skeleton's root), then every skin's joints (world x inverse
  * bind), then each node rigid parts follow (its world), all with the fit.
- * A model with more bones than the GPU's palette plays on the CPU. */
+ * A model with more bones than the GPU's palette is split into draws
+ * (anim_play_split.c); one with more than four joints a vertex
+ * (JOINTS_1) plays on the CPU. */
 #include "scene/anim_play.h"
 
 #include <errno.h>
