@@ -41,10 +41,11 @@ $(BUILD)/oracle/%.o: tests/oracle/%.c
 
 $(BUILD)/tests/test_%: tests/unit/test_%.c tests/tools/gltf_write.c tests/tools/gltf_write.h \
 		tests/tools/gltf_parts.c tests/tools/gltf_parts.h tests/tools/gltf_morph.c \
+		tests/tools/gltf_joints.c tests/tools/gltf_joints.h \
 		$(LIB_OBJS) $(ORACLE_OBJS)
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) $(LDFLAGS) -o $@ $< tests/tools/gltf_write.c tests/tools/gltf_parts.c \
-		tests/tools/gltf_morph.c \
+		tests/tools/gltf_morph.c tests/tools/gltf_joints.c \
 		$(LIB_OBJS) $(ORACLE_OBJS) $(TEST_LIBS)
 
 unit-tests: $(UNIT_TESTS:%=$(BUILD)/tests/test_%)

@@ -183,8 +183,7 @@ int content_play_upload(struct content *s, struct renderer *r)
 		return why;
 	if (!s->play_gpu) {
 		log_info("%s: posed on the CPU each frame: %s", s->model_path,
-			 why == -E2BIG ? "a triangle's bones alone outnumber the GPU's palette"
-				       : "a part's normals come from its posed triangles");
+			 anim_play_gpu_why(why));
 		anim_play_morph_prepare(s->play, 0, &place.why); /* no arrays for the GPU */
 		return renderer_set_mesh_live(r, &s->mesh);
 	}

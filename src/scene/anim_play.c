@@ -128,16 +128,17 @@ static void pose_rigid(struct anim_play *p, const struct anim_play_part *part, f
 	}
 }
 
-/* Vertex i's blend of its joints' matrices; false for a vertex of no
- * weight (it stays where it was bound). */
+/* Vertex i's blend of its joints' matrices, every set of them (as the
+ * bake's); false for a vertex of no weight (it stays where it was bound). */
 static bool blend(const struct anim_play *p, uint32_t count, uint32_t v, double b[16])
 {
+	const size_t at = (size_t)v * p->influences;
 	double total = 0;
 
 	memset(b, 0, 16 * sizeof(double));
-	for (int k = 0; k < 4; k++) {
-		float w = p->weights[(size_t)v * 4 + k];
-		uint16_t j = p->joints[(size_t)v * 4 + k];
+	for (uint32_t k = 0; k < p->influences; k++) {
+		float w = p->weights[at + k];
+		uint16_t j = p->joints[at + k];
 
 		if (w == 0.0f || j >= count)
 			continue;

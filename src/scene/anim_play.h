@@ -3,8 +3,9 @@
  * the node worlds alone: no file, no re-bake. Each part (a glTF primitive
  * as a node shows it) remembers its vertices in the mesh, the node it
  * follows, its skin and its morph targets; the vertices keep their
- * primitive's own (mesh-local) positions and normals, JOINTS_0 and
- * WEIGHTS_0. anim_play_pose writes the mesh's positions and normals as the
+ * primitive's own (mesh-local) positions and normals, and its joint sets
+ * (JOINTS_0 and WEIGHTS_0, and JOINTS_1/_2 where the file has them: the
+ * bake blends them all). anim_play_pose writes the mesh's positions and normals as the
  * loader's bake would at that pose (the same maths: morphs, then the skin
  * or the node's world, then the clip's fit), on the CPU. Pure: no GL. */
 #ifndef MK_ANIM_PLAY_H
@@ -50,8 +51,13 @@ struct anim_play {
 	double center[3], scale;
 	uint32_t vertex_count;
 	float *positions, *normals; /* each part's own, xyz per mesh vertex */
-	uint16_t *joints;	    /* 4 per vertex; NULL: no part is skinned */
-	float *weights;		    /* 4 per vertex */
+	uint16_t *joints;	    /* influences per vertex; NULL: no part is skinned */
+	float *weights;		    /* influences per vertex */
+	/* Joints a vertex in joints and weights: 4 a set the file's skinned
+	 * parts have at most (4: JOINTS_0 alone, the arrays a model without
+	 * JOINTS_1 always had; 8 with JOINTS_1; 12 with JOINTS_2); a part
+	 * with fewer sets has weights of 0 past its own. */
+	uint32_t influences;
 	uint32_t part_count, skin_count;
 	struct anim_play_part *parts;
 	struct anim_play_skin *skins;
@@ -91,8 +97,13 @@ void anim_play_pose(struct anim_play *p, const struct anim_pose *pose, float *po
  * than `palette`, its vertices' bones and weights (an unweighted vertex
  * and a part at the skeleton's root take bone 0). 0, -E2BIG (more bones:
  * the arrays are made for anim_play_split to cut), -ENOTSUP (a part's normals are generated from
- * its posed triangles: the CPU path) or -ENOMEM. Called again, it decides again. */
+ * its posed triangles: the CPU path), -ERANGE (more than four joints a
+ * vertex, JOINTS_1: the shader blends four; the CPU path) or -ENOMEM.
+ * Called again, it decides again. */
 int anim_play_gpu_prepare(struct anim_play *p, uint32_t palette);
+/* Why anim_play_gpu_prepare's answer (or anim_play_split's -E2BIG) leaves
+ * the model to the CPU, for the journal: a sentence, or NULL for 0. */
+const char *anim_play_gpu_why(int err);
 /* The palette at a pose: 3 rows of 4 floats a bone (a 3x4 matrix), the
  * node worlds and inverse binds with the clip's fit. */
 void anim_play_bones(struct anim_play *p, const struct anim_pose *pose, float *rows);

@@ -3,7 +3,9 @@
  * bone 0 holds the clip's fit alone (an unweighted vertex, a part drawn
  * at the skeleton's root), then every skin's joints (world x inverse
  * bind), then each node rigid parts follow (its world), all with the fit.
- * A model with more bones than the GPU's palette plays on the CPU. */
+ * A model with more bones than the GPU's palette is split into draws
+ * (anim_play_split.c); one with more than four joints a vertex
+ * (JOINTS_1) plays on the CPU. */
 #include "scene/anim_play.h"
 
 #include <errno.h>
@@ -35,8 +37,8 @@ static void skinned_vertex(struct anim_play *p, const struct anim_play_part *par
 	float total = 0;
 
 	for (int k = 0; k < 4; k++) {
-		uint16_t joint = p->joints[(size_t)v * 4 + k];
-		float weight = p->weights[(size_t)v * 4 + k];
+		uint16_t joint = p->joints[(size_t)v * p->influences + k];
+		float weight = p->weights[(size_t)v * p->influences + k];
 		bool used = weight != 0.0f && joint < s->joint_count;
 
 		j[k] = used ? (float)(p->skin_bone[part->skin] + joint) : 0.0f;
@@ -69,6 +71,11 @@ int anim_play_gpu_prepare(struct anim_play *p, uint32_t palette)
 	for (uint32_t i = 0; i < p->part_count; i++)
 		if (!p->parts[i].has_normals)
 			return -ENOTSUP;
+	/* The shader blends one vec4 of bones: a second set (JOINTS_1) would
+	 * need two more attributes and a longer blend in every skinned
+	 * program, for the rare model that has it; the CPU blends them all. */
+	if (p->joints && p->influences > 4)
+		return -ERANGE;
 	p->skin_bone = calloc(p->skin_count + 1, sizeof(*p->skin_bone));
 	p->node_bone = calloc(p->anim->node_count + 1, sizeof(*p->node_bone));
 	if (!p->skin_bone || !p->node_bone)
@@ -96,6 +103,25 @@ int anim_play_gpu_prepare(struct anim_play *p, uint32_t palette)
 		}
 	}
 	return p->bones > palette ? -E2BIG : 0;
+}
+
+const char *anim_play_gpu_why(int err)
+{
+	switch (err) {
+	case 0:
+		return NULL;
+	case -E2BIG:
+		return "a triangle's bones alone outnumber the GPU's palette";
+	case -ENOTSUP:
+		return "a part's normals come from its posed triangles";
+	case -ERANGE:
+		return "its vertices have more than four joints (JOINTS_1), the vertex shader "
+		       "blends four";
+	case -ENOMEM:
+		return "out of memory";
+	default:
+		return "an unknown reason";
+	}
 }
 
 /* rows = fit x m, as 3 rows of 4 (double on the way: the fit's centre

@@ -1,7 +1,7 @@
 // What live playback keeps beside the baked mesh, read from the file's own
-// primitives: each part's positions and normals before any pose, JOINTS_0
-// and WEIGHTS_0, its morph targets' deltas, and each skin's joints and
-// inverse bind matrices.
+// primitives: each part's positions and normals before any pose, its
+// joint sets (JOINTS_0 and WEIGHTS_0, JOINTS_1 and WEIGHTS_1...), its morph targets' deltas, and
+// each skin's joints and inverse bind matrices.
 #include "scene/gltf_play.h"
 #include "scene/gltf_anim.h"
 #include "scene/gltf_ext.h"
@@ -88,31 +88,42 @@ bool skin_slot(const tinygltf::Model &m, int skin, struct anim_play *p, std::vec
 	return true;
 }
 
-// JOINTS_0 and WEIGHTS_0 of a skinned part (a second set is refused: the
-// bake blends it, playback does not yet).
+// The joint sets a primitive has, as the bake reads them (JOINTS_0 to
+// JOINTS_2, up to the first it lacks).
+uint32_t joint_sets(const tinygltf::Primitive &pr)
+{
+	uint32_t n = 0;
+	while (n < 3 && pr.attributes.count("JOINTS_" + std::to_string(n)))
+		n++;
+	return n;
+}
+
+// Each joint set of a skinned part, JOINTS_n and WEIGHTS_n, into its
+// place of the vertex's p->influences (those past its sets keep weight 0).
 bool skin_attributes(const tinygltf::Model &m, const tinygltf::Primitive &pr, const GltfPlayPart &g,
 		     struct anim_play *p, std::string *err)
 {
-	std::vector<double> j, w;
-	if (pr.attributes.count("JOINTS_1")) {
-		*err = "JOINTS_1: more than four joints a vertex";
-		return false;
-	}
-	if (!attribute(m, pr.attributes, "JOINTS_0", &j, err) ||
-	    !attribute(m, pr.attributes, "WEIGHTS_0", &w, err))
-		return false;
-	if (j.size() != (size_t)g.vertex_count * 4 || w.size() != j.size()) {
-		*err = "JOINTS_0: expected one VEC4 a vertex, with WEIGHTS_0";
-		return false;
-	}
+	const size_t stride = p->influences;
 	if (!p->joints) {
-		p->joints = alloc<uint16_t>((size_t)p->vertex_count * 4);
-		p->weights = alloc<float>((size_t)p->vertex_count * 4);
+		p->joints = alloc<uint16_t>((size_t)p->vertex_count * stride);
+		p->weights = alloc<float>((size_t)p->vertex_count * stride);
 	}
-	for (size_t i = 0; i < j.size(); i++) {
-		p->joints[(size_t)g.first_vertex * 4 + i] =
-		    j[i] >= 0 && j[i] < 65535 ? (uint16_t)j[i] : 65535;
-		p->weights[(size_t)g.first_vertex * 4 + i] = (float)w[i];
+	for (uint32_t set = 0; set < joint_sets(pr); set++) {
+		std::vector<double> j, w;
+		std::string jn = "JOINTS_" + std::to_string(set),
+			    wn = "WEIGHTS_" + std::to_string(set);
+		if (!attribute(m, pr.attributes, jn.c_str(), &j, err) ||
+		    !attribute(m, pr.attributes, wn.c_str(), &w, err))
+			return false;
+		if (j.size() != (size_t)g.vertex_count * 4 || w.size() != j.size()) {
+			*err = jn + ": expected one VEC4 a vertex, with " + wn;
+			return false;
+		}
+		for (size_t i = 0; i < j.size(); i++) {
+			size_t at = (g.first_vertex + i / 4) * stride + set * 4 + i % 4;
+			p->joints[at] = j[i] >= 0 && j[i] < 65535 ? (uint16_t)j[i] : 65535;
+			p->weights[at] = (float)w[i];
+		}
 	}
 	return true;
 }
@@ -200,6 +211,13 @@ bool gltf_play_build(tinygltf::Model &m, const std::vector<GltfPlayPart> &parts,
 	p->parts = alloc<struct anim_play_part>(parts.size());
 	p->skins = alloc<struct anim_play_skin>(m.skins.size());
 	std::vector<int> slots(m.skins.size(), -1);
+	// Four joints a vertex unless a part has more sets: a model without
+	// JOINTS_1 keeps the arrays (and cost) it always had.
+	p->influences = 4;
+	for (const GltfPlayPart &g : parts)
+		p->influences = std::max(
+		    p->influences,
+		    4 * joint_sets(m.meshes[(size_t)g.mesh].primitives[(size_t)g.primitive]));
 	for (const GltfPlayPart &g : parts)
 		if (!fill_part(m, g, indices, p.get(), &slots, err)) {
 			*err = "meshes[" + std::to_string(g.mesh) + "].primitives[" +

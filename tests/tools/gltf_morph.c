@@ -84,7 +84,7 @@ static void json(FILE *f, const struct mesh *m, const float *buf, const size_t *
 	fprintf(f, "]}");
 }
 
-static int write_glb(const char *path, const char *text, size_t tlen, const void *bin, size_t blen)
+int gltf_write_glb(const char *path, const char *text, size_t tlen, const void *bin, size_t blen)
 {
 	uint32_t jpad = (uint32_t)((tlen + 3) & ~(size_t)3);
 	uint32_t hdr[5] = {0x46546C67, 2, (uint32_t)(12 + 8 + jpad + 8 + blen), jpad, 0x4E4F534A};
@@ -134,7 +134,7 @@ int gltf_write_morph(const char *path, const struct mesh *m, int nodes)
 		return free(buf), -1;
 	json(mem, m, buf, at, len, nodes);
 	fclose(mem);
-	ret = write_glb(path, text, tlen, buf, at[WEIGHTS] + len[WEIGHTS]);
+	ret = gltf_write_glb(path, text, tlen, buf, at[WEIGHTS] + len[WEIGHTS]);
 	free(text);
 	free(buf);
 	return ret;

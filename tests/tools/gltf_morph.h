@@ -12,5 +12,7 @@
 
 /* 0, or -1 when the file cannot be written. */
 int gltf_write_morph(const char *path, const struct mesh *m, int nodes);
+/* A GLB of this JSON text and binary chunk (padded to 4 bytes): 0 or -1. */
+int gltf_write_glb(const char *path, const char *text, size_t tlen, const void *bin, size_t blen);
 
 #endif

@@ -3,12 +3,16 @@
  * and move nodes, the positions and normals anim_play_pose writes at a
  * clip time equal the mesh loaded posed at that time, with the same fit;
  * so do the GPU path's (its bones and morph targets through the vertex
- * shader's maths in C, tests/oracle/anim_mirror.c).
+ * shader's maths in C, tests/oracle/anim_mirror.c). A capsule whose
+ * vertices weigh 5 to 8 joints over JOINTS_0 and JOINTS_1 blends all
+ * eight as the bake does, and the GPU path refuses it (the shader blends
+ * four) with a reason for the journal.
  * A model without animation keeps nothing for playback and loads as it
  * did. */
 #include "scene/anim_play.h"
 #include "scene/gltf.h"
 #include "oracle/anim_mirror.h"
+#include "gltf_joints.h"
 
 #include <errno.h>
 #include <math.h>
@@ -231,6 +235,108 @@ static void morph_placement_refused(void **state)
 	assert_null(p.gpu_morph);
 }
 
+/* The CPU pose of the capsule (tests/tools/gltf_joints.c) at t against
+ * its still; positions and normals differ by *dp, *dn at most. Also the
+ * pose with the second set's weights left out, *dropped off the still:
+ * the test's own check that JOINTS_1 moves the vertices. */
+static void joints8_at(const char *path, double t, double *dp, double *dn, double *dropped)
+{
+	struct anim_play *play = NULL;
+	struct gltf_options o = {.pose = true, .time = t, .speed = 1, .play = &play};
+	struct mesh still;
+	struct anim_pose *pose;
+	float *pos, *nrm;
+	size_t n;
+
+	assert_int_equal(gltf_load_options(path, &o, &still), 0);
+	assert_non_null(play);
+	assert_int_equal(play->influences, 8);
+	n = (size_t)still.vertex_count * 3;
+	pose = anim_pose_new(play->anim);
+	pos = calloc(n, sizeof(float));
+	nrm = calloc(n, sizeof(float));
+	assert_true(pose && pos && nrm);
+	anim_pose_rest(play->anim, pose);
+	anim_pose_apply(play->anim, &play->anim->clips[0], t, pose);
+	anim_play_pose(play, pose, pos, nrm);
+	*dp = max_diff(pos, still.positions, n);
+	*dn = max_diff(nrm, still.normals, n);
+	/* A few vertices, as the journal of a failure would want them. */
+	for (uint32_t v = 0; v < still.vertex_count; v += still.vertex_count / 3)
+		print_message("  vertex %u at %.2f s: live %.6f %.6f %.6f, still %.6f %.6f %.6f\n",
+			      v, t, pos[v * 3], pos[v * 3 + 1], pos[v * 3 + 2],
+			      still.positions[v * 3], still.positions[v * 3 + 1],
+			      still.positions[v * 3 + 2]);
+	for (uint32_t v = 0; v < play->vertex_count; v++)
+		for (int k = 4; k < 8; k++)
+			play->weights[(size_t)v * 8 + k] = 0;
+	anim_play_pose(play, pose, pos, nrm);
+	*dropped = max_diff(pos, still.positions, n);
+	free(pos);
+	free(nrm);
+	anim_pose_free(pose);
+	anim_play_free(play);
+	mesh_release(&still);
+}
+
+/* Eight joints a vertex (JOINTS_1): the CPU blends them all, as the
+ * bake; the GPU path says no, and why. */
+static void joints8(void **state)
+{
+	static const double times[] = {0.3, 1.0, 1.45}; /* 0: the bind pose */
+	char dir[] = "/tmp/mk-joints8-XXXXXX", path[64];
+	struct anim_play *play = NULL;
+	struct gltf_options o = {.pose = true, .speed = 1, .play = &play};
+	struct mesh sphere, m;
+	uint32_t spread = 0, all = 0;
+
+	(void)state;
+	assert_non_null(mkdtemp(dir));
+	snprintf(path, sizeof(path), "%s/capsule.glb", dir);
+	assert_int_equal(mesh_uv_sphere(&sphere, 16, 12), 0);
+	assert_int_equal(gltf_write_joints8(path, &sphere), 0);
+	for (size_t i = 0; i < sizeof(times) / sizeof(*times); i++) {
+		double dp, dn, dropped;
+
+		joints8_at(path, times[i], &dp, &dn, &dropped);
+		print_message("capsule at %.2f s: positions off by %g, normals by %g; without "
+			      "JOINTS_1 off by %g\n",
+			      times[i], dp, dn, dropped);
+		assert_true(dp < 1e-5);
+		assert_true(dn < 1e-4);
+		assert_true(dropped > 0.05);
+	}
+	assert_int_equal(gltf_load_options(path, &o, &m), 0);
+	/* Most vertices weigh five joints or more (past 1%), some all eight. */
+	for (uint32_t v = 0; v < play->vertex_count; v++) {
+		uint32_t used = 0;
+
+		for (int k = 0; k < 8; k++)
+			used += play->weights[(size_t)v * 8 + k] > 0.01f;
+		spread += used >= 5;
+		all += used == 8;
+	}
+	print_message("capsule: %u of %u vertices weigh 5 joints or more, %u all 8\n", spread,
+		      play->vertex_count, all);
+	assert_true(spread > play->vertex_count / 2);
+	assert_true(all > 0);
+	assert_int_equal(anim_play_gpu_prepare(play, 1000), -ERANGE);
+	assert_int_equal(play->bones, 0);
+	assert_non_null(strstr(anim_play_gpu_why(-ERANGE), "JOINTS_1"));
+	anim_play_free(play);
+	mesh_release(&m);
+	/* JOINTS_0 alone: four a vertex, the arrays as they always were. */
+	play = NULL;
+	assert_int_equal(gltf_load_options("tests/corpus/khronos/RiggedSimple.gltf", &o, &m), 0);
+	assert_int_equal(play->influences, 4);
+	assert_int_equal(anim_play_gpu_prepare(play, 1000), 0);
+	anim_play_free(play);
+	mesh_release(&m);
+	mesh_release(&sphere);
+	unlink(path);
+	rmdir(dir);
+}
+
 /* No animation: nothing kept, and the very mesh a load without it gives. */
 static void still_model_unchanged(void **state)
 {
@@ -253,13 +359,10 @@ static void still_model_unchanged(void **state)
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
-	    cmocka_unit_test(morph),
-	    cmocka_unit_test(skin),
-	    cmocka_unit_test(nodes),
-	    cmocka_unit_test(gpu_mirror),
-	    cmocka_unit_test(morph_placement),
-	    cmocka_unit_test(morph_placement_refused),
-	    cmocka_unit_test(still_model_unchanged),
+	    cmocka_unit_test(morph),	       cmocka_unit_test(skin),
+	    cmocka_unit_test(nodes),	       cmocka_unit_test(gpu_mirror),
+	    cmocka_unit_test(morph_placement), cmocka_unit_test(morph_placement_refused),
+	    cmocka_unit_test(joints8),	       cmocka_unit_test(still_model_unchanged),
 	};
 	return cmocka_run_group_tests_name("anim_play", tests, NULL, NULL);
 }

@@ -1,15 +1,17 @@
 /* The live kiosk's animation player (src/app/kiosk_anim.h), drawn through
  * OSMesa: its frame at a playback time equals the --time still of that
  * time (RiggedSimple's skin, SimpleMorph's and AnimatedMorphCube's
- * weights, BoxAnimated's nodes), skinned on the GPU and posed on the CPU,
- * it asks for frames at animation_fps and none while paused or held, a
- * next-animation crossfades, and a model without animation gets no
- * player work and exactly the arrays it had. */
+ * weights, BoxAnimated's nodes, a capsule of eight joints a vertex),
+ * skinned on the GPU and posed on the CPU, it asks for frames at
+ * animation_fps and none while paused or held, a next-animation
+ * crossfades, and a model without animation gets no player work and
+ * exactly the arrays it had. */
 #include "app/kiosk_anim.h"
 #include "config/settings.h"
 #include "content/content.h"
 #include "display/display.h"
 #include "util/clock.h"
+#include "gltf_joints.h"
 #include "gltf_morph.h"
 #include "gltf_write.h"
 
@@ -342,6 +344,31 @@ static void morphs_of_one_node_or_two(void **state)
 	mesh_release(&sphere);
 	unlink(one);
 	unlink(two);
+	rmdir(dir);
+}
+
+/* A capsule weighted over eight joints (JOINTS_1, tests/tools/gltf_joints.c)
+ * plays live, posed on the CPU (the shader blends four), its frame the
+ * still's; the journal says why, once. */
+static void second_joint_set_on_the_cpu(void **state)
+{
+	(void)state;
+	char dir[] = "/tmp/mk-joints8-XXXXXX", path[64], log[8192];
+	const char *why = "posed on the CPU each frame: its vertices have more than four "
+			  "joints (JOINTS_1)";
+	struct mesh sphere;
+
+	assert_non_null(mkdtemp(dir));
+	snprintf(path, sizeof(path), "%s/capsule.glb", dir);
+	assert_int_equal(mesh_uv_sphere(&sphere, 16, 12), 0);
+	assert_int_equal(gltf_write_joints8(path, &sphere), 0);
+	morph_frame_logged(path, 0, UINT32_MAX, log, sizeof(log));
+	assert_non_null(strstr(log, why));
+	assert_null(strstr(strstr(log, why) + 1, why));
+	assert_null(strstr(log, "skinned on the GPU"));
+	assert_null(strstr(log, "shows its first pose"));
+	mesh_release(&sphere);
+	unlink(path);
 	rmdir(dir);
 }
 
@@ -692,6 +719,7 @@ int main(void)
 	    cmocka_unit_test(frames_equal_stills),
 	    cmocka_unit_test(morph_targets_on_the_gpu_or_cpu),
 	    cmocka_unit_test(morphs_of_one_node_or_two),
+	    cmocka_unit_test(second_joint_set_on_the_cpu),
 	    cmocka_unit_test(frames_at_the_rate),
 	    cmocka_unit_test(step_keys_draw_at_their_rate),
 	    cmocka_unit_test(next_animation_crossfades),
