@@ -14,6 +14,8 @@
 #define ANIM_MAGIC   0x4e414b4du /* "MKAN" */
 #define ANIM_VERSION 1u
 #define NO_NAME	     0xffffffffu
+/* Joints a vertex at most: the loader reads three joint sets (gltf_play.cc). */
+#define INFLUENCES_MAX 12u
 
 /* A growing buffer of 32-bit words (a double: two). */
 struct put {
@@ -190,10 +192,10 @@ static void put_play(struct put *b, const struct anim_play *p)
 	put_u32(b, p->vertex_count);
 	put_bytes(b, p->positions, vc * 3 * sizeof(float));
 	put_bytes(b, p->normals, vc * 3 * sizeof(float));
-	put_u32(b, p->joints != NULL);
+	put_u32(b, p->joints ? p->influences : 0);
 	if (p->joints) {
-		put_bytes(b, p->joints, vc * 4 * sizeof(uint16_t));
-		put_bytes(b, p->weights, vc * 4 * sizeof(float));
+		put_bytes(b, p->joints, vc * p->influences * sizeof(uint16_t));
+		put_bytes(b, p->weights, vc * p->influences * sizeof(float));
 	}
 	put_u32(b, p->skin_count);
 	for (uint32_t s = 0; s < p->skin_count; s++) {
@@ -417,10 +419,16 @@ static bool get_play(struct get *g, struct anim_play *p, uint32_t vertex_count)
 		return g->ok = false;
 	p->positions = get_array(g, vc * 3, sizeof(float));
 	p->normals = get_array(g, vc * 3, sizeof(float));
-	if (get_u32(g)) {
-		p->joints = get_array(g, vc * 4, sizeof(uint16_t));
-		p->weights = get_array(g, vc * 4, sizeof(float));
+	/* Joints a vertex: 4 a joint set (JOINTS_0, _1, ...), 4 without. */
+	p->influences = get_u32(g);
+	if (g->ok && p->influences) {
+		if (p->influences % 4 || p->influences > INFLUENCES_MAX ||
+		    p->influences > g->left / 6 / vc)
+			return g->ok = false;
+		p->joints = get_array(g, vc * p->influences, sizeof(uint16_t));
+		p->weights = get_array(g, vc * p->influences, sizeof(float));
 	}
+	p->influences = p->influences ? p->influences : 4;
 	p->skin_count = get_count(g, 4);
 	p->skins = calloc(p->skin_count + 1, sizeof(*p->skins));
 	if (!p->skins)

@@ -5,6 +5,7 @@
 #include "config/settings.h"
 #include "content/content.h"
 #include "display/display.h"
+#include "gltf_joints.h"
 #include "gltf_write.h"
 #include "scene/mesh.h"
 #include "scene/anim.h"
@@ -511,16 +512,20 @@ static void show_live(struct content *s, const struct content_config *c, struct 
 	assert_int_equal(content_upload(s, r), 0);
 }
 
-/* A skin, morph targets, node animation: the second start maps the
- * entry (no parse) and plays exactly what the parse gave, every byte of
- * its playback data and its frame at a time. */
+/* A skin, morph targets, node animation, eight joints a vertex
+ * (JOINTS_1): the second start maps the entry (no parse) and plays
+ * exactly what the parse gave, every byte of its playback data and its
+ * frame at a time. */
 static void a_live_model_starts_from_the_cache(void **state)
 {
-	static const char *const models[] = {
-	    KHRONOS "RiggedSimple.gltf", KHRONOS "SimpleMorph.gltf", KHRONOS "BoxAnimated.gltf"};
 	struct fixture *f = *state;
+	char capsule[96];
+	const char *const models[] = {KHRONOS "RiggedSimple.gltf", KHRONOS "SimpleMorph.gltf",
+				      KHRONOS "BoxAnimated.gltf", capsule};
 	struct renderer *r = live_renderer();
 
+	snprintf(capsule, sizeof(capsule), "%s/capsule.glb", f->dir);
+	assert_int_equal(gltf_write_joints8(capsule, &f->mesh), 0);
 	setenv("XDG_CACHE_HOME", f->dir, 1);
 	for (size_t m = 0; m < sizeof(models) / sizeof(models[0]); m++) {
 		struct content_config c = live_config(models[m]);
@@ -545,6 +550,9 @@ static void a_live_model_starts_from_the_cache(void **state)
 		assert_int_equal(mesh_cache_anim_encode(cached.play, &b, &nb), 0);
 		assert_int_equal(na, nb);
 		assert_memory_equal(a, b, na);
+		assert_int_equal(cached.play->influences, parsed.play->influences);
+		if (m == 3)
+			assert_int_equal(cached.play->influences, 8);
 		free(a);
 		free(b);
 		t = parsed.play->anim->clips[0].duration * 7 / 16;
