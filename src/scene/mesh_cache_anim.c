@@ -284,7 +284,7 @@ static bool channel_sane(const struct mesh_anim *a, const struct anim_clip *clip
 	size_t want;
 
 	if (c->node < 0 || (size_t)c->node >= a->node_count || c->sampler < 0 ||
-	    (size_t)c->sampler >= clip->sampler_count || c->path > ANIM_WEIGHTS)
+	    (size_t)c->sampler >= clip->sampler_count)
 		return false;
 	want = c->path == ANIM_ROTATION	 ? 4
 	       : c->path == ANIM_WEIGHTS ? a->nodes[c->node].weight_count
@@ -318,11 +318,14 @@ static bool get_clip(struct get *g, const struct mesh_anim *a, struct anim_clip 
 		return clip->channel_count = 0, g->ok = false;
 	for (size_t k = 0; g->ok && k < clip->channel_count; k++) {
 		struct anim_channel *c = &clip->channels[k];
+		uint32_t path;
 
 		c->node = (int)get_u32(g);
-		c->path = (enum anim_path)get_u32(g);
+		path = get_u32(g);
 		c->sampler = (int)get_u32(g);
-		if (g->ok && !channel_sane(a, clip, c))
+		/* The path in range before it is an enum. */
+		c->path = path <= ANIM_WEIGHTS ? (enum anim_path)path : ANIM_TRANSLATION;
+		if (g->ok && (path > ANIM_WEIGHTS || !channel_sane(a, clip, c)))
 			g->ok = false;
 	}
 	return g->ok;
