@@ -46,135 +46,6 @@ static int load_model(const char *path, const struct content_config *o, struct m
 	return mesh_torus_knot(mesh, KNOT_TUBULAR, KNOT_RADIAL);
 }
 
-/* The prepared-mesh cache (scene/mesh_cache.h). */
-/* A shell says what the prepared mesh holds (vertex and index counts),
- * with no array: the renderer is given the packed mesh or the entry. */
-static void shell_counts(struct content *s, const struct mesh_packed *m)
-{
-	s->mesh.vertex_count = m->vertex_count;
-	s->mesh.index_count = m->index_count;
-}
-
-static int content_cache_lookup(struct content *s, const struct content_config *c, const char *path)
-{
-	char dir[PATH_MAX];
-	int ret = mesh_cache_scene_key(path, c->lod_pixels, &c->material, &s->cache_key);
-
-	/* Another of the file's scenes is another mesh. */
-	if (!ret && c->model_scene)
-		s->cache_key.settings =
-		    mesh_cache_hash(c->model_scene, strlen(c->model_scene), s->cache_key.settings);
-	/* A pose (--time) is another mesh, and so is the live kiosk's (an
-	 * animated model is never stored: content_prepare). */
-	if (!ret && (c->anim_time >= 0 || c->anim_live)) {
-		double t[3] = {c->anim_time, c->anim_speed, c->anim_loop};
-		const char *a = c->animation ? c->animation : "auto";
-
-		s->cache_key.settings = mesh_cache_hash(t, sizeof(t), s->cache_key.settings);
-		s->cache_key.settings = mesh_cache_hash(a, strlen(a), s->cache_key.settings);
-	}
-	/* The fit's zoom (or --zoom) sets the level of detail's pixels. */
-	if (!ret)
-		s->cache_key.settings =
-		    mesh_cache_hash(&c->fit, sizeof(c->fit), s->cache_key.settings);
-	if (!ret)
-		s->cache_key.settings =
-		    mesh_cache_hash(&c->zoom, sizeof(c->zoom), s->cache_key.settings);
-
-	if (!ret)
-		ret = mesh_cache_dir(dir, sizeof(dir));
-	s->cacheable = !ret;
-	if (!ret)
-		ret = mesh_cache_open(dir, &s->cache_key, &s->cached);
-	if (ret)
-		return ret;
-	/* An entry is written only for a model whose material decodes no
-	 * texture: its factors are all material_load needs. */
-	ret = mesh_copy_factors(&s->mesh, mesh_cache_entry_materials(s->cached));
-	if (ret)
-		return ret;
-	shell_counts(s, mesh_cache_entry_mesh(s->cached));
-	/* Said by content_prepare, once it is known to be used. */
-	log_debug("%s: a prepared mesh in the cache", path);
-	return 0;
-}
-
-static bool content_cache_fits(const struct content *s, int width, int height)
-{
-	const struct mesh_cache_key *k = s->cached ? mesh_cache_entry_key(s->cached) : NULL;
-
-	return k && k->width == (uint32_t)width && k->height == (uint32_t)height;
-}
-
-static bool decoded_images(const struct mesh *mesh)
-{
-	const struct mesh_material *m = &mesh->material;
-	bool any = m->normal_map.width || m->occlusion_map.width || m->thickness_map.width ||
-		   m->base_map.width;
-
-	for (uint32_t k = 0; k < mesh->material_count; k++) {
-		m = &mesh->materials[k];
-		any |= m->normal_map.width || m->occlusion_map.width || m->thickness_map.width ||
-		       m->base_map.width;
-	}
-	return any;
-}
-
-/* The prepared mesh packed as the GPU and the cache take it; the mesh's
- * own arrays are given back (the material stays: material_load and a
- * reload read it; it holds no image here). */
-static void content_cache_pack(struct content *s, int width, int height)
-{
-	struct mesh_material material = s->mesh.material;
-	struct mesh_material *materials = s->mesh.materials;
-	uint32_t material_count = s->mesh.material_count;
-
-	if (!s->cacheable || s->play || decoded_images(&s->mesh) ||
-	    mesh_pack(&s->mesh, VERTEX_COMPACT, &s->packed))
-		return;
-	s->cache_key.width = (uint32_t)width;
-	s->cache_key.height = (uint32_t)height;
-	mesh_material_default(&s->mesh.material);
-	s->mesh.materials = NULL;
-	s->mesh.material_count = 0;
-	mesh_release(&s->mesh);
-	s->mesh.material = material;
-	s->mesh.materials = materials;
-	s->mesh.material_count = material_count;
-	shell_counts(s, &s->packed);
-}
-
-/* Once uploaded, the packed mesh goes to the cache on a thread of its
- * own (the first frame does not wait for the disk), which frees it. */
-static void content_cache_store(struct content *s)
-{
-	char dir[PATH_MAX];
-
-	if (!s->packed.vertex_count || mesh_cache_dir(dir, sizeof(dir)))
-		return;
-	s->writer =
-	    mesh_cache_write_async(dir, &s->cache_key, &s->packed, &s->mesh, MESH_CACHE_MAX_BYTES);
-}
-
-/* A shell whose packed mesh went to the cache: uploaded again (a reload
- * that failed), it is read back from the entry. */
-static int content_cache_reopen(struct content *s)
-{
-	char dir[PATH_MAX];
-	int ret;
-
-	if (s->cached || s->packed.vertex_count || s->mesh.positions || !s->mesh.index_count)
-		return 0;
-	mesh_cache_writer_join(s->writer);
-	s->writer = NULL;
-	ret = mesh_cache_dir(dir, sizeof(dir));
-	if (!ret)
-		ret = mesh_cache_open(dir, &s->cache_key, &s->cached);
-	if (ret)
-		log_err("the prepared mesh is neither in memory nor in the cache");
-	return ret;
-}
-
 const char *content_default_matcaps(void)
 {
 	/* Installed data first; the source tree's folder when run from it. */
@@ -396,6 +267,7 @@ static void release_model(struct content *s)
 {
 	mesh_cache_writer_join(s->writer);
 	mesh_packed_release(&s->packed);
+	free(s->play_bytes);
 	mesh_cache_entry_free(s->cached);
 	mesh_release(&s->mesh);
 	content_play_release(s);
@@ -413,6 +285,7 @@ void content_take_model(struct content *shown, struct content *fresh, struct con
 	old->mesh = kept.mesh;
 	old->play = kept.play;
 	old->play_split = kept.play_split;
+	old->play_bytes = kept.play_bytes;
 	old->cached = kept.cached;
 	old->packed = kept.packed;
 	old->writer = kept.writer;
@@ -506,8 +379,8 @@ int content_prepare(struct content *s, const struct content_config *o, int width
 
 	o = content_settings(s, o);
 	if (content_cache_fits(s, width, height)) {
-		log_info("%s: the prepared mesh from the cache (%u triangles)", s->model_path,
-			 s->mesh.index_count / 3);
+		log_info("%s: the prepared mesh from the cache (%u triangles)%s", s->model_path,
+			 s->mesh.index_count / 3, s->play ? ", with its live playback" : "");
 		content_frame(s, o, width, height);
 		return 0;
 	}
@@ -518,6 +391,7 @@ int content_prepare(struct content *s, const struct content_config *o, int width
 		mesh_cache_entry_free(s->cached);
 		s->cached = NULL;
 		mesh_release(&s->mesh);
+		content_play_release(s);
 		ret = load_model(s->model_path, o, &s->mesh, &s->play);
 	}
 	if (!ret)
@@ -564,12 +438,13 @@ int content_upload_model(struct content *s, struct renderer *r)
 
 	if (!ret)
 		ret = content_cache_reopen(s);
-	if (!ret && s->cached)
+	/* A model that plays first: its entry or packed copy is for the cache. */
+	if (!ret && s->play)
+		ret = content_play_upload(s, r);
+	else if (!ret && s->cached)
 		ret = renderer_set_packed(r, mesh_cache_entry_mesh(s->cached));
 	else if (!ret && s->packed.vertex_count)
 		ret = renderer_set_packed(r, &s->packed);
-	else if (!ret && s->play)
-		ret = content_play_upload(s, r);
 	else if (!ret)
 		ret = renderer_set_mesh(r, &s->mesh);
 	/* On the GPU now: the entry's pages leave the process, the packed

@@ -58,12 +58,15 @@ struct content {
 	 * (config/model_settings.h); NULL: the caller's (the built-in knot). */
 	struct content_config *own;
 	/* What live playback needs beside the mesh (scene/anim_play.h); NULL:
-	 * a still. Its mesh keeps its arrays (neither packed nor cached: the
-	 * cache would have to store the parts, skins and targets too) and has
-	 * no level of detail: the poses write its vertices by number, and a
-	 * simplified skin would need its joints and weights carried through
-	 * each collapse. */
+	 * a still. Its mesh keeps its arrays (the poses write them; the
+	 * cache's entry holds a float32 copy, and the play's data in a
+	 * section of its own: scene/mesh_cache_anim.h) and has no level of
+	 * detail: the poses write its vertices by number, and a simplified
+	 * skin would need its joints and weights carried through each
+	 * collapse. */
 	struct anim_play *play;
+	void *play_bytes; /* the play's data for the cache entry, until stored */
+	size_t play_size;
 	bool play_gpu; /* uploaded skinned on the GPU (content_play_upload) */
 	/* Its palette cut into draws (more bones than one holds); NULL: one. */
 	struct anim_play_split *play_split;
@@ -116,6 +119,16 @@ int content_upload_look(struct content *s, struct renderer *r);
 /* Open the matcaps c names (c's default folder when none); strict: a
  * named one that fails fails, else the built-in clay replaces it. */
 int content_load_matcap(const struct content_config *c, bool strict, struct content *s);
+/* src/content/content_cache.c, for content.c: the entry of path with
+ * c's settings into s (0), else a miss (s->cacheable: one can be
+ * written); whether it was prepared for this display; the prepared mesh
+ * packed for the cache; stored once uploaded; read back when a shell is
+ * uploaded again. */
+int content_cache_lookup(struct content *s, const struct content_config *c, const char *path);
+bool content_cache_fits(const struct content *s, int width, int height);
+void content_cache_pack(struct content *s, int width, int height);
+void content_cache_store(struct content *s);
+int content_cache_reopen(struct content *s);
 /* src/content/content_play.c: the material's preparation (a
  * displacement's subdivision, generated tangents) may give the mesh other
  * vertices than those the poses write, or tangents a feature reads (they

@@ -1,4 +1,5 @@
 #include "scene/mesh_cache.h"
+#include "scene/mesh_cache_anim.h"
 #include "util/file.h"
 #include "util/log.h"
 
@@ -16,7 +17,7 @@
 
 /* Changed whenever the layout or the preparation changes: an entry of
  * another version is stale. */
-#define CACHE_VERSION 4
+#define CACHE_VERSION 5
 #define CACHE_SUFFIX  ".mkmesh"
 
 static const char cache_magic[8] = {'M', 'K', 'M', 'E', 'S', 'H', '\r', '\n'};
@@ -34,6 +35,9 @@ struct cache_header {
 	uint32_t range_count, material_count; /* the model's material comes first */
 	uint32_t width, height;
 	uint64_t payload_size, payload_hash;
+	/* The live playback's section (mesh_cache_anim.c) at the payload's
+	 * end, in bytes; 0: a still. */
+	uint64_t anim_size;
 	uint64_t header_hash; /* of every byte before it */
 };
 
@@ -46,6 +50,7 @@ struct mesh_cache_entry {
 	struct mesh_packed mesh;
 	struct mesh materials; /* no arrays: the materials and ranges */
 	struct mesh_cache_key key;
+	struct anim_play *play; /* read from the anim section; NULL: a still */
 };
 
 static size_t padded(size_t n)
@@ -62,8 +67,9 @@ static uint64_t record_words(const struct cache_header *h)
 }
 
 /* The payload's layout: each present array, then the indices, then the
- * records, each starting on 8 bytes. Returns its size. */
-static uint64_t payload_layout(const struct cache_header *h, uint64_t offset[MESH_ARRAYS + 2])
+ * records, then the anim section, each starting on 8 bytes. Returns its
+ * size. */
+static uint64_t payload_layout(const struct cache_header *h, uint64_t offset[MESH_ARRAYS + 3])
 {
 	uint64_t total = 0;
 
@@ -76,7 +82,8 @@ static uint64_t payload_layout(const struct cache_header *h, uint64_t offset[MES
 	}
 	offset[MESH_ARRAYS] = total;
 	offset[MESH_ARRAYS + 1] = total + padded((uint64_t)h->index_count * 4);
-	return offset[MESH_ARRAYS + 1] + padded(record_words(h) * 4);
+	offset[MESH_ARRAYS + 2] = offset[MESH_ARRAYS + 1] + padded(record_words(h) * 4);
+	return offset[MESH_ARRAYS + 2] + padded(h->anim_size);
 }
 
 static bool header_sane(const struct cache_header *h, size_t size)
@@ -89,7 +96,7 @@ static bool header_sane(const struct cache_header *h, size_t size)
 	       !(h->arrays >> MESH_ARRAYS) && h->index_count % 3 == 0 && h->index_count &&
 	       h->vertex_count && h->position_scale > 0.0f && h->position_scale <= 1e30f &&
 	       h->range_count <= h->index_count / 3 && h->material_count <= h->index_count / 3 &&
-	       (h->range_count == 0) == (h->material_count == 0);
+	       h->anim_size <= size && (h->range_count == 0) == (h->material_count == 0);
 }
 
 /* The records into materials (allocated), each checked: the ranges in
@@ -129,7 +136,7 @@ int mesh_cache_parse(const void *data, size_t size, const struct mesh_cache_key 
 {
 	struct cache_header h;
 	struct mesh shell;
-	uint64_t offset[MESH_ARRAYS + 2];
+	uint64_t offset[MESH_ARRAYS + 3];
 	int ret;
 	const char *payload = (const char *)data + sizeof(h);
 	const uint32_t *idx;
@@ -174,6 +181,23 @@ int mesh_cache_parse(const void *data, size_t size, const struct mesh_cache_key 
 	if (found)
 		*found = (struct mesh_cache_key){h.content, h.settings, h.width, h.height};
 	return 0;
+}
+
+int mesh_cache_parse_play(const void *data, size_t size, struct anim_play **out)
+{
+	struct cache_header h;
+	uint64_t offset[MESH_ARRAYS + 3];
+
+	*out = NULL;
+	if (size < sizeof(h))
+		return -EBADMSG;
+	memcpy(&h, data, sizeof(h));
+	if (!header_sane(&h, size) || payload_layout(&h, offset) != size - sizeof(h))
+		return -EBADMSG;
+	if (!h.anim_size)
+		return 0;
+	return mesh_cache_anim_decode((const char *)data + sizeof(h) + offset[MESH_ARRAYS + 2],
+				      (size_t)h.anim_size, h.vertex_count, out);
 }
 
 void mesh_cache_reseal(void *data, size_t size)
@@ -237,6 +261,8 @@ int mesh_cache_open(const char *dir, const struct mesh_cache_key *key,
 		ret = map_entry(path, e);
 	if (!ret)
 		ret = mesh_cache_parse(e->map, e->size, key, &e->mesh, &e->materials, &e->key);
+	if (!ret)
+		ret = mesh_cache_parse_play(e->map, e->size, &e->play);
 	if (ret == -EBADMSG) {
 		log_warn("%s: a damaged or stale cache entry, removed; the model is prepared again",
 			 path);
@@ -271,6 +297,14 @@ const struct mesh_cache_key *mesh_cache_entry_key(const struct mesh_cache_entry 
 	return &e->key;
 }
 
+struct anim_play *mesh_cache_entry_take_play(struct mesh_cache_entry *e)
+{
+	struct anim_play *p = e->play;
+
+	e->play = NULL;
+	return p;
+}
+
 void mesh_cache_entry_free(struct mesh_cache_entry *e)
 {
 	if (!e)
@@ -278,6 +312,7 @@ void mesh_cache_entry_free(struct mesh_cache_entry *e)
 	if (e->map)
 		munmap(e->map, e->size);
 	mesh_release(&e->materials);
+	anim_play_free(e->play);
 	free(e);
 }
 
@@ -314,9 +349,9 @@ static void write_records(const struct cache_header *h, const struct mesh_packed
 
 /* The payload in layout order, hashed as it goes. */
 static int write_payload(int fd, const struct cache_header *h, const struct mesh_packed *m,
-			 const struct mesh *materials, uint64_t *hash_out)
+			 const struct mesh *materials, const void *anim, uint64_t *hash_out)
 {
-	uint64_t offset[MESH_ARRAYS + 2];
+	uint64_t offset[MESH_ARRAYS + 3];
 	size_t size = (size_t)payload_layout(h, offset);
 	char *buf = malloc(size + 1);
 	int ret;
@@ -331,6 +366,8 @@ static int write_payload(int fd, const struct cache_header *h, const struct mesh
 				   mesh_array_stride(m->format, (enum mesh_array)a));
 	memcpy(buf + offset[MESH_ARRAYS], m->indices, (size_t)m->index_count * 4);
 	write_records(h, m, materials, (uint32_t *)(void *)(buf + offset[MESH_ARRAYS + 1]));
+	if (h->anim_size)
+		memcpy(buf + offset[MESH_ARRAYS + 2], anim, (size_t)h->anim_size);
 	*hash_out = mesh_cache_hash(buf, size, h->content);
 	ret = write_all(fd, buf, size);
 	free(buf);
@@ -338,9 +375,9 @@ static int write_payload(int fd, const struct cache_header *h, const struct mesh
 }
 
 static void fill_header(struct cache_header *h, const struct mesh_cache_key *key,
-			const struct mesh_packed *m, const struct mesh *materials)
+			const struct mesh_packed *m, const struct mesh *materials, size_t anim_size)
 {
-	uint64_t offset[MESH_ARRAYS + 2];
+	uint64_t offset[MESH_ARRAYS + 3];
 
 	memset(h, 0, sizeof(*h));
 	memcpy(h->magic, cache_magic, 8);
@@ -361,6 +398,7 @@ static void fill_header(struct cache_header *h, const struct mesh_cache_key *key
 		h->range_count = m->range_count;
 		h->material_count = materials->material_count;
 	}
+	h->anim_size = anim_size;
 	h->payload_size = payload_layout(h, offset);
 }
 
@@ -443,6 +481,13 @@ static void trim(const char *dir, uint64_t max_bytes)
 int mesh_cache_write(const char *dir, const struct mesh_cache_key *key, const struct mesh_packed *m,
 		     const struct mesh *materials, uint64_t max_bytes)
 {
+	return mesh_cache_write_play(dir, key, m, materials, NULL, 0, max_bytes);
+}
+
+int mesh_cache_write_play(const char *dir, const struct mesh_cache_key *key,
+			  const struct mesh_packed *m, const struct mesh *materials,
+			  const void *anim, size_t anim_size, uint64_t max_bytes)
+{
 	char path[PATH_MAX];
 	struct cache_header h;
 	struct file_atomic a;
@@ -454,11 +499,11 @@ int mesh_cache_write(const char *dir, const struct mesh_cache_key *key, const st
 		ret = file_atomic_begin(&a, path, 0644);
 	if (ret)
 		goto out;
-	fill_header(&h, key, m, materials);
+	fill_header(&h, key, m, materials, anim ? anim_size : 0);
 	/* The header last, once the payload's checksum is known. */
 	ret = lseek(a.fd, (off_t)sizeof(h), SEEK_SET) < 0 ? -errno : 0;
 	if (!ret)
-		ret = write_payload(a.fd, &h, m, materials, &h.payload_hash);
+		ret = write_payload(a.fd, &h, m, materials, anim, &h.payload_hash);
 	h.header_hash = mesh_cache_hash(&h, offsetof(struct cache_header, header_hash), 0);
 	if (!ret)
 		ret = pwrite(a.fd, &h, sizeof(h), 0) == (ssize_t)sizeof(h) ? 0 : -EIO;
@@ -479,6 +524,8 @@ struct mesh_cache_writer {
 	struct mesh_cache_key key;
 	struct mesh_packed mesh;
 	struct mesh materials; /* a copy: factors only, no arrays, no images */
+	void *anim;	       /* the anim section's bytes, taken over; NULL: a still */
+	size_t anim_size;
 	uint64_t max_bytes;
 };
 
@@ -486,15 +533,26 @@ static void *write_entry(void *arg)
 {
 	struct mesh_cache_writer *w = arg;
 
-	mesh_cache_write(w->dir, &w->key, &w->mesh, &w->materials, w->max_bytes);
+	mesh_cache_write_play(w->dir, &w->key, &w->mesh, &w->materials, w->anim, w->anim_size,
+			      w->max_bytes);
 	mesh_packed_release(&w->mesh);
 	free(w->materials.materials);
+	free(w->anim);
 	return NULL;
 }
 
 struct mesh_cache_writer *mesh_cache_write_async(const char *dir, const struct mesh_cache_key *key,
 						 struct mesh_packed *m,
 						 const struct mesh *materials, uint64_t max_bytes)
+{
+	return mesh_cache_write_async_play(dir, key, m, materials, NULL, 0, max_bytes);
+}
+
+struct mesh_cache_writer *mesh_cache_write_async_play(const char *dir,
+						      const struct mesh_cache_key *key,
+						      struct mesh_packed *m,
+						      const struct mesh *materials, void *anim,
+						      size_t anim_size, uint64_t max_bytes)
 {
 	struct mesh_cache_writer *w = calloc(1, sizeof(*w));
 
@@ -503,6 +561,8 @@ struct mesh_cache_writer *mesh_cache_write_async(const char *dir, const struct m
 	    snprintf(w->dir, sizeof(w->dir), "%s", dir) < (int)sizeof(w->dir)) {
 		w->key = *key;
 		w->mesh = *m;
+		w->anim = anim;
+		w->anim_size = anim_size;
 		w->max_bytes = max_bytes;
 		memset(m, 0, sizeof(*m));
 		if (!pthread_create(&w->thread, NULL, write_entry, w))
@@ -512,8 +572,9 @@ struct mesh_cache_writer *mesh_cache_write_async(const char *dir, const struct m
 	if (w)
 		free(w->materials.materials);
 	free(w);
-	mesh_cache_write(dir, key, m, materials, max_bytes);
+	mesh_cache_write_play(dir, key, m, materials, anim, anim_size, max_bytes);
 	mesh_packed_release(m);
+	free(anim);
 	return NULL;
 }
 

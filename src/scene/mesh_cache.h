@@ -65,6 +65,10 @@ const struct mesh *mesh_cache_entry_materials(const struct mesh_cache_entry *e);
 void mesh_cache_entry_evict(const struct mesh_cache_entry *e);
 /* The key the entry was written with (its display's size included). */
 const struct mesh_cache_key *mesh_cache_entry_key(const struct mesh_cache_entry *e);
+/* An entry of a model that plays live: what playback needs, read back
+ * and checked when the entry was opened, handed to the caller (to
+ * anim_play_free); NULL for a still's entry (or once taken). */
+struct anim_play *mesh_cache_entry_take_play(struct mesh_cache_entry *e);
 void mesh_cache_entry_free(struct mesh_cache_entry *e);
 
 /* Check an entry's bytes (what mesh_cache_open does once mapped): 0 and
@@ -74,6 +78,12 @@ void mesh_cache_entry_free(struct mesh_cache_entry *e);
  * ranges point at its. */
 int mesh_cache_parse(const void *data, size_t size, const struct mesh_cache_key *key,
 		     struct mesh_packed *out, struct mesh *materials, struct mesh_cache_key *found);
+
+/* The anim section of an entry's bytes (mesh_cache_anim.h), checked:
+ * 0 with *out NULL (a still) or the playback data, -EBADMSG or -ENOMEM.
+ * mesh_cache_open calls it after mesh_cache_parse. */
+struct anim_play;
+int mesh_cache_parse_play(const void *data, size_t size, struct anim_play **out);
 
 /* For the fuzzer: recompute an entry's checksums in place (what a
  * deliberate forgery would do), so that the fields behind them are what
@@ -87,6 +97,12 @@ void mesh_cache_reseal(void *data, size_t size);
 int mesh_cache_write(const char *dir, const struct mesh_cache_key *key, const struct mesh_packed *m,
 		     const struct mesh *materials, uint64_t max_bytes);
 
+/* mesh_cache_write with a model's live playback data: the bytes of
+ * mesh_cache_anim_encode (anim NULL: a still's entry). */
+int mesh_cache_write_play(const char *dir, const struct mesh_cache_key *key,
+			  const struct mesh_packed *m, const struct mesh *materials,
+			  const void *anim, size_t anim_size, uint64_t max_bytes);
+
 /* mesh_cache_write on a thread of its own, so that the first frame does
  * not wait for the disk: m's arrays are taken over (m is left empty) and
  * freed once written. When no thread can start, the entry is written
@@ -95,6 +111,12 @@ struct mesh_cache_writer;
 struct mesh_cache_writer *mesh_cache_write_async(const char *dir, const struct mesh_cache_key *key,
 						 struct mesh_packed *m,
 						 const struct mesh *materials, uint64_t max_bytes);
+/* The same with the anim section's bytes (malloc'd), taken over too. */
+struct mesh_cache_writer *mesh_cache_write_async_play(const char *dir,
+						      const struct mesh_cache_key *key,
+						      struct mesh_packed *m,
+						      const struct mesh *materials, void *anim,
+						      size_t anim_size, uint64_t max_bytes);
 /* Waits for the entry to be written, and frees w (NULL: nothing). */
 void mesh_cache_writer_join(struct mesh_cache_writer *w);
 

@@ -75,7 +75,7 @@ done
 # the level of detail a still has): launch to "ready: the first frame" in
 # the journal, then after 3 s of playing (30 fps) the process's peak and
 # current RSS (/proc/PID/status). Cold: an empty cache; warm: the entry
-# the cold start wrote (a model that plays bypasses the cache).
+# the cold start wrote (a model that plays: its mesh and playback data).
 echo
 echo "## start-up and memory, playing against still ($(uname -m), $(nproc) cores, osmesa 1280x720, median of 3)"
 echo
