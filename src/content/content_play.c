@@ -15,9 +15,8 @@ void content_play_check(struct content *s)
 		s->mesh.tangents = NULL;
 	}
 	if (s->play && s->play->vertex_count == s->mesh.vertex_count && !s->mesh.tangents) {
-		log_info("%s: plays live at full detail and is not cached: a simplified or "
-			 "cached mesh would need its parts' joints, weights and targets carried "
-			 "through each collapse and into the cache",
+		log_info("%s: plays live at full detail: a simplified mesh would need its "
+			 "parts' joints, weights and targets carried through each collapse",
 			 s->model_path);
 		return;
 	}
