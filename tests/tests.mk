@@ -131,14 +131,14 @@ $(TOOLS_DIR)/bench_quality: tests/bench/bench_quality.c tests/bench/bench_qualit
 test-tools: $(TOOLS_DIR)/bench_quality
 
 # The caption's cost a frame, for `make bench`.
-$(TOOLS_DIR)/bench_caption: tests/bench/bench_caption.c tests/bench/bench_clock.h $(LIB_OBJS)
+$(TOOLS_DIR)/bench_caption: tests/bench/bench_caption.c tests/bench/bench_clock.h tests/bench/bench_display.h $(LIB_OBJS)
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) -o $@ $< $(LIB_OBJS) $(TEST_LIBS)
 
 test-tools: $(TOOLS_DIR)/bench_caption
 
 # Live playback's cost a frame, for `make bench`.
-$(TOOLS_DIR)/bench_anim_live: tests/bench/bench_anim_live.c tests/bench/bench_clock.h $(LIB_OBJS)
+$(TOOLS_DIR)/bench_anim_live: tests/bench/bench_anim_live.c tests/bench/bench_clock.h tests/bench/bench_display.h $(LIB_OBJS)
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) -o $@ $< $(LIB_OBJS) $(TEST_LIBS)
 

@@ -11,6 +11,7 @@
 #include "util/log.h"
 
 #include "bench_clock.h"
+#include "bench_display.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -47,12 +48,7 @@ int main(int argc, char **argv)
 	}
 	log_set_level(LOG_WARN);
 	c.logo = argv[3];
-#ifdef MK_HAVE_OSMESA
-	if (!strcmp(argv[1], "osmesa"))
-		d = display_osmesa_new(&cfg);
-#endif
-	if (!strcmp(argv[1], "egl-headless"))
-		d = display_egl_new(&cfg);
+	d = bench_display_open(argv[1], &cfg);
 	if (!d || d->begin_frame(d))
 		return 1;
 	t = bench_now_ms();
