@@ -103,6 +103,9 @@ SHADERS += shaders/background.vert shaders/background.frag
 SHADERS += shaders/caption.vert shaders/caption.frag
 
 LIB_OBJS := $(LIB_C:%=$(BUILD)/%.o) $(LIB_CC:%=$(BUILD)/%.o) $(BUILD)/shaders_embedded.o
+# The tests and tools link the same objects from an archive, so that each
+# binary takes only the objects it calls (tests/tests.mk).
+LIB_ARCHIVE := $(BUILD)/libkiosk.a
 
 KIOSK ?= matcap-kiosk
 
@@ -124,6 +127,10 @@ $(BUILD)/shaders_embedded.c: shaders/embed.sh $(SHADERS) | $(BUILD)
 
 $(BUILD)/shaders_embedded.o: $(BUILD)/shaders_embedded.c
 	$(CC) $(ALL_CFLAGS) -c -o $@ $<
+
+$(LIB_ARCHIVE): $(LIB_OBJS)
+	@rm -f $@
+	$(AR) rcs $@ $^
 
 $(BUILD):
 	mkdir -p $@

@@ -49,7 +49,7 @@ CROSS_SANITIZE := -fsanitize=undefined -fno-sanitize-recover=all
 CROSS_CXXFLAGS_armhf := -Wno-psabi
 CROSS_MAKE = $(MAKE) --no-print-directory BUILD=$(CROSS_BUILD) KIOSK=$(CROSS_BUILD)/matcap-kiosk \
 	CXXFLAGS="$(CROSS_CXXFLAGS_$(ARCH))" \
-	CC="$(CROSS_TRIPLET)-gcc --sysroot=$(CROSS_SYSROOT)" \
+	CC="$(CROSS_TRIPLET)-gcc --sysroot=$(CROSS_SYSROOT)" AR=$(CROSS_TRIPLET)-ar \
 	CXX="$(CROSS_TRIPLET)-g++ --sysroot=$(CROSS_SYSROOT)" PKG_CONFIG="$(CROSS_PKG_CONFIG)"
 
 cross-arch:

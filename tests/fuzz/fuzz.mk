@@ -50,9 +50,9 @@ fuzz: fuzzers
 fuzz-long:
 	$(MAKE) fuzz FUZZ_SECONDS=1800 FUZZ_JOBS=2
 
-$(TOOLS_DIR)/mkseeds: tests/fuzz/mkseeds.c tests/tools/gltf_write.c $(LIB_OBJS)
+$(TOOLS_DIR)/mkseeds: tests/fuzz/mkseeds.c $(TESTKIT) $(LIB_ARCHIVE)
 	@mkdir -p $(@D)
-	$(CC) $(TEST_CFLAGS) -o $@ $< tests/tools/gltf_write.c $(LIB_OBJS) $(TEST_LIBS)
+	$(CC) $(TEST_CFLAGS) -o $@ $< $(TEST_LINK)
 
 fuzz-seeds: $(TOOLS_DIR)/mkseeds
 	$(TOOLS_DIR)/mkseeds tests/fuzz/corpus

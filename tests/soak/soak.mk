@@ -6,9 +6,9 @@
 #                valgrind on 1,000 frames (a reload every 50)
 # `make test` runs 100,000 frames (a reload every 10,000) and valgrind on 400.
 
-$(TOOLS_DIR)/soak: tests/soak/soak.c tests/tools/gltf_write.c $(LIB_OBJS)
+$(TOOLS_DIR)/soak: tests/soak/soak.c $(TESTKIT) $(LIB_ARCHIVE)
 	@mkdir -p $(@D)
-	$(CC) $(TEST_CFLAGS) -o $@ $< tests/tools/gltf_write.c $(LIB_OBJS) $(TEST_LIBS)
+	$(CC) $(TEST_CFLAGS) -o $@ $< $(TEST_LINK)
 
 soak: $(TOOLS_DIR)/soak
 	SOAK=$(TOOLS_DIR)/soak SOAK_FRAMES=500000 SOAK_RELOAD_EVERY=10000 \
