@@ -39,6 +39,10 @@ struct content_config {
 	 * setting); [scene] animation_fps (0: the display's rate) and
 	 * animation_pause_after (seconds without input; 0: never). */
 	bool anim_live;
+	/* --check-config (not a setting): a clip the model lacks fails the
+	 * load, as --time's does, and the cache is passed by (its entry
+	 * for such a model is a still's and says nothing of the clip). */
+	bool anim_strict;
 	double anim_fps;
 	double anim_pause_after;
 };

@@ -33,7 +33,7 @@ static int load_model(const char *path, const struct content_config *o, struct m
 					 .scene = o->model_scene,
 					 .scene_setting = "[scene] model_scene",
 					 .play = o->anim_live ? play : NULL,
-					 .animation_optional = o->anim_live,
+					 .animation_optional = o->anim_live && !o->anim_strict,
 					 .pose = o->anim_time >= 0 || o->anim_live,
 					 .animation = o->animation,
 					 .animation_setting = "[scene] animation",
@@ -140,6 +140,8 @@ static int load_mesh(struct content *s, const struct content_config *o, const ch
 	if (ret)
 		return ret;
 	o = s->own;
+	if (o->anim_strict)
+		return load_model(path, o, &s->mesh, &s->play);
 	return content_cache_lookup(s, o, path) ? load_model(path, o, &s->mesh, &s->play) : 0;
 }
 

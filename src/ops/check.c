@@ -7,7 +7,9 @@
 #include "content/model_list.h"
 #include "content/matcap_set.h"
 #include "render/background.h"
+#include "scene/anim.h"
 #include "scene/caption.h"
+#include "state/view.h"
 #include "util/image.h"
 #include "util/log.h"
 
@@ -21,6 +23,7 @@ struct check {
 	FILE *out;
 	int bad_files;
 	int bad_settings; /* models' own NAME.ini files with errors */
+	int bad_clips;	  /* animations named that a model lacks */
 };
 
 int check_model_settings(const struct content_config *cfg, FILE *out)
@@ -125,6 +128,93 @@ static void check_own_look(struct check *c, const struct content *s)
 	}
 }
 
+/* Where a model's setting came from: its NAME.ini where that changed it,
+ * else the kiosk's file and line. */
+static void where_own(const struct check *c, const struct content *s, const char *mine,
+		      const char *kiosks, const char *section, const char *key, char *buf, size_t n)
+{
+	if (s->own && mine != kiosks && (!mine || !kiosks || strcmp(mine, kiosks)) &&
+	    model_settings_path(s->model_path, buf, n))
+		return;
+	where(c->o, def_of(section, key), buf, n);
+}
+
+/* One animation named that the model lacks, with the names it has. */
+static void no_clip(struct check *c, const char *at, const char *setting, const char *want,
+		    const struct content *s)
+{
+	const struct mesh_anim *a = s->play->anim;
+	char names[512] = "";
+	size_t len = 0;
+
+	for (size_t i = 0; i < a->clip_count && len < sizeof(names); i++)
+		if (a->clips[i].name)
+			len += (size_t)snprintf(names + len, sizeof(names) - len, "%s\"%s\"",
+						len ? ", " : ": ", a->clips[i].name);
+	log_err("%s: %s = '%s': %s has no such animation, expected auto, off, all, an index "
+		"below %zu or an animation's name%s",
+		at, setting, want, s->model_path, a->clip_count, names);
+	c->bad_clips++;
+}
+
+/* The animations the settings name, against the clips of a model that
+ * plays: the kiosk shows it still for a [scene] animation it lacks, and
+ * goes on with the clip playing at a stop whose animation= it lacks. */
+static void check_clips(struct check *c, const struct content_config *cfg, const struct content *s,
+			const char *strict)
+{
+	const struct content_config *use = s->own ? s->own : cfg;
+	struct frame_stop stops[FRAME_STOPS];
+	char at[PATH_MAX + 16], err[256];
+	int n;
+
+	if (*strict) { /* the load's own words, with the names the file has */
+		where_own(c, s, use->animation, cfg->animation, "scene", "animation", at,
+			  sizeof(at));
+		log_err("%s: [scene] animation = '%s': %s", at,
+			use->animation ? use->animation : "auto", strict);
+		c->bad_clips++;
+	}
+	if (!s->play)
+		return; /* a still model: nothing named plays */
+	n = use->frame.stops
+		? frame_stops_parse(use->frame.stops, stops, FRAME_STOPS, err, sizeof(err))
+		: 0;
+	for (int i = 0; i < n; i++) {
+		char setting[64];
+
+		if (!stops[i].animation[0] ||
+		    anim_clip_find(s->play->anim, stops[i].animation) != -2) /* all: -1 */
+			continue;
+		where_own(c, s, use->frame.stops, cfg->frame.stops, "frame", "stops", at,
+			  sizeof(at));
+		snprintf(setting, sizeof(setting), "[frame] stops (stop %d) animation", i + 1);
+		no_clip(c, at, setting, stops[i].animation, s);
+	}
+}
+
+/* The model loaded as the live kiosk loads it, but for a clip the
+ * settings name that it lacks: the kiosk shows it still, and the check
+ * says so. A load that fails for that alone is done again without the
+ * clips (strict: its cause); one that fails again is the file's. */
+static int load(const struct check *c, const struct content_config *cfg, const char *path,
+		const struct content_look *look, struct content *s, char *strict, size_t n)
+{
+	struct content_config again = *cfg;
+	int w = c->o->display.width, h = c->o->display.height;
+	int ret = content_load_model(s, cfg, path, look, w, h);
+
+	if (!ret)
+		return 0;
+	log_last_error(strict, n);
+	again.anim_strict = false;
+	log_clear_last_error();
+	ret = content_load_model(s, &again, path, look, w, h);
+	if (ret)
+		strict[0] = '\0';
+	return ret;
+}
+
 /* A folder's or list's models each (the kiosk passes over one that fails,
  * with a line in the journal, but it was named to be shown). */
 static void check_models(struct check *c, const struct content_config *cfg)
@@ -145,6 +235,7 @@ static void check_models(struct check *c, const struct content_config *cfg)
 	}
 	for (int i = 0; i < model_list_count(l); i++) {
 		const char *path = model_list_path(l, i);
+		char strict[768] = "";
 		int ret;
 
 		log_clear_last_error();
@@ -152,12 +243,12 @@ static void check_models(struct check *c, const struct content_config *cfg)
 		 * opened too: those that differ from the kiosk's. */
 		ret = content_look_set(&look, cfg);
 		if (!ret)
-			ret = content_load_model(&s, cfg, path, &look, c->o->display.width,
-						 c->o->display.height);
-		if (!ret)
+			ret = load(c, cfg, path, &look, &s, strict, sizeof(strict));
+		if (!ret) {
 			check_own_look(c, &s);
-		if (!ret)
+			check_clips(c, cfg, &s, strict);
 			content_release(&s);
+		}
 		found(c, "scene", "model", path, ret);
 	}
 	model_list_free(l);
@@ -240,6 +331,10 @@ int check_config_run(const struct options *o, FILE *out)
 	struct content_config cfg = o->content;
 	int maps;
 
+	/* Loaded as the live kiosk loads them: with what playback needs. */
+	cfg.anim_live = cfg.anim_time < 0;
+	cfg.anim_strict = true;
+
 	list_files(&c);
 	if (o->include_ignored) {
 		log_err("%s: the settings are not valid: an included file has errors (above)",
@@ -261,6 +356,13 @@ int check_config_run(const struct options *o, FILE *out)
 	if (c.bad_settings) {
 		log_err("%s: %d model%s own settings file%s errors (above)", name, c.bad_settings,
 			c.bad_settings == 1 ? "'s" : "s'", c.bad_settings == 1 ? " has" : "s have");
+		return CHECK_BAD_SETTINGS;
+	}
+	if (c.bad_clips) {
+		log_err("%s: %d animation%s named %s not in the model%s (above): the kiosk would "
+			"show it still, or at a stop go on with the one playing",
+			name, c.bad_clips, c.bad_clips == 1 ? "" : "s",
+			c.bad_clips == 1 ? "is" : "are", c.bad_clips == 1 ? "" : "s");
 		return CHECK_BAD_SETTINGS;
 	}
 	if (c.bad_files) {

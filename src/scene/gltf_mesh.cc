@@ -667,15 +667,19 @@ int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_opti
 	}
 	ret = b.error.empty() ? finish_mesh(b, m, out, fit) : -EINVAL;
 	std::string shown = gltf_ext::escape(name);
+	// A clip's fit builds the model at each of its samples (gltf_fit.cc)
+	// for its box alone: no materials, and what the model is is said for
+	// the build that is kept (the journal had it some 40 times).
+	bool say = !(fit && fit->measure);
 	if (ret == -EINVAL && !b.error.empty())
 		log_err("%s: %s", shown.c_str(), gltf_ext::escape(b.error).c_str());
-	else if (ret == 0 && !(fit && fit->measure))
+	else if (ret == 0 && say)
 		log_info("%s: %u vertices, %u triangles", shown.c_str(), out->vertex_count,
 			 out->index_count / 3);
-	if (ret == 0 && b.not_triangles)
+	if (ret == 0 && say && b.not_triangles)
 		log_info("%s: %zu primitives of points or lines left out (only triangles show)",
 			 shown.c_str(), b.not_triangles);
-	if (ret == 0)
+	if (ret == 0 && say)
 		read_materials(b, m, o->textures, images, out);
 	if (ret == 0 && orig)
 		keep_play(b, *orig, *fit, o);

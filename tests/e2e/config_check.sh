@@ -75,6 +75,41 @@ w '[frame]\nyaw = 10\n\n[kiosk]\nattract_after = 5\n' >"$dir/own/vase.ini"
 case_ model-settings-bad-key 78 "vase.ini:5: \[kiosk\] attract_after is not a setting a model's own" \
 	"$dir/own.ini" $mc
 
+# The animations the settings name, against the model's clips (two in
+# BoxAnimated, the first named "open" here): a clip it lacks is a bad
+# setting with its file and line and the names there are; the kiosk
+# would show the model still, or at a stop go on with the clip playing.
+# A still model has nothing to play: a name is no error there.
+mkdir -p "$dir/anim"
+awk '/"channels": \[/ && !n++ { sub(/"channels"/, "\"name\": \"open\", \"channels\"") } { print }' \
+	tests/corpus/khronos/BoxAnimated.gltf >"$dir/anim/box.gltf"
+w '[scene]\nmodel = anim/box.gltf\nanimation = nope\n' >"$dir/anim.ini"
+case_ animation-missing 78 "anim.ini:3: \[scene\] animation = 'nope': .*no animation \"nope\".*below 2.*\"open\"" \
+	"$dir/anim.ini" $mc
+case_ animation-missing-verdict 78 "anim.ini: 1 animation named is not in the model" "$dir/anim.ini" $mc
+w '[scene]\nmodel = anim/box.gltf\n\n[frame]\nstops = 0 0 1 animation=open; 90 0 1 animation=close; 180 0 1 animation=all\n' \
+	>"$dir/stops.ini"
+case_ stop-animation-missing 78 "stops.ini:5: \[frame\] stops (stop 2) animation = 'close': .*box.gltf has no such animation, expected .*below 2.*\"open\"" \
+	"$dir/stops.ini" $mc
+w '[scene]\nmodel = anim/box.gltf\nanimation = 1\n\n[frame]\nstops = 0 0 1 animation=open; 90 0 1 animation=all\n' \
+	>"$dir/anim-good.ini"
+case_ animations-there 0 "anim-good.ini: the settings are valid" "$dir/anim-good.ini" $mc
+# The model loads once as far as the journal tells: the clip's fit builds
+# it at each of its samples, and each build said what the model is.
+if [ "$(grep -c 'box.gltf: 2 materials' "$dir/animations-there.out")" = 1 ]; then
+	echo "ok an animated model's load says what it is once"
+else
+	echo "not ok an animated model's load says what it is once:"
+	sed 's/^/    /' "$dir/animations-there.out"
+fi
+w '[frame]\nstops = 0 0 1 animation=shut\n' >"$dir/anim/box.ini"
+w '[scene]\nmodel = anim/box.gltf\n' >"$dir/anim-own.ini"
+case_ stop-animation-missing-own 78 "$dir/anim/box.ini: \[frame\] stops (stop 1) animation = 'shut': .*box.gltf has no such animation" \
+	"$dir/anim-own.ini" $mc
+rm "$dir/anim/box.ini"
+w '[scene]\nmodel = srv/sphere.glb\nanimation = nope\n' >"$dir/anim-still.ini"
+case_ animation-on-a-still-model 0 "anim-still.ini: the settings are valid" "$dir/anim-still.ini" $mc
+
 w '[kiosk]\ninclude = typo.ini\n' >"$dir/inc.ini"
 w '[scene]\nmodle = x.glb\n' >"$dir/typo.ini"
 case_ include-with-errors 78 "typo.ini:2: unknown key 'modle'" "$dir/inc.ini" $mc
