@@ -313,6 +313,18 @@ test_cli() {
 		r 48x48 >$out/bad/cached-other.log &&
 		! grep -q 'from the cache' $out/bad/cached-other.log &&
 		grep -q 'prepared for another screen size' $out/bad/cached-other.log"
+	# A model that warned as it loaded is not cached: each start says why
+	# it falls back (here the rest pose, for a clip it lacks), not the
+	# first start alone.
+	check "a model that warns is not cached: each start says it" sh -c "
+		export XDG_CACHE_HOME=$PWD/$out/cache-warned
+		r() { $KIOSK --backend $offscreen --size 64x64 --keyboard none --matcap matcaps 			--model tests/corpus/khronos/BoxAnimated.gltf --animation nope 2>\$1 & p=\$!; i=0
+			until grep -q 'first frame' \$1 || [ \$i -gt 300 ]; do sleep 0.1; i=\$((i+1)); done
+			kill -TERM \$p && wait \$p; }
+		r $out/bad/warned-1.log && r $out/bad/warned-2.log &&
+		grep -q 'no animation \"nope\".*rest pose' $out/bad/warned-2.log &&
+		grep -q 'not cached: each start says its warnings' $out/bad/warned-1.log &&
+		! grep -q 'from the cache' $out/bad/warned-2.log"
 }
 
 # Every setting that the config file takes is documented in the example.

@@ -136,13 +136,25 @@ const struct content_config *content_settings(const struct content *s,
 static int load_mesh(struct content *s, const struct content_config *o, const char *path)
 {
 	int ret = own_settings(s, o, path);
+	unsigned warned;
 
 	if (ret)
 		return ret;
 	o = s->own;
 	if (o->anim_strict)
 		return load_model(path, o, &s->mesh, &s->play);
-	return content_cache_lookup(s, o, path) ? load_model(path, o, &s->mesh, &s->play) : 0;
+	if (!content_cache_lookup(s, o, path))
+		return 0;
+	warned = log_warnings(); /* the parse's (a damaged entry is one) */
+	ret = load_model(path, o, &s->mesh, &s->play);
+	/* A model that warned (a clip it lacks, animations it cannot read) is
+	 * not cached: a start from the cache would show it as it falls back
+	 * and no longer say why. */
+	if (!ret && s->cacheable && log_warnings() != warned) {
+		log_info("%s: not cached: each start says its warnings (above)", path);
+		s->cacheable = false;
+	}
+	return ret;
 }
 
 struct try_ctx {

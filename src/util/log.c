@@ -44,6 +44,14 @@ static const char *level_word(enum log_level level)
 	}
 }
 
+/* This thread's warnings, logged or not (log_warnings). */
+static _Thread_local unsigned warnings;
+
+unsigned log_warnings(void)
+{
+	return warnings;
+}
+
 /* errno is kept: a caller may log, then return -errno. */
 void log_msg(enum log_level level, const char *fmt, ...)
 {
@@ -51,6 +59,7 @@ void log_msg(enum log_level level, const char *fmt, ...)
 	char line[1024];
 	va_list ap;
 
+	warnings += level == LOG_WARN;
 	if ((int)level > atomic_load_explicit(&max_level, memory_order_relaxed))
 		return;
 	va_start(ap, fmt);

@@ -30,6 +30,9 @@ double log_last_error_time(void);
 /* Forget it: a reload starts afresh, so that --status names a failure
  * of this reload only, and nothing after a good one. */
 void log_clear_last_error(void);
+/* How many warnings this thread has logged (at any level set): a load
+ * that warned is not cached, so that each start says it again. */
+unsigned log_warnings(void);
 void log_msg(enum log_level level, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 #define log_err(...)   log_msg(LOG_ERR, __VA_ARGS__)
