@@ -2,12 +2,22 @@
 #include "gltf_morph.h"
 
 #include <math.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-/* The buffer's views in order, one accessor each. */
-enum { POS, NRM, IDX, J0, W0, J1, W1, IBM, TIMES, ROT, VIEWS };
+/* The buffer's views in order, one accessor each: positions, normals,
+ * indices, JOINTS_n and WEIGHTS_n of each set, the inverse bind matrices,
+ * the key times and the rotations. */
+enum { POS, NRM, IDX, SETS };
+#define J(s)	    (SETS + 2 * (s))
+#define W(s)	    (SETS + 2 * (s) + 1)
+#define IBM(sets)   (SETS + 2 * (sets))
+#define TIMES(sets) (IBM(sets) + 1)
+#define ROT(sets)   (IBM(sets) + 2)
+#define VIEWS(sets) (IBM(sets) + 3)
+#define VIEWS_MAX   VIEWS(GLTF_JOINTS_SETS)
 
 /* The capsule's positions and normals (the sphere's, y doubled). */
 static void capsule(const struct mesh *m, float *pos, float *nrm)
@@ -24,38 +34,41 @@ static void capsule(const struct mesh *m, float *pos, float *nrm)
 	}
 }
 
-/* Each vertex's eight weights, a Gaussian of its distance in y to each
- * joint, summing to 1; the first four in set 0, the rest in set 1. */
-static void skin(const float *pos, uint32_t n, uint16_t *j0, float *w0, uint16_t *j1, float *w1)
+/* Each vertex's weights, a Gaussian of its distance in y to each joint,
+ * summing to 1; joints 4s to 4s + 3 in set s. */
+static void skin(const float *pos, uint32_t n, int sets, char *buf, const size_t *at)
 {
-	for (uint32_t v = 0; v < n; v++) {
-		double w[GLTF_JOINTS_COUNT], total = 0;
+	int count = 4 * sets;
 
-		for (int k = 0; k < GLTF_JOINTS_COUNT; k++) {
-			double d = (pos[v * 3 + 1] - GLTF_JOINTS_Y(k)) / 1.2;
+	for (uint32_t v = 0; v < n; v++) {
+		double w[GLTF_JOINTS_MAX], total = 0;
+
+		for (int k = 0; k < count; k++) {
+			double d = (pos[v * 3 + 1] - GLTF_JOINTS_Y(k, count)) / 1.2;
 
 			w[k] = exp(-d * d);
 			total += w[k];
 		}
-		for (int k = 0; k < 4; k++) {
-			j0[v * 4 + k] = (uint16_t)k;
-			j1[v * 4 + k] = (uint16_t)(k + 4);
-			w0[v * 4 + k] = (float)(w[k] / total);
-			w1[v * 4 + k] = (float)(w[k + 4] / total);
+		for (int k = 0; k < count; k++) {
+			uint16_t *j = (uint16_t *)(buf + at[J(k / 4)]);
+			float *wt = (float *)(buf + at[W(k / 4)]);
+
+			j[v * 4 + k % 4] = (uint16_t)k;
+			wt[v * 4 + k % 4] = (float)(w[k] / total);
 		}
 	}
 }
 
-static void keys(float *ibm, float *times, float *rot)
+static void keys(int count, float *ibm, float *times, float *rot)
 {
 	const double half = 15.0 * M_PI / 360.0;
 
-	for (int k = 0; k < GLTF_JOINTS_COUNT; k++) {
+	for (int k = 0; k < count; k++) {
 		float *m = ibm + k * 16;
 
 		memset(m, 0, 16 * sizeof(float));
 		m[0] = m[5] = m[10] = m[15] = 1;
-		m[13] = (float)-GLTF_JOINTS_Y(k);
+		m[13] = (float)-GLTF_JOINTS_Y(k, count);
 	}
 	for (int i = 0; i < 3; i++)
 		times[i] = (float)i;
@@ -65,15 +78,22 @@ static void keys(float *ibm, float *times, float *rot)
 	rot[7] = (float)cos(half);
 }
 
-static void accessor(FILE *f, int v, uint32_t n, uint32_t index_count, const float *pos)
+static void accessor(FILE *f, int v, int sets, uint32_t n, uint32_t index_count, const float *pos)
 {
-	static const char *types[VIEWS] = {"VEC3", "VEC3", "SCALAR", "VEC4",   "VEC4",
-					   "VEC4", "VEC4", "MAT4",   "SCALAR", "VEC4"};
-	int type = v == IDX ? 5125 : v == J0 || v == J1 ? 5123 : 5126;
-	uint32_t count = v == IDX ? index_count : v == IBM ? GLTF_JOINTS_COUNT : v >= TIMES ? 3 : n;
+	bool joints = v >= SETS && v < IBM(sets) && (v - SETS) % 2 == 0;
+	bool vec4 = v >= SETS && v < IBM(sets);
+	int type = v == IDX ? 5125 : joints ? 5123 : 5126;
+	uint32_t count = v == IDX	    ? index_count
+			 : v == IBM(sets)   ? 4u * (uint32_t)sets
+			 : v >= TIMES(sets) ? 3
+					    : n;
+	const char *kind = v <= NRM		    ? "VEC3"
+			   : vec4 || v == ROT(sets) ? "VEC4"
+			   : v == IBM(sets)	    ? "MAT4"
+						    : "SCALAR";
 
 	fprintf(f, "%s{\"bufferView\":%d,\"componentType\":%d,\"count\":%u,\"type\":\"%s\"",
-		v ? "," : "", v, type, count, types[v]);
+		v ? "," : "", v, type, count, kind);
 	if (v == POS) {
 		float lo[3], hi[3];
 
@@ -87,73 +107,90 @@ static void accessor(FILE *f, int v, uint32_t n, uint32_t index_count, const flo
 		fprintf(f, ",\"min\":[%.9g,%.9g,%.9g],\"max\":[%.9g,%.9g,%.9g]", lo[0], lo[1],
 			lo[2], hi[0], hi[1], hi[2]);
 	}
-	if (v == TIMES)
+	if (v == TIMES(sets))
 		fprintf(f, ",\"min\":[0],\"max\":[2]");
 	fprintf(f, "}");
 }
 
-/* Node 0 shows the mesh with skin 0; nodes 1..8 are the chain (1 at the
- * root, each next its child 0.5 up). */
-static void json(FILE *f, const struct mesh *m, const float *pos, const size_t *at,
+/* Node 0 shows the mesh with skin 0; nodes 1..count are the chain (1 at
+ * the root, each next its child one step up). */
+static void json(FILE *f, const struct mesh *m, int sets, const float *pos, const size_t *at,
 		 const size_t *len)
 {
+	int count = 4 * sets, views = VIEWS(sets);
+
 	fprintf(f, "{\"asset\":{\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{\"nodes\":[0,1]}],"
 		   "\"nodes\":[{\"mesh\":0,\"skin\":0}");
-	for (int k = 0; k < GLTF_JOINTS_COUNT; k++) {
-		fprintf(f, ",{\"translation\":[0,%g,0]", k ? 0.5 : GLTF_JOINTS_Y(0));
-		if (k + 1 < GLTF_JOINTS_COUNT)
+	for (int k = 0; k < count; k++) {
+		fprintf(f, ",{\"translation\":[0,%.9g,0]",
+			k ? 4.0 / count : GLTF_JOINTS_Y(0, count));
+		if (k + 1 < count)
 			fprintf(f, ",\"children\":[%d]", k + 2);
 		fprintf(f, "}");
 	}
-	fprintf(f, "],\"skins\":[{\"inverseBindMatrices\":%d,\"joints\":[1,2,3,4,5,6,7,8]}],", IBM);
-	fprintf(f, "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0,\"NORMAL\":1,"
-		   "\"JOINTS_0\":3,\"WEIGHTS_0\":4,\"JOINTS_1\":5,\"WEIGHTS_1\":6},"
-		   "\"indices\":2}]}],");
+	fprintf(f, "],\"skins\":[{\"inverseBindMatrices\":%d,\"joints\":[", IBM(sets));
+	for (int k = 0; k < count; k++)
+		fprintf(f, "%s%d", k ? "," : "", k + 1);
+	fprintf(f, "]}],\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0,"
+		   "\"NORMAL\":1");
+	for (int s = 0; s < sets; s++)
+		fprintf(f, ",\"JOINTS_%d\":%d,\"WEIGHTS_%d\":%d", s, J(s), s, W(s));
+	fprintf(f, "},\"indices\":2}]}],");
 	fprintf(f,
 		"\"animations\":[{\"name\":\"curl\",\"samplers\":[{\"input\":%d,\"output\":%d}],"
 		"\"channels\":[",
-		TIMES, ROT);
-	for (int k = 1; k < GLTF_JOINTS_COUNT; k++)
+		TIMES(sets), ROT(sets));
+	for (int k = 1; k < count; k++)
 		fprintf(f, "%s{\"sampler\":0,\"target\":{\"node\":%d,\"path\":\"rotation\"}}",
 			k > 1 ? "," : "", k + 1);
-	fprintf(f, "]}],\"buffers\":[{\"byteLength\":%zu}],\"bufferViews\":[", at[ROT] + len[ROT]);
-	for (int v = 0; v < VIEWS; v++)
+	fprintf(f, "]}],\"buffers\":[{\"byteLength\":%zu}],\"bufferViews\":[",
+		at[views - 1] + len[views - 1]);
+	for (int v = 0; v < views; v++)
 		fprintf(f, "%s{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu}", v ? "," : "",
 			at[v], len[v]);
 	fprintf(f, "],\"accessors\":[");
-	for (int v = 0; v < VIEWS; v++)
-		accessor(f, v, m->vertex_count, m->index_count, pos);
+	for (int v = 0; v < views; v++)
+		accessor(f, v, sets, m->vertex_count, m->index_count, pos);
 	fprintf(f, "]}");
 }
 
-int gltf_write_joints8(const char *path, const struct mesh *m)
+int gltf_write_joints(const char *path, const struct mesh *m, int sets)
 {
-	size_t n = m->vertex_count, at[VIEWS];
-	size_t len[VIEWS] = {n * 12, n * 12, (size_t)m->index_count * 4, n * 8, n * 16,
-			     n * 8,  n * 16, GLTF_JOINTS_COUNT * 64,	 12,	48};
-	char *text = NULL;
+	size_t n = m->vertex_count, at[VIEWS_MAX], len[VIEWS_MAX], size;
+	char *text = NULL, *buf;
 	size_t tlen = 0;
-	char *buf;
 	FILE *mem;
-	int ret;
+	int ret, views = VIEWS(sets);
 
+	if (sets < 1 || sets > GLTF_JOINTS_SETS || !m->normals)
+		return -1;
+	len[POS] = len[NRM] = n * 12;
+	len[IDX] = (size_t)m->index_count * 4;
+	for (int s = 0; s < sets; s++) {
+		len[J(s)] = n * 8;
+		len[W(s)] = n * 16;
+	}
+	len[IBM(sets)] = (size_t)sets * 4 * 64;
+	len[TIMES(sets)] = 12;
+	len[ROT(sets)] = 48;
 	at[0] = 0;
-	for (int v = 1; v < VIEWS; v++)
+	for (int v = 1; v < views; v++)
 		at[v] = at[v - 1] + len[v - 1]; /* every length a multiple of 4 */
-	buf = calloc(1, at[ROT] + len[ROT]);
-	if (!buf || !m->normals)
-		return free(buf), -1;
+	size = at[views - 1] + len[views - 1];
+	buf = calloc(1, size);
+	if (!buf)
+		return -1;
 	capsule(m, (float *)(buf + at[POS]), (float *)(buf + at[NRM]));
 	memcpy(buf + at[IDX], m->indices, len[IDX]);
-	skin((const float *)(buf + at[POS]), m->vertex_count, (uint16_t *)(buf + at[J0]),
-	     (float *)(buf + at[W0]), (uint16_t *)(buf + at[J1]), (float *)(buf + at[W1]));
-	keys((float *)(buf + at[IBM]), (float *)(buf + at[TIMES]), (float *)(buf + at[ROT]));
+	skin((const float *)(buf + at[POS]), m->vertex_count, sets, buf, at);
+	keys(4 * sets, (float *)(buf + at[IBM(sets)]), (float *)(buf + at[TIMES(sets)]),
+	     (float *)(buf + at[ROT(sets)]));
 	mem = open_memstream(&text, &tlen);
 	if (!mem)
 		return free(buf), -1;
-	json(mem, m, (const float *)(buf + at[POS]), at, len);
+	json(mem, m, sets, (const float *)(buf + at[POS]), at, len);
 	fclose(mem);
-	ret = gltf_write_glb(path, text, tlen, buf, at[ROT] + len[ROT]);
+	ret = gltf_write_glb(path, text, tlen, buf, size);
 	free(text);
 	free(buf);
 	return ret;

@@ -235,11 +235,12 @@ static void morph_placement_refused(void **state)
 	assert_null(p.gpu_morph);
 }
 
-/* The CPU pose of the capsule (tests/tools/gltf_joints.c) at t against
- * its still; positions and normals differ by *dp, *dn at most. Also the
- * pose with the second set's weights left out, *dropped off the still:
- * the test's own check that JOINTS_1 moves the vertices. */
-static void joints8_at(const char *path, double t, double *dp, double *dn, double *dropped)
+/* The CPU pose of the capsule of `sets` joint sets (tests/tools/
+ * gltf_joints.c) at t against its still; positions and normals differ by
+ * *dp, *dn at most. Also the pose with the last set's weights left out,
+ * *dropped off the still: the test's own check that the set moves the
+ * vertices. */
+static void joints_at(const char *path, int sets, double t, double *dp, double *dn, double *dropped)
 {
 	struct anim_play *play = NULL;
 	struct gltf_options o = {.pose = true, .time = t, .speed = 1, .play = &play};
@@ -250,7 +251,7 @@ static void joints8_at(const char *path, double t, double *dp, double *dn, doubl
 
 	assert_int_equal(gltf_load_options(path, &o, &still), 0);
 	assert_non_null(play);
-	assert_int_equal(play->influences, 8);
+	assert_int_equal(play->influences, 4 * sets);
 	n = (size_t)still.vertex_count * 3;
 	pose = anim_pose_new(play->anim);
 	pos = calloc(n, sizeof(float));
@@ -268,8 +269,8 @@ static void joints8_at(const char *path, double t, double *dp, double *dn, doubl
 			      still.positions[v * 3], still.positions[v * 3 + 1],
 			      still.positions[v * 3 + 2]);
 	for (uint32_t v = 0; v < play->vertex_count; v++)
-		for (int k = 4; k < 8; k++)
-			play->weights[(size_t)v * 8 + k] = 0;
+		for (int k = 4 * (sets - 1); k < 4 * sets; k++)
+			play->weights[(size_t)v * 4 * sets + k] = 0;
 	anim_play_pose(play, pose, pos, nrm);
 	*dropped = max_diff(pos, still.positions, n);
 	free(pos);
@@ -279,12 +280,12 @@ static void joints8_at(const char *path, double t, double *dp, double *dn, doubl
 	mesh_release(&still);
 }
 
-/* Eight joints a vertex (JOINTS_1): the CPU blends them all, as the
- * bake; the GPU path says no, and why. */
+/* Eight joints a vertex (JOINTS_1) and twelve (JOINTS_2): the CPU
+ * blends them all, as the bake; the GPU path says no, and why. */
 static void joints8(void **state)
 {
 	static const double times[] = {0.3, 1.0, 1.45}; /* 0: the bind pose */
-	char dir[] = "/tmp/mk-joints8-XXXXXX", path[64];
+	char dir[] = "/tmp/mk-joints8-XXXXXX", path[64], path12[64];
 	struct anim_play *play = NULL;
 	struct gltf_options o = {.pose = true, .speed = 1, .play = &play};
 	struct mesh sphere, m;
@@ -293,19 +294,23 @@ static void joints8(void **state)
 	(void)state;
 	assert_non_null(mkdtemp(dir));
 	snprintf(path, sizeof(path), "%s/capsule.glb", dir);
+	snprintf(path12, sizeof(path12), "%s/capsule12.glb", dir);
 	assert_int_equal(mesh_uv_sphere(&sphere, 16, 12), 0);
-	assert_int_equal(gltf_write_joints8(path, &sphere), 0);
-	for (size_t i = 0; i < sizeof(times) / sizeof(*times); i++) {
-		double dp, dn, dropped;
+	assert_int_equal(gltf_write_joints(path, &sphere, 2), 0);
+	assert_int_equal(gltf_write_joints(path12, &sphere, 3), 0);
+	for (int sets = 2; sets <= 3; sets++)
+		for (size_t i = 0; i < sizeof(times) / sizeof(*times); i++) {
+			double dp, dn, dropped;
 
-		joints8_at(path, times[i], &dp, &dn, &dropped);
-		print_message("capsule at %.2f s: positions off by %g, normals by %g; without "
-			      "JOINTS_1 off by %g\n",
-			      times[i], dp, dn, dropped);
-		assert_true(dp < 1e-5);
-		assert_true(dn < 1e-4);
-		assert_true(dropped > 0.05);
-	}
+			joints_at(sets == 2 ? path : path12, sets, times[i], &dp, &dn, &dropped);
+			print_message(
+			    "capsule of %d joints at %.2f s: positions off by %g, normals "
+			    "by %g; without JOINTS_%d off by %g\n",
+			    4 * sets, times[i], dp, dn, sets - 1, dropped);
+			assert_true(dp < 1e-5);
+			assert_true(dn < 1e-4);
+			assert_true(dropped > 0.01);
+		}
 	assert_int_equal(gltf_load_options(path, &o, &m), 0);
 	/* Most vertices weigh five joints or more (past 1%), some all eight. */
 	for (uint32_t v = 0; v < play->vertex_count; v++) {
@@ -325,6 +330,13 @@ static void joints8(void **state)
 	assert_non_null(strstr(anim_play_gpu_why(-ERANGE), "JOINTS_1"));
 	anim_play_free(play);
 	mesh_release(&m);
+	/* Twelve: the GPU path says no too. */
+	play = NULL;
+	assert_int_equal(gltf_load_options(path12, &o, &m), 0);
+	assert_int_equal(play->influences, 12);
+	assert_int_equal(anim_play_gpu_prepare(play, 1000), -ERANGE);
+	anim_play_free(play);
+	mesh_release(&m);
 	/* JOINTS_0 alone: four a vertex, the arrays as they always were. */
 	play = NULL;
 	assert_int_equal(gltf_load_options("tests/corpus/khronos/RiggedSimple.gltf", &o, &m), 0);
@@ -334,6 +346,7 @@ static void joints8(void **state)
 	mesh_release(&m);
 	mesh_release(&sphere);
 	unlink(path);
+	unlink(path12);
 	rmdir(dir);
 }
 

@@ -525,7 +525,7 @@ static void a_live_model_starts_from_the_cache(void **state)
 	struct renderer *r = live_renderer();
 
 	snprintf(capsule, sizeof(capsule), "%s/capsule.glb", f->dir);
-	assert_int_equal(gltf_write_joints8(capsule, &f->mesh), 0);
+	assert_int_equal(gltf_write_joints(capsule, &f->mesh, 2), 0);
 	setenv("XDG_CACHE_HOME", f->dir, 1);
 	for (size_t m = 0; m < sizeof(models) / sizeof(models[0]); m++) {
 		struct content_config c = live_config(models[m]);
