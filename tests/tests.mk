@@ -167,20 +167,20 @@ test-tools: $(TOOLS_DIR)/bench_anim_error
 ASAN_MAKE = $(MAKE) --no-print-directory BUILD=$(ASAN_BUILD) OPT="$(SANITIZE)" \
 	    LDFLAGS="$(SANITIZE)" KIOSK=$(ASAN_BUILD)/matcap-kiosk
 asan:
-	$(ASAN_MAKE) $(ASAN_BUILD)/matcap-kiosk unit-tests
+	+$(ASAN_MAKE) $(ASAN_BUILD)/matcap-kiosk unit-tests
 asan-kiosk:
-	@$(ASAN_MAKE) $(ASAN_BUILD)/matcap-kiosk
+	+@$(ASAN_MAKE) $(ASAN_BUILD)/matcap-kiosk
 asan-unit:
-	@$(ASAN_MAKE) unit-tests
+	+@$(ASAN_MAKE) unit-tests
 asan-test_%:
-	@$(ASAN_MAKE) $(ASAN_BUILD)/tests/test_$*
+	+@$(ASAN_MAKE) $(ASAN_BUILD)/tests/test_$*
 
 # The same with ThreadSanitizer (the content worker and the loop share
 # jobs, the log level and the last error): tests/suite.sh's tsan group.
 TSAN_MAKE = $(MAKE) --no-print-directory BUILD=$(TSAN_BUILD) OPT="$(TSANITIZE)" \
 	    LDFLAGS="-fsanitize=thread" KIOSK=$(TSAN_BUILD)/matcap-kiosk
 tsan:
-	@$(TSAN_MAKE) $(TSAN_BUILD)/matcap-kiosk unit-tests
+	+@$(TSAN_MAKE) $(TSAN_BUILD)/matcap-kiosk unit-tests
 
 # What every test script reads: the binaries and tools to run.
 TEST_ENV = KIOSK=./$(KIOSK) ASAN_KIOSK=$(ASAN_BUILD)/matcap-kiosk UNIT_DIR=$(ASAN_BUILD)/tests \
