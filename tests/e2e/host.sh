@@ -59,6 +59,13 @@ $kiosk -q --backend egl-headless --size 1024x768 --matcap matcaps/gold.png --lod
 	--antialias 4 --output "$out/ref/knot-1024x768-aa4.png" ||
 	echo "not ok reference knot-1024x768-aa4 rendered"
 
+# boot: the board with $bins, running $script, its files in $share.
+boot() {
+	# shellcheck disable=SC2086
+	tests/vm/run.sh --quiet --timeout "${VM_TIMEOUT:-240}" $bins --share "$share" \
+		${VM_RUN_FLAGS:-} -- "$script" >"$share/run.log" 2>&1
+}
+
 complete=1
 for script in "$@"; do
 	name=$(basename "$script" .sh)
@@ -76,9 +83,7 @@ for script in "$@"; do
 	done
 	# hands-board.sh plugs in USB sticks: ext2 images made here.
 	[ "$name" = hands-board ] && bins="$bins $(sh tests/e2e/sticks.sh "$out/sticks")"
-	# shellcheck disable=SC2086
-	tests/vm/run.sh --quiet --timeout "${VM_TIMEOUT:-240}" $bins --share "$share" \
-		${VM_RUN_FLAGS:-} -- "$script" >"$share/run.log" 2>&1
+	boot
 	rc=$?
 	# A board that stopped answering boots once more: 124 is the host's
 	# timeout, when the guest did not even stop its own script at
@@ -89,9 +94,7 @@ for script in "$@"; do
 	if [ $rc = 124 ] && ! grep -q '^vm: [0-9]* passed' "$share/console.log" 2>/dev/null; then
 		mv "$share/console.log" "$share/console-1.log"
 		mv "$share/run.log" "$share/run-1.log"
-		# shellcheck disable=SC2086
-		tests/vm/run.sh --quiet --timeout "${VM_TIMEOUT:-240}" $bins --share "$share" \
-			${VM_RUN_FLAGS:-} -- "$script" >"$share/run.log" 2>&1
+		boot
 		rc=$?
 		echo "ok $name: booted a second time, the first board silent until the host's" \
 			"timeout (its console: $share/console-1.log)"
