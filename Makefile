@@ -32,7 +32,7 @@ BUILD   ?= build
 # libOSMesa is opened with dlopen and libGLESv2 is never linked: every gl*
 # call goes through the table in src/render/gl.c (the README, "How it is put
 # together"). Their headers are still found through pkg-config.
-PKGS_LINK    := egl gbm libdrm libudev libpng libturbojpeg tinygltf inih libsystemd libgpiod libevdev \
+PKGS_LINK    := egl gbm libdrm libudev libpng libturbojpeg tinygltf libsystemd libgpiod libevdev \
 		libcamera draco freetype2 harfbuzz fribidi
 # Mesa 25.1 and later have no OSMesa: without its headers the osmesa
 # backend is left out (OSMESA=0 leaves it out by hand) and offscreen
@@ -74,7 +74,7 @@ SRC_APP     := app/kiosk_models app/kiosk app/kiosk_anim app/kiosk_content app/k
 SRC_OPS     := ops/check ops/import ops/import_ini ops/metrics ops/screen ops/service ops/status
 SRC_CONTENT := content/content content/content_cache content/content_look content/content_caption content/content_play content/matcap_set content/matcap_job content/model_list \
 	       content/model_loader content/worker
-SRC_CONFIG  := config/options config/model_settings config/settings config/settings_origin
+SRC_CONFIG  := config/options config/options_file config/model_settings config/settings config/settings_origin
 SRC_STATE   := state/app state/view state/power state/schedule
 SRC_DISPLAY := display/backlight display/cec display/cec_link display/display display/display_egl display/display_kms display/kms_scale \
 	       display/display_osmesa \
@@ -89,7 +89,7 @@ SRC_RENDER  := render/background render/bake render/draw_list render/framing ren
 SRC_SCENE   := scene/lod scene/material scene/mesh scene/mesh_cache scene/mesh_cache_anim scene/mesh_cache_fields scene/mesh_cache_key scene/mesh_gen scene/mesh_pack scene/subdivide scene/tangent \
 	       scene/texture scene/caption scene/caption_text
 SRC_SCENE   += scene/anim scene/anim_sampler scene/anim_palette scene/anim_play scene/anim_play_gpu scene/anim_play_split scene/anim_play_morph
-SRC_UTIL    := util/file util/folder_watch util/image util/log util/math3d
+SRC_UTIL    := util/file util/folder_watch util/image util/ini util/log util/math3d
 LIB_C  := $(SRC_APP) $(SRC_OPS) $(SRC_CONTENT) $(SRC_CONFIG) $(SRC_STATE) $(SRC_DISPLAY) $(SRC_INPUT) $(SRC_CAMERA) $(SRC_RENDER) $(SRC_SCENE) $(SRC_UTIL)
 # The C++ shims, each behind a C header (gltf_ext.h is internal to the glTF one).
 LIB_CC := scene/gltf scene/gltf_mesh scene/gltf_fs scene/gltf_material scene/gltf_ext scene/gltf_files scene/gltf_pose \
@@ -165,7 +165,7 @@ APT_GET       := $(if $(filter 0,$(shell id -u)),,sudo) env DEBIAN_FRONTEND=noni
 # (fonts-dejavu-core) unless [caption] font names another.
 DEBIAN_PACKAGES := make gcc g++ pkg-config libegl-dev libgles-dev \
 	libegl-mesa0 libgl1-mesa-dri libgbm-dev libdrm-dev libtinygltf-dev nlohmann-json3-dev \
-	libpng-dev libturbojpeg0-dev libinih-dev libudev-dev libsystemd-dev \
+	libpng-dev libturbojpeg0-dev libudev-dev libsystemd-dev \
 	libgpiod-dev libevdev-dev libcamera-dev libcamera-ipa libmeshoptimizer-dev libdraco-dev \
 	libfreetype-dev libharfbuzz-dev libfribidi-dev fonts-dejavu-core procps
 # make deps-test: the test bench on top. The unit tests' cmocka and zlib;

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 /* The keys a model's own file may hold; key NULL: the whole section. What
  * stays with the kiosk (the display, the devices, attract mode's timing)
@@ -67,38 +68,22 @@ bool model_settings_path(const char *model, char *out, size_t n)
 	return (size_t)snprintf(out, n, "%.*s.ini", (int)stem, model) < n;
 }
 
-static void dir_of(const char *path, char *dir, size_t n)
+static enum options_status read_with(struct content_config *c, const char *model, bool stick)
 {
-	const char *slash = strrchr(path, '/');
-
-	if (!slash)
-		snprintf(dir, n, ".");
-	else
-		snprintf(dir, n, "%.*s", slash == path ? 1 : (int)(slash - path), path);
-}
-
-enum options_status model_settings_read(struct content_config *c, const char *model)
-{
-	char path[PATH_MAX], dir[PATH_MAX], keys[400];
+	char path[PATH_MAX], keys[400];
+	struct options_rules rules = {model_settings_allowed, keys, "a model's own file", stick};
 	enum options_status ret = OPTIONS_CONFIG;
 	struct options o;
-	FILE *f;
 
 	if (!model_settings_path(model, path, sizeof(path)))
 		return OPTIONS_OK;
-	f = fopen(path, "r");
-	if (!f && errno == ENOENT)
+	if (access(path, F_OK) && errno == ENOENT)
 		return OPTIONS_OK;
-	if (!f) {
-		log_err("%s: cannot read the model's settings: %s", path, strerror(errno));
-		return OPTIONS_CONFIG;
-	}
 	option_defaults(&o);
 	if (content_config_copy(&o.content, c))
 		goto out;
-	dir_of(path, dir, sizeof(dir));
 	keys_text(keys, sizeof(keys));
-	ret = options_read_stream(&o, path, dir, f, model_settings_allowed, keys);
+	ret = options_read_one(&o, path, &rules);
 	if (ret == OPTIONS_OK) {
 		content_config_release(c);
 		*c = o.content;
@@ -106,7 +91,16 @@ enum options_status model_settings_read(struct content_config *c, const char *mo
 		log_debug("%s: the model's own settings", path);
 	}
 out:
-	fclose(f);
 	options_release(&o);
 	return ret;
+}
+
+enum options_status model_settings_read(struct content_config *c, const char *model)
+{
+	return read_with(c, model, false);
+}
+
+enum options_status model_settings_read_stick(struct content_config *c, const char *model)
+{
+	return read_with(c, model, true);
 }

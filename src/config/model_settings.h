@@ -20,5 +20,8 @@ bool model_settings_path(const char *model, char *out, size_t n);
  * there counts), or OPTIONS_CONFIG after logging every error with its
  * file and line (c is then left as it was). */
 enum options_status model_settings_read(struct content_config *c, const char *model);
+/* The same for a USB stick's model: its paths held to a stick's rules
+ * (relative, inside its folder, without ".."). */
+enum options_status model_settings_read_stick(struct content_config *c, const char *model);
 
 #endif

@@ -28,13 +28,35 @@ enum options_status options_read_installed(struct options *opts, const char *pat
 /* The same from memory (for the fuzzer); name is used in messages only. */
 enum options_status options_read_memory(struct options *opts, const char *name, const char *text,
 					size_t size);
-/* One stream (no drop-ins, no include), relative paths from dir (NULL:
- * as written), taking only the keys allowed(section, key) accepts (NULL:
- * all); another is an error naming allowed_text. */
-enum options_status options_read_stream(struct options *opts, const char *path, const char *dir,
-					FILE *f,
-					bool (*allowed)(const char *section, const char *key),
-					const char *allowed_text);
+
+/* Who wrote a settings file decides what it may set. */
+struct options_rules {
+	/* The keys it may hold (NULL: any); another is an error naming who
+	 * ("a USB stick") and allowed_text (what it takes). */
+	bool (*allowed)(const char *section, const char *key);
+	const char *allowed_text, *who;
+	/* A stranger's file: every path it names relative, without "..", or
+	 * inside the file's own folder. */
+	bool stick_paths;
+};
+
+/* The installed files': any key, any path. */
+extern const struct options_rules options_rules_admin;
+/* A USB stick's kiosk.ini, and the include --import writes from it. */
+extern const struct options_rules options_rules_stick;
+
+/* One file alone (no drop-ins, no include) under rules: a settings file
+ * (a plain file, at most 1 MiB, that only its owner may write), relative
+ * paths taken from its folder. */
+enum options_status options_read_one(struct options *opts, const char *path,
+				     const struct options_rules *rules);
+/* Text already in memory, relative paths from dir (NULL: as written). */
+enum options_status options_read_text(struct options *opts, const char *path, const char *dir,
+				      const char *text, size_t size,
+				      const struct options_rules *rules);
+/* Two of the [buttons] on one line: the first such pair (kiosk.ini's
+ * check and the command line's). */
+bool options_buttons_clash(const struct options *opts, int *first, int *second);
 void options_usage(FILE *out);
 
 #endif

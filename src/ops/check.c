@@ -26,7 +26,7 @@ struct check {
 	int bad_clips;	  /* animations named that a model lacks */
 };
 
-int check_model_settings(const struct content_config *cfg, FILE *out)
+int check_model_settings(const struct content_config *cfg, FILE *out, bool stick)
 {
 	struct model_list *l = cfg->model && *cfg->model ? model_list_new(cfg->model) : NULL;
 	int bad = 0;
@@ -40,7 +40,8 @@ int check_model_settings(const struct content_config *cfg, FILE *out)
 			continue;
 		if (content_config_copy(&own, cfg))
 			return bad + 1;
-		if (model_settings_read(&own, path) != OPTIONS_OK)
+		if ((stick ? model_settings_read_stick(&own, path)
+			   : model_settings_read(&own, path)) != OPTIONS_OK)
 			bad++;
 		else if (out)
 			fprintf(out, "  read %s (the settings of %s)\n", ini, path);
@@ -226,7 +227,7 @@ static void check_models(struct check *c, const struct content_config *cfg)
 
 	if (!spec || !*spec)
 		return; /* the built-in knot */
-	c->bad_settings = check_model_settings(cfg, c->out);
+	c->bad_settings = check_model_settings(cfg, c->out, false);
 	log_clear_last_error();
 	l = model_list_new(spec);
 	if (!l) {

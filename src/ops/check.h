@@ -18,7 +18,8 @@ enum { CHECK_BAD_FILE = 66, CHECK_BAD_SETTINGS = 78 };
 int check_config_run(const struct options *o, FILE *out);
 /* Each model of cfg's [scene] model with a NAME.ini: that file read over
  * cfg, its errors logged with file and line; each one read is said on out
- * (NULL: not). Returns how many have errors. */
-int check_model_settings(const struct content_config *cfg, FILE *out);
+ * (NULL: not). stick: held to a USB stick's rules (--import). Returns
+ * how many have errors. */
+int check_model_settings(const struct content_config *cfg, FILE *out, bool stick);
 
 #endif

@@ -10,7 +10,6 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <ftw.h>
-#include <ini.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -356,100 +355,35 @@ out:
 	return ret;
 }
 
-/* What a stick may set: how the model looks and turns, not the display,
- * the buttons, the power or what else the kiosk reads. */
-struct stick_scan {
-	struct import *im;
-	FILE *f;
-	int line, errors;
-};
-
-/* As src/config/options.c reads a file (leading blanks dropped), so that the
- * lines counted are the ones it names. */
-static char *scan_line(char *str, int num, void *stream)
+/* Whether the stick's own settings t set [scene] key. */
+static bool stick_sets(const struct options *t, const char *key)
 {
-	struct stick_scan *sc = stream;
-	char *r = fgets(str, num, sc->f);
-	size_t skip;
-
-	if (!r)
-		return NULL;
-	sc->line++;
-	skip = strspn(r, " \t");
-	if (skip)
-		memmove(r, r + skip, strlen(r + skip) + 1);
-	return r;
-}
-
-static bool stick_may_set(const char *section, const char *key)
-{
-	if (!strcmp(section, "scene") || !strcmp(section, "material"))
-		return true;
-	return !strcmp(section, "kiosk") &&
-	       (!strncmp(key, "attract_", 8) || !strncmp(key, "turn_", 5) ||
-		!strcmp(key, "idle_seconds"));
-}
-
-static bool is_path_key(const char *key)
-{
-	static const char *const keys[] = {"model",	 "matcap",	     "iridescence_ramp",
-					   "detail_map", "displacement_map", NULL};
-
-	for (const char *const *k = keys; *k; k++)
-		if (!strcmp(key, *k))
-			return true;
+	for (size_t i = 0; i < OPTION_DEFS; i++)
+		if (option_defs[i].section == OPTIONS_SCENE && !strcmp(option_defs[i].key, key))
+			return options_origin(t, &option_defs[i]).file != NULL;
 	return false;
 }
 
-/* A path that leaves the folder it is read from: absolute, or with a ".."
- * part; in each of a list's (a, b) paths. */
-static bool path_escapes(const char *value)
-{
-	for (const char *p = value; *p; p++) {
-		bool starts = p == value || strchr(", \t", p[-1]);
-
-		if (*p == '/' && starts)
-			return true;
-		if (!strncmp(p, "..", 2) && (starts || p[-1] == '/') && strchr("/, \t", p[2]))
-			return true;
-	}
-	return false;
-}
-
-static int on_stick_key(void *user, const char *section, const char *key, const char *value)
-{
-	struct stick_scan *sc = user;
-
-	if (!*section)
-		return 1; /* a key before any [section]: the settings' check names it */
-	if (!stick_may_set(section, key)) {
-		log_err("%s/kiosk.ini:%d: [%s] %s cannot be set from a USB stick", sc->im->from,
-			sc->line, section, key);
-		sc->errors++;
-	} else if (is_path_key(key) && path_escapes(value)) {
-		log_err("%s/kiosk.ini:%d: [%s] %s = '%s': a USB stick's paths must be relative, "
-			"without '..'",
-			sc->im->from, sc->line, section, key, value);
-		sc->errors++;
-	}
-	sc->im->sets_model |= !strcmp(section, "scene") && !strcmp(key, "model");
-	sc->im->sets_matcap |= !strcmp(section, "scene") && !strcmp(key, "matcap");
-	return 1;
-}
-
-/* -EINVAL after naming each key the stick may not set. (A line that is
- * not INI is left to the settings' own check, which names it.) */
+/* -EINVAL after naming each key the stick may not set and each path that
+ * leaves it: its kiosk.ini alone, read with a stick's rules. What it sets
+ * itself is not written for it (write_ini). */
 static int scan_stick_ini(struct import *im)
 {
-	struct stick_scan sc = {.im = im};
+	char name[PATH_MAX + 16];
+	struct options t;
+	int ret;
 
 	if (!im->ini || !im->ini_size)
 		return 0;
-	if (!(sc.f = fmemopen(im->ini, im->ini_size, "r")))
-		return -errno;
-	ini_parse_stream(scan_line, &sc, on_stick_key, &sc);
-	fclose(sc.f);
-	return sc.errors ? -EINVAL : 0;
+	option_defaults(&t);
+	snprintf(name, sizeof(name), "%s/kiosk.ini", im->from);
+	ret = options_read_text(&t, name, NULL, im->ini, im->ini_size, &options_rules_stick)
+		  ? -EINVAL
+		  : 0;
+	im->sets_model = stick_sets(&t, "model");
+	im->sets_matcap = stick_sets(&t, "matcap");
+	options_release(&t);
+	return ret;
 }
 
 /* kiosk.ini in the content folder: the model and matcaps copied, for the
@@ -464,11 +398,9 @@ static int write_ini(struct import *im)
 
 	n += (size_t)snprintf(head, sizeof(head), "# Written by matcap-kiosk --import.\n[scene]\n");
 	if (im->model[0] && !im->sets_model)
-		n += (size_t)snprintf(head + n, sizeof(head) - n, "model = %s/model/%s\n",
-				      im->content, im->model);
+		n += (size_t)snprintf(head + n, sizeof(head) - n, "model = model/%s\n", im->model);
 	if (im->matcaps && !im->sets_matcap)
-		n += (size_t)snprintf(head + n, sizeof(head) - n, "matcap = %s/matcaps\n",
-				      im->content);
+		n += (size_t)snprintf(head + n, sizeof(head) - n, "matcap = matcaps\n");
 	snprintf(path, sizeof(path), "%s/kiosk.ini", im->staging);
 	if ((fd = open(path, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644)) < 0)
 		return -errno;
@@ -489,31 +421,15 @@ static int write_ini(struct import *im)
 	return ret;
 }
 
-/* A path the settings name in the content folder is, for the check, the
- * same file in the staging copy. */
-static char *staged(const struct import *im, const char *path)
-{
-	size_t n = strlen(im->content);
-	char *s = NULL;
-
-	if (path && !strncmp(path, im->content, n) && path[n] == '/') {
-		if (asprintf(&s, "%s%s", im->staging, path + n) < 0)
-			s = NULL;
-		return s;
-	}
-	return path ? strdup(path) : NULL;
-}
-
 /* What the kiosk would do with it: the settings over the installed ones
  * (kiosk.ini and kiosk.ini.d/; options on the command line are not the
  * service's), then the model and the matcaps loaded, strictly (no
  * built-in stand-in). */
 static int check(const struct import *im, const struct options *o)
 {
-	char ini[PATH_MAX + 16], name[PATH_MAX + 16];
+	char ini[PATH_MAX + 16];
 	struct options t;
 	struct content s;
-	char *model, *matcap;
 	int ret = 0;
 
 	/* The installed files alone: o holds what the content folder's
@@ -525,26 +441,17 @@ static int check(const struct import *im, const struct options *o)
 	}
 	free(t.include);
 	t.include = NULL; /* the installed fragment is replaced, not read */
-	/* The stick's file alone first, so that a mistake is named by its
-	 * own line. */
-	snprintf(name, sizeof(name), "%s/kiosk.ini", im->from);
-	if (im->ini && options_read_memory(&t, name, im->ini, im->ini_size) != OPTIONS_OK) {
-		ret = -EINVAL;
-		goto out;
-	}
+	/* The stick's file alone was read with its lines in scan_stick_ini.
+	 * Now the bytes that will be installed, as the kiosk will read them:
+	 * with a stick's rules (options_read_file reads the include so), the
+	 * paths relative to the content folder. */
 	snprintf(ini, sizeof(ini), "%s/kiosk.ini", im->staging);
-	if (options_read_file(&t, ini) != OPTIONS_OK) {
+	if (options_read_one(&t, ini, &options_rules_stick) != OPTIONS_OK) {
 		ret = -EINVAL;
 		goto out;
 	}
-	model = staged(im, t.content.model);
-	matcap = staged(im, t.content.matcap);
-	free(t.content.model);
-	free(t.content.matcap);
-	t.content.model = model;
-	t.content.matcap = matcap;
 	/* Each model's own settings file, refused as kiosk.ini is. */
-	if (check_model_settings(&t.content, NULL)) {
+	if (check_model_settings(&t.content, NULL, true)) {
 		ret = -EINVAL;
 		goto out;
 	}

@@ -1,4 +1,7 @@
-/* A USB stick's kiosk.ini, its paths made the content folder's. */
+/* A USB stick's kiosk.ini, its paths made the content folder's. Lines
+ * are split as util/ini.c splits them (at newlines only, blanks before a
+ * key dropped, the key up to the first '='), and the result is read again
+ * with a stick's rules before it is installed (ops/import.c). */
 #include "ops/import_ini.h"
 
 #include <errno.h>
@@ -52,19 +55,18 @@ static int rebase_item(struct buf *b, const char *s, size_t n)
 	return ret ? ret : put(b, s + lead, len);
 }
 
-/* The value up to an inline comment (" ;", as inih reads it), each of a
- * list's paths rebased. */
-static int rebase_value(struct buf *b, const char *v, size_t n)
+/* The value (all of it: a ';' inside is part of it), its path rebased,
+ * or each of a list's (only model takes a list, as options_file.c reads
+ * it: a matcap named "a,b.png" is one file). */
+static int rebase_value(struct buf *b, const char *v, size_t n, bool list)
 {
-	size_t end = 0, at = 0;
+	size_t end = n, at = 0;
 	int ret = 0;
 
-	while (end < n && !(v[end] == ';' && end && (v[end - 1] == ' ' || v[end - 1] == '\t')))
-		end++;
 	while (end > 0 && strchr(" \t\r\n", v[end - 1]))
 		end--;
 	for (size_t i = 0; i <= end && !ret; i++)
-		if (i == end || v[i] == ',') {
+		if (i == end || (list && v[i] == ',')) {
 			ret = rebase_item(b, v + at, i - at);
 			if (!ret && i < end)
 				ret = put(b, ",", 1);
@@ -89,7 +91,9 @@ static int rebase_line(struct buf *b, const char *line, size_t n)
 		return put(b, line, n);
 	n_key = (size_t)(eq + 1 - line);
 	ret = put(b, line, n_key);
-	return ret ? ret : rebase_value(b, eq + 1, n - n_key);
+	return ret ? ret
+		   : rebase_value(b, eq + 1, n - n_key,
+				  key_end - lead == 5 && !strncmp(line + lead, "model", 5));
 }
 
 int import_ini_rebase(const char *ini, size_t size, char **out, size_t *out_size)

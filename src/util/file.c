@@ -65,7 +65,7 @@ static int read_fd(int fd, size_t want, unsigned char **data, size_t *size)
 int file_read_all(const char *path, size_t max, unsigned char **data, size_t *size)
 {
 	struct stat st;
-	int fd = open(path, O_RDONLY | O_CLOEXEC), ret;
+	int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC), ret;
 
 	*data = NULL;
 	*size = 0;

@@ -72,7 +72,7 @@ w '[frame]\nup = +z\nyaw_min = -40\nyaw_max = 40\n' >"$dir/own/vase.ini"
 w '[scene]\nmodel = %s/own/vase.glb\n' "$dir" >"$dir/own.ini"
 case_ model-settings 0 "read $dir/own/vase.ini (the settings of $dir/own/vase.glb)" "$dir/own.ini" $mc
 w '[frame]\nyaw = 10\n\n[kiosk]\nattract_after = 5\n' >"$dir/own/vase.ini"
-case_ model-settings-bad-key 78 "vase.ini:5: \[kiosk\] attract_after is not a setting a model's own" \
+case_ model-settings-bad-key 78 "vase.ini:5: \[kiosk\] attract_after cannot be set from a model's own file" \
 	"$dir/own.ini" $mc
 
 # The animations the settings name, against the model's clips (two in

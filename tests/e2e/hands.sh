@@ -154,6 +154,36 @@ step "... also as the second of a list" refused listpath 78 "kiosk.ini:2: \[scen
 stick_with dotdot
 printf '[material]\ndetail_map = a/../../x.png\n' >"$dir/dotdot/matcap-kiosk/kiosk.ini"
 step "... nor a path with .." refused dotdot 78 "kiosk.ini:2: \[material\] detail_map"
+# The attacker's stick (issue 32): in [scene], matcap = a,a,a.png ; padded
+# with x to 380 bytes, [display] over bytes 181-189, ';' at byte 199, then
+# size = 77x55; the folders a,model/a,model/ hold a.png, where the old
+# rewrite pointed. libinih split the rewritten line anew and a [display]
+# size was installed; now the line is one value, read whole.
+stick_with padded
+mkdir -p "$dir/padded/matcap-kiosk/a,model/a,model"
+cp matcaps/pearl.png "$dir/padded/matcap-kiosk/a,model/a,model/a.png"
+line=$(printf 'matcap = a,a,a.png ;%0360d' 0 | tr 0 x)
+line="$(echo "$line" | cut -c1-181)[display]$(echo "$line" | cut -c191-199);$(echo "$line" | cut -c201-)"
+printf '[scene]\n%ssize = 77x55\n' "$line" >"$dir/padded/matcap-kiosk/kiosk.ini"
+step "the padded-line stick is 380 bytes a line, [display] at 181, ';' at 199" sh -c "
+	[ \$(sed -n 2p '$dir/padded/matcap-kiosk/kiosk.ini' | cut -c1-380 | wc -c) = 381 ] &&
+	[ \$(sed -n 2p '$dir/padded/matcap-kiosk/kiosk.ini' | cut -c182-190) = '[display]' ]"
+step "... is not imported, and sets no [display] size" sh -c "
+	! timeout 60 '$kiosk' --config '$dir/kiosk.ini' --import '$dir/padded/matcap-kiosk' \
+		2>'$dir/padded.err' && ! grep -q 'size = 77x55' '$STATE_DIRECTORY/content/kiosk.ini'"
+# A stick's NAME.ini escaped the stick's path rules: the kiosk's own
+# pictures and fonts were imported and shown on the public screen.
+for kv in 'scene:matcap = /usr/share/pixmaps' \
+	'caption:logo = ../../../../usr/share/pixmaps/debian-logo.png' \
+	'caption:font = /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf' \
+	'display:background = /usr/share/images/desktop-base/x.png' \
+	'material:detail_map = /etc/passwd'; do
+	name=nameini-${kv%%:*}-$(echo "${kv#*:}" | cut -d' ' -f1)
+	stick_with "$name"
+	printf '[%s]\n%s\n' "${kv%%:*}" "${kv#*:}" >"$dir/$name/matcap-kiosk/sphere.ini"
+	step "a stick's NAME.ini may not name [${kv%%:*}] ${kv#*:} (78)" refused "$name" 78 \
+		"sphere.ini:2: .*a USB stick's paths must be relative"
+done
 stick_with inilink
 ln -s "$dir/kiosk.ini" "$dir/inilink/matcap-kiosk/kiosk.ini"
 step "a kiosk.ini that is a link is refused" refused inilink 78 "kiosk.ini: not a plain file"
@@ -197,7 +227,7 @@ step "... its matcap line is the only one" sh -c \
 	grep -qx 'matcap = matcaps/pearl.png' '$STATE_DIRECTORY/content/kiosk.ini'"
 step "names with ;#=[], control characters or blanks at an end are skipped" sh -c "
 	[ \$(ls '$STATE_DIRECTORY/content/model') = sphere.glb ] &&
-	grep -qx 'model = $STATE_DIRECTORY/content/model/sphere.glb' \
+	grep -qx 'model = model/sphere.glb' \
 		'$STATE_DIRECTORY/content/kiosk.ini' && grep -q 'skipped' '$dir/names.err'"
 stick_with mlink
 ln -s "$PWD/matcaps" "$dir/mlink/matcap-kiosk/matcaps"
@@ -226,7 +256,7 @@ step "... the subfolders are copied, the model loads them without a warning" sh 
 	test -f '$STATE_DIRECTORY/content/model/textures/normal.png' &&
 	test -f '$STATE_DIRECTORY/content/model/textures/thickness.png' &&
 	test -f '$STATE_DIRECTORY/content/model/textures/more/normal.png' &&
-	grep -qx 'model = $STATE_DIRECTORY/content/model/scene.gltf' \
+	grep -qx 'model = model/scene.gltf' \
 		'$STATE_DIRECTORY/content/kiosk.ini' && ! grep -q 'not used' '$dir/sketchfab.err'"
 step "... a link to a folder, a hidden folder and a subfolder's model are not taken" sh -c "
 	! test -e '$STATE_DIRECTORY/content/model/etc' &&

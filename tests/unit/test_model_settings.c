@@ -111,7 +111,7 @@ static void bad_keys(void **state)
 	assert_int_equal(model_settings_read(&o.content, m), OPTIONS_CONFIG);
 	log_last_error(last, sizeof(last));
 	assert_non_null(
-	    strstr(last, "cup.ini:4: [kiosk] attract_after is not a setting a model's"));
+	    strstr(last, "cup.ini:4: [kiosk] attract_after cannot be set from a model's own file"));
 	assert_non_null(strstr(last, "it takes [frame], [material], [scene] mode, [scene] fit"));
 	assert_true(isnan(o.content.frame.yaw));
 	write_file("cup.ini", "[frame]\nup = sideways\n");

@@ -411,19 +411,18 @@ static void reload_reopens_what_changed(void **state)
 	options_release(&n);
 }
 
-/* [kiosk] include: a second file over the first where it exists; its own
- * include is not followed; a missing one is no error. */
+/* [kiosk] include: a second file over the first where it exists; it is a
+ * USB stick's (--import writes it), so it may not include another; a
+ * missing one is no error. */
 static void include_file(void **state)
 {
-	char second[64], third[64], text[160];
+	char second[64], text[160];
 	const char *argv[] = {"matcap-kiosk", "--config", NULL};
 	struct options o;
+	FILE *f;
 
 	(void)state;
-	snprintf(third, sizeof(third), "%s", write_ini("[scene]\nmode = sem-vertex\n"));
-	snprintf(text, sizeof(text), "[scene]\nmode = normal\nyaw = 30\n[kiosk]\ninclude = %s\n",
-		 third);
-	snprintf(second, sizeof(second), "%s", write_ini(text));
+	snprintf(second, sizeof(second), "%s", write_ini("[scene]\nmode = normal\nyaw = 30\n"));
 	snprintf(text, sizeof(text), "[scene]\nmode = view\n[kiosk]\ninclude = %s\n", second);
 	argv[2] = write_ini(text);
 	assert_int_equal(parse(&o, 3, argv), OPTIONS_OK);
@@ -431,12 +430,20 @@ static void include_file(void **state)
 	assert_true(fabs(o.content.yaw - 30) < 1e-9);
 	assert_string_equal(o.include, second);
 	options_release(&o);
+	/* The include is a stick's: it may not include another file. */
+	f = fopen(second, "w");
+	assert_non_null(f);
+	fputs("[scene]\nmode = normal\n[kiosk]\ninclude = /etc/x.ini\n", f);
+	fclose(f);
+	assert_int_equal(parse(&o, 3, argv), OPTIONS_OK);
+	assert_int_equal(o.content.mode, SHADING_VIEW);
+	assert_true(o.include_ignored);
+	options_release(&o);
 	unlink(second);
 	assert_int_equal(parse(&o, 3, argv), OPTIONS_OK);
 	assert_int_equal(o.content.mode, SHADING_VIEW);
 	options_release(&o);
 	unlink(argv[2]);
-	unlink(third);
 }
 
 /* An included file that does not read leaves the installed settings alone
