@@ -33,11 +33,11 @@ struct import {
 	int from_fd;		  /* it, opened once (not through a link) */
 	char content[PATH_MAX];	  /* where the kiosk reads it */
 	char staging[PATH_MAX];	  /* the copy, until it is checked */
-	char model[NAME_MAX + 1]; /* the first .gltf/.glb by name; "" none */
+	char model[NAME_MAX + 1]; /* files.model: the first .gltf/.glb by name */
 	char *ini;		  /* the stick's kiosk.ini, read once; NULL none */
 	size_t ini_size;
 	bool sets_model, sets_matcap; /* the stick's kiosk.ini names its own */
-	int matcaps;		      /* how many were copied */
+	int matcaps;		      /* how many were copied (files.matcaps) */
 	struct import_files files;    /* the stick's files (ops/import_copy.h) */
 };
 

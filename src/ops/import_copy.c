@@ -17,6 +17,7 @@
 /* Subfolders below the model's (textures/, as Blender and Sketchfab
  * write them): deeper ones are no model's layout, and are not followed. */
 #define IMPORT_MAX_DEPTH 8
+#define DEPTH_TEXT	 "8" /* IMPORT_MAX_DEPTH, for the journal */
 
 static const char *const model_exts[] = {"gltf", "glb", NULL};
 static const char *const content_exts[] = {"gltf", "glb", "bin", "png", "jpg", "jpeg", NULL};
@@ -346,7 +347,7 @@ static int walk_subfolder(struct walk *w, const struct folder *d, const char *na
 	int ret = sub ? 0 : -ENOMEM;
 
 	if (!ret && d->depth >= IMPORT_MAX_DEPTH) {
-		passed_over(w, d, name, "more folders deep than a model's files are");
+		passed_over(w, d, name, "more than " DEPTH_TEXT " folders deep");
 		goto out;
 	}
 	if (!ret &&
@@ -479,6 +480,7 @@ int import_files_size(struct import_files *f)
 	int ret;
 
 	memset(f->largest, 0, sizeof(f->largest));
+	f->skipped = 0;
 	ret = walk_stick(&w);
 	if (ret || f->total <= f->budget)
 		return ret;
@@ -496,5 +498,7 @@ int import_files_copy(struct import_files *f)
 {
 	struct walk w = {.f = f, .copying = true};
 
+	f->files = f->matcaps = 0;
+	f->model[0] = '\0';
 	return walk_stick(&w);
 }

@@ -130,6 +130,21 @@ static void sized_before_a_byte_is_copied(void **state)
 	assert_int_equal(s->f.total, (11 << 20) + 1000);
 }
 
+/* A file that grew between the sizing and the copy: the copy stops at
+ * the budget too. */
+static void copy_stops_at_the_budget(void **state)
+{
+	struct stick *s = *state;
+
+	put(s, "a.glb", 1000);
+	put(s, "textures/big.png", 6 << 20);
+	assert_int_equal(import_files_size(&s->f), 0);
+	put(s, "textures/big.png", 12 << 20);
+	assert_int_equal(mkdir(s->staging, 0755), 0);
+	assert_int_equal(import_files_copy(&s->f), -EFBIG);
+	assert_int_equal(s->f.files, 1); /* a.glb, before it */
+}
+
 /* A pipe under each folder, a link and a control character in a name:
  * passed over (a pipe opened for reading would wait for a writer), the
  * rest copied. */
@@ -188,6 +203,7 @@ int main(void)
 	    cmocka_unit_test(names_of_printable_text_only),
 	    cmocka_unit_test(names_escaped_in_one_line),
 	    cmocka_unit_test_setup_teardown(sized_before_a_byte_is_copied, setup, teardown),
+	    cmocka_unit_test_setup_teardown(copy_stops_at_the_budget, setup, teardown),
 	    cmocka_unit_test_setup_teardown(only_plain_files_with_printable_names, setup, teardown),
 	    cmocka_unit_test_setup_teardown(devices_passed_over, setup, teardown),
 	};
