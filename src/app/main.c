@@ -248,6 +248,7 @@ static int before_display(const struct options *o, struct content *content)
 {
 	if (!is_live(o))
 		return content_load(content, &o->content, true);
+	import_clean_stale(); /* a half copy an import cut short left */
 	signals_block();
 	return 0;
 }

@@ -5,7 +5,8 @@
 # CacheDirectory=, StateDirectory= and RuntimeDirectory= would be on a
 # read-only root). Checks: a poster is on the screen before the model;
 # --status answers with the frame on screen; the udev rule matches a USB
-# stick; a stick with a broken model changes nothing; a good stick's model
+# stick; a stick with a broken second model (and a device node and a pipe,
+# passed over) changes nothing; a good stick's model
 # is copied, and shown after the reload the import unit asks for. The two
 # sticks (tests/e2e/sticks.sh) are plugged in at boot and unplugged here
 # at once (their USB "authorized" switch), then plugged in one at a time.
@@ -116,6 +117,11 @@ wait_until 30 there BROKEN
 import BROKEN
 rc=$?
 vm_check "the broken stick is refused (exit $rc)" test $rc = 1
+vm_check "... for its second model, which does not load" \
+	grep -q "matcap-kiosk/sphere.glb: the model does not load" import.log
+vm_check "... its device node (nodev) and pipe passed over, not opened" sh -c "
+	grep -q 'null.png: a device node, not a plain file: skipped' import.log &&
+	grep -q 'p.bin: a pipe (FIFO), not a plain file: skipped' import.log"
 vm_check "... and changes nothing" test "$(content_sum)" = "$before"
 vm_check "... the kiosk shows the knot still" grep -q '"model": null' status.json
 plug BROKEN 0

@@ -52,12 +52,19 @@ step "--status with no kiosk says so" grep -q "no kiosk answers at $dir/run/stat
 "$kiosk" --size 96x96 --matcap matcaps/gold.png --output "$dir/poster.png" -q
 printf '[display]\nposter = %s\n[kiosk]\ninclude = %s/content/kiosk.ini\n' "$dir/poster.png" \
 	"$STATE_DIRECTORY" >"$dir/kiosk.ini"
+# What an import cut short (stopped, the power gone) left: the kiosk's
+# start removes it.
+mkdir -p "$STATE_DIRECTORY/.content.new/model"
+echo half >"$STATE_DIRECTORY/.content.new/model/half.bin"
 # shellcheck disable=SC2086
 "$kiosk" $scene --config "$dir/kiosk.ini" --matcap matcaps/gold.png >"$dir/kiosk.log" 2>&1 &
 pid=$!
 step "the poster is shown before the model" wait_for "$dir/kiosk.log" "poster: $dir/poster.png"
 step "the kiosk listens for --status" wait_for "$dir/kiosk.log" "status: matcap-kiosk --status"
 wait_for "$dir/kiosk.log" "ready: the first frame"
+step "the kiosk's start removes a staging folder an import cut short left, and says so" sh -c "
+	! test -e '$STATE_DIRECTORY/.content.new' &&
+	grep -q '.content.new: removed what an import cut short left there' '$dir/kiosk.log'"
 "$kiosk" --status >"$dir/status.json" 2>"$dir/status.err"
 step "--status exits 0 with a kiosk running" [ $? -eq 0 ]
 step "--status prints the state" grep -q '"frames_drawn": [1-9]' "$dir/status.json"
@@ -201,6 +208,33 @@ stick_with big
 truncate -s 3G "$dir/big/matcap-kiosk/big.glb"
 step "more than 2 GiB (or the free space) is refused before a byte is copied" refused big 1 \
 	"the most an import may take"
+# Sized before a byte is copied: with 1 MiB the most the import may write
+# (ulimit -f), a copy begun is killed (SIGXFSZ) and leaves its staging.
+stick_with big2
+truncate -s 1500M "$dir/big2/matcap-kiosk/a.bin" "$dir/big2/matcap-kiosk/b.bin"
+step "two files of 1.5 GB are refused before a byte is copied, naming the largest" sh -c "
+	ulimit -f 2048; timeout 60 '$kiosk' --config '$dir/kiosk.ini' \
+		--import '$dir/big2/matcap-kiosk' 2>'$dir/big2.err'
+	[ \$? = 1 ] && grep -q 'nothing copied; the largest: a.bin (1500.0 MiB), b.bin (1500.0 MiB)' \
+		'$dir/big2.err'"
+step "... leaving no staging folder" test ! -e "$STATE_DIRECTORY/.content.new"
+mkdir -p "$STATE_DIRECTORY/.content.new/model"
+echo half >"$STATE_DIRECTORY/.content.new/model/half.bin"
+"$kiosk" --config "$dir/kiosk.ini" --import "$dir/big2/matcap-kiosk" 2>"$dir/stale.err"
+step "the next import removes a staging folder one cut short left, and says so" sh -c "
+	! test -e '$STATE_DIRECTORY/.content.new' &&
+	grep -q '.content.new: removed what an import cut short left there' '$dir/stale.err'"
+# Every model the settings name loads, not only the first: the kiosk
+# takes turns through a list or a folder.
+stick_with models
+cp "$models/sphere.glb" "$dir/models/matcap-kiosk/a.glb"
+head -c 300 "$models/sphere.glb" >"$dir/models/matcap-kiosk/z.glb"
+printf '[scene]\nmodel = a.glb, z.glb\n' >"$dir/models/matcap-kiosk/kiosk.ini"
+step "a list whose second model does not load is refused, naming it" refused models 1 \
+	"models/matcap-kiosk/z.glb: the model does not load"
+printf '[scene]\nmodel = .\n' >"$dir/models/matcap-kiosk/kiosk.ini"
+step "... and so is a folder with such a model" refused models 1 \
+	"models/matcap-kiosk/z.glb: the model does not load"
 tree "$STATE_DIRECTORY" >"$dir/after2"
 step "... and these change nothing either" cmp -s "$dir/before" "$dir/after2"
 step "no stale staging folder is left" test ! -e "$STATE_DIRECTORY/.content.new"
@@ -229,6 +263,55 @@ step "names with ;#=[], control characters or blanks at an end are skipped" sh -
 	[ \$(ls '$STATE_DIRECTORY/content/model') = sphere.glb ] &&
 	grep -qx 'model = model/sphere.glb' \
 		'$STATE_DIRECTORY/content/kiosk.ini' && grep -q 'skipped' '$dir/names.err'"
+# Names of control characters, at every level: passed over, and named
+# escaped, so that none writes a journal line of its own (<0>: emergency).
+stick_with ctrl
+mkdir -p "$dir/ctrl/matcap-kiosk/matcaps" "$dir/ctrl/matcap-kiosk/$(printf 'tex\001')" \
+	"$dir/ctrl/matcap-kiosk/textures"
+cp matcaps/pearl.png "$dir/ctrl/matcap-kiosk/matcaps/$(printf 'x\n<0>forged.png')"
+cp matcaps/pearl.png "$dir/ctrl/matcap-kiosk/matcaps/ok.png"
+cp matcaps/pearl.png "$dir/ctrl/matcap-kiosk/$(printf 'tex\001')/a.png"
+cp matcaps/pearl.png "$dir/ctrl/matcap-kiosk/textures/$(printf 'b\177.png')"
+cp matcaps/pearl.png "$dir/ctrl/matcap-kiosk/textures/$(printf '\303\251t\303\251.png')"
+JOURNAL_STREAM=8:8 "$kiosk" --config "$dir/kiosk.ini" --import "$dir/ctrl/matcap-kiosk" \
+	2>"$dir/ctrl.err"
+step "names with control characters under matcaps/ and subfolders are not copied" sh -c "
+	[ $? -eq 0 ] && [ -z \"\$(cd '$STATE_DIRECTORY/content' && LC_ALL=C find . -name '*[[:cntrl:]]*')\" ] &&
+	test -f '$STATE_DIRECTORY/content/matcaps/ok.png' &&
+	test -f '$STATE_DIRECTORY/content/model/textures/$(printf '\303\251t\303\251.png')'"
+step "... each named escaped in one line, none a line of its own" sh -c "
+	grep -qF 'matcaps/x\\n<0>forged.png: a name with a control character' '$dir/ctrl.err' &&
+	grep -qF 'matcap-kiosk/tex\\x01: a name' '$dir/ctrl.err' &&
+	grep -qF 'textures/b\\x7f.png: a name' '$dir/ctrl.err' &&
+	! grep -v '^<[346]>' '$dir/ctrl.err'"
+# Pipes, sockets and device nodes: passed over with their reason, never
+# opened (one that is waits for a writer; a device's open may act).
+stick_with odd
+mkdir -p "$dir/odd/matcap-kiosk/matcaps" "$dir/odd/matcap-kiosk/textures"
+mkfifo "$dir/odd/matcap-kiosk/f.bin" "$dir/odd/matcap-kiosk/matcaps/p.png"
+python3 -c "import socket; socket.socket(socket.AF_UNIX).bind('$dir/odd/matcap-kiosk/textures/s.bin')" \
+	2>/dev/null || mkfifo "$dir/odd/matcap-kiosk/textures/s.bin"
+timeout 60 "$kiosk" --config "$dir/kiosk.ini" --import "$dir/odd/matcap-kiosk" 2>"$dir/odd.err"
+step "pipes and sockets are passed over, the rest imported" sh -c "[ $? -eq 0 ] &&
+	grep -q 'matcap-kiosk/f.bin: a pipe (FIFO), not a plain file: skipped' '$dir/odd.err' &&
+	grep -q 'matcaps/p.png: a pipe (FIFO), not a plain file: skipped' '$dir/odd.err' &&
+	grep -q 'textures/s.bin: a .*, not a plain file: skipped' '$dir/odd.err' &&
+	test -f '$STATE_DIRECTORY/content/model/sphere.glb'"
+# A device node on a stick mounted nodev, as the import unit mounts it:
+# opening it fails, and that refused the whole stick. mknod and a mount
+# need root here; the virtual board (hands-board.sh) does it always.
+mkdir -p "$dir/nodev"
+if [ "$(id -u)" = 0 ] && unshare -m true 2>/dev/null; then
+	unshare -m sh -c "mount -t tmpfs -o nodev tmpfs '$dir/nodev' &&
+		mkdir '$dir/nodev/matcap-kiosk' && cp '$models/sphere.glb' '$dir/nodev/matcap-kiosk/' &&
+		mknod '$dir/nodev/matcap-kiosk/null.png' c 1 3 &&
+		exec timeout 60 '$kiosk' --config '$dir/kiosk.ini' --import '$dir/nodev/matcap-kiosk'" \
+		2>"$dir/nodev.err"
+	step "a device node on a nodev stick is passed over, the rest imported" sh -c "[ $? -eq 0 ] &&
+		grep -q 'null.png: a device node, not a plain file: skipped' '$dir/nodev.err'"
+else
+	echo "ok a device node on a nodev stick is passed over # skip: not root (hands-board.sh)"
+fi
 stick_with mlink
 ln -s "$PWD/matcaps" "$dir/mlink/matcap-kiosk/matcaps"
 "$kiosk" --config "$dir/kiosk.ini" --import "$dir/mlink/matcap-kiosk" 2>"$dir/mlink.err"

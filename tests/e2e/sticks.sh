@@ -4,7 +4,10 @@
 # mtools; ext2 where they are missing, said on stderr), carries a model whose
 # buffer lies in a subfolder (buffers/, as Blender and Sketchfab lay out
 # their files) and a kiosk.ini in matcap-kiosk/; BROKEN, ext2 (mke2fs -d: e2fsprogs), a
-# truncated model. Prints the tests/vm/run.sh options that plug them in.
+# good model and a truncated one, both named by its kiosk.ini, and a device
+# node and a pipe (debugfs: made without root), which the import must pass
+# over without opening (the stick is mounted nodev: opening the node fails).
+# Prints the tests/vm/run.sh options that plug them in.
 #   sticks.sh DIR
 set -eu
 dir=$1
@@ -15,6 +18,8 @@ sed 's#"uri":"sphere-external.bin"#"uri":"buffers/sphere.bin"#' \
 cp tests/fuzz/corpus/gltf/sphere-external.bin "$dir/good/matcap-kiosk/buffers/sphere.bin"
 printf '[scene]\nyaw = 30\n' >"$dir/good/matcap-kiosk/kiosk.ini"
 head -c 500 tests/fuzz/corpus/gltf/sphere.glb >"$dir/broken/matcap-kiosk/sphere.glb"
+cp tests/fuzz/corpus/gltf/sphere.glb "$dir/broken/matcap-kiosk/a.glb"
+printf '[scene]\nmodel = a.glb, sphere.glb\n' >"$dir/broken/matcap-kiosk/kiosk.ini"
 ext2() { mke2fs -q -F -t ext2 -L "$1" -d "$dir/$1" "$dir/$1.img" 2M >/dev/null; }
 if command -v mkfs.vfat >/dev/null && command -v mcopy >/dev/null; then
 	mkfs.vfat -n GOOD -C "$dir/good.img" 2048 >/dev/null
@@ -24,4 +29,6 @@ else
 	ext2 good
 fi
 ext2 broken
+printf 'cd matcap-kiosk\nmknod null.png c 1 3\nsif null.png mode 020644\nmknod p.bin p\nsif p.bin mode 010644\n' |
+	debugfs -w -f - "$dir/broken.img" >/dev/null 2>&1
 echo "--usb $dir/good.img:GOOD --usb $dir/broken.img:BROKEN"
