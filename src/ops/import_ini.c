@@ -3,6 +3,7 @@
  * key dropped, the key up to the first '='), and the result is read again
  * with a stick's rules before it is installed (ops/import.c). */
 #include "ops/import_ini.h"
+#include "util/ini.h"
 
 #include <errno.h>
 #include <stdbool.h>
@@ -42,10 +43,20 @@ static bool is_path_key(const char *key, size_t n)
 	return false;
 }
 
+/* Blanks at the start of s[0..n), as util/ini.c counts them. */
+static size_t lead_blanks(const char *s, size_t n)
+{
+	size_t i = 0;
+
+	while (i < n && ini_blank(s[i]))
+		i++;
+	return i;
+}
+
 /* One path of a value (blanks around it kept as they were). */
 static int rebase_item(struct buf *b, const char *s, size_t n)
 {
-	size_t lead = strspn(s, " \t"), len = n - lead;
+	size_t lead = lead_blanks(s, n), len = n - lead;
 	bool keep = !len || (len >= 7 && !strncmp(s + lead, "matcaps", 7) &&
 			     (len == 7 || s[lead + 7] == '/'));
 	int ret = put(b, s, lead);
@@ -63,7 +74,7 @@ static int rebase_value(struct buf *b, const char *v, size_t n, bool list)
 	size_t end = n, at = 0;
 	int ret = 0;
 
-	while (end > 0 && strchr(" \t\r\n", v[end - 1]))
+	while (end > 0 && (ini_blank(v[end - 1]) || v[end - 1] == '\n'))
 		end--;
 	for (size_t i = 0; i <= end && !ret; i++)
 		if (i == end || (list && v[i] == ',')) {
@@ -75,18 +86,19 @@ static int rebase_value(struct buf *b, const char *v, size_t n, bool list)
 	return ret ? ret : put(b, v + end, n - end);
 }
 
+/* One line of n bytes (its newline included where it has one), read
+ * within those bytes only: the text need not end in a NUL. */
 static int rebase_line(struct buf *b, const char *line, size_t n)
 {
-	size_t lead = strspn(line, " \t"), key_end, n_key;
+	size_t lead = lead_blanks(line, n), key_end, n_key;
 	const char *eq = memchr(line, '=', n);
-
-	if (!eq || strchr(";#[", line[lead]))
-		return put(b, line, n);
-	key_end = (size_t)(eq - line);
-	while (key_end > lead && strchr(" \t", line[key_end - 1]))
-		key_end--;
 	int ret;
 
+	if (!eq || lead == n || strchr(";#[", line[lead]))
+		return put(b, line, n);
+	key_end = (size_t)(eq - line);
+	while (key_end > lead && ini_blank(line[key_end - 1]))
+		key_end--;
 	if (!is_path_key(line + lead, key_end - lead))
 		return put(b, line, n);
 	n_key = (size_t)(eq + 1 - line);

@@ -15,7 +15,7 @@ struct ini_state {
 	int line, bad;
 };
 
-static bool blank(char c)
+bool ini_blank(char c)
 {
 	return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
 }
@@ -23,11 +23,11 @@ static bool blank(char c)
 /* s[0..*n) without the blanks around it: the new start. */
 static char *trim(char *s, size_t *n)
 {
-	while (*n && blank(*s)) {
+	while (*n && ini_blank(*s)) {
 		s++;
 		(*n)--;
 	}
-	while (*n && blank(s[*n - 1]))
+	while (*n && ini_blank(s[*n - 1]))
 		(*n)--;
 	s[*n] = '\0';
 	return s;

@@ -15,6 +15,7 @@
 #ifndef MK_INI_H
 #define MK_INI_H
 
+#include <stdbool.h>
 #include <stddef.h>
 
 struct ini_handler {
@@ -28,5 +29,9 @@ struct ini_handler {
 /* Reads text (size bytes, need not end in a newline or NUL). Returns the
  * count of bad lines, a key callback's negative return, or -ENOMEM. */
 int ini_parse(const char *text, size_t size, const struct ini_handler *h, void *user);
+
+/* The blanks dropped around lines, keys and values (a rewriter of
+ * settings text, ops/import_ini.c, splits them the same way). */
+bool ini_blank(char c);
 
 #endif
