@@ -88,6 +88,7 @@ SRC_RENDER  := render/background render/bake render/draw_list render/framing ren
 	       render/caption render/render render/render_draw render/render_live render/render_morph render/shader render/shading
 SRC_SCENE   := scene/lod scene/material scene/mesh scene/mesh_cache scene/mesh_cache_anim scene/mesh_cache_fields scene/mesh_cache_key scene/mesh_gen scene/mesh_pack scene/subdivide scene/tangent \
 	       scene/texture scene/caption scene/caption_text
+SRC_SCENE   += scene/gltf_json_depth
 SRC_SCENE   += scene/anim scene/anim_sampler scene/anim_palette scene/anim_play scene/anim_play_gpu scene/anim_play_split scene/anim_play_morph
 SRC_UTIL    := util/file util/folder_watch util/image util/log util/math3d
 LIB_C  := $(SRC_APP) $(SRC_OPS) $(SRC_CONTENT) $(SRC_CONFIG) $(SRC_STATE) $(SRC_DISPLAY) $(SRC_INPUT) $(SRC_CAMERA) $(SRC_RENDER) $(SRC_SCENE) $(SRC_UTIL)
