@@ -15,6 +15,7 @@ json() {
 }
 # le32 N: N as 4 bytes, little-endian (a GLB's header fields).
 le32() {
+	# shellcheck disable=SC2059 # the format is the four octal escapes
 	printf "$(printf '\\%03o\\%03o\\%03o\\%03o' $(($1 & 255)) $(($1 >> 8 & 255)) \
 		$(($1 >> 16 & 255)) $(($1 >> 24 & 255)))"
 }

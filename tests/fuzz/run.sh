@@ -77,7 +77,7 @@ for c in gltf glb; do
 done
 for t in $harnesses; do
 	set --
-	for f in tests/fuzz/regressions/$t-* "$gen"/$t-*; do
+	for f in tests/fuzz/regressions/"$t"-* "$gen"/"$t"-*; do
 		[ -e "$f" ] && set -- "$@" "$f"
 	done
 	[ $# -gt 0 ] || continue
