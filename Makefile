@@ -72,7 +72,7 @@ LDLIBS    = $(PKG_LIBS) -lmeshoptimizer -ldl -lm
 SRC_APP     := app/kiosk_models app/kiosk app/kiosk_anim app/kiosk_content app/kiosk_report app/reload \
 	       app/signals
 SRC_OPS     := ops/check ops/import ops/import_copy ops/import_ini ops/metrics ops/screen ops/service ops/status
-SRC_CONTENT := content/content content/content_cache content/content_look content/content_caption content/content_play content/matcap_set content/matcap_job content/model_list \
+SRC_CONTENT := content/content content/load_guard content/content_cache content/content_look content/content_caption content/content_play content/matcap_set content/matcap_job content/model_list \
 	       content/model_loader content/worker
 SRC_CONFIG  := config/options config/options_file config/model_settings config/settings config/settings_origin
 SRC_STATE   := state/app state/view state/power state/schedule
@@ -88,6 +88,7 @@ SRC_RENDER  := render/background render/bake render/draw_list render/framing ren
 	       render/caption render/render render/render_draw render/render_live render/render_morph render/shader render/shading
 SRC_SCENE   := scene/lod scene/material scene/mesh scene/mesh_cache scene/mesh_cache_anim scene/mesh_cache_fields scene/mesh_cache_key scene/mesh_gen scene/mesh_pack scene/subdivide scene/tangent \
 	       scene/texture scene/caption scene/caption_text
+SRC_SCENE   += scene/gltf_json_depth
 SRC_SCENE   += scene/anim scene/anim_sampler scene/anim_palette scene/anim_play scene/anim_play_gpu scene/anim_play_split scene/anim_play_morph
 SRC_UTIL    := util/file util/folder_watch util/image util/ini util/log util/math3d
 LIB_C  := $(SRC_APP) $(SRC_OPS) $(SRC_CONTENT) $(SRC_CONFIG) $(SRC_STATE) $(SRC_DISPLAY) $(SRC_INPUT) $(SRC_CAMERA) $(SRC_RENDER) $(SRC_SCENE) $(SRC_UTIL)

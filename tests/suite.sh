@@ -258,6 +258,25 @@ test_bad_input() {
 		bad_input "bad background $f" --background "$out/bad/$f"
 	done
 	bad_input "missing background" --background "$out/bad/no-such-background.jpg"
+	# JSON nested 30,000 deep killed the process (tinygltf's recursive
+	# parse); past the bound (64) it is one line naming the byte, in
+	# either container. At the bound it parses: refused, for no mesh.
+	for d in 30002 65 64; do
+		for c in gltf glb; do
+			sh tests/fuzz/deep_json.sh $d $c >"$out/bad/deep-$d.$c"
+			bad_input "JSON nested $d deep ($c)" --model "$out/bad/deep-$d.$c"
+			[ $d -ne 64 ] || check "JSON nested to the bound is parsed ($c)" sh -c "
+				! grep -q 'nested deeper' $out/bad/stderr &&
+				grep -q 'no triangles' $out/bad/stderr"
+		done
+	done
+	# A model that killed the live kiosk is passed over at the restart
+	# (tests/e2e/crash_memory.sh): the last line of defence.
+	sh tests/e2e/crash_memory.sh "$ASAN_KIOSK" "$out/models/knot.glb" "$out/models/sphere.glb" \
+		"$out/crash_memory" >"$out/crash_memory.log" 2>&1
+	grep -q "^ok every step ran" "$out/crash_memory.log" ||
+		echo "not ok the scenario stopped early" >>"$out/crash_memory.log"
+	results "crash memory" "$out/crash_memory.log"
 }
 
 # The command line itself, and config errors that stop the program.

@@ -43,6 +43,10 @@ struct content_config {
 	 * load, as --time's does, and the cache is passed by (its entry
 	 * for such a model is a still's and says nothing of the clip). */
 	bool anim_strict;
+	/* The live kiosk (not a setting): each model loaded is named in the
+	 * state folder first, so that one that kills the process is passed
+	 * over after the restart (content/load_guard.h). */
+	bool crash_memory;
 	double anim_fps;
 	double anim_pause_after;
 };

@@ -1,4 +1,5 @@
 #include "content/content.h"
+#include "content/load_guard.h"
 #include "content/model_list.h"
 #include "config/model_settings.h"
 #include "render/bake.h"
@@ -133,7 +134,7 @@ const struct content_config *content_settings(const struct content *s,
 }
 
 /* The model of one file, from the cache or parsed; strict: no knot. */
-static int load_mesh(struct content *s, const struct content_config *o, const char *path)
+static int load_mesh_file(struct content *s, const struct content_config *o, const char *path)
 {
 	int ret = own_settings(s, o, path);
 	unsigned warned;
@@ -154,6 +155,22 @@ static int load_mesh(struct content *s, const struct content_config *o, const ch
 		log_info("%s: not cached: each start says its warnings (above)", path);
 		s->cacheable = false;
 	}
+	return ret;
+}
+
+/* The live kiosk's loads are remembered while they run: one that kills
+ * the process is skipped after the restart. */
+static int load_mesh(struct content *s, const struct content_config *o, const char *path)
+{
+	char dir[PATH_MAX];
+	bool guard = o->crash_memory && !load_guard_dir(dir, sizeof(dir));
+	int ret = guard ? load_guard_enter(dir, path) : 0;
+
+	if (ret)
+		return ret;
+	ret = load_mesh_file(s, o, path);
+	if (guard)
+		load_guard_leave(dir);
 	return ret;
 }
 

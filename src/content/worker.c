@@ -101,6 +101,25 @@ static void *run(void *arg)
 	return NULL;
 }
 
+/* An explicit stack, not the default RLIMIT_STACK gives (ulimit -s or
+ * systemd's LimitSTACK=: 8 MiB on Debian, but "unlimited" means glibc's
+ * built-in size and another C library's may be 128 KiB): a job parses a
+ * model, and the JSON parsers recurse once per level of nesting that
+ * scene/gltf_json_depth.h lets through (worker.h says how much that is). */
+static int start_thread(struct worker *w)
+{
+	pthread_attr_t attr;
+	int ret = pthread_attr_init(&attr);
+
+	if (ret)
+		return ret;
+	ret = pthread_attr_setstacksize(&attr, WORKER_STACK_SIZE);
+	if (!ret)
+		ret = pthread_create(&w->thread, &attr, run, w);
+	pthread_attr_destroy(&attr);
+	return ret;
+}
+
 int worker_start(struct worker *w, struct worker_job *j)
 {
 	int ret;
@@ -111,7 +130,7 @@ int worker_start(struct worker *w, struct worker_job *j)
 	memcpy(w->releasing, w->retired, sizeof(w->retired));
 	w->releasing_count = w->retired_count;
 	w->retired_count = 0;
-	ret = -pthread_create(&w->thread, NULL, run, w);
+	ret = -start_thread(w);
 	if (ret) {
 		log_err("worker: no thread to load content: %s", strerror(-ret));
 		memcpy(w->retired, w->releasing, sizeof(w->retired));

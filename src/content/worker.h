@@ -14,6 +14,16 @@
 
 #include <stdbool.h>
 
+/* The worker thread's stack, set rather than left to RLIMIT_STACK (see
+ * worker.c): Debian's default size, made sure of. A job's deepest
+ * recursion is the JSON parse of a model, about 440 bytes a level of
+ * nesting (30,000 levels overflowed 8 MiB), bounded by GLTF_JSON_MAX_DEPTH
+ * (64): a parse at the bound measured 44 KiB in a release build, a Draco
+ * model's whole load 20 KiB (tests/unit/test_gltf_depth.c prints them,
+ * and fails past a quarter of this). Only the pages a job touches become
+ * memory. */
+#define WORKER_STACK_SIZE (8u << 20)
+
 /* Embedded first in each kind of job (reload, model, matcap). */
 struct worker_job {
 	void (*run)(struct worker_job *j);  /* on the worker thread */

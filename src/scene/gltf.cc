@@ -5,6 +5,7 @@
 #include "scene/gltf_fit.h"
 #include "scene/gltf_ext.h"
 #include "scene/gltf_fs.h"
+#include "scene/gltf_json_depth.h"
 #include "scene/gltf_material.h"
 #include "scene/gltf_mesh.h"
 #include "util/file.h"
@@ -38,6 +39,21 @@ bool parse(tinygltf::TinyGLTF &loader, tinygltf::Model *model, const uint8_t *da
 						(unsigned)size, ctx.dir);
 }
 
+// Before any parser: tinygltf's, and nlohmann's in gltf_files.cc, recurse
+// once per level of nesting (gltf_json_depth.h).
+bool depth_within(const char *name, const uint8_t *data, size_t size)
+{
+	struct gltf_json_depth d;
+
+	if (gltf_json_depth_file_within(data, size, GLTF_JSON_MAX_DEPTH, &d))
+		return true;
+	log_err("%s: JSON%s nested deeper than %u levels at byte %zu (line %zu%s); a glTF file "
+		"needs far fewer, refused",
+		gltf_ext::escape(name).c_str(), d.glb ? " chunk" : "", GLTF_JSON_MAX_DEPTH,
+		d.offset, d.line, d.glb ? " of the chunk" : "");
+	return false;
+}
+
 int load_memory(const char *name, const uint8_t *data, size_t size, const char *dir,
 		const struct gltf_options *o, struct mesh *out)
 {
@@ -59,6 +75,8 @@ int load_memory(const char *name, const uint8_t *data, size_t size, const char *
 			gltf_ext::escape(name).c_str(), size, GLTF_MAX_FILE);
 		return -EFBIG;
 	}
+	if (!depth_within(name, data, size))
+		return -EINVAL;
 	loader.SetFsCallbacks(gltf_fs_callbacks(&ctx));
 	// Images are decoded by our own libpng/libjpeg path, and only those a
 	// feature asked for; never by the stb copy inside the library.

@@ -1,6 +1,7 @@
 // The model's name from its glTF JSON: read apart from the model (the
 // caption is drawn on the worker beside it), and only when asked.
 #include "scene/gltf_name.h"
+#include "scene/gltf_json_depth.h"
 #include "util/file.h"
 
 #include <nlohmann/json.hpp>
@@ -85,8 +86,15 @@ std::string scene_name(const nlohmann::json &j, const char *want)
 
 char *gltf_model_name(const char *path, const char *scene)
 {
-	nlohmann::json j = nlohmann::json::parse(read_json(path), nullptr, false);
+	std::string text = read_json(path);
+	struct gltf_json_depth d;
 	std::string name;
+
+	// The model loader refused it already (gltf_json_depth.h); the
+	// caption's own parse must not recurse that deep either.
+	if (!gltf_json_depth_within(text.data(), text.size(), GLTF_JSON_MAX_DEPTH, &d))
+		return nullptr;
+	nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
 
 	if (!j.is_object())
 		return nullptr;

@@ -6,6 +6,7 @@
  * Every file stays under 4 KiB but the material ones, which embed a
  * 4x4 PNG. */
 #include "gltf_write.h"
+#include "scene/gltf_json_depth.h"
 #include "util/image.h"
 #include "scene/mesh.h"
 
@@ -26,6 +27,28 @@ static int put_model(const char *dir, const char *name, const struct mesh *m,
 		return 1;
 	}
 	return 0;
+}
+
+/* Node extras nested to the JSON bound (gltf_json_depth.h), and one level
+ * past it: the fuzzer starts on both sides of the line. (The attack itself,
+ * 30,000 levels, is past -max_len: tests/fuzz/run.sh replays it whole.) */
+static int write_deep(const char *dir, const struct mesh *s, struct gltf_write_opts o)
+{
+	/* The node lies 3 deep (file, "nodes", the node). */
+	int arrays = GLTF_JSON_MAX_DEPTH - 3, n = snprintf(NULL, 0, "\"extras\":"), bad;
+	char node[256];
+
+	snprintf(node, sizeof(node), "\"extras\":");
+	memset(node + n, '[', (size_t)arrays + 1);
+	memset(node + n + arrays + 1, ']', (size_t)arrays + 1);
+	node[n + 2 * arrays + 2] = '\0';
+	o.node = node;
+	o.container = GLTF_DATA_URI;
+	bad = put_model(dir, "sphere-extras-past-bound.gltf", s, o);
+	memmove(node + n, node + n + 1, strlen(node + n + 1));
+	node[n + 2 * arrays] = '\0';
+	o.container = GLTF_GLB;
+	return bad | put_model(dir, "sphere-extras-at-bound.glb", s, o);
 }
 
 static int write_models(const char *dir)
@@ -67,6 +90,7 @@ static int write_models(const char *dir)
 	o.thickness_range[0] = 100;
 	o.thickness_range[1] = 400;
 	bad |= put_model(dir, "sphere-material.glb", &s, o);
+	bad |= write_deep(dir, &s, ok);
 	mesh_release(&s);
 	return bad;
 }
