@@ -5,6 +5,7 @@
 #include "render/framing.h"
 #include "scene/gltf.h"
 #include "scene/lod.h"
+#include "scene/texture.h"
 #include "util/log.h"
 
 #include <limits.h>
@@ -30,6 +31,7 @@ static int load_model(const char *path, const struct content_config *o, struct m
 {
 	if (path) {
 		struct gltf_options g = {.textures = material_gltf_textures(&o->material),
+					 .texture_memory = texture_memory_budget(o->texture_memory),
 					 .scene = o->model_scene,
 					 .scene_setting = "[scene] model_scene",
 					 .play = o->anim_live ? play : NULL,
