@@ -273,6 +273,8 @@ int content_load_model(struct content *s, const struct content_config *o, const 
 		ret = content_load_look(s, content_settings(s, o), shown);
 	if (!ret)
 		ret = content_load_captions(s, content_settings(s, o), false);
+	if (!ret)
+		content_fit_captions(s, content_settings(s, o), width, height);
 	if (ret)
 		content_release(s);
 	return ret;
@@ -388,7 +390,7 @@ static void content_frame(struct content *s, const struct content_config *o, int
 		  s->zoom, f.start_x, f.start_y, f.turn_x, f.turn_y);
 }
 
-int content_prepare(struct content *s, const struct content_config *o, int width, int height)
+static int prepare_mesh(struct content *s, const struct content_config *o, int width, int height)
 {
 	bool displaced = s->material.features & MATERIAL_DISPLACEMENT;
 	int ret = 0;
@@ -427,6 +429,17 @@ int content_prepare(struct content *s, const struct content_config *o, int width
 		content_cache_pack(s, width, height);
 	if (!ret)
 		content_frame(s, o, width, height);
+	return ret;
+}
+
+/* The captions drawn at load, before the display's size was known, are
+ * fitted to it here (content_caption.c). */
+int content_prepare(struct content *s, const struct content_config *o, int width, int height)
+{
+	int ret = prepare_mesh(s, o, width, height);
+
+	if (!ret)
+		content_fit_captions(s, content_settings(s, o), width, height);
 	return ret;
 }
 

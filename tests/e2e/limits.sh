@@ -74,4 +74,32 @@ else
 			'under 16 MiB: the mesh cache is not written' "$dir/full-cache.log")" = 1 ]
 	fi
 fi
+# 3. Captions larger than the frame (each failed the whole frame: "a
+#    caption of 2768775x57 pixels: File too large", exit 1): laid out
+#    within it, cut with an ellipsis, and said once; --check-config warns
+#    of the same, naming the file and line.
+lines=$(awk 'BEGIN { for (i = 0; i < 20000; i++) printf "a\\n" }')
+run caption-lines --caption "$lines" --output "$dir/caption-lines.png"
+step "a caption of 20,000 lines: the frame is drawn (exit 0)" [ "$status" = 0 ]
+step "... one line: 13 of its 20001 lines shown" [ "$(grep -c \
+	'does not fit the 640x480 frame: 13 of its 20001 lines shown (the last ends with an ellipsis)' \
+	"$dir/caption-lines.log")" = 1 ]
+chars=$(awk 'BEGIN { for (i = 0; i < 100000; i++) printf "x" }')
+run caption-chars --caption "$chars" --output "$dir/caption-chars.png"
+step "a caption of 100,000 characters: the frame is drawn (exit 0)" [ "$status" = 0 ]
+step "... one line: 1 cut at the side" [ "$(grep -c \
+	'does not fit the 640x480 frame: 1 of its 1 lines shown, 1 cut at the side' \
+	"$dir/caption-chars.log")" = 1 ]
+printf '[caption]\nsize = 400\ntext = A%sA\n' "$(awk 'BEGIN { for (i = 0; i < 89; i++) printf "\\n" }')" \
+	>"$dir/caption.ini"
+run caption-size -C "$dir/caption.ini" --output "$dir/caption-size.png"
+step "size = 400 and 90 lines: the frame is drawn (exit 0)" [ "$status" = 0 ]
+step "... one line: 1 of its 90 lines, at a smaller size" grep -q \
+	'1 of its 90 lines shown (the last ends with an ellipsis), 0 cut at the side with an ellipsis, at size [0-9]*, not 400' \
+	"$dir/caption-size.log"
+"$kiosk" --size 640x480 -C "$dir/caption.ini" --check-config >"$dir/caption-check.log" 2>&1
+status=$?
+step "... --check-config: valid (0), and warns naming the file and line" [ "$status" = 0 ]
+step "... naming the file and line" grep -q \
+	"caption.ini:3: \\[caption\\] text: the caption does not fit the 640x480 frame" "$dir/caption-check.log"
 echo "ok every step ran"
