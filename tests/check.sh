@@ -12,7 +12,7 @@ set -u
 
 groups="layers unit golden egl program_check mirror_check ortho loaders bad-input corpus cli"
 groups="$groups config_doc baker live metrics install systemd fuzz soak no-camera board hands"
-groups="$groups base_color_check sync tsan systemd-board"
+groups="$groups base_color_check sync tsan systemd-board limits"
 
 unit_names() { (cd tests/unit && ls test_*.c) | sed 's/^test_//; s/\.c$//'; }
 golden_names() { (cd tests/golden && ls ./*.png) | sed 's|^\./||; s/\.png$//'; }
@@ -90,6 +90,7 @@ needs() {
 	cli) echo "all asan-kiosk $TOOLS/mkmodels" ;;
 	config_doc | install | systemd | no-camera) echo all ;;
 	bad-input) echo "asan-kiosk $TOOLS/mkmodels" ;;
+	limits) echo "all $TOOLS/mkmodels" ;;
 	corpus) echo "asan-kiosk fuzzers $TOOLS/mkmodels $TOOLS/silhouette $TOOLS/imgdiff" ;;
 	baker) echo "$BAKE" ;;
 	live) echo "asan-kiosk $TOOLS/mkmodels $TOOLS/notify_listen" ;;

@@ -37,6 +37,9 @@ timed test_loaders
 # 7. Malformed input, through the ASan binary: exit status 1, one error
 #    line that names the file, and no sanitizer report.
 timed test_bad_input
+# 7a. Content a stranger brings: textures that decode to gigabytes, a full
+#     cache file system, a caption larger than the frame.
+timed test_limits
 # 7b. The glTF corpus: files nobody on the project wrote, and files that
 #     gltfpack and Draco's tools make, through the ASan build.
 timed test_corpus

@@ -291,6 +291,16 @@ test_corpus() {
 	results corpus "$out/corpus.log"
 }
 
+# What a stranger's content may take (issue 32): textures that decode to
+# gigabytes, a full cache file system, captions larger than the frame.
+test_limits() {
+	sh tests/e2e/limits.sh "$KIOSK" "$TOOLS/mkmodels" "$out/limits" $offscreen \
+		>"$out/limits.log" 2>&1
+	grep '^note ' "$out/limits.log" | sed 's/^note /NOTE /'
+	grep -v '^note ' "$out/limits.log" >"$out/limits.steps"
+	results limits "$out/limits.steps" "$out/limits.log"
+}
+
 test_cli() {
 	check "--help" sh -c "$KIOSK --help | grep -q '^Usage: matcap-kiosk'"
 	check "--version" sh -c "$KIOSK --version | grep -q '^matcap-kiosk [0-9]'"

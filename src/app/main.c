@@ -15,6 +15,7 @@
 #include "ops/check.h"
 #include "render/poster.h"
 #include "render/render_scale.h"
+#include "scene/mesh_cache.h"
 
 #include <errno.h>
 #include <math.h>
@@ -389,6 +390,29 @@ static enum exit_code start(struct options *o, char **argv)
 	return EXIT_CODE_OK;
 }
 
+/* Mesa maps its shader cache's index whole: on a full cache file system
+ * a page of it cannot be backed, and the kiosk dies of SIGBUS in the
+ * driver. So the cache is turned off before any context exists, and any
+ * thread. */
+static void guard_shader_cache(void)
+{
+	const char *mesa = getenv("MESA_SHADER_CACHE_DIR");
+	char dir[4096];
+	uint64_t left = 0;
+
+	if (mesa && *mesa)
+		snprintf(dir, sizeof(dir), "%s", mesa);
+	else if (mesh_cache_dir(dir, sizeof(dir)))
+		return;
+	if (!mesh_cache_dir_full(dir, &left))
+		return;
+	setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
+	setenv("MESA_GLSL_CACHE_DISABLE", "true", 1); /* its name before Mesa 23 */
+	log_warn("%s: %llu KiB free, under 16 MiB: Mesa's shader cache is off "
+		 "(MESA_SHADER_CACHE_DISABLE), so a full disk cannot stop the kiosk",
+		 dir, (unsigned long long)(left >> 10));
+}
+
 int main(int argc, char **argv)
 {
 	struct options opts;
@@ -400,6 +424,7 @@ int main(int argc, char **argv)
 		return camera_helper_main(CAMERA_HELPER_FD);
 	status = options_parse(&opts, argc, argv);
 	log_set_level(opts.log_level);
+	guard_shader_cache();
 	ret = status == OPTIONS_OK ? start(&opts, argv) : parse_failed(status, argc, argv);
 	options_release(&opts);
 	return ret;

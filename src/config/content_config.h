@@ -31,7 +31,10 @@ struct content_config {
 	bool ortho;
 	double yaw, pitch; /* degrees, the resting orientation */
 	double lod_pixels; /* simplify to this error on the display; 0: off */
-	int rotation;	   /* the panel's, degrees */
+	/* [scene] texture_memory: MiB the model's decoded textures share; 0:
+	 * auto (scene/texture.h) */
+	double texture_memory;
+	int rotation; /* the panel's, degrees */
 	struct material_config material;
 	struct frame_config frame;     /* [frame]: orientation, start view, limits, stops */
 	struct caption_config caption; /* [caption] */

@@ -107,6 +107,8 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "tilt the model about the horizontal axis"},
     {"lod-pixels", 0, OPTIONS_SCENE, "lod_pixels", K_DOUBLE, AT(content.lod_pixels), 0, 64, 0, NULL,
      "PX", "draw no detail under PX pixels: simplify smaller triangles to that; 0: never"},
+    {"texture-memory", 0, OPTIONS_SCENE, "texture_memory", K_DOUBLE, AT(content.texture_memory), 8,
+     65536, 1, auto_names, "MIB", "MiB the model's decoded textures share; auto: RAM/4, <= 256"},
     {"log-level", 0, OPTIONS_KIOSK, "log_level", K_LEVEL, AT(log_level), 0, 0, 0, log_level_names,
      "LEVEL", "error, warning, info or debug"},
     {"attract-after", 0, OPTIONS_KIOSK, "attract_after", K_DOUBLE, AT(app.attract_after_s), 0,

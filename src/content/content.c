@@ -6,6 +6,7 @@
 #include "render/framing.h"
 #include "scene/gltf.h"
 #include "scene/lod.h"
+#include "scene/texture.h"
 #include "util/log.h"
 
 #include <limits.h>
@@ -31,6 +32,7 @@ static int load_model(const char *path, const struct content_config *o, struct m
 {
 	if (path) {
 		struct gltf_options g = {.textures = material_gltf_textures(&o->material),
+					 .texture_memory = texture_memory_budget(o->texture_memory),
 					 .scene = o->model_scene,
 					 .scene_setting = "[scene] model_scene",
 					 .play = o->anim_live ? play : NULL,
@@ -288,6 +290,8 @@ int content_load_model(struct content *s, const struct content_config *o, const 
 		ret = content_load_look(s, content_settings(s, o), shown);
 	if (!ret)
 		ret = content_load_captions(s, content_settings(s, o), false);
+	if (!ret)
+		content_fit_captions(s, content_settings(s, o), width, height);
 	if (ret)
 		content_release(s);
 	return ret;
@@ -403,7 +407,7 @@ static void content_frame(struct content *s, const struct content_config *o, int
 		  s->zoom, f.start_x, f.start_y, f.turn_x, f.turn_y);
 }
 
-int content_prepare(struct content *s, const struct content_config *o, int width, int height)
+static int prepare_mesh(struct content *s, const struct content_config *o, int width, int height)
 {
 	bool displaced = s->material.features & MATERIAL_DISPLACEMENT;
 	int ret = 0;
@@ -442,6 +446,17 @@ int content_prepare(struct content *s, const struct content_config *o, int width
 		content_cache_pack(s, width, height);
 	if (!ret)
 		content_frame(s, o, width, height);
+	return ret;
+}
+
+/* The captions drawn at load, before the display's size was known, are
+ * fitted to it here (content_caption.c). */
+int content_prepare(struct content *s, const struct content_config *o, int width, int height)
+{
+	int ret = prepare_mesh(s, o, width, height);
+
+	if (!ret)
+		content_fit_captions(s, content_settings(s, o), width, height);
 	return ret;
 }
 

@@ -155,6 +155,10 @@ struct view content_view(const struct content_config *c);
  * journal says why), unless strict. */
 int content_load_captions(struct content *s, const struct content_config *c, bool strict);
 void content_release_captions(struct content *s);
+/* The pictures larger than a width x height panel (turned by c's
+ * rotation) drawn again within it, cut with an ellipsis; the journal
+ * says what was cut, once a picture. */
+void content_fit_captions(struct content *s, const struct content_config *c, int width, int height);
 /* The picture shown at stop (the app state's; -1: none): the stop's, else
  * the caption (empty: nothing). */
 const struct image *content_caption(const struct content *s, int stop);

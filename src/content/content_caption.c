@@ -7,6 +7,7 @@
 #include "util/log.h"
 
 #include <errno.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -41,8 +42,12 @@ static int load_caption(struct content *s, const struct content_config *o, bool 
 			 : NULL;
 	int ret;
 
-	ret =
-	    caption_wanted(&o->caption) ? caption_render(&o->caption, name, &s->caption) : -ENOENT;
+	/* The frame is not known yet: content_fit_captions says what is cut. */
+	struct caption_fit fit = {.quiet = true};
+
+	ret = caption_wanted(&o->caption)
+		  ? caption_render_fit(&o->caption, name, &fit, &s->caption, NULL)
+		  : -ENOENT;
 	free(name);
 	if (ret == -ENOENT || (ret && !strict))
 		return 0;
@@ -66,7 +71,8 @@ static int load_stops(struct content *s, const struct content_config *o, bool st
 		if (!f.stops[i].text[0])
 			continue;
 		c.text = f.stops[i].text;
-		ret = caption_render(&c, f.stops[i].text, &s->stop_caption[i]);
+		ret = caption_render_fit(&c, f.stops[i].text, &(struct caption_fit){.quiet = true},
+					 &s->stop_caption[i], NULL);
 		if (ret && ret != -ENOENT && strict)
 			return ret;
 		if (ret && ret != -ENOENT)
@@ -86,6 +92,52 @@ int content_load_captions(struct content *s, const struct content_config *o, boo
 	if (!ret)
 		ret = load_stops(s, o, strict);
 	return ret;
+}
+
+/* A picture larger than the frame (less the margin round it) drawn again
+ * within it; one that fits is kept as it is. */
+static void fit_picture(const struct caption_config *c, const char *name, const char *what,
+			const int frame[2], struct image *img)
+{
+	struct caption_fit fit = {frame[0], frame[1], what, false};
+	struct image again;
+
+	if (!img->rgba ||
+	    (img->width <= frame[0] - 2 * c->padding && img->height <= frame[1] - 2 * c->padding))
+		return;
+	if (caption_render_fit(c, name, &fit, &again, NULL))
+		return;
+	image_release(img);
+	*img = again;
+}
+
+void content_fit_captions(struct content *s, const struct content_config *o, int width, int height)
+{
+	int frame[2] = {o->rotation % 180 ? height : width, o->rotation % 180 ? width : height};
+	char what[512];
+	struct app_frame f;
+	struct quat rest;
+
+	if (width <= 0 || height <= 0)
+		return;
+	snprintf(what, sizeof(what), "%s%s[caption] text", s->model_path ? s->model_path : "",
+		 s->model_path ? ": " : "");
+	if (s->caption.rgba) {
+		char *name = o->caption.text && !strcmp(o->caption.text, "auto")
+				 ? model_name(s->model_path, o->model_scene)
+				 : NULL;
+
+		fit_picture(&o->caption, name, what, frame, &s->caption);
+		free(name);
+	}
+	content_app_frame(o, &f, &rest);
+	for (int i = 0; i < f.stop_count && i < CAPTION_STOPS; i++) {
+		struct caption_config c = o->caption;
+
+		c.text = f.stops[i].text;
+		snprintf(what, sizeof(what), "[frame] stops: stop %d's text", i + 1);
+		fit_picture(&c, f.stops[i].text, what, frame, &s->stop_caption[i]);
+	}
 }
 
 void content_release_captions(struct content *s)

@@ -296,6 +296,25 @@ static void check_matcaps(struct check *c)
 	matcap_set_free(set);
 }
 
+/* The caption laid out as the kiosk lays it out in the configured frame:
+ * a warning (the file and line) says what would be cut. */
+static void check_caption_fits(struct check *c, const struct caption_config *cap)
+{
+	const struct display_config *d = &c->o->display;
+	bool turned = c->o->content.rotation % 180 != 0;
+	char at[512], what[600];
+	struct caption_fit fit = {turned ? d->height : d->width, turned ? d->width : d->height,
+				  what, false};
+	struct image img;
+
+	if (!cap->text || !strcmp(cap->text, "auto"))
+		return; /* the model's name: said as each model loads */
+	where(c->o, def_of("caption", "text"), at, sizeof(at));
+	snprintf(what, sizeof(what), "%s: [caption] text", at);
+	if (!caption_render_fit(cap, NULL, &fit, &img, NULL))
+		image_release(&img);
+}
+
 /* The caption's font, drawn once as the kiosk draws it, and its logo. */
 static void check_caption(struct check *c, const struct caption_config *cap)
 {
@@ -311,6 +330,8 @@ static void check_caption(struct check *c, const struct caption_config *cap)
 	image_release(&img);
 	if (ret || cap->font)
 		found(c, "caption", "font", cap->font ? cap->font : CAPTION_FONT_DEFAULT, ret);
+	if (!ret)
+		check_caption_fits(c, cap);
 }
 
 static void list_files(struct check *c)

@@ -63,6 +63,32 @@ char *caption_text(const struct caption_config *c, const char *name);
  * errno after logging what failed (the file and why). */
 int caption_render(const struct caption_config *c, const char *name, struct image *out);
 
+/* Where a caption must fit, and who says so when it does not. */
+struct caption_fit {
+	int width, height; /* the frame (turned for the panel); 0: IMAGE_MAX_SIDE */
+	const char *what;  /* the journal's name for the text, e.g. "[caption] text" */
+	bool quiet;	   /* a draw for a frame not known yet: nothing said */
+};
+
+/* What the layout kept of a text (caption_layout_fit). */
+struct caption_cut {
+	int lines, shown; /* lines in the text, lines kept */
+	int cut;	  /* kept lines cut at the side with an ellipsis */
+};
+
+/* How many of `lines` lines line_h pixels high fit in max_h pixels:
+ * at least one. */
+int caption_lines_fit(int lines, long line_h, long max_h);
+
+/* caption_render, laid out within fit's frame (less the padding outside
+ * the box and inside it, and the logo): lines past the frame's height are
+ * left out and the last one kept ends with an ellipsis; a line wider than
+ * the frame is cut with one (at the size asked: the size is not reduced,
+ * so a caption reads as the operator set it). One warning names fit->what
+ * and what was cut. *cut (may be NULL) says it. */
+int caption_render_fit(const struct caption_config *c, const char *name,
+		       const struct caption_fit *fit, struct image *out, struct caption_cut *cut);
+
 /* Blend the caption's picture over frame (straight RGBA, opaque) with its
  * top-left corner at x, y, clipped: the frame --status reads back when an
  * overlay plane shows the caption, as the screen shows it. */

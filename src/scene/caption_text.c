@@ -12,12 +12,14 @@
 #include <hb-ft.h>
 #include <hb.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 struct glyph {
 	unsigned id;
 	long x, y; /* 26.6 pixels from the line's start on its baseline, y up */
+	long pen;  /* 26.6: where its advance starts (a cut line ends here) */
 };
 
 struct line {
@@ -31,7 +33,7 @@ struct run {
 	FriBidiLevel level;
 };
 
-static int push(struct line *l, unsigned id, long x, long y)
+static int push(struct line *l, unsigned id, long x, long y, long pen)
 {
 	if (l->n == l->cap) {
 		size_t cap = l->cap ? l->cap * 2 : 32;
@@ -42,7 +44,7 @@ static int push(struct line *l, unsigned id, long x, long y)
 		l->g = g;
 		l->cap = cap;
 	}
-	l->g[l->n++] = (struct glyph){id, x, y};
+	l->g[l->n++] = (struct glyph){id, x, y, pen};
 	return 0;
 }
 
@@ -63,7 +65,8 @@ static int shape_run(hb_font_t *font, const uint32_t *u, int len, const struct r
 	info = hb_buffer_get_glyph_infos(b, &n);
 	pos = hb_buffer_get_glyph_positions(b, &n);
 	for (unsigned i = 0; i < n && !ret; i++) {
-		ret = push(l, info[i].codepoint, l->width + pos[i].x_offset, pos[i].y_offset);
+		ret = push(l, info[i].codepoint, l->width + pos[i].x_offset, pos[i].y_offset,
+			   l->width);
 		l->width += pos[i].x_advance;
 	}
 	if (!hb_buffer_allocation_successful(b))
@@ -196,29 +199,77 @@ struct layout {
 	struct line *lines;
 	int count;
 	long text_w, line_h, ascender; /* whole pixels */
+	struct caption_cut cut;
 };
 
-static int shape_text(hb_font_t *font, FT_Face face, const char *text, struct layout *lay)
+int caption_lines_fit(int lines, long line_h, long max_h)
+{
+	long n = line_h > 0 ? max_h / line_h : lines;
+
+	n = n < 1 ? 1 : n;
+	return n < lines ? (int)n : lines;
+}
+
+/* The line cut to max (26.6) with an ellipsis at its end (in visual
+ * order: a right-to-left line loses its last letters on the right too),
+ * or only ended with one when `more` (lines were left out below). */
+static int ellipsize(hb_font_t *font, struct line *l, long max, bool more)
+{
+	hb_codepoint_t id = 0;
+	int dots = 1;
+	long ell;
+	size_t k = l->n;
+	int ret = 0;
+
+	if (!more && l->width <= max)
+		return 0;
+	/* A font without U+2026 has three full stops. */
+	if (!hb_font_get_nominal_glyph(font, 0x2026, &id)) {
+		hb_font_get_nominal_glyph(font, '.', &id);
+		dots = 3;
+	}
+	ell = dots * (long)hb_font_get_glyph_h_advance(font, id);
+	while (k > 0 && (k < l->n ? l->g[k].pen : l->width) + ell > max)
+		k--;
+	l->width = k < l->n ? l->g[k].pen : l->width;
+	l->n = k;
+	for (int i = 0; i < dots && !ret; i++) {
+		ret = push(l, id, l->width, 0, l->width);
+		l->width += ell / dots;
+	}
+	return ret;
+}
+
+/* The lines that fit max_h pixels, each cut to max_w: only those kept are
+ * shaped (a text of 20,000 lines is a few). */
+static int shape_text(hb_font_t *font, FT_Face face, const char *text, long max_w, long max_h,
+		      struct layout *lay)
 {
 	int ret = 0;
 
-	lay->count = 1;
+	lay->line_h = (face->size->metrics.height + 63) / 64;
+	lay->ascender = (face->size->metrics.ascender + 63) / 64;
+	lay->cut.lines = 1;
 	for (const char *p = text; *p; p++)
-		lay->count += *p == '\n';
+		lay->cut.lines += *p == '\n';
+	lay->count = caption_lines_fit(lay->cut.lines, lay->line_h, max_h);
+	lay->cut.shown = lay->count;
 	lay->lines = calloc((size_t)lay->count, sizeof(*lay->lines));
 	if (!lay->lines)
 		return -ENOMEM;
 	for (int i = 0; i < lay->count && !ret; i++) {
 		const char *end = strchr(text, '\n');
 		int bytes = end ? (int)(end - text) : (int)strlen(text);
+		bool more = i == lay->count - 1 && lay->count < lay->cut.lines;
 
 		ret = shape_line(font, text, bytes, &lay->lines[i]);
+		lay->cut.cut += lay->lines[i].width > (max_w - 1) * 64;
+		if (!ret)
+			ret = ellipsize(font, &lay->lines[i], (max_w - 1) * 64, more);
 		if (lay->lines[i].width / 64 + 1 > lay->text_w)
 			lay->text_w = lay->lines[i].width / 64 + 1;
 		text = end ? end + 1 : text + bytes;
 	}
-	lay->line_h = (face->size->metrics.height + 63) / 64;
-	lay->ascender = (face->size->metrics.ascender + 63) / 64;
 	return ret;
 }
 
@@ -317,7 +368,61 @@ static int open_font(const struct caption_config *c, FT_Library *lib, FT_Face *f
 	return 0;
 }
 
-int caption_render(const struct caption_config *c, const char *name, struct image *out)
+/* The text's room: the frame less the margin outside the box, the padding
+ * inside it, and the logo with its gap. At least a pixel: an ellipsis
+ * then shows, a little past the frame. */
+static void text_room(const struct caption_config *c, const struct caption_fit *fit,
+		      const struct image *logo, bool text, long room[2])
+{
+	long frame[2] = {fit && fit->width > 0 ? fit->width - 2L * c->padding : IMAGE_MAX_SIDE,
+			 fit && fit->height > 0 ? fit->height - 2L * c->padding : IMAGE_MAX_SIDE};
+	long gap = logo->width && text ? c->padding : 0;
+
+	for (int k = 0; k < 2; k++) {
+		frame[k] = frame[k] > IMAGE_MAX_SIDE ? IMAGE_MAX_SIDE : frame[k];
+		room[k] = frame[k] - 2L * c->padding - (k ? 0 : logo->width + gap);
+		room[k] = room[k] < 1 ? 1 : room[k];
+	}
+}
+
+/* The size is the operator's unless one line is taller than the frame:
+ * then the largest that fits one, down to CAPTION_SIZE_FLOOR. Returns the
+ * size used. */
+#define CAPTION_SIZE_FLOOR 8
+static int fit_size(const struct caption_config *c, FT_Face face, long room_h)
+{
+	int size = (int)((c->size > 0 ? c->size : CAPTION_SIZE_DEFAULT) + 0.5);
+	long line_h = (face->size->metrics.height + 63) / 64;
+
+	if (line_h <= room_h || size <= CAPTION_SIZE_FLOOR)
+		return size;
+	size = (int)((long)size * room_h / line_h);
+	size = size < CAPTION_SIZE_FLOOR ? CAPTION_SIZE_FLOOR : size;
+	FT_Set_Pixel_Sizes(face, 0, (FT_UInt)size);
+	return size;
+}
+
+static void say_cut(const struct caption_config *c, const struct caption_fit *fit, int size,
+		    const struct caption_cut *cut)
+{
+	int asked = (int)((c->size > 0 ? c->size : CAPTION_SIZE_DEFAULT) + 0.5);
+	char smaller[96] = "";
+
+	if (!fit || fit->quiet || (cut->shown == cut->lines && !cut->cut && size == asked))
+		return;
+	if (size != asked)
+		snprintf(smaller, sizeof(smaller), ", at size %d, not %d (a line is taller)", size,
+			 asked);
+	log_warn("%s: the caption does not fit the %dx%d frame: %d of its %d lines shown%s, "
+		 "%d cut at the side with an ellipsis%s",
+		 fit->what ? fit->what : "[caption] text", fit->width ? fit->width : IMAGE_MAX_SIDE,
+		 fit->height ? fit->height : IMAGE_MAX_SIDE, cut->shown, cut->lines,
+		 cut->shown < cut->lines ? " (the last ends with an ellipsis)" : "", cut->cut,
+		 smaller);
+}
+
+int caption_render_fit(const struct caption_config *c, const char *name,
+		       const struct caption_fit *fit, struct image *out, struct caption_cut *cut)
 {
 	char *text = caption_text(c, name);
 	struct image logo = {0};
@@ -325,7 +430,8 @@ int caption_render(const struct caption_config *c, const char *name, struct imag
 	FT_Library lib = NULL;
 	FT_Face face = NULL;
 	hb_font_t *font = NULL;
-	int ret = 0;
+	long room[2];
+	int ret = 0, size;
 
 	memset(out, 0, sizeof(*out));
 	if (!text && !(c->logo && *c->logo)) {
@@ -337,13 +443,19 @@ int caption_render(const struct caption_config *c, const char *name, struct imag
 	if (!ret)
 		ret = open_font(c, &lib, &face);
 	if (!ret && text) {
+		text_room(c, fit, &logo, true, room);
+		size = fit_size(c, face, room[1]);
 		font = hb_ft_font_create_referenced(face);
-		ret = font ? shape_text(font, face, text, &lay) : -ENOMEM;
+		ret = font ? shape_text(font, face, text, room[0], room[1], &lay) : -ENOMEM;
 		if (ret)
 			log_err("[caption] text: cannot shape it: %s", strerror(-ret));
+		else
+			say_cut(c, fit, size, &lay.cut);
 	}
 	if (!ret)
 		ret = compose(c, face, &lay, &logo, out);
+	if (cut)
+		*cut = lay.cut;
 out:
 	layout_release(&lay);
 	if (font)
@@ -355,4 +467,11 @@ out:
 	image_release(&logo);
 	free(text);
 	return ret;
+}
+
+int caption_render(const struct caption_config *c, const char *name, struct image *out)
+{
+	struct caption_fit fit = {0, 0, NULL, false};
+
+	return caption_render_fit(c, name, &fit, out, NULL);
 }

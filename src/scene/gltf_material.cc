@@ -104,8 +104,40 @@ void read_texture(const tinygltf::Model &m, int texture, int tex_coord, const Gl
 	}
 	std::string label = name + " " + what + " (image " + std::to_string(source) + ")";
 	decoded++;
-	if (image_decode(label.c_str(), data, size, out))
+	int full[2] = {0, 0};
+	if (image_decode_fit(label.c_str(), data, size, &images.fit, out, &full[0], &full[1])) {
 		log_warn("%s: %s is not used", name.c_str(), what);
+		return;
+	}
+	GltfScaled &s = images.scaled;
+	s.decoded++;
+	if (out->width == full[0] && out->height == full[1])
+		return;
+	s.scaled++;
+	struct image_fit side = {images.fit.side, 0};
+	int w, h;
+	image_fit_shifts(full[0], full[1], &side, nullptr, nullptr, &w, &h);
+	s.budget += out->width != w || out->height != h;
+	if ((size_t)full[0] * (size_t)full[1] >= (size_t)s.from[0] * (size_t)s.from[1]) {
+		s.from[0] = full[0], s.from[1] = full[1];
+		s.to[0] = out->width, s.to[1] = out->height;
+	}
+}
+
+// The maps material `index` has of `textures` (each is decoded once).
+unsigned material_maps(const tinygltf::Model &m, int index, unsigned textures)
+{
+	if (index < 0 || (size_t)index >= m.materials.size())
+		return 0;
+	const tinygltf::Material &mat = m.materials[(size_t)index];
+	auto it = mat.extensions.find("KHR_materials_iridescence");
+	bool film = it != mat.extensions.end() && it->second.IsObject() &&
+		    it->second.Has("iridescenceThicknessTexture");
+	return ((textures & GLTF_TEXTURE_BASE_COLOR) &&
+		mat.pbrMetallicRoughness.baseColorTexture.index >= 0) +
+	       ((textures & GLTF_TEXTURE_NORMAL) && mat.normalTexture.index >= 0) +
+	       ((textures & GLTF_TEXTURE_OCCLUSION) && mat.occlusionTexture.index >= 0) +
+	       ((textures & GLTF_TEXTURE_THICKNESS) && film);
 }
 
 void read_iridescence(const tinygltf::Material &mat, struct mesh_material *out, int *thickness,
@@ -206,6 +238,35 @@ bool is_blend(const tinygltf::Model &m, int material)
 }
 
 } // namespace
+
+void gltf_fit_textures(const tinygltf::Model &m, const std::vector<int> &slots, unsigned textures,
+		       size_t budget, const GltfImages &images)
+{
+	unsigned maps = 0;
+	for (int slot : slots)
+		maps += material_maps(m, slot, textures);
+	images.fit.side = GLTF_TEXTURE_SIDE;
+	images.fit.bytes = budget && maps ? budget / maps : 0;
+	images.scaled = GltfScaled();
+}
+
+void gltf_say_scaled(const std::string &name, const GltfImages &images, size_t budget)
+{
+	const GltfScaled &s = images.scaled;
+	if (!s.scaled)
+		return;
+	// Over the side a material map is drawn at: resampled as before,
+	// only sooner. Over the budget: less detail than it would have had.
+	std::string fit =
+	    budget ? " and to [scene] texture_memory = " + std::to_string(budget >> 20) +
+			 " MiB shared among them (" + std::to_string(s.budget) + " halved for it)"
+		   : std::string();
+	log_msg(s.budget ? LOG_WARN : LOG_INFO,
+		"%s: %u of %u textures made smaller as they were decoded, to at most %d pixels a "
+		"side (the most a material map is drawn at)%s: %dx%d to %dx%d",
+		name.c_str(), s.scaled, s.decoded, GLTF_TEXTURE_SIDE, fit.c_str(), s.from[0],
+		s.from[1], s.to[0], s.to[1]);
+}
 
 int gltf_group_ranges(const tinygltf::Model &m, const std::vector<GltfPart> &prims,
 		      const uint32_t *indices, struct mesh *out, std::vector<int> *slots_out)

@@ -18,10 +18,20 @@ struct GltfFiles;
 // folder or below it, or a data: URI), by image index, kept by
 // gltf_keep_image when a texture may be wanted. Images in a bufferView are
 // read from the buffer, with our own bounds checks.
+// What decoding made smaller, for the one journal line that says so.
+struct GltfScaled {
+	unsigned decoded = 0, scaled = 0, budget = 0; // budget: halved for the budget
+	int from[2] = {0, 0}, to[2] = {0, 0};	      // the largest one scaled
+};
+
 struct GltfImages {
 	bool keep = false;
 	const struct GltfFiles *files = nullptr; // to say why a URI's file was not read
 	std::vector<std::vector<unsigned char>> bytes;
+	// How large a decoded texture may be (gltf_fit_textures), and what was
+	// made smaller: decode state, set while the bytes above are read only.
+	mutable struct image_fit fit = {0, 0};
+	mutable GltfScaled scaled;
 };
 
 // tinygltf's image callback: decodes nothing, keeps URI images' bytes.
@@ -69,5 +79,13 @@ int gltf_group_ranges(const tinygltf::Model &m, const std::vector<GltfPart> &par
 void gltf_read_material(const tinygltf::Model &m, int index, unsigned textures, unsigned decode,
 			const GltfImages &images, const std::string &name,
 			struct mesh_material *out);
+
+// Share `budget` bytes (0: none) among the maps the materials in `slots`
+// decode of `textures`, each at most GLTF_TEXTURE_SIDE a side, into
+// images.fit.
+void gltf_fit_textures(const tinygltf::Model &m, const std::vector<int> &slots, unsigned textures,
+		       size_t budget, const GltfImages &images);
+// One line when textures were made smaller as they were decoded.
+void gltf_say_scaled(const std::string &name, const GltfImages &images, size_t budget);
 
 #endif

@@ -607,16 +607,18 @@ bool prepare(tinygltf::Model &m, const char *name, Pose *pose, std::string *err)
 // model, its factors only; then every range's material with its own
 // textures (base map, normal, occlusion, film thickness), each decoded once.
 // Without UVs no texture can be placed.
-void read_materials(const Builder &b, const tinygltf::Model &m, unsigned textures,
+void read_materials(const Builder &b, const tinygltf::Model &m, unsigned textures, size_t budget,
 		    const GltfImages &images, struct mesh *out)
 {
 	unsigned t = b.any_uvs ? textures : 0;
+	gltf_fit_textures(m, b.slots, t, budget, images);
 	gltf_read_material(m, b.material, t, 0, images, b.name, &out->material);
 	for (size_t k = 0; k < b.slots.size(); k++) {
 		gltf_read_material(m, b.slots[k], t, ~0u, images, b.name, &out->materials[k]);
 		out->material.images_decoded += out->materials[k].images_decoded;
 		out->material.has_base_map |= out->materials[k].has_base_map;
 	}
+	gltf_say_scaled(gltf_ext::escape(b.name), images, budget);
 	unsigned mapped = 0;
 	for (uint32_t k = 0; k < out->material_count; k++)
 		mapped += out->materials[k].base_map.width > 0;
@@ -680,7 +682,7 @@ int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_opti
 		log_info("%s: %zu primitives of points or lines left out (only triangles show)",
 			 shown.c_str(), b.not_triangles);
 	if (ret == 0 && say)
-		read_materials(b, m, o->textures, images, out);
+		read_materials(b, m, o->textures, o->texture_memory, images, out);
 	if (ret == 0 && orig)
 		keep_play(b, *orig, *fit, o);
 	gltf_keep_colors(out,

@@ -6,6 +6,13 @@
 #define MK_GLTF_TEXTURE_H
 
 #include <stdbool.h>
+#include <stddef.h>
+
+/* The most a material map is drawn at (scene/material.c brings each to a
+ * power of two at most this: every GLES2 GPU takes 2048, so no GL query
+ * is needed): a larger texture is made smaller as it is decoded, so that
+ * its full size is never held. */
+#define GLTF_TEXTURE_SIDE 2048
 
 /* The material textures a caller may ask to have decoded. */
 enum gltf_texture {
@@ -23,6 +30,9 @@ struct mesh_anim;
 /* What to load beyond the geometry. */
 struct gltf_options {
 	unsigned textures; /* enum gltf_texture bits */
+	/* Bytes the decoded textures may take, shared among them (a texture
+	 * over its share is halved until it fits); 0: no limit. */
+	size_t texture_memory;
 	/* The scene to show: an index ("1") or a scene's name; NULL or "" for
 	 * the file's `scene`, else the first. A file without scenes shows
 	 * every tree of nodes. */

@@ -491,8 +491,18 @@ int mesh_cache_write_play(const char *dir, const struct mesh_cache_key *key,
 	char path[PATH_MAX];
 	struct cache_header h;
 	struct file_atomic a;
-	int ret = make_dirs(dir);
+	uint64_t left = 0;
+	int ret;
 
+	/* A full disk: a write that fails half way is removed, but what it
+	 * took meanwhile may be what Mesa or the journal needed. */
+	if (mesh_cache_dir_full(dir, &left)) {
+		log_warn("%s: %llu KiB free, under 16 MiB: the mesh cache is not written; the next "
+			 "start prepares the model again",
+			 dir, (unsigned long long)(left >> 10));
+		return -ENOSPC;
+	}
+	ret = make_dirs(dir);
 	if (!ret)
 		ret = entry_path(dir, key, path, sizeof(path));
 	if (!ret)

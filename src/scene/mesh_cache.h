@@ -48,6 +48,17 @@ int mesh_cache_scene_key(const char *model, double lod_pixels, const struct mate
  * Returns 0, or -ENOENT when none can be named, -ENAMETOOLONG. */
 int mesh_cache_dir(char *buf, size_t size);
 
+/* Whether a cache file system with bytes_free of bytes_total is too full
+ * to write to: under 16 MiB free (total 0: unknown, not full). Not a
+ * share: 5 % of a 32 GB card is 1.6 GB, and would turn the caches off on
+ * a card with room; 16 MiB holds Mesa's shader-cache index (mapped whole,
+ * about 1.3 MB: a page it cannot back is SIGBUS) and a model's entry. */
+bool mesh_cache_space_low(uint64_t bytes_free, uint64_t bytes_total);
+/* The same for dir's file system (dir or the nearest folder above it that
+ * exists); *bytes_free (may be NULL) is what is free. False when it
+ * cannot be told. */
+bool mesh_cache_dir_full(const char *dir, uint64_t *bytes_free);
+
 struct mesh_cache_entry;
 
 /* Map dir's entry for key and check it. Returns 0, -ENOENT when there is

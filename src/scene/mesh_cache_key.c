@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <sys/statvfs.h>
 #include <unistd.h>
 
 /* Part of every content hash: a change of what the entries hold or how
@@ -223,6 +224,35 @@ int mesh_cache_dir(char *buf, size_t size)
 	else
 		return -ENOENT;
 	return n < 0 || (size_t)n >= size ? -ENAMETOOLONG : 0;
+}
+
+#define CACHE_MARGIN ((uint64_t)16 << 20)
+
+bool mesh_cache_space_low(uint64_t bytes_free, uint64_t bytes_total)
+{
+	return bytes_total > 0 && bytes_free < CACHE_MARGIN;
+}
+
+bool mesh_cache_dir_full(const char *dir, uint64_t *bytes_free)
+{
+	char path[PATH_MAX];
+	struct statvfs st;
+	int n = snprintf(path, sizeof(path), "%s", dir);
+
+	if (n < 0 || (size_t)n >= sizeof(path))
+		return false;
+	/* A cache folder not made yet: its file system is its parent's. */
+	while (statvfs(path, &st)) {
+		char *slash = strrchr(path, '/');
+
+		if (errno != ENOENT || !slash || slash == path)
+			return false;
+		*slash = '\0';
+	}
+	if (bytes_free)
+		*bytes_free = (uint64_t)st.f_bavail * st.f_frsize;
+	return mesh_cache_space_low((uint64_t)st.f_bavail * st.f_frsize,
+				    (uint64_t)st.f_blocks * st.f_frsize);
 }
 
 /* The program's GNU build ID (gcc and Debian write one), from its own

@@ -2,6 +2,10 @@
 
 #include <errno.h>
 #include <math.h>
+#include <sys/sysinfo.h>
+
+#define TEXTURE_MEMORY_MIN ((size_t)16 << 20)
+#define TEXTURE_MEMORY_MAX ((size_t)256 << 20)
 
 /* The texel index for coordinate x (in texels, centres at i + 0.5) on a
  * wrapping axis of n texels. */
@@ -73,4 +77,25 @@ int texture_pot(int n, int max)
 	if (p > 1 && p - n > n - p / 2)
 		p /= 2;
 	return p > max ? max : p;
+}
+
+size_t texture_memory_auto(uint64_t ram)
+{
+	uint64_t q = ram / 4;
+
+	if (q < TEXTURE_MEMORY_MIN)
+		return TEXTURE_MEMORY_MIN;
+	return q > TEXTURE_MEMORY_MAX ? TEXTURE_MEMORY_MAX : (size_t)q;
+}
+
+size_t texture_memory_budget(double mib)
+{
+	struct sysinfo si;
+
+	if (mib > 0)
+		return (size_t)mib << 20;
+	/* Unknown RAM: the smallest board the kiosk runs on (512 MB). */
+	if (sysinfo(&si))
+		return texture_memory_auto((uint64_t)512 << 20);
+	return texture_memory_auto((uint64_t)si.totalram * si.mem_unit);
 }

@@ -22,6 +22,14 @@ double texture_height(const struct image *img, double u, double v);
  * wrapping). Returns 0 or -ENOMEM / -EINVAL. */
 int texture_resample(const struct image *src, int w, int h, struct image *out);
 
+/* [scene] texture_memory = auto: a quarter of ram bytes (on a 1 GB board
+ * 256 MiB, on 512 MB 128), within [16 MiB, 256 MiB]: the textures share
+ * it, and the board keeps the rest for the kernel, GPU and frames. */
+size_t texture_memory_auto(uint64_t ram);
+/* [scene] texture_memory in bytes: mib when > 0, else auto from the
+ * board's RAM (sysinfo). */
+size_t texture_memory_budget(double mib);
+
 /* The power of two nearest to n (ties up), within [1, max]. */
 int texture_pot(int n, int max);
 

@@ -3,6 +3,7 @@
 
 #include <errno.h>
 #include <png.h>
+#include <stdbool.h>
 #include <setjmp.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -66,26 +67,203 @@ static void png_log_warning(png_structp png, png_const_charp msg)
 	(void)msg; /* libpng warns about harmless things (sRGB profiles) */
 }
 
-static int png_decode(const char *name, const uint8_t *data, size_t size, struct image *out)
+/* An interlaced PNG is read whole (its rows come in seven passes): one to
+ * be made smaller is refused over this. */
+#define IMAGE_WHOLE_MAX (64u << 20)
+
+static int fit_dim(int n, int shift)
 {
-	struct png_source src = {name, data, size, 0};
+	return (int)(((long)n + (1L << shift) - 1) >> shift);
+}
+
+void image_fit_shifts(int w, int h, const struct image_fit *fit, int *sx, int *sy, int *ow, int *oh)
+{
+	int x = 0, y = 0;
+
+	while (fit && fit->side > 0 && (w >> (x + 1)) >= fit->side)
+		x++;
+	while (fit && fit->side > 0 && (h >> (y + 1)) >= fit->side)
+		y++;
+	while (fit && fit->bytes && w > 0 && h > 0 &&
+	       (size_t)fit_dim(w, x) * (size_t)fit_dim(h, y) * 4 > fit->bytes &&
+	       (fit_dim(w, x) > 1 || fit_dim(h, y) > 1)) {
+		x += fit_dim(w, x) > 1;
+		y += fit_dim(h, y) > 1;
+	}
+	if (sx)
+		*sx = x;
+	if (sy)
+		*sy = y;
+	if (ow)
+		*ow = fit_dim(w, x);
+	if (oh)
+		*oh = fit_dim(h, y);
+}
+
+/* A box filter fed one row at a time: each output texel is the rounded
+ * mean of its 2^sx x 2^sy block (fewer at the right and bottom edges). */
+struct box {
+	struct image *out;
+	int w, h, sx, sy;
+	int row;       /* rows added */
+	uint64_t *sum; /* the output row being summed, RGBA */
+};
+
+static int box_start(struct box *b, int w, int h, int sx, int sy, struct image *out)
+{
+	int ret = image_alloc(out, fit_dim(w, sx), fit_dim(h, sy));
+
+	*b = (struct box){out, w, h, sx, sy, 0, NULL};
+	if (!ret && !(b->sum = calloc((size_t)out->width * 4, sizeof(*b->sum)))) {
+		image_release(out);
+		ret = -ENOMEM;
+	}
+	return ret;
+}
+
+static void box_add(struct box *b, const uint8_t *row)
+{
+	int oy, rows;
+	uint8_t *dst;
+
+	for (int x = 0; x < b->w; x++)
+		for (int c = 0; c < 4; c++)
+			b->sum[(size_t)(x >> b->sx) * 4 + c] += row[(size_t)x * 4 + c];
+	b->row++;
+	if ((b->row & ((1 << b->sy) - 1)) && b->row < b->h)
+		return;
+	oy = (b->row - 1) >> b->sy;
+	rows = b->row - (oy << b->sy);
+	dst = b->out->rgba + (size_t)oy * (size_t)b->out->width * 4;
+	for (int ox = 0; ox < b->out->width; ox++) {
+		int cols = b->w - (ox << b->sx) < (1 << b->sx) ? b->w - (ox << b->sx) : 1 << b->sx;
+		uint64_t n = (uint64_t)rows * (uint64_t)cols;
+
+		for (int c = 0; c < 4; c++) {
+			uint64_t *s = &b->sum[(size_t)ox * 4 + c];
+
+			dst[ox * 4 + c] = (uint8_t)((*s + n / 2) / n);
+			*s = 0;
+		}
+	}
+}
+
+static void box_end(struct box *b)
+{
+	free(b->sum);
+	b->sum = NULL;
+}
+
+/* src made smaller into out, by the box filter. */
+static int box_image(const struct image *src, int sx, int sy, struct image *out)
+{
+	struct box b;
+	int ret = box_start(&b, src->width, src->height, sx, sy, out);
+
+	for (int y = 0; !ret && y < src->height; y++)
+		box_add(&b, src->rgba + (size_t)y * (size_t)src->width * 4);
+	box_end(&b);
+	return ret;
+}
+
+/* What a PNG decode holds, on the heap: libpng's errors longjmp, and what
+ * changed after setjmp must be read back from memory. */
+struct png_job {
+	struct png_source src;
+	int ret, w, h;
+	png_bytep *rows;
+	uint8_t *row;
+	struct image whole;
+	struct box box;
+};
+
+static void png_job_free(struct png_job *j)
+{
+	free(j->rows);
+	free(j->row);
+	image_release(&j->whole);
+	box_end(&j->box);
+	free(j);
+}
+
+static void png_read_whole(png_structp png, struct png_job *j, struct image *img)
+{
+	j->ret = image_alloc(img, j->w, j->h);
+	if (!j->ret && !(j->rows = malloc(sizeof(*j->rows) * (size_t)j->h)))
+		j->ret = -ENOMEM;
+	if (j->ret)
+		return;
+	for (int y = 0; y < j->h; y++)
+		j->rows[y] = img->rgba + (size_t)y * (size_t)j->w * 4;
+	png_read_image(png, j->rows);
+	png_read_end(png, NULL);
+}
+
+/* Row by row through the box filter: the full size is never held. */
+static void png_read_boxed(png_structp png, struct png_job *j, int sx, int sy, struct image *out)
+{
+	j->ret = box_start(&j->box, j->w, j->h, sx, sy, out);
+	if (!j->ret && !(j->row = malloc((size_t)j->w * 4)))
+		j->ret = -ENOMEM;
+	for (int y = 0; !j->ret && y < j->h; y++) {
+		png_read_row(png, j->row, NULL);
+		box_add(&j->box, j->row);
+	}
+	if (!j->ret)
+		png_read_end(png, NULL);
+}
+
+static void png_read_pixels(png_structp png, png_infop info, struct png_job *j,
+			    const struct image_fit *fit, struct image *out)
+{
+	bool interlaced = png_get_interlace_type(png, info) != PNG_INTERLACE_NONE;
+	int sx, sy;
+
+	image_fit_shifts(j->w, j->h, fit, &sx, &sy, NULL, NULL);
+	if (!sx && !sy) {
+		png_read_whole(png, j, out);
+	} else if (!interlaced) {
+		png_read_boxed(png, j, sx, sy, out);
+	} else if ((size_t)j->w * (size_t)j->h * 4 > IMAGE_WHOLE_MAX) {
+		log_err("%s: an interlaced PNG of %dx%d is read whole, over %u MiB: expected one "
+			"not interlaced, or smaller",
+			j->src.name, j->w, j->h, IMAGE_WHOLE_MAX >> 20);
+		j->ret = -EFBIG;
+	} else {
+		png_read_whole(png, j, &j->whole);
+		if (!j->ret)
+			j->ret = box_image(&j->whole, sx, sy, out);
+	}
+}
+
+static int png_decode(const char *name, const uint8_t *data, size_t size,
+		      const struct image_fit *fit, struct image *out, int *full_w, int *full_h)
+{
+	struct png_job *j = calloc(1, sizeof(*j));
 	png_structp png;
 	png_infop info = NULL;
-	png_bytep *volatile rows = NULL;
-	volatile int ret = -EINVAL;
+	int ret;
 
-	png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &src, png_log_error, png_log_warning);
-	if (!png)
+	if (!j)
 		return -ENOMEM;
+	j->src = (struct png_source){name, data, size, 0};
+	j->ret = -EINVAL;
+	png =
+	    png_create_read_struct(PNG_LIBPNG_VER_STRING, &j->src, png_log_error, png_log_warning);
+	if (!png) {
+		j->ret = -ENOMEM;
+		goto out;
+	}
 	info = png_create_info_struct(png);
 	if (!info)
 		goto out;
 	if (setjmp(png_jmpbuf(png))) {
+		j->ret = -EINVAL;
 		image_release(out);
 		goto out;
 	}
 	png_set_user_limits(png, IMAGE_MAX_SIDE, IMAGE_MAX_SIDE);
-	png_set_read_fn(png, &src, png_read_mem);
+	png_set_read_fn(png, &j->src, png_read_mem);
 	png_read_info(png, info);
 	/* Whatever the file holds, hand back 8-bit RGBA. */
 	png_set_expand(png);
@@ -94,37 +272,63 @@ static int png_decode(const char *name, const uint8_t *data, size_t size, struct
 	png_set_add_alpha(png, 0xff, PNG_FILLER_AFTER);
 	png_set_interlace_handling(png);
 	png_read_update_info(png, info);
-	int w = (int)png_get_image_width(png, info);
-	int h = (int)png_get_image_height(png, info);
-	if (png_get_rowbytes(png, info) != (size_t)w * 4) {
+	j->w = (int)png_get_image_width(png, info);
+	j->h = (int)png_get_image_height(png, info);
+	if (png_get_rowbytes(png, info) != (size_t)j->w * 4) {
 		log_err("%s: unsupported PNG pixel layout", name);
 		goto out;
 	}
-	ret = image_alloc(out, w, h);
-	if (ret)
-		goto out;
-	ret = -EINVAL;
-	rows = malloc(sizeof(*rows) * (size_t)h);
-	if (!rows) {
-		ret = -ENOMEM;
+	png_read_pixels(png, info, j, fit, out);
+	if (j->ret)
 		image_release(out);
-		goto out;
-	}
-	for (int y = 0; y < h; y++)
-		rows[y] = out->rgba + (size_t)y * (size_t)w * 4;
-	png_read_image(png, rows);
-	png_read_end(png, NULL);
-	ret = 0;
 out:
-	free(rows);
+	if (full_w)
+		*full_w = j->w;
+	if (full_h)
+		*full_h = j->h;
+	ret = j->ret;
 	png_destroy_read_struct(&png, info ? &info : NULL, NULL);
+	png_job_free(j);
 	return ret;
 }
 
-static int jpeg_decode(const char *name, const uint8_t *data, size_t size, struct image *out)
+/* libjpeg-turbo scales by 1/2, 1/4 and 1/8 as it decodes (the same on
+ * both axes); a further halving of one axis is the box filter's. */
+static int jpeg_read(tjhandle tj, const char *name, const uint8_t *data, size_t size, int w, int h,
+		     const struct image_fit *fit, struct image *out)
+{
+	int sx, sy, k;
+	struct image scaled = {0};
+	int ret;
+
+	image_fit_shifts(w, h, fit, &sx, &sy, NULL, NULL);
+	k = sx < sy ? sx : sy;
+	k = k > 3 ? 3 : k;
+	ret = image_alloc(sx == k && sy == k ? out : &scaled, fit_dim(w, k), fit_dim(h, k));
+	if (ret)
+		return ret;
+	struct image *dst = sx == k && sy == k ? out : &scaled;
+	/* A warning means corrupt or truncated data (libjpeg pads it with
+	 * grey): a file cut short by an interrupted copy is refused, not
+	 * shown half grey. */
+	if (tjDecompress2(tj, data, (unsigned long)size, dst->rgba, dst->width, 0, dst->height,
+			  TJPF_RGBA, TJFLAG_ACCURATEDCT | TJFLAG_STOPONWARNING)) {
+		log_err("%s: not a valid JPEG: %s", name, tjGetErrorStr2(tj));
+		image_release(dst);
+		return -EINVAL;
+	}
+	if (dst == &scaled) {
+		ret = box_image(&scaled, sx - k, sy - k, out);
+		image_release(&scaled);
+	}
+	return ret;
+}
+
+static int jpeg_decode(const char *name, const uint8_t *data, size_t size,
+		       const struct image_fit *fit, struct image *out, int *full_w, int *full_h)
 {
 	tjhandle tj = tjInitDecompress();
-	int w, h, subsamp, colorspace;
+	int w = 0, h = 0, subsamp, colorspace;
 	int ret = -EINVAL;
 
 	if (!tj)
@@ -138,24 +342,18 @@ static int jpeg_decode(const char *name, const uint8_t *data, size_t size, struc
 			IMAGE_MAX_SIDE);
 		goto out;
 	}
-	ret = image_alloc(out, w, h);
-	if (ret)
-		goto out;
-	/* A warning means corrupt or truncated data (libjpeg pads it with
-	 * grey): a file cut short by an interrupted copy is refused, not
-	 * shown half grey. */
-	if (tjDecompress2(tj, data, (unsigned long)size, out->rgba, w, 0, h, TJPF_RGBA,
-			  TJFLAG_ACCURATEDCT | TJFLAG_STOPONWARNING)) {
-		log_err("%s: not a valid JPEG: %s", name, tjGetErrorStr2(tj));
-		image_release(out);
-		ret = -EINVAL;
-	}
+	ret = jpeg_read(tj, name, data, size, w, h, fit, out);
 out:
+	if (full_w)
+		*full_w = w;
+	if (full_h)
+		*full_h = h;
 	tjDestroy(tj);
 	return ret;
 }
 
-int image_decode(const char *name, const uint8_t *data, size_t size, struct image *out)
+int image_decode_fit(const char *name, const uint8_t *data, size_t size,
+		     const struct image_fit *fit, struct image *out, int *full_w, int *full_h)
 {
 	static const uint8_t png_sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
 
@@ -163,14 +361,19 @@ int image_decode(const char *name, const uint8_t *data, size_t size, struct imag
 	out->height = 0;
 	out->rgba = NULL;
 	if (size >= 8 && memcmp(data, png_sig, 8) == 0)
-		return png_decode(name, data, size, out);
+		return png_decode(name, data, size, fit, out, full_w, full_h);
 	if (size >= 3 && data[0] == 0xff && data[1] == 0xd8 && data[2] == 0xff)
-		return jpeg_decode(name, data, size, out);
+		return jpeg_decode(name, data, size, fit, out, full_w, full_h);
 	if (size == 0)
 		log_err("%s: file is empty, expected a PNG or JPEG image", name);
 	else
 		log_err("%s: not a PNG or JPEG image (unknown signature)", name);
 	return -EINVAL;
+}
+
+int image_decode(const char *name, const uint8_t *data, size_t size, struct image *out)
+{
+	return image_decode_fit(name, data, size, NULL, out, NULL, NULL);
 }
 
 int image_load(const char *path, struct image *out)

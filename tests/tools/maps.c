@@ -2,6 +2,9 @@
 #include "util/image.h"
 
 #include <math.h>
+#include <png.h>
+#include <zlib.h>
+#include <stdlib.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <string.h>
@@ -230,5 +233,43 @@ int maps_write(const char *dir)
 		return 1;
 	fputs("\211PNG\r\n\032\n but nothing after the signature", f);
 	fclose(f);
+	return bad;
+}
+
+int maps_write_flat(const char *path, int side, const unsigned char rgba[4])
+{
+	FILE *f = fopen(path, "wb");
+	png_structp png = NULL;
+	png_infop info = NULL;
+	unsigned char *row = malloc((size_t)side * 4);
+	int bad = 1;
+
+	if (!f || !row)
+		goto out;
+	png = png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, NULL, NULL);
+	info = png ? png_create_info_struct(png) : NULL;
+	if (!info || setjmp(png_jmpbuf(png)))
+		goto out;
+	for (int x = 0; x < side; x++)
+		memcpy(row + (size_t)x * 4, rgba, 4);
+	png_init_io(png, f);
+	png_set_IHDR(png, info, (png_uint_32)side, (png_uint_32)side, 8, PNG_COLOR_TYPE_RGB_ALPHA,
+		     PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+	png_set_compression_level(png, 9);
+	png_set_compression_strategy(png, Z_RLE);
+	png_set_filter(png, 0, PNG_FILTER_SUB);
+	png_write_info(png, info);
+	for (int y = 0; y < side; y++)
+		png_write_row(png, row);
+	png_write_end(png, NULL);
+	bad = 0;
+out:
+	if (png)
+		png_destroy_write_struct(&png, &info);
+	free(row);
+	if (f && fclose(f))
+		bad = 1;
+	if (bad)
+		fprintf(stderr, "maps: cannot write %s\n", path);
 	return bad;
 }

@@ -10,5 +10,9 @@
  * 0, or 1 after a message. */
 #define BASE_SIDE 256
 int maps_write(const char *dir);
+/* A side x side PNG of one colour, written a row at a time: a few hundred
+ * KB that decode to side^2 x 4 bytes (a zlib bomb). 0, or 1 after a
+ * message. */
+int maps_write_flat(const char *path, int side, const unsigned char rgba[4]);
 
 #endif

@@ -4,7 +4,10 @@
  *                         and models
  *   mkmodels DIR --bench  also torus knots of about 10k, 100k and 1M triangles,
  *                         and the 100k one textured, skinned (still and turning), morphing
- *                         and flat-shaded */
+ *                         and flat-shaded
+ *   mkmodels DIR --bomb SIDE  only bomb.gltf: four SIDE x SIDE PNGs of one
+ *                         colour as its base colour, normal, occlusion and
+ *                         film thickness textures (tests/suite.sh) */
 #include "gltf_morph.h"
 #include "gltf_write.h"
 #include "maps.h"
@@ -345,6 +348,38 @@ static int write_look(const char *dir, const struct mesh *sphere)
 	return bad;
 }
 
+/* Every texture slot the kiosk decodes, each its own large image. */
+static int write_bomb(const char *dir, int side)
+{
+	static const char *const names[4] = {"bomb-base.png", "bomb-normal.png",
+					     "bomb-occlusion.png", "bomb-thickness.png"};
+	static const unsigned char colour[4][4] = {
+	    {200, 120, 60, 255}, {128, 128, 255, 255}, {230, 230, 230, 255}, {0, 160, 0, 255}};
+	struct gltf_write_opts o = {
+	    .index_bytes = 2, .with_normals = 1, .bad_index = -1, .with_uvs = 1};
+	char path[4][4096];
+	struct mesh s;
+	int bad = 0;
+
+	for (int k = 0; k < 4; k++) {
+		snprintf(path[k], sizeof(path[k]), "%s/%s", dir, names[k]);
+		bad |= maps_write_flat(path[k], side, colour[k]);
+	}
+	if (bad || mesh_uv_sphere(&s, 64, 32))
+		return 1;
+	o.container = GLTF_EXTERNAL_BIN;
+	o.base_color_png = path[0];
+	o.normal_png = path[1];
+	o.occlusion_png = path[2];
+	o.thickness_png = path[3];
+	o.iridescence_factor = 1.0;
+	o.thickness_range[0] = 250;
+	o.thickness_range[1] = 450;
+	bad |= put(dir, "bomb.gltf", &s, o);
+	mesh_release(&s);
+	return bad;
+}
+
 int main(int argc, char **argv)
 {
 	struct mesh s;
@@ -356,6 +391,8 @@ int main(int argc, char **argv)
 		fprintf(stderr, "usage: mkmodels DIR [--bench]\n");
 		return 2;
 	}
+	if (argc > 3 && strcmp(argv[2], "--bomb") == 0)
+		return write_bomb(argv[1], atoi(argv[3]));
 	if (mesh_uv_sphere(&s, 128, 64))
 		return 1;
 	bad |= put(argv[1], "sphere.glb", &s, ok);

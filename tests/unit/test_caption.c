@@ -392,6 +392,77 @@ static void stop_picked(void **state)
 	image_release(&stops[0]);
 }
 
+/* The attacks: a text far larger than the frame is laid out within it
+ * (the picture and the margin round it fit 640x480), cut with an
+ * ellipsis, never refused. */
+static void fitted(const char *text, double size, struct caption_cut *cut)
+{
+	struct caption_config c = {.text = (char *)text, .size = size, .padding = 12};
+	struct caption_fit fit = {640, 480, "test", false};
+	struct image img;
+
+	assert_int_equal(caption_render_fit(&c, NULL, &fit, &img, cut), 0);
+	assert_true(img.width <= 640 - 2 * 12 && img.height <= 480 - 2 * 12);
+	image_release(&img);
+}
+
+static char *repeated(const char *unit, int n)
+{
+	size_t len = strlen(unit);
+	char *s = malloc(len * (size_t)n + 1);
+
+	assert_non_null(s);
+	for (int i = 0; i < n; i++)
+		memcpy(s + len * (size_t)i, unit, len);
+	s[len * (size_t)n] = '\0';
+	return s;
+}
+
+static void twenty_thousand_lines_fit(void **state)
+{
+	char *text = repeated("line\\n", 20000);
+	struct caption_cut cut;
+
+	(void)state;
+	fitted(text, 0, &cut);
+	assert_int_equal(cut.lines, 20001);
+	assert_true(cut.shown > 1 && cut.shown < 20);
+	free(text);
+}
+
+static void hundred_thousand_chars_fit(void **state)
+{
+	char *text = repeated("x", 100000);
+	struct caption_cut cut;
+
+	(void)state;
+	fitted(text, 0, &cut);
+	assert_true(cut.lines == 1 && cut.shown == 1 && cut.cut == 1);
+	free(text);
+}
+
+static void a_size_too_large_fits(void **state)
+{
+	char *lines = repeated("A\\n", 90);
+	struct caption_cut cut;
+
+	(void)state;
+	fitted(lines, 400, &cut);
+	assert_true(cut.lines == 91 && cut.shown == 1);
+	free(lines);
+	/* A caption that fits is not touched. */
+	fitted("Amphora", 0, &cut);
+	assert_true(cut.lines == 1 && cut.shown == 1 && cut.cut == 0);
+}
+
+static void lines_that_fit(void **state)
+{
+	(void)state;
+	assert_int_equal(caption_lines_fit(20000, 33, 432), 13);
+	assert_int_equal(caption_lines_fit(3, 33, 432), 3);
+	assert_int_equal(caption_lines_fit(90, 466, 432), 1);
+}
+
 int main(void)
 {
 	const struct CMUnitTest pure[] = {
@@ -403,6 +474,10 @@ int main(void)
 	    cmocka_unit_test(upright),
 	    cmocka_unit_test(turned),
 	    cmocka_unit_test(stop_picked),
+	    cmocka_unit_test(twenty_thousand_lines_fit),
+	    cmocka_unit_test(hundred_thousand_chars_fit),
+	    cmocka_unit_test(a_size_too_large_fits),
+	    cmocka_unit_test(lines_that_fit),
 	};
 	int failed = cmocka_run_group_tests_name("caption picture", pure, NULL, NULL);
 

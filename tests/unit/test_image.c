@@ -144,6 +144,122 @@ static void jpeg_round_trip_and_truncation(void **state)
 	tjDestroy(tj);
 }
 
+/* The halvings: an axis while its half still reaches the side, then
+ * both while over the bytes; none for a small image. */
+static void fit_shifts(void **state)
+{
+	struct image_fit side = {2048, 0}, budget = {2048, (size_t)4 << 20}, none = {0, 0};
+	int sx, sy, w, h;
+
+	(void)state;
+	image_fit_shifts(8192, 8192, &side, &sx, &sy, &w, &h);
+	assert_true(sx == 2 && sy == 2 && w == 2048 && h == 2048);
+	image_fit_shifts(3000, 64, &side, &sx, &sy, &w, &h);
+	assert_true(sx == 0 && sy == 0 && w == 3000 && h == 64);
+	image_fit_shifts(8192, 64, &side, &sx, &sy, &w, &h);
+	assert_true(sx == 2 && sy == 0 && w == 2048 && h == 64);
+	image_fit_shifts(8192, 8192, &budget, &sx, &sy, &w, &h);
+	assert_true(w == 1024 && h == 1024);
+	assert_true((size_t)w * (size_t)h * 4 <= budget.bytes);
+	image_fit_shifts(256, 256, &budget, &sx, &sy, &w, &h);
+	assert_true(sx == 0 && sy == 0 && w == 256 && h == 256);
+	image_fit_shifts(8192, 1, &(struct image_fit){0, 16}, &sx, &sy, &w, &h);
+	assert_true(w == 4 && h == 1);
+	image_fit_shifts(8192, 8192, &none, &sx, &sy, &w, &h);
+	assert_true(w == 8192 && h == 8192);
+}
+
+static uint8_t *png_bytes(const struct image *img, size_t *size)
+{
+	char path[] = "/tmp/mk-image-XXXXXX";
+	int fd = mkstemp(path);
+	uint8_t *data;
+
+	close(fd);
+	assert_int_equal(image_write_png(path, img), 0);
+	data = read_all(path, size);
+	unlink(path);
+	return data;
+}
+
+/* A PNG made smaller as it is read is the box filter's mean of each block
+ * (odd sides: the edge blocks are smaller); one that needs no halving is
+ * the file's pixels exactly. */
+static void png_fit_box_filter(void **state)
+{
+	struct image a, b;
+	struct image_fit fit = {4, 0};
+	size_t size;
+	uint8_t *data;
+	int fw, fh;
+
+	(void)state;
+	assert_int_equal(image_alloc(&a, 9, 8), 0);
+	for (int y = 0; y < 8; y++)
+		for (int x = 0; x < 9; x++)
+			for (int c = 0; c < 4; c++)
+				a.rgba[(y * 9 + x) * 4 + c] = (uint8_t)((x + y) % 2 ? 200 : 100);
+	data = png_bytes(&a, &size);
+	assert_int_equal(image_decode_fit("a.png", data, size, &fit, &b, &fw, &fh), 0);
+	assert_true(fw == 9 && fh == 8 && b.width == 5 && b.height == 4);
+	assert_int_equal(b.rgba[0], 150);	/* 2x2: two of each */
+	assert_int_equal(b.rgba[(4) * 4], 150); /* the last column: 1x2 */
+	image_release(&b);
+	fit.side = 16;
+	assert_int_equal(image_decode_fit("a.png", data, size, &fit, &b, NULL, NULL), 0);
+	assert_true(b.width == 9 && memcmp(a.rgba, b.rgba, 9 * 8 * 4) == 0);
+	image_release(&b);
+	free(data);
+	image_release(&a);
+}
+
+/* The attack: a large PNG of one colour (a zlib bomb) decodes to its share
+ * of the budget, never its full size, and keeps its colour. */
+static void png_fit_bomb(void **state)
+{
+	struct image a, b;
+	struct image_fit fit = {0, 64 * 64 * 4};
+	size_t size;
+	uint8_t *data;
+
+	(void)state;
+	assert_int_equal(image_alloc(&a, 2048, 1024), 0);
+	for (size_t i = 0; i < 2048 * 1024; i++)
+		memcpy(a.rgba + i * 4, (uint8_t[]){10, 20, 30, 255}, 4);
+	data = png_bytes(&a, &size);
+	image_release(&a);
+	assert_int_equal(image_decode_fit("bomb.png", data, size, &fit, &b, NULL, NULL), 0);
+	assert_true((size_t)b.width * (size_t)b.height * 4 <= fit.bytes);
+	assert_true(b.width == 2 * b.height);
+	assert_memory_equal(b.rgba + ((size_t)b.width * b.height - 1) * 4,
+			    ((uint8_t[]){10, 20, 30, 255}), 4);
+	image_release(&b);
+	free(data);
+}
+
+/* A JPEG is scaled by libjpeg-turbo (1/8 here), then by the box filter. */
+static void jpeg_fit(void **state)
+{
+	tjhandle tj = tjInitCompress();
+	unsigned char *jpg = NULL;
+	unsigned long jsize = 0;
+	static uint8_t rgba[512 * 64 * 4];
+	struct image_fit fit = {4, 0};
+	struct image img;
+
+	(void)state;
+	for (size_t i = 0; i < sizeof(rgba); i++)
+		rgba[i] = (i % 4 == 0) ? 200 : 40;
+	assert_int_equal(
+	    tjCompress2(tj, rgba, 512, 0, 64, TJPF_RGBA, &jpg, &jsize, TJSAMP_444, 95, 0), 0);
+	assert_int_equal(image_decode_fit("a.jpg", jpg, jsize, &fit, &img, NULL, NULL), 0);
+	assert_true(img.width == 4 && img.height == 4);
+	assert_true(abs(img.rgba[0] - 200) < 8 && abs(img.rgba[1] - 40) < 8);
+	image_release(&img);
+	tjFree(jpg);
+	tjDestroy(tj);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -152,6 +268,10 @@ int main(void)
 	    cmocka_unit_test(rejects_huge_declared_png),
 	    cmocka_unit_test(rejects_truncated_png),
 	    cmocka_unit_test(jpeg_round_trip_and_truncation),
+	    cmocka_unit_test(fit_shifts),
+	    cmocka_unit_test(png_fit_box_filter),
+	    cmocka_unit_test(png_fit_bomb),
+	    cmocka_unit_test(jpeg_fit),
 	};
 	return cmocka_run_group_tests_name("image", tests, NULL, NULL);
 }

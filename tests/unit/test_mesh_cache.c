@@ -670,6 +670,23 @@ static void a_damaged_live_entry_is_rebuilt(void **state)
 	renderer_free(r);
 }
 
+/* A cache file system with under 16 MiB free is full: the shader cache
+ * and the mesh cache skip it; an unknown size (total 0) is not. */
+static void a_nearly_full_disk_is_full(void **state)
+{
+	const uint64_t mib = 1u << 20;
+
+	(void)state;
+	assert_true(mesh_cache_space_low(0, mib));
+	assert_true(mesh_cache_space_low(16 * mib - 1, (uint64_t)32 << 30));
+	assert_false(mesh_cache_space_low(16 * mib, (uint64_t)32 << 30));
+	assert_false(mesh_cache_space_low((uint64_t)2 << 30, (uint64_t)32 << 30));
+	assert_false(mesh_cache_space_low(0, 0));
+	/* A folder not made yet is judged by the one above it. */
+	assert_false(mesh_cache_dir_full("/nonexistent-mk/a/b", NULL) &&
+		     !mesh_cache_dir_full("/", NULL));
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -685,6 +702,7 @@ int main(void)
 	    cmocka_unit_test_setup_teardown(a_damaged_live_entry_is_rebuilt, setup, teardown),
 	    cmocka_unit_test(the_directory_is_named_as_systemd_and_xdg_say),
 	    cmocka_unit_test(every_field_is_in_the_cache_table),
+	    cmocka_unit_test(a_nearly_full_disk_is_full),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);
