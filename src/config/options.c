@@ -1,5 +1,5 @@
 /* Reading the settings from the command line (getopt_long), through the
- * table in src/config/settings.c, and --help from it. The files are
+ * table in src/config/settings_table.c, and --help from it. The files are
  * options_file.c's. */
 #include "config/options.h"
 #include "state/schedule.h"

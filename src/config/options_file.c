@@ -1,6 +1,6 @@
 /* Reading the settings files: kiosk.ini, its drop-ins, the include, a
  * model's NAME.ini and a USB stick's files, all through util/ini.c and the
- * table in src/config/settings.c. Who wrote a file decides what it may
+ * table in src/config/settings_table.c. Who wrote a file decides what it may
  * set (struct options_rules): a stick's files, and the include the import
  * wrote from them, take a stick's keys and paths only. */
 #include "config/options.h"
