@@ -37,6 +37,8 @@ timed test_loaders
 # 7. Malformed input, through the ASan binary: exit status 1, one error
 #    line that names the file, and no sanitizer report.
 timed test_bad_input
+# 7a. What is not a file (a FIFO) where content is expected: refused, no hang.
+timed test_not_a_file
 # 7b. The glTF corpus: files nobody on the project wrote, and files that
 #     gltfpack and Draco's tools make, through the ASan build.
 timed test_corpus
