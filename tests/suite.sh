@@ -523,10 +523,14 @@ test_systemd() {
 		$out/import/matcap-kiosk-import@sda1.service &&
 		o=\$(systemd-analyze verify $out/import/matcap-kiosk-import@sda1.service 2>&1);
 		echo \"\$o\"; [ -z \"\$o\" ]"
-	score=$(systemd-analyze security --offline=yes "$unit" 2>/dev/null |
-		sed -n 's/.*Overall exposure level for .*: \([0-9.]*\).*/\1/p')
-	check "systemd-analyze security --offline: exposure ${score:-unknown}, at most 2.5" \
-		systemd-analyze security --offline=yes --threshold=25 "$unit"
+	# Each unit's exposure at most 1.5 (the import's was 2.2, the kiosk's
+	# 1.1): a stranger's stick is read by the one, shown by the other.
+	for u in "$unit" "$out/import/matcap-kiosk-import@sda1.service"; do
+		score=$(systemd-analyze security --offline=yes "$u" 2>/dev/null |
+			sed -n 's/.*Overall exposure level for .*: \([0-9.]*\).*/\1/p')
+		check "systemd-analyze security --offline: $(basename "$u") exposure ${score:-unknown}, at most 1.5" \
+			systemd-analyze security --offline=yes --threshold=15 "$u"
+	done
 	check "sysusers.d creates the user and the unit's groups" sh -c "
 		mkdir -p $out/sysroot/etc &&
 		systemd-sysusers --root=$PWD/$out/sysroot /usr/lib/sysusers.d/basic.conf \
