@@ -268,7 +268,7 @@ test_bad_input() {
 not_a_file() {
 	name=$1 want=$2 fifo=$3
 	shift 3
-	ASAN_OPTIONS=detect_leaks=0 timeout 20 "$ASAN_KIOSK" --backend $offscreen --size 64x64 --keyboard none "$@" \
+	ASAN_OPTIONS=detect_leaks=0 timeout 20 "$ASAN_KIOSK" --backend "$offscreen" --size 64x64 --keyboard none "$@" \
 		--output "$out/fifo/x.png" >"$out/fifo/stdout" 2>"$out/fifo/stderr"
 	status=$?
 	if [ $status -eq "$want" ] && grep -qF "$fifo: is a FIFO, not a file" "$out/fifo/stderr" &&
