@@ -139,7 +139,7 @@ $(BUILD):
 -include $(wildcard $(BUILD)/*.d $(BUILD)/*/*.d)
 
 # The matcap baker: regenerates matcaps/*.png byte for byte.
-$(BUILD)/bake: matcaps/bake.c $(BUILD)/render/bake.o $(BUILD)/util/image.o $(BUILD)/util/log.o
+$(BUILD)/bake: matcaps/bake.c $(BUILD)/render/bake.o $(BUILD)/util/image.o $(BUILD)/util/file.o $(BUILD)/util/log.o
 	$(CC) $(ALL_CFLAGS) -o $@ $^ $(PKG_LIBS) -lm
 
 matcaps: $(BUILD)/bake

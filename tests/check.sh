@@ -10,7 +10,7 @@
 # on stderr, and exit status 2.
 set -u
 
-groups="layers unit golden egl program_check mirror_check ortho loaders bad-input corpus cli"
+groups="layers unit golden egl program_check mirror_check ortho loaders bad-input not-a-file corpus cli"
 groups="$groups config_doc baker live metrics install systemd fuzz soak no-camera board hands"
 groups="$groups base_color_check sync tsan systemd-board limits"
 
@@ -89,7 +89,7 @@ needs() {
 	loaders) echo "all $TOOLS/mkmodels" ;;
 	cli) echo "all asan-kiosk $TOOLS/mkmodels" ;;
 	config_doc | install | systemd | no-camera) echo all ;;
-	bad-input) echo "asan-kiosk $TOOLS/mkmodels" ;;
+	bad-input | not-a-file) echo "asan-kiosk $TOOLS/mkmodels" ;;
 	limits) echo "all $TOOLS/mkmodels" ;;
 	corpus) echo "asan-kiosk fuzzers $TOOLS/mkmodels $TOOLS/silhouette $TOOLS/imgdiff" ;;
 	baker) echo "$BAKE" ;;

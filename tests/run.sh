@@ -40,6 +40,8 @@ timed test_bad_input
 # 7a. Content a stranger brings: textures that decode to gigabytes, a full
 #     cache file system, a caption larger than the frame.
 timed test_limits
+# 7b. What is not a file (a FIFO) where content is expected: refused, no hang.
+timed test_not_a_file
 # 7b. The glTF corpus: files nobody on the project wrote, and files that
 #     gltfpack and Draco's tools make, through the ASan build.
 timed test_corpus

@@ -70,12 +70,12 @@ $(TOOLS_DIR)/mkmodels: tests/tools/mkmodels.c $(TESTKIT) $(LIB_ARCHIVE)
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) -o $@ $< $(TEST_LINK)
 
-$(TOOLS_DIR)/imgdiff: tests/tools/imgdiff.c $(BUILD)/util/image.o $(BUILD)/util/log.o
+$(TOOLS_DIR)/imgdiff: tests/tools/imgdiff.c $(BUILD)/util/image.o $(BUILD)/util/file.o $(BUILD)/util/log.o
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -o $@ $^ $(PKG_LIBS) -lm
 
 # Which colour-bar hues a picture shows (the camera's, in tests/e2e/camera.sh).
-$(TOOLS_DIR)/hues: tests/tools/hues.c $(BUILD)/util/image.o $(BUILD)/util/log.o
+$(TOOLS_DIR)/hues: tests/tools/hues.c $(BUILD)/util/image.o $(BUILD)/util/file.o $(BUILD)/util/log.o
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -o $@ $^ $(PKG_LIBS) -lm
 test-tools: $(TOOLS_DIR)/hues
@@ -99,7 +99,7 @@ $(TOOLS_DIR)/touch_inject: tests/tools/touch_inject.c
 test-tools: $(TOOLS_DIR)/touch_inject
 
 # Whether a model with no reference image shows (tests/corpus/run.sh).
-$(TOOLS_DIR)/silhouette: tests/corpus/silhouette.c $(BUILD)/util/image.o $(BUILD)/util/log.o
+$(TOOLS_DIR)/silhouette: tests/corpus/silhouette.c $(BUILD)/util/image.o $(BUILD)/util/file.o $(BUILD)/util/log.o
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -o $@ $^ $(PKG_LIBS) -lm
 test-tools: $(TOOLS_DIR)/silhouette

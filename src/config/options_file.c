@@ -474,15 +474,12 @@ static bool refuse_writable(const char *path, bool folder)
 
 static void say_unread(const char *path, int err)
 {
-	struct stat sb;
-
-	if (err == -EINVAL)
-		log_err("%s: is %s, not a settings file; expected an INI file like "
+	if (err == -EISDIR)
+		log_err("%s: is a folder, not a settings file; expected an INI file like "
 			"/etc/matcap-kiosk/kiosk.ini",
-			path,
-			!stat(path, &sb) && S_ISDIR(sb.st_mode)
-			    ? "a folder"
-			    : "not a plain file (a FIFO, a device)");
+			path);
+	else if (file_refusal(err))
+		log_err("%s: %s; a settings file is a plain file", path, file_refusal(err));
 	else if (err == -EFBIG)
 		log_err("%s: over %u KiB; a settings file is a few KiB of text", path,
 			SETTINGS_MAX >> 10);

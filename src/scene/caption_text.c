@@ -3,6 +3,7 @@
  * visual order, each shaped by HarfBuzz (kerning, ligatures, Arabic
  * joining) and drawn by FreeType, over the box, beside the logo. */
 #include "scene/caption.h"
+#include "util/file.h"
 #include "util/log.h"
 
 #include <errno.h>
@@ -15,6 +16,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+/* No font is this large (Noto Sans CJK is 20 MB); read whole into memory. */
+#define CAPTION_FONT_MAX (64 << 20)
 
 struct glyph {
 	unsigned id;
@@ -344,6 +348,40 @@ static int compose(const struct caption_config *c, FT_Face face, const struct la
 	return 0;
 }
 
+/* FreeType calls it as the face is done: the bytes it was made from. */
+static void font_data_free(void *object)
+{
+	free(((FT_Face)object)->generic.data);
+}
+
+/* Read here (util/file.h), not opened by FreeType by path: a FIFO there
+ * would block its open, and a device node is opened before any check. The
+ * bytes live as long as the face (its generic finalizer frees them). */
+static FT_Error font_face(FT_Library lib, const char *path, FT_Face *face)
+{
+	unsigned char *data;
+	size_t size;
+	int ret = file_read_all(path, CAPTION_FONT_MAX, &data, &size);
+	FT_Error e;
+
+	if (ret && file_refusal(ret))
+		log_err("[caption] font %s: %s", path, file_refusal(ret));
+	else if (ret == -EFBIG)
+		log_err("[caption] font %s: larger than %d MiB", path, CAPTION_FONT_MAX >> 20);
+	else if (ret)
+		log_err("[caption] font %s: cannot open it: %s", path, strerror(-ret));
+	if (ret)
+		return FT_Err_Cannot_Open_Resource;
+	e = FT_New_Memory_Face(lib, data, (FT_Long)size, 0, face);
+	if (e) {
+		free(data);
+		return e;
+	}
+	(*face)->generic.data = data;
+	(*face)->generic.finalizer = font_data_free;
+	return 0;
+}
+
 static int open_font(const struct caption_config *c, FT_Library *lib, FT_Face *face)
 {
 	const char *path = c->font ? c->font : CAPTION_FONT_DEFAULT;
@@ -352,16 +390,15 @@ static int open_font(const struct caption_config *c, FT_Library *lib, FT_Face *f
 
 	if (FT_Init_FreeType(lib))
 		return -ENOMEM;
-	e = FT_New_Face(*lib, path, 0, face);
+	e = font_face(*lib, path, face);
 	if (!e)
 		e = FT_Set_Pixel_Sizes(*face, 0, (FT_UInt)(size + 0.5));
-	if (e == FT_Err_Cannot_Open_Resource)
-		log_err("[caption] font %s: cannot open it", path);
-	else if (e == FT_Err_Unknown_File_Format)
+	/* FT_Err_Cannot_Open_Resource: font_face said why. */
+	if (e == FT_Err_Unknown_File_Format)
 		log_err("[caption] font %s: not a font file FreeType reads; expected TrueType or "
 			"OpenType",
 			path);
-	else if (e)
+	else if (e && e != FT_Err_Cannot_Open_Resource)
 		log_err("[caption] font %s: FreeType error %d", path, e);
 	if (e)
 		return -EINVAL;

@@ -160,8 +160,9 @@ extern "C" int gltf_load_options(const char *path, const struct gltf_options *o,
 	int ret = file_read_all(path, GLTF_MAX_FILE, &data, &size);
 	if (ret)
 		log_err("%s: %s", gltf_ext::escape(path).c_str(),
-			ret == -EFBIG
-			    ? "larger than the limit (512 MiB)"
+			ret == -EFBIG ? "larger than the limit (512 MiB)"
+			: file_refusal(ret)
+			    ? file_refusal(ret)
 			    : ("cannot open: " + std::string(std::strerror(-ret))).c_str());
 	else
 		ret = gltf_load_memory_options(path, data, size, dir.c_str(), o, out);

@@ -2,12 +2,13 @@
 // refuses what the spec allows, and, after it refused a file, which buffer
 // was at fault, by its URI as written.
 #include "scene/gltf_ext.h"
+#include "util/file.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstring>
-#include <fstream>
+#include <unistd.h>
 
 namespace gltf_ext
 {
@@ -217,7 +218,13 @@ std::string buffer_fault(const std::string &dir,
 			return what + ".uri \"" + u +
 			       "\": lies outside the model's folder (absolute paths and \"..\" "
 			       "are refused)";
-		if (!std::ifstream(path, std::ios::binary).good())
+		// Opened as the loader does: a FIFO named here would block an open.
+		int fd = file_open_read(path.c_str(), 0, nullptr);
+		if (fd >= 0)
+			close(fd);
+		else if (file_refusal(fd))
+			return what + ".uri \"" + u + "\": " + file_refusal(fd);
+		else
 			return what + ".uri \"" + u + "\": no such file in the model's folder";
 	}
 	return "";

@@ -3,13 +3,13 @@
 // missing is kept, to name it when tinygltf gives up.
 #include "scene/gltf_fs.h"
 #include "scene/gltf_ext.h"
+#include "util/file.h"
 
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
-#include <fstream>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -34,27 +34,38 @@ bool gltf_path_allowed(const GltfFiles &c, const std::string &path)
 	return true;
 }
 
-// The whole file, refused when larger than max.
+// Why path cannot be read, from file_open_read's code.
+static std::string open_fault(const std::string &path, int ret)
+{
+	const char *why = file_refusal(ret);
+	return why ? path + " " + why : "cannot open " + path + ": " + std::strerror(-ret);
+}
+
+// The whole file, refused when larger than max; opened by file_open_read,
+// which refuses a FIFO (it would hang the load) or a device node.
 bool gltf_read_file(const std::string &path, size_t max, std::vector<unsigned char> *out,
 		    std::string *err)
 {
-	std::ifstream f(path, std::ios::binary | std::ios::ate);
-	if (!f) {
-		*err = "cannot open " + path + ": " + std::strerror(errno);
+	struct stat st;
+	int fd = file_open_read(path.c_str(), 0, &st);
+	bool ok = false;
+	if (fd < 0) {
+		*err = open_fault(path, fd);
 		return false;
 	}
-	std::streamoff size = f.tellg();
-	if (size < 0 || (unsigned long long)size > max) {
+	if ((unsigned long long)st.st_size > max) {
 		*err = path + " is larger than the limit";
-		return false;
+	} else {
+		out->resize((size_t)st.st_size);
+		ssize_t n = file_read_at(fd, out->data(), out->size(), 0);
+		if (n < 0)
+			*err = "read error in " + path + ": " + std::strerror((int)-n);
+		else
+			out->resize((size_t)n);
+		ok = n >= 0;
 	}
-	out->resize((size_t)size);
-	f.seekg(0);
-	if (size > 0 && !f.read(reinterpret_cast<char *>(out->data()), size)) {
-		*err = "read error in " + path;
-		return false;
-	}
-	return true;
+	close(fd);
+	return ok;
 }
 
 std::string gltf_uri_fault(const GltfFiles &c, const std::string &uri)
@@ -63,16 +74,18 @@ std::string gltf_uri_fault(const GltfFiles &c, const std::string &uri)
 	std::string path = (c.dir.empty() ? "" : c.dir + "/") + gltf_ext::percent_decoded(uri);
 	if (!gltf_path_allowed(c, path))
 		return "lies outside the model's folder (absolute paths and \"..\" are refused)";
-	if (stat(path.c_str(), &st) != 0)
-		return errno == ENOENT || errno == ENOTDIR
-			   ? "is not in the model's folder (no such file)"
-			   : std::string("cannot be read: ") + std::strerror(errno);
-	if (!S_ISREG(st.st_mode))
-		return "is not a plain file";
+	int fd = file_open_read(path.c_str(), 0, &st);
+	if (fd >= 0)
+		close(fd);
+	if (fd == -ENOENT || fd == -ENOTDIR)
+		return "is not in the model's folder (no such file)";
+	if (file_refusal(fd))
+		return file_refusal(fd);
+	if (fd < 0)
+		return std::string("cannot be read: ") + std::strerror(-fd);
 	if ((unsigned long long)st.st_size > c.max_size)
 		return "is larger than the limit (" + std::to_string(c.max_size >> 20) + " MiB)";
-	return access(path.c_str(), R_OK) ? std::string("cannot be read: ") + std::strerror(errno)
-					  : "could not be read";
+	return "could not be read";
 }
 
 namespace
@@ -90,10 +103,12 @@ bool fs_exists(const std::string &path, void *user)
 			c->refused = shown;
 		return false;
 	}
-	std::ifstream f(path, std::ios::binary);
-	if (!f.good() && c->missing.empty())
+	// stat, not open: opening a FIFO blocks (the read refuses it, saying so).
+	struct stat st;
+	bool found = stat(path.c_str(), &st) == 0;
+	if (!found && c->missing.empty())
 		c->missing = shown;
-	return f.good();
+	return found;
 }
 
 std::string fs_expand(const std::string &path, void *)
@@ -127,13 +142,14 @@ bool fs_write(std::string *err, const std::string &, const std::vector<unsigned 
 		*err = "URI leaves the model's folder: " + path;
 		return false;
 	}
-	std::ifstream f(path, std::ios::binary | std::ios::ate);
-	std::streamoff n = f ? std::streamoff(f.tellg()) : std::streamoff(-1);
-	if (n < 0) {
-		*err = "cannot open " + path + ": " + std::strerror(errno);
+	struct stat st;
+	int fd = file_open_read(path.c_str(), 0, &st);
+	if (fd < 0) {
+		*err = open_fault(path, fd);
 		return false;
 	}
-	*size = (size_t)n;
+	close(fd);
+	*size = (size_t)st.st_size;
 	return true;
 }
 

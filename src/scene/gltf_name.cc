@@ -29,7 +29,7 @@ std::string read_json(const char *path)
 {
 	unsigned char head[20];
 	std::string text;
-	int fd = open(path, O_RDONLY | O_CLOEXEC);
+	int fd = file_open_read(path, 0, nullptr);
 
 	if (fd < 0)
 		return text;

@@ -224,12 +224,12 @@ static int entry_path(const char *dir, const struct mesh_cache_key *key, char *b
 static int map_entry(const char *path, struct mesh_cache_entry *e)
 {
 	struct stat st;
-	int fd = open(path, O_RDONLY | O_CLOEXEC), ret = 0;
+	/* The cache writes no links: one there (or a FIFO) is not its own. */
+	int fd = file_open_read(path, FILE_NOFOLLOW, &st), ret = 0;
 
 	if (fd < 0)
-		return errno == ENOENT ? -ENOENT : -errno;
-	if (fstat(fd, &st) || !S_ISREG(st.st_mode) ||
-	    st.st_size < (off_t)sizeof(struct cache_header)) {
+		return file_refusal(fd) ? -EBADMSG : fd;
+	if (st.st_size < (off_t)sizeof(struct cache_header)) {
 		ret = -EBADMSG;
 		goto out;
 	}

@@ -121,10 +121,10 @@ out:
 static int hash_file(const char *path, uint64_t seed, uint64_t *out)
 {
 	unsigned char head[20];
-	int fd = open(path, O_RDONLY | O_CLOEXEC), ret;
+	int fd = file_open_read(path, 0, NULL), ret;
 
 	if (fd < 0)
-		return -errno;
+		return fd;
 	ret = hash_fd(fd, seed, out, head);
 	close(fd);
 	return ret;
@@ -195,10 +195,10 @@ int mesh_cache_hash_model(const char *path, uint64_t *out)
 	unsigned char head[20];
 	char *json = NULL;
 	size_t size = 0;
-	int fd = open(path, O_RDONLY | O_CLOEXEC), ret;
+	int fd = file_open_read(path, 0, NULL), ret;
 
 	if (fd < 0)
-		return -errno;
+		return fd;
 	ret = hash_fd(fd, KEY_VERSION, out, head);
 	if (!ret)
 		ret = read_json(fd, head, &json, &size);

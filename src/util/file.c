@@ -1,4 +1,5 @@
 #include "util/file.h"
+#include "util/log.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -62,20 +63,74 @@ static int read_fd(int fd, size_t want, unsigned char **data, size_t *size)
 	return 0;
 }
 
+/* 0 for a regular file, or the code file_open_read refuses its type with. */
+static int kind_code(mode_t mode)
+{
+	if (S_ISREG(mode))
+		return 0;
+	if (S_ISDIR(mode))
+		return -EISDIR;
+	if (S_ISFIFO(mode))
+		return -ESPIPE;
+	if (S_ISSOCK(mode))
+		return -ENXIO;
+	if (S_ISCHR(mode) || S_ISBLK(mode))
+		return -ENODEV;
+	return S_ISLNK(mode) ? -ELOOP : -EINVAL;
+}
+
+const char *file_refusal(int ret)
+{
+	switch (ret) {
+	case -EISDIR:
+		return "is a folder, not a file";
+	case -ESPIPE:
+		return "is a FIFO, not a file";
+	case -ENXIO:
+		return "is a socket, not a file";
+	case -ENODEV:
+		return "is a device node, not a file";
+	case -ELOOP:
+		return "is a symbolic link, which is not followed here";
+	default:
+		return NULL;
+	}
+}
+
+int file_open_read(const char *path, unsigned flags, struct stat *st)
+{
+	int oflags = O_RDONLY | O_NONBLOCK | O_CLOEXEC | (flags & FILE_NOFOLLOW ? O_NOFOLLOW : 0);
+	struct stat own, *s = st ? st : &own;
+	int fd, ret;
+
+	/* Before the open: that of a FIFO blocks, that of a device acts. */
+	if ((flags & FILE_NOFOLLOW ? lstat(path, s) : stat(path, s)))
+		return -errno;
+	ret = kind_code(s->st_mode);
+	if (ret)
+		return ret;
+	fd = open(path, oflags);
+	if (fd < 0)
+		return -errno;
+	/* Again on what was opened: the path may name another by now. */
+	ret = fstat(fd, s) ? -errno : kind_code(s->st_mode);
+	if (ret) {
+		close(fd);
+		return ret;
+	}
+	return fd;
+}
+
 int file_read_all(const char *path, size_t max, unsigned char **data, size_t *size)
 {
 	struct stat st;
-	int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC), ret;
+	int fd = file_open_read(path, 0, &st), ret;
 
 	*data = NULL;
 	*size = 0;
 	if (fd < 0)
-		return -errno;
-	if (fstat(fd, &st))
-		ret = -errno;
-	else if (!S_ISREG(st.st_mode))
-		ret = -EINVAL;
-	else if ((unsigned long long)st.st_size > max)
+		return fd;
+	if ((unsigned long long)st.st_size > max)
 		ret = -EFBIG;
 	else
 		ret = read_fd(fd, (size_t)st.st_size, data, size);
@@ -158,6 +213,22 @@ bool file_name_is_partial(const char *name)
 	return name[0] == '.' || !strncmp(name, "~syncthing~", 11);
 }
 
+/* A name the folder lists may be anything: a FIFO or a device node named
+ * like a model is passed over here, saying why, rather than handed to a
+ * reader (which file_open_read would refuse too, but after the list had
+ * counted it). Links are followed: a folder of links to models is fine. */
+static bool is_regular(DIR *d, const char *dir, const char *name)
+{
+	struct stat st;
+	int ret = fstatat(dirfd(d), name, &st, 0) ? -errno : kind_code(st.st_mode);
+
+	if (ret && file_refusal(ret))
+		log_warn("%s/%s: %s; passed over", dir, name, file_refusal(ret));
+	else if (ret)
+		log_warn("%s/%s: cannot stat it: %s; passed over", dir, name, strerror(-ret));
+	return !ret;
+}
+
 int file_list_folder(const char *dir, const char *const *exts, char ***paths, int *n)
 {
 	DIR *d = opendir(dir);
@@ -169,7 +240,8 @@ int file_list_folder(const char *dir, const char *const *exts, char ***paths, in
 	if (!d)
 		return -errno;
 	while (!ret && (e = readdir(d)))
-		if (!file_name_is_partial(e->d_name) && file_name_has_ext(e->d_name, exts))
+		if (!file_name_is_partial(e->d_name) && file_name_has_ext(e->d_name, exts) &&
+		    is_regular(d, dir, e->d_name))
 			ret = list_add(paths, n, dir, e->d_name);
 	closedir(d);
 	if (ret) {

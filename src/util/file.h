@@ -5,17 +5,41 @@
 #include <limits.h>
 #include <stdbool.h>
 #include <stddef.h>
+#include <sys/stat.h>
 #include <sys/types.h>
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
+/* file_open_read's flags. */
+enum {
+	FILE_NOFOLLOW = 1, /* a symbolic link is refused (-ELOOP) */
+};
+
+/* Opens path to read as content (a model, a picture, a font, a cache
+ * entry): the one way the kiosk opens such a file, since a stranger may
+ * leave anything where one is expected. A FIFO would block the open and
+ * then the read until a writer came (the kiosk hangs), and opening a
+ * device node can have effects: so the path is stat'ed and anything but a
+ * regular file refused before it is opened; then it is opened O_RDONLY |
+ * O_NONBLOCK | O_CLOEXEC (| O_NOFOLLOW with FILE_NOFOLLOW) and fstat'ed
+ * again before any read, for one swapped in between. Returns the fd (*st
+ * filled when st is not NULL) or a negative errno code: -EISDIR, -ESPIPE
+ * (a FIFO), -ENXIO (a socket), -ENODEV (a device node), -ELOOP (a link,
+ * with FILE_NOFOLLOW) for what is not a regular file (file_refusal says
+ * which), or the open's or stat's own. */
+int file_open_read(const char *path, unsigned flags, struct stat *st);
+
+/* Why file_open_read refused a path for its type, to follow "path: " in a
+ * message ("is a FIFO, not a file"); NULL for any other code. */
+const char *file_refusal(int ret);
+
 /* A regular file's bytes into *data (malloc'd, one NUL past the end;
- * the caller frees it), at most max bytes. Read, not mapped: a file cut
- * short while it is read ends short instead of raising SIGBUS, which
- * would take the kiosk down. Returns 0, -EFBIG past max, -EINVAL for a
- * file that is not regular, or another negative errno code. */
+ * the caller frees it), at most max bytes, opened by file_open_read.
+ * Read, not mapped: a file cut short while it is read ends short instead
+ * of raising SIGBUS, which would take the kiosk down. Returns 0, -EFBIG
+ * past max, file_open_read's refusals, or another negative errno code. */
 int file_read_all(const char *path, size_t max, unsigned char **data, size_t *size);
 
 /* count bytes of fd at off (pread, again after a signal), fewer only at
@@ -32,7 +56,9 @@ bool file_name_has_ext(const char *name, const char *const *exts);
 bool file_name_is_partial(const char *name);
 
 /* The files of folder dir whose names have one of exts, hidden ones (a
- * leading dot) and partial ones (file_name_is_partial) left out, as
+ * leading dot) and partial ones (file_name_is_partial) left out, and
+ * those that are not regular files (a FIFO named x.glb would hang the
+ * reader) passed over with a warning that says why, as
  * "dir/name" in name order: *paths (count *n), each and the array
  * malloc'd (file_list_free). Returns 0 or a negative errno code (nothing
  * to free). */

@@ -1,4 +1,5 @@
 #include "util/image.h"
+#include "util/file.h"
 #include "util/log.h"
 
 #include <errno.h>
@@ -378,38 +379,21 @@ int image_decode(const char *name, const uint8_t *data, size_t size, struct imag
 
 int image_load(const char *path, struct image *out)
 {
-	FILE *f = fopen(path, "rb");
-	uint8_t *data = NULL;
-	long size;
-	int ret = -EINVAL;
+	unsigned char *data;
+	size_t size;
+	int ret = file_read_all(path, IMAGE_MAX_FILE, &data, &size);
 
 	out->rgba = NULL;
-	if (!f) {
-		ret = -errno;
-		log_err("%s: cannot open: %s", path, strerror(errno));
-		return ret;
-	}
-	if (fseek(f, 0, SEEK_END) || (size = ftell(f)) < 0 || fseek(f, 0, SEEK_SET)) {
-		log_err("%s: cannot read (not a regular file?)", path);
-		goto out;
-	}
-	if ((unsigned long)size > IMAGE_MAX_FILE) {
-		log_err("%s: file is %ld bytes, expected at most %u", path, size, IMAGE_MAX_FILE);
-		goto out;
-	}
-	data = malloc(size ? (size_t)size : 1);
-	if (!data) {
-		ret = -ENOMEM;
-		goto out;
-	}
-	if (fread(data, 1, (size_t)size, f) != (size_t)size) {
-		log_err("%s: read error", path);
-		goto out;
-	}
-	ret = image_decode(path, data, (size_t)size, out);
-out:
+	if (ret == -EFBIG)
+		log_err("%s: file is larger than %u bytes, the most expected", path,
+			IMAGE_MAX_FILE);
+	else if (ret && file_refusal(ret))
+		log_err("%s: %s", path, file_refusal(ret));
+	else if (ret)
+		log_err("%s: cannot open: %s", path, strerror(-ret));
+	else
+		ret = image_decode(path, data, size, out);
 	free(data);
-	fclose(f);
 	return ret;
 }
 

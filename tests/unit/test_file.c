@@ -1,15 +1,19 @@
-/* util/file.c: whole files read, and files replaced whole or not at all. */
+/* util/file.c: whole files read (and what is not a file refused without
+ * blocking), and files replaced whole or not at all. */
 #include "util/file.h"
 
 #include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/socket.h>
 #include <sys/stat.h>
+#include <sys/un.h>
 #include <unistd.h>
 #include <cmocka.h>
 
@@ -104,10 +108,74 @@ static void read_refuses(void **state)
 	unsigned char *data;
 	size_t size;
 
-	assert_int_equal(file_read_all(dir, 1 << 20, &data, &size), -EINVAL);
+	assert_int_equal(file_read_all(dir, 1 << 20, &data, &size), -EISDIR);
 	assert_null(data);
 	assert_int_equal(file_read_all("/nonexistent/m.glb", 1, &data, &size), -ENOENT);
 	assert_int_equal(file_read_all("/proc/self/exe", 16, &data, &size), -EFBIG);
+}
+
+/* What a stranger may leave where a model or a picture is expected: each
+ * refused at once, saying what it is. The old open() of a FIFO blocked
+ * until a writer came: the alarm ends such a test instead of hanging. */
+static void refuses_what_is_not_a_file(void **state)
+{
+	const char *dir = *state;
+	struct sockaddr_un sa = {.sun_family = AF_UNIX};
+	char fifo[128], link[128], file[128];
+	unsigned char *data = (unsigned char *)"x";
+	size_t size = 1;
+	int sock = socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0), fd;
+
+	snprintf(fifo, sizeof(fifo), "%s/m.glb", dir);
+	snprintf(link, sizeof(link), "%s/link.png", dir);
+	snprintf(file, sizeof(file), "%s/real.png", dir);
+	snprintf(sa.sun_path, sizeof(sa.sun_path), "%s/s.png", dir);
+	assert_int_equal(mkfifo(fifo, 0600), 0);
+	assert_int_equal(bind(sock, (struct sockaddr *)&sa, sizeof(sa)), 0);
+	fclose(fopen(file, "w"));
+	assert_int_equal(symlink(file, link), 0);
+	alarm(10);
+	assert_int_equal(file_read_all(fifo, 1 << 20, &data, &size), -ESPIPE);
+	assert_null(data);
+	assert_int_equal(size, 0);
+	assert_string_equal(file_refusal(-ESPIPE), "is a FIFO, not a file");
+	assert_int_equal(file_read_all("/dev/null", 1 << 20, &data, &size), -ENODEV);
+	assert_string_equal(file_refusal(-ENODEV), "is a device node, not a file");
+	assert_int_equal(file_read_all(sa.sun_path, 1 << 20, &data, &size), -ENXIO);
+	assert_int_equal(file_open_read(fifo, FILE_NOFOLLOW, NULL), -ESPIPE);
+	alarm(0);
+	assert_null(file_refusal(-ENOENT));
+	/* A link: refused where asked, followed otherwise. */
+	assert_int_equal(file_open_read(link, FILE_NOFOLLOW, NULL), -ELOOP);
+	fd = file_open_read(link, 0, NULL);
+	assert_true(fd >= 0);
+	assert_true(fcntl(fd, F_GETFL) & O_NONBLOCK);
+	assert_true(fcntl(fd, F_GETFD) & FD_CLOEXEC);
+	close(fd);
+	expect_text(link, "");
+	close(sock);
+}
+
+/* A FIFO named like a picture in a folder is passed over (with a warning),
+ * not listed for a reader to open. */
+static void lists_no_fifo(void **state)
+{
+	static const char *const exts[] = {"png", NULL};
+	const char *dir = *state;
+	char path[128], **paths;
+	int n;
+
+	snprintf(path, sizeof(path), "%s/a.png", dir);
+	assert_int_equal(mkfifo(path, 0600), 0);
+	snprintf(path, sizeof(path), "%s/b.png", dir);
+	fclose(fopen(path, "w"));
+	snprintf(path, sizeof(path), "%s/c.png", dir);
+	assert_int_equal(mkdir(path, 0700), 0);
+	assert_int_equal(file_list_folder(dir, exts, &paths, &n), 0);
+	assert_int_equal(n, 1);
+	snprintf(path, sizeof(path), "%s/b.png", dir);
+	assert_string_equal(paths[0], path);
+	file_list_free(paths, n);
 }
 
 /* A folder's files of some kinds, hidden ones left out, in name order. */
@@ -154,6 +222,8 @@ int main(void)
 	    cmocka_unit_test(replaced_whole_or_not_at_all),
 	    cmocka_unit_test(read_refuses),
 	    cmocka_unit_test(lists_a_folder),
+	    cmocka_unit_test_setup_teardown(refuses_what_is_not_a_file, setup, teardown),
+	    cmocka_unit_test_setup_teardown(lists_no_fifo, setup, teardown),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);
 }
