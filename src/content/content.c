@@ -161,11 +161,12 @@ static int load_mesh_file(struct content *s, const struct content_config *o, con
 }
 
 /* The live kiosk's loads are remembered while they run: one that kills
- * the process is skipped after the restart. */
+ * the process is skipped after the restart. (No path: the built-in knot,
+ * nothing to remember.) */
 static int load_mesh(struct content *s, const struct content_config *o, const char *path)
 {
 	char dir[PATH_MAX];
-	bool guard = o->crash_memory && !load_guard_dir(dir, sizeof(dir));
+	bool guard = path && o->crash_memory && !load_guard_dir(dir, sizeof(dir));
 	int ret = guard ? load_guard_enter(dir, path) : 0;
 
 	if (ret)

@@ -39,6 +39,7 @@ seed() {
 # live LOG MODEL: the live kiosk until its first frame, then SIGTERM;
 # true when it got there and exited 0 with no sanitizer report.
 live() {
+	: >"$1" # made before the kiosk starts, for the grep below
 	ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 "$kiosk" --backend "$offscreen" \
 		--size 64x64 --keyboard none --matcap matcaps/gold.png --model "$2" 2>"$1" &
 	pid=$!
