@@ -1,5 +1,6 @@
 #include "content/content.h"
 #include "content/load_guard.h"
+#include "util/file.h"
 #include "content/model_list.h"
 #include "config/model_settings.h"
 #include "render/bake.h"
@@ -122,7 +123,10 @@ static int own_settings(struct content *s, const struct content_config *o, const
 		free(c);
 		return -ENOMEM;
 	}
-	if (model_settings_read(c, path) != OPTIONS_OK)
+	/* A model the import brought: its NAME.ini is a stick's, whoever
+	 * put it there (the import refused it otherwise). */
+	if ((file_in_content(path) ? model_settings_read_stick(c, path)
+				   : model_settings_read(c, path)) != OPTIONS_OK)
 		log_err("%s: its own settings are ignored for the errors above", path);
 	free_own(s);
 	s->own = c;

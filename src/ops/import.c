@@ -262,15 +262,6 @@ static void remove_tree(const char *path)
 	nftw(path, remove_entry, 16, FTW_DEPTH | FTW_PHYS);
 }
 
-static void state_dir(char *buf, size_t n)
-{
-	const char *env = getenv("STATE_DIRECTORY");
-
-	if (!env || !*env)
-		env = "/var/lib/matcap-kiosk";
-	snprintf(buf, n, "%.*s", (int)strcspn(env, ":"), env);
-}
-
 /* What an import cut short (stopped, or the power gone) left: removed,
  * and said. The caller holds the lock. */
 static void remove_stale(const char *staging)
@@ -311,7 +302,7 @@ void import_clean_stale(void)
 	struct stat st;
 	int lock;
 
-	state_dir(state, sizeof(state));
+	file_state_dir(state, sizeof(state));
 	snprintf(staging, sizeof(staging), "%s/.content.new", state);
 	if (lstat(staging, &st))
 		return; /* the usual case: no import was cut short */
@@ -413,7 +404,7 @@ int import_run(const struct options *o)
 		log_err("%s: not a folder to import (a link?): %s", im.from, strerror(-ret));
 		return ret;
 	}
-	state_dir(state, sizeof(state));
+	file_state_dir(state, sizeof(state));
 	snprintf(im.content, sizeof(im.content), "%s/content", state);
 	snprintf(im.staging, sizeof(im.staging), "%s/.content.new", state);
 	im.files = (struct import_files){.from = im.from, .from_fd = im.from_fd, .to = im.staging};

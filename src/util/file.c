@@ -260,3 +260,22 @@ void file_list_free(char **paths, int n)
 		free(paths[i]);
 	free(paths);
 }
+
+void file_state_dir(char *buf, size_t n)
+{
+	const char *env = getenv("STATE_DIRECTORY");
+
+	if (!env || !*env)
+		env = "/var/lib/matcap-kiosk";
+	snprintf(buf, n, "%.*s", (int)strcspn(env, ":"), env);
+}
+
+bool file_in_content(const char *path)
+{
+	char dir[PATH_MAX];
+	size_t n;
+
+	file_state_dir(dir, sizeof(dir));
+	n = strlen(dir);
+	return path && !strncmp(path, dir, n) && !strncmp(path + n, "/content/", 9);
+}

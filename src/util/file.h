@@ -83,6 +83,13 @@ int file_atomic_begin(struct file_atomic *a, const char *path, mode_t mode);
  * temporary file is removed. Returns ret, or the first failure. */
 int file_atomic_end(struct file_atomic *a, int ret, bool sync);
 
+/* The kiosk's state folder: $STATE_DIRECTORY (systemd's StateDirectory=,
+ * the first where it lists several), else /var/lib/matcap-kiosk. */
+void file_state_dir(char *buf, size_t n);
+/* path lies in its content/ folder, where --import puts a USB stick's
+ * files: a stranger's, held to a stick's rules wherever they are read. */
+bool file_in_content(const char *path);
+
 #ifdef __cplusplus
 }
 #endif

@@ -105,6 +105,14 @@ wait_for "$dir/kiosk.log" "reload: done"
 step "after a reload the kiosk shows the stick's model" grep -q \
 	"\"model\": \"$STATE_DIRECTORY/content/model/sphere.glb\"" "$dir/status2.json"
 step "... and its settings" grep -q '"mode": "normal"' "$dir/status2.json"
+# A NAME.ini put beside an imported model by other means than the import
+# is still a stick's: read with a stick's rules (issue 32's second line).
+printf '[scene]\nmatcap = /usr/share/pixmaps\n' >"$STATE_DIRECTORY/content/model/sphere.ini"
+"$kiosk" --config "$dir/kiosk.ini" --keyboard none --output "$dir/own.png" 2>"$dir/own.err"
+step "an imported model's NAME.ini is read with a stick's rules" sh -c "
+	grep -q \"sphere.ini:2: \[scene\] matcap = '/usr/share/pixmaps': a USB stick's paths\" \
+		'$dir/own.err' && grep -q 'its own settings are ignored' '$dir/own.err'"
+rm -f "$STATE_DIRECTORY/content/model/sphere.ini"
 tree "$STATE_DIRECTORY" >"$dir/before"
 
 # Broken sticks: a truncated model, a bad kiosk.ini, nothing of ours.
