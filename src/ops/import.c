@@ -40,21 +40,6 @@ struct import {
 	struct import_files files;    /* the stick's files (ops/import_copy.h) */
 };
 
-static int write_all(int fd, const char *buf, size_t n)
-{
-	while (n) {
-		ssize_t w = write(fd, buf, n);
-
-		if (w < 0 && errno == EINTR)
-			continue;
-		if (w <= 0)
-			return w < 0 ? -errno : -EIO;
-		buf += w;
-		n -= (size_t)w;
-	}
-	return 0;
-}
-
 /* kiosk.ini, read once into memory: what is checked is what is copied. A
  * link, a pipe or a large file is refused (-EINVAL, a bad stick's
  * settings). */
@@ -147,14 +132,14 @@ static int write_ini(struct import *im)
 	snprintf(path, sizeof(path), "%s/kiosk.ini", im->staging);
 	if ((fd = open(path, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644)) < 0)
 		return -errno;
-	ret = write_all(fd, head, n);
+	ret = file_write_all(fd, head, n);
 	if (!ret && im->ini) {
 		char *rebased = NULL;
 		size_t size = 0;
 
 		ret = import_ini_rebase(im->ini, im->ini_size, &rebased, &size);
 		if (!ret)
-			ret = write_all(fd, rebased, size);
+			ret = file_write_all(fd, rebased, size);
 		free(rebased);
 	}
 	if (!ret && fsync(fd))

@@ -130,21 +130,6 @@ static void passed_over(struct walk *w, const struct folder *d, const char *name
 		 import_name_escape(name, shown, sizeof(shown)), why);
 }
 
-static int write_all(int fd, const char *buf, size_t n)
-{
-	while (n) {
-		ssize_t w = write(fd, buf, n);
-
-		if (w < 0 && errno == EINTR)
-			continue;
-		if (w <= 0)
-			return w < 0 ? -errno : -EIO;
-		buf += w;
-		n -= (size_t)w;
-	}
-	return 0;
-}
-
 /* size bytes, the size the file had when it was opened: one that grows
  * or shrinks meanwhile is refused (-ESTALE), so no more than was counted
  * against the budget is ever written. */
@@ -159,7 +144,7 @@ static int copy_fd(int in, int out, off_t size)
 		if (n < 0)
 			ret = errno == EINTR ? 0 : -errno;
 		else if (n > 0)
-			ret = write_all(out, buf, (size_t)n);
+			ret = file_write_all(out, buf, (size_t)n);
 		size -= n > 0 ? n : 0;
 	}
 	if (!ret && (size > 0 || read(in, buf, 1) != 0))

@@ -316,23 +316,6 @@ void mesh_cache_entry_free(struct mesh_cache_entry *e)
 	free(e);
 }
 
-static int write_all(int fd, const void *data, size_t size)
-{
-	const char *p = data;
-
-	while (size) {
-		ssize_t n = write(fd, p, size);
-
-		if (n < 0 && errno == EINTR)
-			continue;
-		if (n <= 0)
-			return n < 0 ? -errno : -EIO;
-		p += n;
-		size -= (size_t)n;
-	}
-	return 0;
-}
-
 static void write_records(const struct cache_header *h, const struct mesh_packed *m,
 			  const struct mesh *materials, uint32_t *w)
 {
@@ -369,7 +352,7 @@ static int write_payload(int fd, const struct cache_header *h, const struct mesh
 	if (h->anim_size)
 		memcpy(buf + offset[MESH_ARRAYS + 2], anim, (size_t)h->anim_size);
 	*hash_out = mesh_cache_hash(buf, size, h->content);
-	ret = write_all(fd, buf, size);
+	ret = file_write_all(fd, buf, size);
 	free(buf);
 	return ret;
 }

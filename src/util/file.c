@@ -279,3 +279,20 @@ bool file_in_content(const char *path)
 	n = strlen(dir);
 	return path && !strncmp(path, dir, n) && !strncmp(path + n, "/content/", 9);
 }
+
+int file_write_all(int fd, const void *data, size_t size)
+{
+	const char *p = data;
+
+	while (size) {
+		ssize_t n = write(fd, p, size);
+
+		if (n < 0 && errno == EINTR)
+			continue;
+		if (n <= 0)
+			return n < 0 ? -errno : -EIO;
+		p += n;
+		size -= (size_t)n;
+	}
+	return 0;
+}

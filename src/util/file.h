@@ -83,6 +83,10 @@ int file_atomic_begin(struct file_atomic *a, const char *path, mode_t mode);
  * temporary file is removed. Returns ret, or the first failure. */
 int file_atomic_end(struct file_atomic *a, int ret, bool sync);
 
+/* All of data written to fd, again after a signal or a short write: 0,
+ * or a negative errno code (-EIO for a write of nothing). */
+int file_write_all(int fd, const void *data, size_t size);
+
 /* The kiosk's state folder: $STATE_DIRECTORY (systemd's StateDirectory=,
  * the first where it lists several), else /var/lib/matcap-kiosk. */
 void file_state_dir(char *buf, size_t n);
