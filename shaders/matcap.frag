@@ -45,6 +45,17 @@ varying vec2 v_base_uv;
 #endif
 uniform sampler2D u_base_map;
 #endif
+#ifdef EMISSIVE
+uniform SHADE_P vec3 u_emissive; // emissiveFactor x strength, linear
+#endif
+#ifdef EMISSIVE_MAP
+#ifdef GL_FRAGMENT_PRECISION_HIGH
+varying highp vec2 v_emissive_uv;
+#else
+varying vec2 v_emissive_uv;
+#endif
+uniform sampler2D u_emissive_map; // sRGB as stored
+#endif
 #if defined(ALPHA_MASK) || defined(ALPHA_BLEND)
 uniform vec2 u_alpha; // the material's alpha factor, and its alphaCutoff
 #endif
@@ -64,6 +75,19 @@ uniform SHADE_P float u_shininess;
 
 void main()
 {
+#ifdef BASE_MAP
+	vec4 base_map = texture2D(u_base_map, v_base_uv);
+#else
+	vec4 base_map = vec4(1.0);
+#endif
+#ifdef UNLIT
+	// KHR_materials_unlit: the base colour as it is, no matcap, no light.
+#ifdef BASE_COLOR
+	vec3 color = linear_to_srgb(base_linear(v_color, base_map.rgb));
+#else
+	vec3 color = vec3(1.0);
+#endif
+#else
 #ifdef DETAIL_MAP
 	vec4 detail = texture2D(u_detail, v_uv);
 #endif
@@ -109,15 +133,19 @@ void main()
 #endif
 #endif
 #ifdef BASE_COLOR
-#ifdef BASE_MAP
-	vec4 base_map = texture2D(u_base_map, v_base_uv);
-#else
-	vec4 base_map = vec4(1.0);
-#endif
 	color = base_color(color, v_color, base_map.rgb);
 #endif
 #ifdef DETAIL_MAP
 	color *= detail.b; // ambient occlusion
+#endif
+#endif // UNLIT
+#ifdef EMISSIVE
+#ifdef EMISSIVE_MAP
+	vec3 glow = u_emissive * srgb_to_linear(texture2D(u_emissive_map, v_emissive_uv).rgb);
+#else
+	vec3 glow = u_emissive;
+#endif
+	color = add_emission(color, glow);
 #endif
 #if defined(ALPHA_MASK) || defined(ALPHA_BLEND)
 	// glTF's alpha: baseColorFactor's times the map's, where the vertex

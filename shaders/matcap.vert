@@ -2,7 +2,8 @@
 // one of MODE_NORMAL, MODE_VIEW, MODE_SEM_VERTEX, MODE_SEM_FRAGMENT, and
 // CAMERA_ORTHO when the projection is orthographic. DETAIL_MAP and
 // DETAIL_NORMAL add the UV and the tangent frame, and only then; BASE_COLOR
-// the vertex colour, BASE_MAP the UV through the base map's transform.
+// the vertex colour, BASE_MAP the UV through the base map's transform,
+// EMISSIVE_MAP the UV through the emissive map's own.
 // SKIN_BONES (a model that plays its animation on the GPU) poses each
 // vertex by its four bones of the palette: rows of 3x4 matrices that hold
 // the node worlds, inverse binds and the model's fit. MORPH_TARGETS (with
@@ -10,7 +11,7 @@
 
 attribute vec3 a_position;
 attribute vec3 a_normal;
-#if defined(DETAIL_MAP) || defined(BASE_MAP)
+#if defined(DETAIL_MAP) || defined(BASE_MAP) || defined(EMISSIVE_MAP)
 attribute vec2 a_uv;
 #endif
 #ifdef DETAIL_MAP
@@ -23,6 +24,10 @@ varying vec4 v_color;
 #ifdef BASE_MAP
 uniform mat3 u_base_transform;
 varying vec2 v_base_uv;
+#endif
+#ifdef EMISSIVE_MAP
+uniform mat3 u_emissive_transform;
+varying vec2 v_emissive_uv;
 #endif
 #ifdef DETAIL_NORMAL
 attribute vec4 a_tangent;
@@ -92,6 +97,9 @@ void main()
 #endif
 #ifdef BASE_MAP
 	v_base_uv = (u_base_transform * vec3(a_uv, 1.0)).xy;
+#endif
+#ifdef EMISSIVE_MAP
+	v_emissive_uv = (u_emissive_transform * vec3(a_uv, 1.0)).xy;
 #endif
 #ifdef DETAIL_NORMAL
 	// The model-view is a rotation: tangents turn as normals do.

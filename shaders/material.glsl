@@ -56,7 +56,7 @@ SHADE_P vec3 lit_blinn_phong(SHADE_P vec3 n, SHADE_P vec3 e, SHADE_P vec3 l, SHA
 }
 #endif
 
-#ifdef BASE_COLOR
+#if defined(BASE_COLOR) || defined(EMISSIVE)
 // sRGB's transfer functions, exact (piecewise), as three.js's
 // sRGBTransferEOTF and sRGBTransferOETF.
 vec3 srgb_to_linear(vec3 c)
@@ -70,15 +70,35 @@ vec3 linear_to_srgb(vec3 c)
 	return mix(pow(c, vec3(0.41666)) * 1.055 - 0.055, c * 12.92, step(c, vec3(0.0031308)));
 }
 
+#endif
+
+#ifdef BASE_COLOR
+// The base colour, linear: rgba: baseColorFactor x COLOR_0, linear, a = 1
+// where the base map applies; map: its texel, sRGB. The map is filtered
+// as stored, before decoding: GLES2 has no sRGB textures (three.js on
+// WebGL 1 without EXT_sRGB does the same).
+vec3 base_linear(vec4 rgba, vec3 map)
+{
+	return rgba.rgb * mix(vec3(1.0), srgb_to_linear(map), rgba.a);
+}
+
 // three.js's MeshMatcapMaterial: the matcap (sRGB) times the base colour,
-// multiplied in linear light and encoded again. rgba: baseColorFactor x
-// COLOR_0, linear, a = 1 where the base map applies; map: its texel, sRGB.
-// The map is filtered as stored, before decoding: GLES2 has no sRGB
-// textures (three.js on WebGL 1 without EXT_sRGB does the same). Not in
-// the mirror: tests/oracle/base_color_check.c is its reference.
+// multiplied in linear light and encoded again. Not in the mirror:
+// tests/oracle/base_color_check.c is its reference (and of unlit and
+// emission below).
 vec3 base_color(vec3 matcap, vec4 rgba, vec3 map)
 {
-	vec3 base = rgba.rgb * mix(vec3(1.0), srgb_to_linear(map), rgba.a);
-	return linear_to_srgb(srgb_to_linear(matcap) * base);
+	return linear_to_srgb(srgb_to_linear(matcap) * base_linear(rgba, map));
+}
+#endif
+
+#ifdef EMISSIVE
+// glTF's emission: light added to the shaded colour (sRGB) in linear light,
+// as three.js adds it, then encoded again (clamped to white, as the
+// framebuffer does). light: emissiveFactor x strength x the map's texel,
+// linear.
+vec3 add_emission(vec3 color, vec3 light)
+{
+	return linear_to_srgb(min(srgb_to_linear(color) + light, vec3(1.0)));
 }
 #endif

@@ -41,6 +41,7 @@ static const char *const import_names[] = {"auto", "off", NULL};       /* enum c
 static const char *const loop_names[] = {"repeat", "once", "pingpong", NULL}; /* enum anim_loop */
 static const char *const antialias_names[] = {"auto", "off", "2", "4", "8", NULL};
 static const char *const base_color_names[] = {"auto", "off", NULL}; /* enum material_switch */
+static const char *const unlit_names[] = {"file", "shade", NULL};    /* enum material_unlit */
 static const char *const position_names[] = {
     "bottom-left", "bottom-right", "top-left", "top-right",
     "bottom",	   "top",	   NULL}; /* enum caption_position */
@@ -197,6 +198,8 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "HOW", "diffuse + Blinn-Phong instead of the matcap: off, on, beside (both)"},
     {"lit-shininess", 0, OPTIONS_MATERIAL, "lit_shininess", K_DOUBLE,
      AT(content.material.shininess), 1, 256, 0, NULL, "N", "the lit mode's specular exponent"},
+    {"unlit", 0, OPTIONS_MATERIAL, "unlit", K_CHOICE, AT(content.material.unlit), 0, 0, 0,
+     unlit_names, "HOW", "KHR_materials_unlit parts: file (their colour alone), shade (matcap)"},
     {"camera", 0, OPTIONS_CAMERA, "enabled", K_CHOICE, AT(camera.use), 0, 0, 0, camera_names,
      "WHEN", "on: a live camera is the matcap whenever one is there; off: never"},
     {"camera-id", 0, OPTIONS_CAMERA, "id", K_STRING, AT(camera.id), 0, 0, 0, NULL, "ID",

@@ -138,6 +138,7 @@ int draw_list_build(struct draw_list *l, const struct mesh_range *ranges, uint32
 				       MESH_ALPHA_OPAQUE,
 				       false,
 				       0,
+				       0,
 				       {g->center[0], g->center[1], g->center[2]},
 				       r};
 
@@ -145,6 +146,7 @@ int draw_list_build(struct draw_list *l, const struct mesh_range *ranges, uint32
 			it.alpha_mode = surfaces[s].alpha_mode;
 			it.double_sided = surfaces[s].double_sided;
 			it.missing = material_surface_missing(model, &surfaces[s]);
+			it.adds = surfaces[s].features & MATERIAL_PER_RANGE;
 		}
 		if (!g->index_count)
 			continue;

@@ -25,6 +25,8 @@ struct draw_item {
 	/* The model's features its material lacks (material_surface_missing
 	 * against every surface's together): left out of its program. */
 	unsigned missing;
+	/* Its material's MATERIAL_PER_RANGE features: added to its program. */
+	unsigned adds;
 	float center[3]; /* model space: blended items are ordered by it */
 	uint32_t range;	 /* the mesh range it draws (of a split palette: its bones) */
 };
@@ -55,8 +57,9 @@ void draw_list_release(struct draw_list *l);
 /* The renderer's program variants: an alpha mode, + 3 when double sided,
  * + 6 x which of the model's features the material lacks (none; the
  * detail map; its normal; iridescence; both the detail map and iridescence;
- * the normal and iridescence). Variant 0: the model's own program. */
-enum { DRAW_SIDES_VARIANTS = 6, DRAW_VARIANTS = 36 };
+ * the normal and iridescence), + 36 x (unlit + 2 x its emission: none,
+ * the factor, the factor and a map). Variant 0: the model's own program. */
+enum { DRAW_SIDES_VARIANTS = 6, DRAW_LACKS_VARIANTS = 36, DRAW_VARIANTS = 36 * 6 };
 
 static inline int draw_item_variant(const struct draw_item *it)
 {
@@ -64,9 +67,22 @@ static inline int draw_item_variant(const struct draw_item *it)
 		    : (it->missing & MATERIAL_DETAIL_NORMAL) ? 2
 							     : 0;
 
+	int emits = (it->adds & MATERIAL_EMISSIVE_MAP) ? 2 : (it->adds & MATERIAL_EMISSIVE) ? 1 : 0;
+
 	if (it->missing & MATERIAL_IRIDESCENCE)
 		lacks = lacks == 2 ? 5 : lacks + 3;
-	return it->alpha_mode + (it->double_sided ? 3 : 0) + DRAW_SIDES_VARIANTS * lacks;
+	return it->alpha_mode + (it->double_sided ? 3 : 0) + DRAW_SIDES_VARIANTS * lacks +
+	       DRAW_LACKS_VARIANTS * (((it->adds & MATERIAL_UNLIT) ? 1 : 0) + 2 * emits);
+}
+
+/* The MATERIAL_PER_RANGE features variant v adds to the model's. */
+static inline unsigned draw_variant_adds(int v)
+{
+	static const unsigned emits[3] = {0, MATERIAL_EMISSIVE,
+					  MATERIAL_EMISSIVE | MATERIAL_EMISSIVE_MAP};
+	int extra = v / DRAW_LACKS_VARIANTS;
+
+	return (extra & 1 ? MATERIAL_UNLIT : 0u) | emits[extra / 2];
 }
 
 /* The features variant v leaves out of the model's. */
@@ -76,7 +92,7 @@ static inline unsigned draw_variant_missing(int v)
 			      n = MATERIAL_DETAIL_NORMAL, i = MATERIAL_IRIDESCENCE | MATERIAL_RAMP;
 	static const unsigned lacks[6] = {0, d, n, i, d | i, n | i};
 
-	return lacks[v / DRAW_SIDES_VARIANTS];
+	return lacks[v % DRAW_LACKS_VARIANTS / DRAW_SIDES_VARIANTS];
 }
 
 /* The blended items back to front for this model-view (column-major): the

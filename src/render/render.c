@@ -86,12 +86,15 @@ static void drop_surfaces(struct renderer *r)
 {
 	for (uint32_t k = 0; r->base_maps && k < r->surface_count; k++)
 		drop_texture(r->gl, &r->base_maps[k]);
+	for (uint32_t k = 0; r->emissive_maps && k < r->surface_count; k++)
+		drop_texture(r->gl, &r->emissive_maps[k]);
 	for (uint32_t k = 0; r->detail_maps && k < r->surface_count; k++)
 		drop_texture(r->gl, &r->detail_maps[k]);
 	free(r->base_maps);
 	free(r->detail_maps);
+	free(r->emissive_maps);
 	free(r->surfaces);
-	r->base_maps = r->detail_maps = NULL;
+	r->base_maps = r->detail_maps = r->emissive_maps = NULL;
 	r->surfaces = NULL;
 	r->surface_count = 0;
 }
@@ -432,20 +435,30 @@ int renderer_set_precision(struct renderer *r, bool highp)
 	return r->mode_set ? renderer_set_mode(r, r->mode, r->ortho) : 0;
 }
 
-/* One material's maps: its base map (where the programs drawn read it)
- * and its own detail map. */
+/* A material's map with its sampler's wrap (upload_texture leaves it bound). */
+static int upload_wrapped(struct renderer *r, GLuint *tex, const struct image *img,
+			  const int wrap[2], bool no_mipmaps)
+{
+	static const GLint modes[] = {GL_REPEAT, GL_CLAMP_TO_EDGE, GL_MIRRORED_REPEAT};
+	int ret = upload_texture(r->gl, tex, img, true, !no_mipmaps);
+
+	r->gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, modes[wrap[0]]);
+	r->gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, modes[wrap[1]]);
+	return ret;
+}
+
+/* One material's maps: its base map (where the programs drawn read it),
+ * its emissive map (every mode adds its light) and its own detail map. */
 static int upload_surface(struct renderer *r, const struct material *m, uint32_t k)
 {
-	static const GLint wrap[] = {GL_REPEAT, GL_CLAMP_TO_EDGE, GL_MIRRORED_REPEAT};
 	const struct material_surface *s = &m->surfaces[k];
 	int ret = 0;
 
-	if ((drawn_features(m) & MATERIAL_BASE_MAP) && s->base_map.width) {
-		ret = upload_texture(r->gl, &r->base_maps[k], &s->base_map, true, !s->no_mipmaps);
-		/* Its sampler's wrap (upload_texture left it bound). */
-		r->gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap[s->wrap[0]]);
-		r->gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap[s->wrap[1]]);
-	}
+	if ((drawn_features(m) & MATERIAL_BASE_MAP) && s->base_map.width)
+		ret = upload_wrapped(r, &r->base_maps[k], &s->base_map, s->wrap, s->no_mipmaps);
+	if (!ret && (s->features & MATERIAL_EMISSIVE_MAP) && s->emissive_map.width)
+		ret = upload_wrapped(r, &r->emissive_maps[k], &s->emissive_map, s->emissive_wrap,
+				     s->emissive_no_mipmaps);
 	if (!ret && (s->features & MATERIAL_DETAIL) && s->detail.width)
 		ret = upload_texture(r->gl, &r->detail_maps[k], &s->detail, true, true);
 	return ret;
@@ -462,7 +475,8 @@ static int set_surfaces(struct renderer *r, const struct material *m)
 	r->surfaces = calloc(n, sizeof(*r->surfaces));
 	r->base_maps = calloc(n, sizeof(*r->base_maps));
 	r->detail_maps = calloc(n, sizeof(*r->detail_maps));
-	if (!r->surfaces || !r->base_maps || !r->detail_maps)
+	r->emissive_maps = calloc(n, sizeof(*r->emissive_maps));
+	if (!r->surfaces || !r->base_maps || !r->detail_maps || !r->emissive_maps)
 		return -ENOMEM;
 	r->surface_count = n;
 	for (uint32_t k = 0; k < n; k++) {
@@ -476,6 +490,7 @@ static int set_surfaces(struct renderer *r, const struct material *m)
 		*s = m->surfaces[k];
 		memset(&s->base_map, 0, sizeof(struct image));
 		memset(&s->detail, 0, sizeof(struct image));
+		memset(&s->emissive_map, 0, sizeof(struct image));
 		if (!ret)
 			ret = upload_surface(r, m, k);
 	}
@@ -528,6 +543,9 @@ static void find_uniforms(const struct gl *gl, struct program *p)
 	p->base_color = gl->GetUniformLocation(p->id, "u_base_color");
 	p->shininess = gl->GetUniformLocation(p->id, "u_shininess");
 	p->alpha = gl->GetUniformLocation(p->id, "u_alpha");
+	p->emissive = gl->GetUniformLocation(p->id, "u_emissive");
+	p->emissive_map = gl->GetUniformLocation(p->id, "u_emissive_map");
+	p->emissive_transform = gl->GetUniformLocation(p->id, "u_emissive_transform");
 	p->bones = gl->GetUniformLocation(p->id, "u_bones");
 	p->morph_weights = gl->GetUniformLocation(p->id, "u_morph_weights");
 }
@@ -549,8 +567,9 @@ static struct program *program_get(struct renderer *r, enum shading_mode mode, b
 				   int variant)
 {
 	struct program *p = &r->programs[lit ? SHADING_VIEW : mode][ortho][lit][variant];
-	unsigned features = (r->mat.features & ~draw_variant_missing(variant)) |
-			    variant_features[variant % DRAW_SIDES_VARIANTS];
+	unsigned features =
+	    (r->mat.features & ~(draw_variant_missing(variant) | MATERIAL_PER_RANGE)) |
+	    variant_features[variant % DRAW_SIDES_VARIANTS] | draw_variant_adds(variant);
 	struct shader_source src;
 	GLuint id;
 

@@ -38,6 +38,15 @@ static void set_uniforms(const struct renderer *r, const struct program *p)
 		gl->Uniform1f(p->shininess, m->shininess);
 }
 
+/* A map's KHR_texture_transform (mesh_material.base_transform) as a mat3. */
+static void set_transform(const struct gl *gl, GLint uniform, const float t[6])
+{
+	const float m3[9] = {t[0], t[1], 0, t[2], t[3], 0, t[4], t[5], 1};
+
+	if (uniform >= 0)
+		gl->UniformMatrix3fv(uniform, 1, GL_FALSE, m3);
+}
+
 /* What one material changes: its base map, its transform and its alpha,
  * its detail map (else the model's) and its iridescence (where its
  * program has them). A material without a base map leaves the last one
@@ -56,14 +65,13 @@ static void set_surface(const struct renderer *r, const struct program *p, uint3
 	else if (p->iridescence >= 0)
 		gl->Uniform4f(p->iridescence, r->mat.hue_range, r->mat.hue_average,
 			      r->mat.hue_shift, r->mat.opacity);
-	if (p->base_transform >= 0) {
-		const float *t = s->base_transform;
-		const float m3[9] = {t[0], t[1], 0, t[2], t[3], 0, t[4], t[5], 1};
-
-		gl->UniformMatrix3fv(p->base_transform, 1, GL_FALSE, m3);
-	}
+	set_transform(gl, p->base_transform, s->base_transform);
 	if (p->alpha >= 0)
 		gl->Uniform2f(p->alpha, s->alpha, s->alpha_cutoff);
+	if (p->emissive >= 0)
+		gl->Uniform3f(p->emissive, s->emissive[0], s->emissive[1], s->emissive[2]);
+	bind_texture(gl, p->emissive_map, UNIT_EMISSIVE, r->emissive_maps[k]);
+	set_transform(gl, p->emissive_transform, s->emissive_transform);
 }
 
 static const GLenum gl_types[] = {

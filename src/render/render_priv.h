@@ -12,15 +12,15 @@
 #include "scene/material.h"
 #include "scene/mesh_pack.h"
 
-enum { UNIT_MATCAP, UNIT_DETAIL, UNIT_RAMP, UNIT_BASE };
+enum { UNIT_MATCAP, UNIT_DETAIL, UNIT_RAMP, UNIT_BASE, UNIT_EMISSIVE };
 
 /* The vertex shader's vectors besides the bone palette: the model-view
- * and projection (4 each), the normal matrix and the base map's
- * transform (3 each), and the morph targets' weights (2). */
-#define RENDER_SKIN_RESERVED 16
+ * and projection (4 each), the normal matrix and the base and emissive
+ * maps' transforms (3 each), and the morph targets' weights (2). */
+#define RENDER_SKIN_RESERVED 19
 
-/* A range's program variant (draw_item_variant): its alphaMode, its sides
- * and the model's features its material lacks. */
+/* A range's program variant (draw_item_variant): its alphaMode, its sides,
+ * the model's features its material lacks, and its emission and unlit. */
 enum { VARIANTS = DRAW_VARIANTS };
 
 struct program {
@@ -28,6 +28,7 @@ struct program {
 	unsigned features; /* enum material_feature and material_variant bits */
 	GLint modelview, projection, normal_matrix, matcap, detail, ramp, base_map, base_transform;
 	GLint iridescence, hsv, light, base_color, shininess, alpha;
+	GLint emissive, emissive_map, emissive_transform; /* a range that emits */
 	GLint bones;	     /* u_bones: a skinning program's palette; else -1 */
 	GLint morph_weights; /* u_morph_weights: a program that morphs; else -1 */
 };
@@ -49,7 +50,7 @@ struct renderer {
 	/* Per material (surfaces): its base map and its own detail map (0:
 	 * none; detail: the model's, r->detail) and the rest. */
 	uint32_t surface_count;
-	GLuint *base_maps, *detail_maps;
+	GLuint *base_maps, *detail_maps, *emissive_maps;
 	struct material_surface *surfaces; /* their images left empty */
 	bool variant_used[VARIANTS];	   /* by some range */
 	struct draw_list list;

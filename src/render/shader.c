@@ -60,16 +60,18 @@ int shader_source_matcap(struct shader_source *s, const char *dir, unsigned feat
 		unsigned feature;
 		const char *name;
 	} feature_defines[] = {
-	    {MATERIAL_IRIDESCENCE, "IRIDESCENCE"},  {MATERIAL_RAMP, "IRIDESCENCE_RAMP"},
-	    {MATERIAL_DETAIL, "DETAIL_MAP"},	    {MATERIAL_DETAIL_NORMAL, "DETAIL_NORMAL"},
-	    {MATERIAL_BASE_COLOR, "BASE_COLOR"},    {MATERIAL_BASE_MAP, "BASE_MAP"},
-	    {MATERIAL_ALPHA_MASK, "ALPHA_MASK"},    {MATERIAL_ALPHA_BLEND, "ALPHA_BLEND"},
-	    {MATERIAL_DOUBLE_SIDED, "DOUBLE_SIDED"}};
+	    {MATERIAL_IRIDESCENCE, "IRIDESCENCE"},   {MATERIAL_RAMP, "IRIDESCENCE_RAMP"},
+	    {MATERIAL_DETAIL, "DETAIL_MAP"},	     {MATERIAL_DETAIL_NORMAL, "DETAIL_NORMAL"},
+	    {MATERIAL_BASE_COLOR, "BASE_COLOR"},     {MATERIAL_BASE_MAP, "BASE_MAP"},
+	    {MATERIAL_ALPHA_MASK, "ALPHA_MASK"},     {MATERIAL_ALPHA_BLEND, "ALPHA_BLEND"},
+	    {MATERIAL_DOUBLE_SIDED, "DOUBLE_SIDED"}, {MATERIAL_EMISSIVE, "EMISSIVE"},
+	    {MATERIAL_EMISSIVE_MAP, "EMISSIVE_MAP"}, {MATERIAL_UNLIT, "UNLIT"}};
 	int ret;
 
-	/* The lit mode compares shapes: it keeps its own grey. */
+	/* The lit mode compares shapes: it keeps its own grey, and shades
+	 * every part (its emission still added). */
 	if (lit)
-		features &= ~(unsigned)(MATERIAL_BASE_COLOR | MATERIAL_BASE_MAP);
+		features &= ~(unsigned)(MATERIAL_BASE_COLOR | MATERIAL_BASE_MAP | MATERIAL_UNLIT);
 	*s = (struct shader_source){.dir = dir,
 				    .precision = "precision mediump float;\n",
 				    .vertex = {"mapping.glsl", "matcap.vert"},

@@ -34,7 +34,7 @@ enum shader_attribute {
  * GL_MAX_VERTEX_ATTRIBS. */
 #define SHADER_MAX_ATTRIBUTES 16
 
-#define SHADER_MAX_DEFINES 12
+#define SHADER_MAX_DEFINES 16
 #define SHADER_MAX_FILES   3
 
 /* What a program is made of. Each stage's text is the #version line, the

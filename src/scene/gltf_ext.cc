@@ -32,8 +32,16 @@ template <typename T> bool negative(T v)
 // The loader's one list of what it understands. Anything else in
 // extensionsRequired refuses the file, naming it.
 const char *const supported_extensions[] = {
-    "KHR_mesh_quantization",	 "EXT_meshopt_compression", "KHR_draco_mesh_compression",
-    "KHR_materials_iridescence", "KHR_texture_transform",
+    "KHR_mesh_quantization",
+    "EXT_meshopt_compression",
+    "KHR_draco_mesh_compression",
+    "KHR_materials_iridescence",
+    "KHR_texture_transform",
+    "KHR_materials_unlit",
+    "KHR_materials_emissive_strength",
+    // Its diffuse colour and texture are the base colour; specular and
+    // glossiness are not needed by a matcap, which holds its own light.
+    "KHR_materials_pbrSpecularGlossiness",
 };
 
 std::string path_of(const char *array, size_t i)

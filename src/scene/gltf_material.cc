@@ -124,22 +124,6 @@ void read_texture(const tinygltf::Model &m, int texture, int tex_coord, const Gl
 	}
 }
 
-// The maps material `index` has of `textures` (each is decoded once).
-unsigned material_maps(const tinygltf::Model &m, int index, unsigned textures)
-{
-	if (index < 0 || (size_t)index >= m.materials.size())
-		return 0;
-	const tinygltf::Material &mat = m.materials[(size_t)index];
-	auto it = mat.extensions.find("KHR_materials_iridescence");
-	bool film = it != mat.extensions.end() && it->second.IsObject() &&
-		    it->second.Has("iridescenceThicknessTexture");
-	return ((textures & GLTF_TEXTURE_BASE_COLOR) &&
-		mat.pbrMetallicRoughness.baseColorTexture.index >= 0) +
-	       ((textures & GLTF_TEXTURE_NORMAL) && mat.normalTexture.index >= 0) +
-	       ((textures & GLTF_TEXTURE_OCCLUSION) && mat.occlusionTexture.index >= 0) +
-	       ((textures & GLTF_TEXTURE_THICKNESS) && film);
-}
-
 void read_iridescence(const tinygltf::Material &mat, struct mesh_material *out, int *thickness,
 		      int *thickness_coord)
 {
@@ -170,18 +154,17 @@ double element(const tinygltf::Value &a, int k, double fallback)
 	return std::isfinite(x) ? std::fmin(std::fmax(x, -1e6), 1e6) : fallback;
 }
 
-// KHR_texture_transform as the affine map of mesh_material.base_transform:
-// translation x rotation x scale, the rotation counter-clockwise on the
-// UVs (so the image turns clockwise), as the extension's example reads.
-// Returns the texCoord it names, else `tex_coord`.
-int texture_transform(const tinygltf::ExtensionMap &ext, int tex_coord, float m[6])
+// KHR_texture_transform (v, null: none) as the affine map of
+// mesh_material.base_transform: translation x rotation x scale, the
+// rotation counter-clockwise on the UVs (so the image turns clockwise), as
+// the extension's example reads. Returns the texCoord it names, else
+// `tex_coord`.
+int transform_value(const tinygltf::Value *v, int tex_coord, float m[6])
 {
-	auto it = ext.find("KHR_texture_transform");
-	if (it == ext.end() || !it->second.IsObject())
+	if (!v || !v->IsObject())
 		return tex_coord;
-	const tinygltf::Value &v = it->second;
-	const tinygltf::Value &off = v.Get("offset"), &scale = v.Get("scale");
-	double r = number(v, "rotation", 0.0, -1e6, 1e6), o[2] = {0, 0}, s[2] = {1, 1};
+	const tinygltf::Value &off = v->Get("offset"), &scale = v->Get("scale");
+	double r = number(*v, "rotation", 0.0, -1e6, 1e6), o[2] = {0, 0}, s[2] = {1, 1};
 	for (int k = 0; k < 2; k++) {
 		o[k] = element(off, k, o[k]);
 		s[k] = element(scale, k, s[k]);
@@ -192,7 +175,90 @@ int texture_transform(const tinygltf::ExtensionMap &ext, int tex_coord, float m[
 	m[3] = (float)(std::cos(r) * s[1]);
 	m[4] = (float)o[0];
 	m[5] = (float)o[1];
-	return (int)number(v, "texCoord", tex_coord, 0, 1e9);
+	return (int)number(*v, "texCoord", tex_coord, 0, 1e9);
+}
+
+// A texture a material reads: its index (-1: none), the UV set it reads
+// (after KHR_texture_transform's texCoord) and its transform.
+struct TexRef {
+	int index = -1, coord = 0;
+	float m[6] = {1, 0, 0, 1, 0, 0};
+};
+
+TexRef texture_ref(const tinygltf::TextureInfo &t)
+{
+	TexRef r;
+	auto it = t.extensions.find("KHR_texture_transform");
+	r.index = t.index;
+	r.coord =
+	    transform_value(it == t.extensions.end() ? nullptr : &it->second, t.texCoord, r.m);
+	return r;
+}
+
+// The same from a textureInfo an extension holds as plain JSON.
+TexRef texture_ref(const tinygltf::Value &t)
+{
+	TexRef r;
+	if (!t.IsObject() || !t.Has("index"))
+		return r;
+	r.index = (int)number(t, "index", -1, -1, 1e9);
+	const tinygltf::Value &ext = t.Get("extensions");
+	const tinygltf::Value *tt = ext.IsObject() && ext.Has("KHR_texture_transform")
+					? &ext.Get("KHR_texture_transform")
+					: nullptr;
+	r.coord = transform_value(tt, (int)number(t, "texCoord", 0, 0, 1e9), r.m);
+	return r;
+}
+
+// KHR_materials_pbrSpecularGlossiness, or null.
+const tinygltf::Value *spec_gloss(const tinygltf::Material &mat)
+{
+	auto it = mat.extensions.find("KHR_materials_pbrSpecularGlossiness");
+	return it != mat.extensions.end() && it->second.IsObject() ? &it->second : nullptr;
+}
+
+// The base colour texture: pbrMetallicRoughness's, or a spec-gloss
+// material's diffuseTexture (its specular and glossiness are of no use to
+// a matcap, which holds its own light: they are not read).
+TexRef base_texture(const tinygltf::Material &mat)
+{
+	const tinygltf::Value *sg = spec_gloss(mat);
+	return sg ? texture_ref(sg->Get("diffuseTexture"))
+		  : texture_ref(mat.pbrMetallicRoughness.baseColorTexture);
+}
+
+// The base colour factor, rgba, each in [0, 1]: baseColorFactor, or a
+// spec-gloss material's diffuseFactor. Returns whether one was given.
+bool base_factor(const tinygltf::Material &mat, float rgba[4])
+{
+	const tinygltf::Value *sg = spec_gloss(mat);
+	std::vector<double> f = mat.pbrMetallicRoughness.baseColorFactor;
+	if (sg) {
+		const tinygltf::Value &d = sg->Get("diffuseFactor");
+		f.assign(4, 1.0);
+		for (int k = 0; k < 4 && d.IsArray() && d.ArrayLen() == 4; k++)
+			f[(size_t)k] = d.Get(k).IsNumber() || d.Get(k).IsInt()
+					   ? d.Get(k).GetNumberAsDouble()
+					   : 1.0;
+	}
+	for (size_t k = 0; k < 4 && f.size() == 4; k++)
+		rgba[k] = std::isfinite(f[k]) ? (float)std::fmin(std::fmax(f[k], 0.0), 1.0) : 1.0f;
+	return f.size() == 4;
+}
+
+// emissiveFactor x KHR_materials_emissive_strength, linear light; a
+// strength may exceed 1 (a lamp): kept to 1000, as a sane bound.
+void read_emission(const tinygltf::Material &mat, float out[3])
+{
+	double strength = 1.0;
+	auto it = mat.extensions.find("KHR_materials_emissive_strength");
+	if (it != mat.extensions.end())
+		strength = number(it->second, "emissiveStrength", 1.0, 0.0, 1000.0);
+	for (size_t k = 0; k < 3; k++) {
+		double f = mat.emissiveFactor.size() == 3 ? mat.emissiveFactor[k] : 0.0;
+		f = std::isfinite(f) ? std::fmin(std::fmax(f, 0.0), 1.0) : 0.0;
+		out[k] = (float)(f * strength);
+	}
 }
 
 // alphaMode, alphaCutoff and doubleSided; an unknown mode is opaque, as
@@ -235,6 +301,23 @@ void read_wrap(const tinygltf::Model &m, int texture, int wrap[2], bool *no_mipm
 bool is_blend(const tinygltf::Model &m, int material)
 {
 	return material >= 0 && m.materials[(size_t)material].alphaMode == "BLEND";
+}
+
+// The maps material `index` has of `textures` (each is decoded once).
+unsigned material_maps(const tinygltf::Model &m, int index, unsigned textures)
+{
+	if (index < 0 || (size_t)index >= m.materials.size())
+		return 0;
+	const tinygltf::Material &mat = m.materials[(size_t)index];
+	auto it = mat.extensions.find("KHR_materials_iridescence");
+	bool film = it != mat.extensions.end() && it->second.IsObject() &&
+		    it->second.Has("iridescenceThicknessTexture");
+	bool colour = (textures & GLTF_TEXTURE_BASE_COLOR) != 0;
+	return (colour && base_texture(mat).index >= 0) +
+	       (colour && mat.emissiveTexture.index >= 0) +
+	       ((textures & GLTF_TEXTURE_NORMAL) && mat.normalTexture.index >= 0) +
+	       ((textures & GLTF_TEXTURE_OCCLUSION) && mat.occlusionTexture.index >= 0) +
+	       ((textures & GLTF_TEXTURE_THICKNESS) && film);
 }
 
 } // namespace
@@ -310,18 +393,19 @@ bool gltf_primitive_base(const tinygltf::Model &m, int material, float rgba[4])
 	rgba[3] = 0.0f;
 	if (material < 0 || (size_t)material >= m.materials.size())
 		return false;
-	const tinygltf::PbrMetallicRoughness &pbr =
-	    m.materials[(size_t)material].pbrMetallicRoughness;
+	const tinygltf::Material &mat = m.materials[(size_t)material];
+	float f[4] = {1.0f, 1.0f, 1.0f, 1.0f};
 	bool coloured = false;
-	for (size_t k = 0; k < 3 && pbr.baseColorFactor.size() == 4; k++) {
-		double f = pbr.baseColorFactor[k];
-		rgba[k] = std::isfinite(f) ? (float)std::fmin(std::fmax(f, 0.0), 1.0) : 1.0f;
-		coloured |= rgba[k] != 1.0f;
-	}
+	if (base_factor(mat, f))
+		for (size_t k = 0; k < 3; k++) {
+			rgba[k] = f[k];
+			coloured |= rgba[k] != 1.0f;
+		}
 	// Each primitive reads its own material's base map (mesh ranges).
-	if (pbr.baseColorTexture.index >= 0)
+	bool map = base_texture(mat).index >= 0;
+	if (map)
 		rgba[3] = 1.0f;
-	return coloured || pbr.baseColorTexture.index >= 0;
+	return coloured || map;
 }
 
 void gltf_keep_colors(struct mesh *out, const float uniform[4])
@@ -350,9 +434,11 @@ int gltf_uv_set(const tinygltf::Model &m, int material, unsigned textures)
 	    (size_t)material >= m.materials.size())
 		return 0;
 	const tinygltf::Material &mat = m.materials[(size_t)material];
-	const tinygltf::TextureInfo &t = mat.pbrMetallicRoughness.baseColorTexture;
-	float unused[6];
-	int set = t.index >= 0 ? texture_transform(t.extensions, t.texCoord, unused) : 0;
+	TexRef base = base_texture(mat), glow = texture_ref(mat.emissiveTexture);
+	// The base map's set, else the emissive map's: one set a primitive is
+	// carried, and a base map on another set than its emissive map leaves
+	// the emissive one out (gltf_read_material says so).
+	int set = base.index >= 0 ? base.coord : glow.index >= 0 ? glow.coord : 0;
 	// The detail map packs the others on the one UV set it reads.
 	bool others = ((textures & GLTF_TEXTURE_NORMAL) && mat.normalTexture.index >= 0) ||
 		      ((textures & GLTF_TEXTURE_OCCLUSION) && mat.occlusionTexture.index >= 0) ||
@@ -373,6 +459,42 @@ bool gltf_keep_image(tinygltf::Image *image, const int index, std::string *, std
 	return true;
 }
 
+// The base colour's and emission's factors and maps (decoded when
+// `decode`): each map's UV set is the mesh's when gltf_uv_set chose it.
+static void read_colour(const tinygltf::Model &m, int index, unsigned textures, bool decode,
+			const GltfImages &images, const std::string &name,
+			struct mesh_material *out)
+{
+	const tinygltf::Material &mat = m.materials[(size_t)index];
+	int set = gltf_uv_set(m, index, textures);
+	float rgba[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+
+	if (base_factor(mat, rgba)) {
+		std::copy(rgba, rgba + 3, out->base_color);
+		out->base_alpha = rgba[3];
+	}
+	out->unlit = mat.extensions.count("KHR_materials_unlit") > 0;
+	read_emission(mat, out->emissive);
+	TexRef base = base_texture(mat), glow = texture_ref(mat.emissiveTexture);
+	out->has_base_map = base.index >= 0;
+	std::copy(base.m, base.m + 6, out->base_transform);
+	read_wrap(m, base.index, out->base_wrap, &out->base_no_mipmaps);
+	// An emissive map with a black factor adds nothing: not decoded.
+	bool glows = out->emissive[0] > 0.0f || out->emissive[1] > 0.0f || out->emissive[2] > 0.0f;
+	out->has_emissive_map = glow.index >= 0 && glows;
+	std::copy(glow.m, glow.m + 6, out->emissive_transform);
+	read_wrap(m, glow.index, out->emissive_wrap, &out->emissive_no_mipmaps);
+	if (!decode)
+		return;
+	const char *base_name = spec_gloss(mat) ? "diffuseTexture" : "baseColorTexture";
+	if (out->has_base_map)
+		read_texture(m, base.index, base.coord == set ? 0 : base.coord, images, name,
+			     base_name, &out->base_map, out->images_decoded);
+	if (out->has_emissive_map)
+		read_texture(m, glow.index, glow.coord == set ? 0 : glow.coord, images, name,
+			     "emissiveTexture", &out->emissive_map, out->images_decoded);
+}
+
 void gltf_read_material(const tinygltf::Model &m, int index, unsigned textures, unsigned decode,
 			const GltfImages &images, const std::string &name,
 			struct mesh_material *out)
@@ -380,13 +502,9 @@ void gltf_read_material(const tinygltf::Model &m, int index, unsigned textures, 
 	if (index < 0 || (size_t)index >= m.materials.size())
 		return;
 	const tinygltf::Material &mat = m.materials[(size_t)index];
-	const std::vector<double> &base = mat.pbrMetallicRoughness.baseColorFactor;
 	int thickness = -1, thickness_coord = 0;
 
 	out->present = true;
-	for (size_t k = 0; k < 4 && base.size() == 4; k++)
-		(k < 3 ? out->base_color[k] : out->base_alpha) =
-		    std::isfinite(base[k]) ? (float)std::fmin(std::fmax(base[k], 0.0), 1.0) : 1.0f;
 	read_alpha(mat, name, out);
 	out->has_normal_map = mat.normalTexture.index >= 0;
 	out->has_occlusion_map = mat.occlusionTexture.index >= 0;
@@ -397,17 +515,8 @@ void gltf_read_material(const tinygltf::Model &m, int index, unsigned textures, 
 		out->occlusion_strength =
 		    (float)std::fmin(std::fmax(mat.occlusionTexture.strength, 0.0), 1.0);
 	read_iridescence(mat, out, &thickness, &thickness_coord);
-	const tinygltf::TextureInfo &base_tex = mat.pbrMetallicRoughness.baseColorTexture;
-	out->has_base_map = base_tex.index >= 0;
-	int base_coord =
-	    texture_transform(base_tex.extensions, base_tex.texCoord, out->base_transform);
-	// The mesh's UVs are this set when it was chosen for the map.
-	if (base_coord == gltf_uv_set(m, index, textures))
-		base_coord = 0;
-	read_wrap(m, base_tex.index, out->base_wrap, &out->base_no_mipmaps);
-	if ((textures & decode & GLTF_TEXTURE_BASE_COLOR) && out->has_base_map)
-		read_texture(m, base_tex.index, base_coord, images, name, "baseColorTexture",
-			     &out->base_map, out->images_decoded);
+	read_colour(m, index, textures, (textures & decode & GLTF_TEXTURE_BASE_COLOR) != 0, images,
+		    name, out);
 	if ((textures & decode & GLTF_TEXTURE_NORMAL) && out->has_normal_map)
 		read_texture(m, mat.normalTexture.index, mat.normalTexture.texCoord, images, name,
 			     "normalTexture", &out->normal_map, out->images_decoded);

@@ -340,19 +340,54 @@ static int resolve_surfaces(const struct mesh *mesh, bool base, struct material 
 	return ret;
 }
 
+/* One material's emission (its factor and, placed by the mesh's UVs, its
+ * map) and whether it is shown unlit. A black factor emits nothing: its
+ * ranges keep the program without emission. */
+static int surface_light(const struct material_config *cfg, const struct mesh *mesh,
+			 const struct mesh_material *g, struct material_surface *s)
+{
+	int ret = 0;
+
+	if (g->unlit && cfg->unlit == UNLIT_FILE)
+		s->features |= MATERIAL_UNLIT;
+	if (!(g->emissive[0] > 0.0f || g->emissive[1] > 0.0f || g->emissive[2] > 0.0f))
+		return 0;
+	s->features |= MATERIAL_EMISSIVE;
+	memcpy(s->emissive, g->emissive, sizeof(s->emissive));
+	memcpy(s->emissive_transform, g->emissive_transform, sizeof(s->emissive_transform));
+	memcpy(s->emissive_wrap, g->emissive_wrap, sizeof(s->emissive_wrap));
+	s->emissive_no_mipmaps = g->emissive_no_mipmaps;
+	if (g->emissive_map.width && mesh->uvs)
+		ret = copy_base_map(&g->emissive_map, &s->emissive_map);
+	if (!ret && s->emissive_map.width)
+		s->features |= MATERIAL_EMISSIVE_MAP;
+	else if (g->emissive_map.width)
+		log_warn("the model's emissiveTexture has no TEXCOORD_0 to place it: its "
+			 "emissiveFactor alone is drawn");
+	return ret;
+}
+
 /* The model's base colour, when the loader gave it (mesh colors): each
- * material's map needs the UVs it is placed by. */
+ * material's map needs the UVs it is placed by. Emission and unlit are
+ * the file's colours too: off with the base colour. */
 static int resolve_base_color(const struct material_config *cfg, const struct mesh *mesh,
 			      struct material *m)
 {
 	const struct mesh_material *g = &mesh->material;
-	bool base = cfg->base_color != MATERIAL_OFF && (mesh->colors || g->has_colors);
+	bool colour = cfg->base_color != MATERIAL_OFF;
+	bool base = colour && (mesh->colors || g->has_colors);
+	int ret;
 
 	if (base) {
 		m->features |= MATERIAL_BASE_COLOR;
 		memcpy(m->vertex_color, g->color, sizeof(m->vertex_color));
 	}
-	return resolve_surfaces(mesh, base, m);
+	ret = resolve_surfaces(mesh, base, m);
+	for (uint32_t k = 0; colour && !ret && k < m->surface_count; k++) {
+		ret = surface_light(cfg, mesh, mesh_surface(mesh, k), &m->surfaces[k]);
+		m->features |= m->surfaces[k].features & MATERIAL_PER_RANGE;
+	}
+	return ret;
 }
 
 int material_load(struct material *out, const struct material_config *cfg, const struct mesh *mesh,
@@ -396,6 +431,7 @@ void material_release(struct material *m)
 	for (uint32_t k = 0; m->surfaces && k < m->surface_count; k++) {
 		image_release(&m->surfaces[k].base_map);
 		image_release(&m->surfaces[k].detail);
+		image_release(&m->surfaces[k].emissive_map);
 	}
 	free(m->surfaces);
 	memset(m, 0, sizeof(*m));
@@ -471,7 +507,7 @@ int material_prepare_mesh(const struct material *m, struct mesh *mesh, int width
 
 bool material_needs_uvs(unsigned features)
 {
-	return (features & (MATERIAL_DETAIL | MATERIAL_BASE_MAP)) != 0;
+	return (features & (MATERIAL_DETAIL | MATERIAL_BASE_MAP | MATERIAL_EMISSIVE_MAP)) != 0;
 }
 
 bool material_needs_tangents(unsigned features)

@@ -23,7 +23,20 @@ enum material_feature {
 	 * MeshMatcapMaterial: per vertex baseColorFactor x COLOR_0 ... */
 	MATERIAL_BASE_COLOR = 1u << 5,
 	MATERIAL_BASE_MAP = 1u << 6, /* ... x baseColorTexture */
+	/* Light added in linear light: emissiveFactor x strength (u_emissive)
+	 * ... x emissiveTexture. Per range (material_surface.features): the
+	 * model's features say some material has it (its UVs uploaded); only
+	 * the ranges whose material emits draw with a program that adds it. */
+	MATERIAL_EMISSIVE = 1u << 7,
+	MATERIAL_EMISSIVE_MAP = 1u << 11,
+	/* KHR_materials_unlit: the base colour as it is, no matcap; per range
+	 * as emission. */
+	MATERIAL_UNLIT = 1u << 12,
 };
+
+/* What a range's own program variant adds (draw_variant_adds), never the
+ * model's program: a model without them compiles as before. */
+#define MATERIAL_PER_RANGE (MATERIAL_EMISSIVE | MATERIAL_EMISSIVE_MAP | MATERIAL_UNLIT)
 
 /* Not settings: the renderer's program variants for a range's alphaMode
  * (shaders/matcap.frag), never in material.features. */
@@ -35,6 +48,9 @@ enum material_variant {
 
 enum material_switch { MATERIAL_AUTO, MATERIAL_OFF, MATERIAL_ON };
 enum material_lit { LIT_OFF, LIT_ON, LIT_BESIDE };
+/* [material] unlit: a KHR_materials_unlit material as the file says
+ * (its base colour alone), or shaded by the matcap anyway. */
+enum material_unlit { UNLIT_FILE, UNLIT_SHADE };
 
 /* [material] in kiosk.ini (the table in src/config/options.c). A number left NaN
  * was not set: the glTF material, else the built-in default, decides. */
@@ -52,6 +68,7 @@ struct material_config {
 	int lit; /* enum material_lit */
 	double shininess;
 	int base_color; /* enum material_switch, auto or off ([model] base_color) */
+	int unlit;	/* enum material_unlit */
 };
 
 /* What one mesh material (mesh.materials[k]) draws with: its ranges'
@@ -74,6 +91,14 @@ struct material_surface {
 	int alpha_mode;		 /* enum mesh_alpha; opaque when base colour is off */
 	float alpha, alpha_cutoff;
 	bool double_sided;
+	/* Its emission (MATERIAL_EMISSIVE in features): linear, and its map
+	 * (sRGB as stored, power-of-two sides) with its own transform and
+	 * sampler, placed by the mesh's UVs. MATERIAL_UNLIT: shown unlit. */
+	float emissive[3];
+	struct image emissive_map;
+	float emissive_transform[6];
+	int emissive_wrap[2];
+	bool emissive_no_mipmaps;
 };
 
 /* What the renderer reads: resolved, with every texture decoded. */

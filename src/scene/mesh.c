@@ -18,6 +18,7 @@ void mesh_material_default(struct mesh_material *mat)
 	mat->normal_scale = 1.0f;
 	mat->occlusion_strength = 1.0f;
 	mat->base_transform[0] = mat->base_transform[3] = 1.0f;
+	mat->emissive_transform[0] = mat->emissive_transform[3] = 1.0f;
 }
 
 int mesh_alloc(struct mesh *m, uint32_t vertex_count, uint32_t index_count, bool with_uvs)
@@ -73,6 +74,7 @@ void mesh_material_release(struct mesh_material *mat)
 	image_release(&mat->occlusion_map);
 	image_release(&mat->thickness_map);
 	image_release(&mat->base_map);
+	image_release(&mat->emissive_map);
 }
 
 int mesh_alloc_ranges(struct mesh *m, uint32_t n, uint32_t k)
@@ -288,6 +290,7 @@ static void drop_images(struct mesh_material *m)
 	memset(&m->occlusion_map, 0, sizeof(m->occlusion_map));
 	memset(&m->thickness_map, 0, sizeof(m->thickness_map));
 	memset(&m->base_map, 0, sizeof(m->base_map));
+	memset(&m->emissive_map, 0, sizeof(m->emissive_map));
 }
 
 int mesh_copy_factors(struct mesh *to, const struct mesh *from)

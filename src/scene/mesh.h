@@ -57,6 +57,18 @@ struct mesh_material {
 	float base_transform[6];
 	int base_wrap[2];     /* its sampler's wrapS, wrapT: enum mesh_wrap */
 	bool base_no_mipmaps; /* its sampler's minFilter reads one level */
+	/* KHR_materials_unlit: the base colour is shown as it is, no matcap. */
+	bool unlit;
+	/* emissiveFactor x KHR_materials_emissive_strength, linear (0: none),
+	 * and emissiveTexture (sRGB as stored, as the base map) with its own
+	 * KHR_texture_transform and sampler. Its UVs are the mesh's uvs: the
+	 * loader carries one set a primitive (gltf_uv_set). */
+	float emissive[3];
+	bool has_emissive_map;
+	struct image emissive_map;
+	float emissive_transform[6];
+	int emissive_wrap[2];
+	bool emissive_no_mipmaps;
 };
 
 /* A part of the index array drawn with one material. center: the middle

@@ -19,6 +19,7 @@ scenes="$scenes sphere-beetle-gltf sphere-displaced sphere-lit sphere-lit-beside
 scenes="$scenes sphere-vertex-color sphere-base-map sphere-base-map-off"
 scenes="$scenes background-color background-gradient background-image fit-long fit-long-half"
 scenes="$scenes parts-textures parts-mask parts-blend parts-leaf parts-normals parts-iridescence"
+scenes="$scenes parts-unlit parts-unlit-shade parts-emissive parts-emissive-sem-vertex parts-specgloss"
 scenes="$scenes caption-latin caption-rtl caption-logo"
 scenes="$scenes frame-up frame-start-view frame-own-look"
 scenes="$scenes render-scale-half"
@@ -131,6 +132,19 @@ render() {
 	# below); two halves each with its own iridescent film.
 	parts-textures | parts-mask | parts-blend | parts-leaf | parts-normals | parts-iridescence)
 		$k -c matcaps/pearl.png --model "$m/$1.glb" --output "$o"
+		;;
+	# Issue 37: an unlit scan's top beside a shaded bottom (and shaded
+	# anyway, [material] unlit = shade); a label glowing by its
+	# emissive map on TEXCOORD_1 (in the default mode and sem-vertex); a
+	# spec-gloss material's diffuse as its base colour.
+	parts-unlit | parts-emissive | parts-specgloss)
+		$k -c matcaps/gold.png --model "$m/$1.glb" --output "$o"
+		;;
+	parts-unlit-shade)
+		$k -c matcaps/gold.png --model "$m/parts-unlit.glb" --unlit shade --output "$o"
+		;;
+	parts-emissive-sem-vertex)
+		$k -c matcaps/gold.png --model "$m/parts-emissive.glb" --mode sem-vertex --output "$o"
 		;;
 	# [caption]: Latin with kerning (AV, Te) and a ligature (fi) in two
 	# lines; Hebrew (its brackets mirrored, a number left to right

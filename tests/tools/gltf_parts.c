@@ -107,6 +107,13 @@ static char *stream_text(FILE *f, char **buf)
 
 int gltf_write_parts(const char *path, const struct gltf_part *parts, int n)
 {
+	return gltf_write_parts_more(path, parts, NULL, n);
+}
+
+int gltf_write_parts_more(const char *path, const struct gltf_part *parts,
+			  const struct gltf_part_more *more, int n)
+{
+	static const struct gltf_part_more none = {NULL, NULL, 0, 0};
 	char *vbuf = NULL, *abuf = NULL, *mbuf = NULL, *pbuf = NULL, *ibuf = NULL, *json = NULL;
 	size_t vs = 0, as = 0, ms = 0, ps = 0, is = 0, js = 0;
 	FILE *views = open_memstream(&vbuf, &vs), *acc = open_memstream(&abuf, &as),
@@ -117,12 +124,16 @@ int gltf_write_parts(const char *path, const struct gltf_part *parts, int n)
 	size_t img_off[MAX_IMAGES], img_len[MAX_IMAGES];
 
 	for (int k = 0; k < n; k++) {
+		const struct gltf_part_more *x = more ? &more[k] : &none;
+
 		part_views(views, acc, &b, parts[k].mesh, k);
 		if (parts[k].own_material || material < 0) {
 			material++;
-			fprintf(mats,
-				"%s{\"pbrMetallicRoughness\":{\"baseColorFactor\":[%g,%g,%g,%g]",
-				material ? "," : "", parts[k].factor[0], parts[k].factor[1],
+			fprintf(mats, "%s{%s", material ? "," : "",
+				x->spec_gloss ? "\"extensions\":{\"KHR_materials_"
+						"pbrSpecularGlossiness\":{\"diffuseFactor\""
+					      : "\"pbrMetallicRoughness\":{\"baseColorFactor\"");
+			fprintf(mats, ":[%g,%g,%g,%g]", parts[k].factor[0], parts[k].factor[1],
 				parts[k].factor[2], parts[k].factor[3]);
 			if (parts[k].png) {
 				int t =
@@ -130,11 +141,23 @@ int gltf_write_parts(const char *path, const struct gltf_part *parts, int n)
 
 				if (t < 0)
 					goto out;
-				fprintf(mats, ",\"baseColorTexture\":{\"index\":%d%s%s}", t,
+				fprintf(mats, ",\"%s\":{\"index\":%d%s%s}",
+					x->spec_gloss ? "diffuseTexture" : "baseColorTexture", t,
 					parts[k].texture_info ? "," : "",
 					parts[k].texture_info ? parts[k].texture_info : "");
 			}
-			fprintf(mats, ",\"metallicFactor\":0}");
+			fprintf(mats, x->spec_gloss ? ",\"glossinessFactor\":0.5}}"
+						    : ",\"metallicFactor\":0}");
+			if (x->emissive_png) {
+				int t = embed(x->emissive_png, &b, imgs, 4 * n, &images, img_off,
+					      img_len);
+
+				if (t < 0)
+					goto out;
+				fprintf(mats, ",\"emissiveTexture\":{\"index\":%d%s%s}", t,
+					x->emissive_info ? "," : "",
+					x->emissive_info ? x->emissive_info : "");
+			}
 			if (parts[k].normal_png) {
 				int t = embed(parts[k].normal_png, &b, imgs, 4 * n, &images,
 					      img_off, img_len);
@@ -147,9 +170,9 @@ int gltf_write_parts(const char *path, const struct gltf_part *parts, int n)
 				parts[k].material ? parts[k].material : "");
 		}
 		fprintf(prims,
-			"%s{\"attributes\":{\"POSITION\":%d,\"NORMAL\":%d,\"TEXCOORD_0\":%d},"
+			"%s{\"attributes\":{\"POSITION\":%d,\"NORMAL\":%d,\"TEXCOORD_%d\":%d},"
 			"\"indices\":%d,\"material\":%d}",
-			k ? "," : "", 4 * k, 4 * k + 1, 4 * k + 2, 4 * k + 3, material);
+			k ? "," : "", 4 * k, 4 * k + 1, x->uv_set, 4 * k + 2, 4 * k + 3, material);
 	}
 	/* The images' views after every part's. */
 	for (int i = 0; i < images; i++)

@@ -19,7 +19,20 @@ struct gltf_part {
 	const char *normal_png; /* normalTexture, embedded; NULL: none */
 };
 
+/* More of a part, where asked (gltf_write_parts_more). */
+struct gltf_part_more {
+	const char *emissive_png;  /* emissiveTexture, embedded; NULL: none */
+	const char *emissive_info; /* its members besides index; NULL: none */
+	int uv_set;		   /* the UVs written as TEXCOORD_<uv_set> */
+	/* factor and png written as KHR_materials_pbrSpecularGlossiness's
+	 * diffuseFactor and diffuseTexture, not pbrMetallicRoughness's. */
+	int spec_gloss;
+};
+
 /* One node, one mesh of n primitives. Returns 0 or -1. */
 int gltf_write_parts(const char *path, const struct gltf_part *parts, int n);
+/* The same, with more[k] for part k (more NULL: none). */
+int gltf_write_parts_more(const char *path, const struct gltf_part *parts,
+			  const struct gltf_part_more *more, int n);
 
 #endif

@@ -179,16 +179,51 @@ static void bumps(int x, int y, int w, int h, uint8_t *p)
 	p[3] = 255;
 }
 
-static int put(const char *dir, const char *name, const struct gltf_part *parts, int n)
+static int put_more(const char *dir, const char *name, const struct gltf_part *parts,
+		    const struct gltf_part_more *more, int n)
 {
 	char path[4096];
 
 	snprintf(path, sizeof(path), "%s/%s", dir, name);
-	if (gltf_write_parts(path, parts, n)) {
+	if (gltf_write_parts_more(path, parts, more, n)) {
 		fprintf(stderr, "mkmodels: cannot write %s\n", path);
 		return 1;
 	}
 	return 0;
+}
+
+static int put(const char *dir, const char *name, const struct gltf_part *parts, int n)
+{
+	return put_more(dir, name, parts, NULL, n);
+}
+
+/* Unlit, emission and spec-gloss (issue 37): a scan's unlit textured top
+ * above a shaded bottom; a glowing label, its emissive map on TEXCOORD_1
+ * through its own transform, before a grey body; a spec-gloss top
+ * (diffuse texture and factor) above a spec-gloss bottom (factor). */
+static int light_models(const char *dir, const struct mesh *s, const struct mesh *top,
+			const struct mesh *bottom, const struct mesh *q, const char *tex_a,
+			const char *tex_b, const char *tex_label)
+{
+	static const char unlit[] = "\"extensions\":{\"KHR_materials_unlit\":{}}";
+	static const char glow[] =
+	    "\"emissiveFactor\":[1,0.6,0.2],\"extensions\":{"
+	    "\"KHR_materials_emissive_strength\":{\"emissiveStrength\":1.5}}";
+	static const char glow_info[] =
+	    "\"texCoord\":1,\"extensions\":{\"KHR_texture_transform\":{\"texCoord\":1,"
+	    "\"offset\":[0.5,0],\"scale\":[0.5,1]}}";
+	struct gltf_part scan[2] = {{top, {1, 1, 1, 1}, tex_a, unlit, NULL, 1, NULL},
+				    {bottom, {1, 1, 1, 1}, tex_b, NULL, NULL, 1, NULL}};
+	struct gltf_part label[2] = {{s, {0.5, 0.5, 0.55, 1}, NULL, NULL, NULL, 1, NULL},
+				     {q, {0.2, 0.2, 0.2, 1}, NULL, glow, NULL, 1, NULL}};
+	struct gltf_part_more label_more[2] = {{NULL, NULL, 0, 0}, {tex_label, glow_info, 1, 0}};
+	struct gltf_part sg[2] = {{top, {0.9, 0.6, 0.4, 1}, tex_a, NULL, NULL, 1, NULL},
+				  {bottom, {0.3, 0.5, 1, 1}, NULL, NULL, NULL, 1, NULL}};
+	struct gltf_part_more sg_more[2] = {{NULL, NULL, 0, 1}, {NULL, NULL, 0, 1}};
+
+	return put(dir, "parts-unlit.glb", scan, 2) |
+	       put_more(dir, "parts-emissive.glb", label, label_more, 2) |
+	       put_more(dir, "parts-specgloss.glb", sg, sg_more, 2);
 }
 
 int parts_models_write(const char *dir)
@@ -233,6 +268,7 @@ int parts_models_write(const char *dir)
 	/* A label in front of a grey body: MASK, cut where its map is clear. */
 	if (quad(&q1, 0, 0.1, 1.2, 0.6, 1.05))
 		return 1;
+	bad |= light_models(dir, &s, &top, &bottom, &q1, tex_a, tex_b, tex_label);
 	{
 		struct gltf_part p[2] = {{&s, {0.7, 0.75, 0.8, 1}, NULL, NULL, NULL, 1, NULL},
 					 {&q1,
