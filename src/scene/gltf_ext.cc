@@ -33,8 +33,18 @@ template <typename T> bool negative(T v)
 // extensionsRequired refuses the file, naming it.
 const char *const supported_extensions[] = {
     "KHR_mesh_quantization",	 "EXT_meshopt_compression", "KHR_draco_mesh_compression",
-    "KHR_materials_iridescence", "KHR_texture_transform",
+    "KHR_materials_iridescence", "KHR_texture_transform",   "EXT_texture_webp",
 };
+
+// Extensions refused with a reason beyond "not supported": what the
+// operator would otherwise look for.
+const char *refusal_reason(const std::string &name)
+{
+	if (name == "KHR_texture_basisu")
+		return " (KTX2 textures: no KTX2 transcoder in Debian 12/13; expected PNG, JPEG or "
+		       "WebP images)";
+	return "";
+}
 
 std::string path_of(const char *array, size_t i)
 {
@@ -157,7 +167,7 @@ std::string unsupported(const std::vector<std::string> &names)
 		for (const char *s : supported_extensions)
 			known |= n == s;
 		if (!known && out.find(n) == std::string::npos)
-			out += (out.empty() ? "" : ", ") + n;
+			out += (out.empty() ? "" : ", ") + n + refusal_reason(n);
 	}
 	return out;
 }
