@@ -32,7 +32,7 @@ BUILD   ?= build
 # libOSMesa is opened with dlopen and libGLESv2 is never linked: every gl*
 # call goes through the table in src/render/gl.c (the README, "How it is put
 # together"). Their headers are still found through pkg-config.
-PKGS_LINK    := egl gbm libdrm libudev libpng libturbojpeg tinygltf libsystemd libgpiod libevdev \
+PKGS_LINK    := egl gbm libdrm libudev libpng libturbojpeg libwebp tinygltf libsystemd libgpiod libevdev \
 		libcamera draco freetype2 harfbuzz fribidi
 # Mesa 25.1 and later have no OSMesa: without its headers the osmesa
 # backend is left out (OSMESA=0 leaves it out by hand) and offscreen
@@ -166,7 +166,7 @@ APT_GET       := $(if $(filter 0,$(shell id -u)),,sudo) env DEBIAN_FRONTEND=noni
 # (fonts-dejavu-core) unless [caption] font names another.
 DEBIAN_PACKAGES := make gcc g++ pkg-config libegl-dev libgles-dev \
 	libegl-mesa0 libgl1-mesa-dri libgbm-dev libdrm-dev libtinygltf-dev nlohmann-json3-dev \
-	libpng-dev libturbojpeg0-dev libudev-dev libsystemd-dev \
+	libpng-dev libturbojpeg0-dev libwebp-dev libudev-dev libsystemd-dev \
 	libgpiod-dev libevdev-dev libcamera-dev libcamera-ipa libmeshoptimizer-dev libdraco-dev \
 	libfreetype-dev libharfbuzz-dev libfribidi-dev fonts-dejavu-core procps
 # make deps-test: the test bench on top. The unit tests' cmocka and zlib;

@@ -392,6 +392,18 @@ test_cli() {
 		echo "not ok the scenario stopped early" >>"$out/config_check.log"
 	results check-config "$out/config_check.log"
 
+	# [scene] matcap_first = auto (the default) with the shipped matcaps: a
+	# coloured model starts on pearl, not gold (which turned its colours
+	# olive), and says so; the frame differs from gold's; an uncoloured one
+	# starts on gold as before.
+	check "matcap_first auto: a coloured model on pearl, an uncoloured on gold" sh -c "
+		r() { $KIOSK --backend $offscreen --size 64x64 --model $out/models/\$1.glb \
+			--output $out/bad/first-\$2.png \$3 2>&1; }
+		r sphere-vertex-color auto '' | grep -q 'matcap_first = auto: .*matcaps starts on pearl: the model has colours of its own' &&
+		r sphere-vertex-color gold '--matcap-first gold' >/dev/null &&
+		! cmp -s $out/bad/first-auto.png $out/bad/first-gold.png &&
+		r sphere plain '' | grep -q 'matcap_first = auto: .*matcaps starts on gold: the model has no colour of its own'"
+
 	# The log says "from the cache" only when the cached mesh is drawn: the
 	# same size again, not another size (which prepares the model again).
 	check "'from the cache' only when the cached mesh is used" sh -c "

@@ -291,8 +291,9 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "off, 2, 4 or 8"},
     {"matcap-first", 0, OPTIONS_SCENE, "matcap_first", K_STRING, AT(content.matcap_first), 0, 0, 0,
      NULL, "NAME",
-     "the matcap of the folder shown first, by file name (default: the shipped folder "
-     "starts at gold, another at its first by name)"},
+     "the matcap of the folder shown first, by file name; auto (default): a model with "
+     "colours of its own on a neutral one (pearl, else the least tinted), another on gold "
+     "(the shipped folder) or the folder's first by name"},
     {"zoom", 0, OPTION_CLI, NULL, K_DOUBLE, AT(content.zoom), 0.05, 20, 0, NULL, "Z",
      "draw at this scale of the sphere's framing instead of the one [scene] fit chose (logged "
      "at debug), so stills of other views keep one size"},

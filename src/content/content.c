@@ -62,20 +62,72 @@ const char *content_default_matcaps(void)
  * default background (README.md, "The first picture"); another folder in
  * name order, unless [scene] matcap_first names where. */
 #define MATCAP_FIRST_SHIPPED "gold"
+/* A coloured model's start under [scene] matcap_first = auto, where the
+ * folder has it: the shipped neutral one. */
+#define MATCAP_FIRST_NEUTRAL "pearl"
 
-static const char *first_matcap(const struct content_config *o)
+/* [scene] matcap_first = auto, the default (unset too). */
+static bool first_is_auto(const struct content_config *o)
 {
-	if (o->matcap_first && *o->matcap_first)
-		return o->matcap_first;
-	return o->matcap ? NULL : MATCAP_FIRST_SHIPPED;
+	return !o->matcap_first || !*o->matcap_first || !strcmp(o->matcap_first, "auto");
 }
 
-static struct matcap_set *open_matcaps(const struct content_config *o, const char *path)
+/* Whether the model is drawn in colours of its own (base colour factors,
+ * a base colour texture or COLOR_0, as the loader kept them): a matcap
+ * multiplies them, and gold's would turn a blue box olive. */
+static bool model_coloured(const struct content_config *o, const struct mesh *m)
+{
+	return o->material.base_color != MATERIAL_OFF && (m->colors || m->material.has_colors);
+}
+
+/* Where [scene] matcap_first = auto starts the set of path, into buf (""
+ * for the folder's first), said in the journal: a coloured model on a
+ * neutral matcap (pearl, else the folder's least tinted, each file
+ * decoded small: this runs where the model loads, off the loop thread),
+ * another on gold (the shipped folder's) or the folder's first. */
+static void auto_first(const struct content_config *o, const struct mesh *m,
+		       const struct matcap_set *set, const char *path, char *buf, size_t n)
+{
+	bool coloured = model_coloured(o, m);
+	int i;
+
+	buf[0] = '\0';
+	if (matcap_set_count(set) < 2)
+		return;
+	if (!coloured && !o->matcap)
+		snprintf(buf, n, "%s", MATCAP_FIRST_SHIPPED);
+	else if (coloured && matcap_set_has(set, MATCAP_FIRST_NEUTRAL))
+		snprintf(buf, n, "%s", MATCAP_FIRST_NEUTRAL);
+	else if (coloured && (i = matcap_set_most_neutral(set)) >= 0)
+		snprintf(buf, n, "%s", strrchr(matcap_set_path(set, i), '/') + 1);
+	log_info("[scene] matcap_first = auto: %s starts on %s: %s", path,
+		 buf[0] ? buf : matcap_set_path(set, 0),
+		 coloured ? "the model has colours of its own, and a neutral matcap keeps them"
+			  : "the model has no colour of its own");
+}
+
+/* The matcap the set starts at, into buf; NULL: the folder's first. */
+static const char *first_matcap(const struct content_config *o, const struct mesh *m,
+				const struct matcap_set *set, const char *path, char *buf, size_t n)
+{
+	if (!first_is_auto(o))
+		return o->matcap_first;
+	if (set)
+		auto_first(o, m, set, path, buf, n);
+	return buf[0] ? buf : NULL;
+}
+
+static struct matcap_set *open_matcaps(const struct content_config *o, const struct mesh *m,
+				       const char *path, char *first, size_t n)
 {
 	struct matcap_set *set = matcap_set_open(path);
-	const char *first = first_matcap(o);
+	const char *name;
 
-	if (set && first && matcap_set_start_at(set, first) && o->matcap_first)
+	first[0] = '\0';
+	name = first_matcap(o, m, set, path, first, n);
+	if (name != first)
+		snprintf(first, n, "%s", name ? name : "");
+	if (set && first[0] && matcap_set_start_at(set, first) && !first_is_auto(o))
 		log_warn("[scene] matcap_first = %s: no such matcap in %s; expected one of its "
 			 "file names, with or without the extension; starting at %s",
 			 first, path, matcap_set_path(set, 0));
@@ -85,9 +137,10 @@ static struct matcap_set *open_matcaps(const struct content_config *o, const cha
 int content_load_matcap(const struct content_config *o, bool strict, struct content *s)
 {
 	const char *path = o->matcap ? o->matcap : content_default_matcaps();
+	char first[256] = "";
 	int ret = -ENOENT;
 
-	s->set = path ? open_matcaps(o, path) : NULL;
+	s->set = path ? open_matcaps(o, &s->mesh, path, first, sizeof(first)) : NULL;
 	if (s->set)
 		ret = image_load(matcap_set_path(s->set, 0), &s->matcap);
 	if (ret && strict && o->matcap)
@@ -99,7 +152,7 @@ int content_load_matcap(const struct content_config *o, bool strict, struct cont
 		return bake_matcap(BAKE_CLAY_RED, 256, &s->matcap);
 	}
 	s->matcap_path = strdup(path);
-	if (first_matcap(o) && !(s->matcap_first = strdup(first_matcap(o))))
+	if (first[0] && !(s->matcap_first = strdup(first)))
 		return -ENOMEM;
 	return s->matcap_path ? 0 : -ENOMEM;
 }

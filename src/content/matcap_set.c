@@ -14,7 +14,7 @@ struct matcap_set {
 	char **paths;
 };
 
-static const char *const image_exts[] = {"png", "jpg", "jpeg", NULL};
+static const char *const image_exts[] = {"png", "jpg", "jpeg", "webp", NULL};
 
 static int add_path(struct matcap_set *s, const char *dir, const char *name)
 {
@@ -42,7 +42,7 @@ static int scan_folder(struct matcap_set *s, const char *path)
 	if (ret) {
 		log_err("%s: cannot open folder: %s", path, strerror(-ret));
 	} else if (s->count == 0) {
-		log_err("%s: no .png, .jpg or .jpeg files in the folder", path);
+		log_err("%s: no .png, .jpg, .jpeg or .webp files in the folder", path);
 		ret = -ENOENT;
 	}
 	return ret;
@@ -127,4 +127,64 @@ int matcap_set_start_at(struct matcap_set *s, const char *name)
 	free(s->paths);
 	s->paths = turned;
 	return 0;
+}
+
+bool matcap_set_has(const struct matcap_set *s, const char *name)
+{
+	for (int i = 0; i < s->count; i++)
+		if (names(s->paths[i], name))
+			return true;
+	return false;
+}
+
+void matcap_measure(const struct image *img, struct matcap_tint *out)
+{
+	double r = (img->width < img->height ? img->width : img->height) / 2.0;
+	double chroma = 0, value = 0;
+	long n = 0;
+
+	for (int y = 0; y < img->height; y++)
+		for (int x = 0; x < img->width; x++) {
+			const uint8_t *p = img->rgba + ((size_t)y * (size_t)img->width + x) * 4;
+			double dx = x + 0.5 - img->width / 2.0, dy = y + 0.5 - img->height / 2.0;
+			int hi = p[0] > p[1] ? p[0] : p[1], lo = p[0] < p[1] ? p[0] : p[1];
+
+			if (dx * dx + dy * dy > r * r)
+				continue;
+			hi = p[2] > hi ? p[2] : hi;
+			lo = p[2] < lo ? p[2] : lo;
+			chroma += hi - lo;
+			value += hi;
+			n++;
+		}
+	out->chroma = n ? chroma / (double)n : 0;
+	out->value = n ? value / (double)n : 0;
+}
+
+/* Small enough to decode a folder quickly, large enough for a mean. */
+#define MATCAP_MEASURE_SIDE 64
+#define MATCAP_BRIGHT	    64.0
+
+int matcap_set_most_neutral(const struct matcap_set *s)
+{
+	const struct image_fit fit = {MATCAP_MEASURE_SIDE, 0};
+	int best = -1;
+	struct matcap_tint best_t = {0, 0};
+
+	for (int i = 0; i < s->count && i < MATCAP_MEASURED_MAX; i++) {
+		struct image img;
+		struct matcap_tint t;
+
+		if (image_load_fit(s->paths[i], &fit, &img))
+			continue;
+		matcap_measure(&img, &t);
+		image_release(&img);
+		bool bright = t.value >= MATCAP_BRIGHT, best_bright = best_t.value >= MATCAP_BRIGHT;
+		if (best < 0 || bright > best_bright ||
+		    (bright == best_bright && t.chroma < best_t.chroma)) {
+			best = i;
+			best_t = t;
+		}
+	}
+	return best;
 }

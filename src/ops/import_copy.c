@@ -20,11 +20,12 @@
 #define DEPTH_TEXT	 "8" /* IMPORT_MAX_DEPTH, for the journal */
 
 static const char *const model_exts[] = {"gltf", "glb", NULL};
-static const char *const content_exts[] = {"gltf", "glb", "bin", "png", "jpg", "jpeg", NULL};
-static const char *const image_exts[] = {"png", "jpg", "jpeg", NULL};
+static const char *const content_exts[] = {"gltf", "glb",  "bin",  "png",
+					   "jpg",  "jpeg", "webp", NULL};
+static const char *const image_exts[] = {"png", "jpg", "jpeg", "webp", NULL};
 static const char *const ini_exts[] = {"ini", NULL}; /* a model's NAME.ini */
 /* In a subfolder: what a model names by URI, never a model itself. */
-static const char *const asset_exts[] = {"bin", "png", "jpg", "jpeg", NULL};
+static const char *const asset_exts[] = {"bin", "png", "jpg", "jpeg", "webp", NULL};
 
 enum folder_kind {
 	FOLDER_MODEL,	/* the stick's matcap-kiosk/: models, their files, NAME.ini */

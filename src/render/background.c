@@ -62,8 +62,8 @@ bool background_names_image(const char *s)
 {
 	const char *dot = strrchr(s, '.');
 
-	return dot &&
-	       (!strcasecmp(dot, ".png") || !strcasecmp(dot, ".jpg") || !strcasecmp(dot, ".jpeg"));
+	return dot && (!strcasecmp(dot, ".png") || !strcasecmp(dot, ".jpg") ||
+		       !strcasecmp(dot, ".jpeg") || !strcasecmp(dot, ".webp"));
 }
 
 int background_parse(const char *text, struct background_spec *out, char *err, size_t n)
@@ -78,8 +78,8 @@ int background_parse(const char *text, struct background_spec *out, char *err, s
 		return 0;
 	if (text[0] != '#') {
 		if (!background_names_image(text)) {
-			snprintf(err, n, "'%s' is neither a colour nor a .png/.jpg/.jpeg file",
-				 text);
+			snprintf(err, n,
+				 "'%s' is neither a colour nor a .png/.jpg/.jpeg/.webp file", text);
 			return -EINVAL;
 		}
 		out->kind = BACKGROUND_IMAGE;

@@ -22,7 +22,7 @@ struct background_spec {
 
 /* What [display] background accepts, for the error messages. */
 #define BACKGROUND_EXPECTED                                                                        \
-	"a colour #rrggbb, a vertical gradient '#top, #bottom', or a PNG/JPEG file"
+	"a colour #rrggbb, a vertical gradient '#top, #bottom', or a PNG, JPEG or WebP file"
 
 /* The kiosk's own: a dark grey gradient, lighter at the top. */
 void background_spec_default(struct background_spec *out);

@@ -42,7 +42,18 @@ const char *const supported_extensions[] = {
     // Its diffuse colour and texture are the base colour; specular and
     // glossiness are not needed by a matcap, which holds its own light.
     "KHR_materials_pbrSpecularGlossiness",
+    "EXT_texture_webp",
 };
+
+// Extensions refused with a reason beyond "not supported": what the
+// operator would otherwise look for.
+const char *refusal_reason(const std::string &name)
+{
+	if (name == "KHR_texture_basisu")
+		return " (KTX2 textures: no KTX2 transcoder in Debian 12/13; expected PNG, JPEG or "
+		       "WebP images)";
+	return "";
+}
 
 std::string path_of(const char *array, size_t i)
 {
@@ -165,7 +176,7 @@ std::string unsupported(const std::vector<std::string> &names)
 		for (const char *s : supported_extensions)
 			known |= n == s;
 		if (!known && out.find(n) == std::string::npos)
-			out += (out.empty() ? "" : ", ") + n;
+			out += (out.empty() ? "" : ", ") + n + refusal_reason(n);
 	}
 	return out;
 }

@@ -27,27 +27,46 @@ double number(const tinygltf::Value &obj, const char *key, double fallback, doub
 	return std::isfinite(x) ? std::fmin(std::fmax(x, lo), hi) : fallback;
 }
 
-// The image a texture reads, or -1 after saying why it is not used.
-int texture_image(const tinygltf::Model &m, int texture, int tex_coord, const std::string &name,
-		  const char *what)
+// A texture extension's image (EXT_texture_webp, KHR_texture_basisu), or -1.
+int extension_source(const tinygltf::Texture &t, const char *ext)
 {
+	auto it = t.extensions.find(ext);
+	if (it == t.extensions.end() || !it->second.IsObject() || !it->second.Has("source"))
+		return -1;
+	const tinygltf::Value &v = it->second.Get("source");
+	return v.IsInt() || v.IsNumber() ? v.GetNumberAsInt() : -1;
+}
+
+// The images a texture may read, the file's choice first: its WebP
+// (EXT_texture_webp), then `source`, the fallback for a viewer without
+// WebP, tried when the WebP cannot be decoded. The count (0, 1 or 2) after
+// saying why none is used.
+int texture_images(const tinygltf::Model &m, int texture, int tex_coord, const std::string &name,
+		   const char *what, int out[2])
+{
+	int n = 0;
 	if (tex_coord != 0) {
 		log_warn("%s: %s reads TEXCOORD_%d, and only TEXCOORD_0 is loaded: not used",
 			 name.c_str(), what, tex_coord);
-		return -1;
+		return 0;
 	}
 	if (texture < 0 || (size_t)texture >= m.textures.size()) {
 		log_warn("%s: %s: texture %d does not exist: not used", name.c_str(), what,
 			 texture);
-		return -1;
+		return 0;
 	}
-	int source = m.textures[(size_t)texture].source;
-	if (source < 0 || (size_t)source >= m.images.size()) {
-		log_warn("%s: %s: texture %d has no PNG or JPEG image (source %d): not used",
-			 name.c_str(), what, texture, source);
-		return -1;
-	}
-	return source;
+	const tinygltf::Texture &t = m.textures[(size_t)texture];
+	for (int source : {extension_source(t, "EXT_texture_webp"), t.source})
+		if (source >= 0 && (size_t)source < m.images.size() && (n == 0 || out[0] != source))
+			out[n++] = source;
+	if (n == 0 && extension_source(t, "KHR_texture_basisu") >= 0)
+		log_warn("%s: %s: texture %d is KTX2 only (KHR_texture_basisu): no KTX2 transcoder "
+			 "in Debian 12/13, and no PNG, JPEG or WebP source: not used",
+			 name.c_str(), what, texture);
+	else if (n == 0)
+		log_warn("%s: %s: texture %d has no PNG, JPEG or WebP image (source %d): not used",
+			 name.c_str(), what, texture, t.source);
+	return n;
 }
 
 bool image_bytes(const tinygltf::Model &m, int index, const GltfImages &images,
@@ -89,24 +108,40 @@ bool image_bytes(const tinygltf::Model &m, int index, const GltfImages &images,
 	return false;
 }
 
-void read_texture(const tinygltf::Model &m, int texture, int tex_coord, const GltfImages &images,
-		  const std::string &name, const char *what, struct image *out, unsigned &decoded)
+// Image `source` of a texture into out; false after saying why not.
+bool read_image(const tinygltf::Model &m, int source, const GltfImages &images,
+		const std::string &name, const char *what, struct image *out, int full[2],
+		unsigned &decoded)
 {
-	int source = texture_image(m, texture, tex_coord, name, what);
 	const unsigned char *data = nullptr;
 	size_t size = 0;
 	std::string why;
-	if (source < 0)
-		return;
 	if (!image_bytes(m, source, images, &data, &size, &why)) {
 		log_warn("%s: %s: image %d %s: not used", name.c_str(), what, source, why.c_str());
-		return;
+		return false;
 	}
 	std::string label = name + " " + what + " (image " + std::to_string(source) + ")";
 	decoded++;
+	return image_decode_fit(label.c_str(), data, size, &images.fit, out, &full[0], &full[1]) ==
+	       0;
+}
+
+void read_texture(const tinygltf::Model &m, int texture, int tex_coord, const GltfImages &images,
+		  const std::string &name, const char *what, struct image *out, unsigned &decoded)
+{
+	int sources[2];
+	int n = texture_images(m, texture, tex_coord, name, what, sources);
 	int full[2] = {0, 0};
-	if (image_decode_fit(label.c_str(), data, size, &images.fit, out, &full[0], &full[1])) {
-		log_warn("%s: %s is not used", name.c_str(), what);
+	int i = 0;
+	while (i < n && !read_image(m, sources[i], images, name, what, out, full, decoded)) {
+		if (i + 1 < n)
+			log_warn("%s: %s: image %d instead (the texture's source)", name.c_str(),
+				 what, sources[i + 1]);
+		i++;
+	}
+	if (i == n) {
+		if (n)
+			log_warn("%s: %s is not used", name.c_str(), what);
 		return;
 	}
 	GltfScaled &s = images.scaled;

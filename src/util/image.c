@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <turbojpeg.h>
+#include <webp/decode.h>
 
 /* Files larger than this are not matcaps or textures a kiosk can use. */
 #define IMAGE_MAX_FILE (64u << 20)
@@ -353,6 +354,59 @@ out:
 	return ret;
 }
 
+/* libwebp scales as it decodes (into the size the fit gives, any ratio):
+ * the full size of a large WebP is never held. */
+static int webp_decode(const char *name, const uint8_t *data, size_t size,
+		       const struct image_fit *fit, struct image *out, int *full_w, int *full_h)
+{
+	WebPDecoderConfig cfg;
+	int ret = -EINVAL, w = 0, h = 0;
+
+	if (!WebPInitDecoderConfig(&cfg))
+		return -EINVAL; /* a libwebp of another ABI than the headers */
+	if (WebPGetFeatures(data, size, &cfg.input) != VP8_STATUS_OK) {
+		log_err("%s: not a valid WebP: its header cannot be read", name);
+		goto out;
+	}
+	w = cfg.input.width;
+	h = cfg.input.height;
+	if (w <= 0 || h <= 0 || w > IMAGE_MAX_SIDE || h > IMAGE_MAX_SIDE) {
+		log_err("%s: WebP is %dx%d, expected at most %dx%d", name, w, h, IMAGE_MAX_SIDE,
+			IMAGE_MAX_SIDE);
+		goto out;
+	}
+	image_fit_shifts(w, h, fit, NULL, NULL, &cfg.options.scaled_width,
+			 &cfg.options.scaled_height);
+	cfg.options.use_scaling = cfg.options.scaled_width != w || cfg.options.scaled_height != h;
+	ret = image_alloc(out, cfg.options.scaled_width, cfg.options.scaled_height);
+	if (ret)
+		goto out;
+	cfg.output.colorspace = MODE_RGBA;
+	cfg.output.is_external_memory = 1;
+	cfg.output.u.RGBA.rgba = out->rgba;
+	cfg.output.u.RGBA.stride = out->width * 4;
+	cfg.output.u.RGBA.size = (size_t)out->width * (size_t)out->height * 4;
+	if (WebPDecode(data, size, &cfg) != VP8_STATUS_OK) {
+		/* A truncated file is refused, not shown half decoded. */
+		log_err("%s: not a valid WebP: its %dx%d picture cannot be decoded (truncated or "
+			"corrupt)",
+			name, w, h);
+		image_release(out);
+		ret = -EINVAL;
+	}
+	WebPFreeDecBuffer(&cfg.output);
+out:
+	if (full_w)
+		*full_w = w;
+	if (full_h)
+		*full_h = h;
+	return ret;
+}
+
+/* KTX2 (KHR_texture_basisu): recognised to be refused by name. */
+static const uint8_t ktx2_sig[12] = {0xab, 'K',	 'T',  'X',  ' ',  '2',
+				     '0',  0xbb, '\r', '\n', 0x1a, '\n'};
+
 int image_decode_fit(const char *name, const uint8_t *data, size_t size,
 		     const struct image_fit *fit, struct image *out, int *full_w, int *full_h)
 {
@@ -365,10 +419,16 @@ int image_decode_fit(const char *name, const uint8_t *data, size_t size,
 		return png_decode(name, data, size, fit, out, full_w, full_h);
 	if (size >= 3 && data[0] == 0xff && data[1] == 0xd8 && data[2] == 0xff)
 		return jpeg_decode(name, data, size, fit, out, full_w, full_h);
-	if (size == 0)
-		log_err("%s: file is empty, expected a PNG or JPEG image", name);
+	if (size >= 12 && !memcmp(data, "RIFF", 4) && !memcmp(data + 8, "WEBP", 4))
+		return webp_decode(name, data, size, fit, out, full_w, full_h);
+	if (size >= sizeof(ktx2_sig) && !memcmp(data, ktx2_sig, sizeof(ktx2_sig)))
+		log_err("%s: a KTX2 image (KHR_texture_basisu) is not supported: no KTX2 "
+			"transcoder in Debian 12/13; expected a PNG, JPEG or WebP image",
+			name);
+	else if (size == 0)
+		log_err("%s: file is empty, expected a PNG, JPEG or WebP image", name);
 	else
-		log_err("%s: not a PNG or JPEG image (unknown signature)", name);
+		log_err("%s: not a PNG, JPEG or WebP image (unknown signature)", name);
 	return -EINVAL;
 }
 
@@ -378,6 +438,11 @@ int image_decode(const char *name, const uint8_t *data, size_t size, struct imag
 }
 
 int image_load(const char *path, struct image *out)
+{
+	return image_load_fit(path, NULL, out);
+}
+
+int image_load_fit(const char *path, const struct image_fit *fit, struct image *out)
 {
 	unsigned char *data;
 	size_t size;
@@ -392,7 +457,7 @@ int image_load(const char *path, struct image *out)
 	else if (ret)
 		log_err("%s: cannot open: %s", path, strerror(-ret));
 	else
-		ret = image_decode(path, data, size, out);
+		ret = image_decode_fit(path, data, size, fit, out, NULL, NULL);
 	free(data);
 	return ret;
 }

@@ -15,7 +15,8 @@ struct image {
 	uint8_t *rgba;
 };
 
-/* Decode a PNG or JPEG file (found by its signature, not its name).
+/* Decode a PNG, JPEG or WebP file (found by its signature, not its name;
+ * a KTX2 one is refused by name: Debian 12 and 13 ship no transcoder).
  * Returns 0, or a negative errno code after logging one line that names
  * the file and what is wrong. */
 int image_load(const char *path, struct image *out);
@@ -43,6 +44,8 @@ void image_fit_shifts(int w, int h, const struct image_fit *fit, int *sx, int *s
  * the same pixels). *full_w x *full_h (may be NULL) is the file's size. */
 int image_decode_fit(const char *name, const uint8_t *data, size_t size,
 		     const struct image_fit *fit, struct image *out, int *full_w, int *full_h);
+/* image_load, made to fit (image_decode_fit). */
+int image_load_fit(const char *path, const struct image_fit *fit, struct image *out);
 int image_write_png(const char *path, const struct image *img);
 int image_alloc(struct image *img, int width, int height);
 void image_release(struct image *img);

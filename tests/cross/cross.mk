@@ -31,7 +31,7 @@ CROSS_SUDO   := $(if $(filter 0,$(shell id -u)),,sudo)
 # DEBIAN_PACKAGES' libraries, less the virtual board, clang and the tools.
 CROSS_PACKAGES := libc6 libstdc++6 libgcc-s1 libubsan1 libegl-dev libgles-dev libosmesa6-dev \
 	libosmesa6 libgbm-dev libdrm-dev libtinygltf-dev nlohmann-json3-dev libpng-dev \
-	libturbojpeg0-dev libcmocka-dev libudev-dev libsystemd-dev libgpiod-dev \
+	libturbojpeg0-dev libwebp-dev libcmocka-dev libudev-dev libsystemd-dev libgpiod-dev \
 	libevdev-dev libcamera-dev libmeshoptimizer-dev libdraco-dev zlib1g-dev \
 	libfreetype-dev libharfbuzz-dev libfribidi-dev fonts-dejavu-core
 CROSS_HOST_PACKAGES := gcc-$(CROSS_TRIPLET) g++-$(CROSS_TRIPLET) qemu-user-static mmdebstrap \

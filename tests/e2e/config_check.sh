@@ -47,7 +47,7 @@ case_ missing-model 66 "missing.ini:2: \[scene\] model = '/srv/kiosk/model.glb':
 case_ missing-model-verdict 66 "1 file they name does not load" "$dir/missing.ini" $mc
 
 w '[scene]\nmatcap = /etc/passwd\n' >"$dir/passwd.ini"
-case_ passwd-matcap 66 "passwd.ini:2: \[scene\] matcap = '/etc/passwd': .*not a PNG or JPEG" \
+case_ passwd-matcap 66 "passwd.ini:2: \[scene\] matcap = '/etc/passwd': .*not a PNG, JPEG or WebP" \
 	"$dir/passwd.ini"
 
 w '[scene]\nmodel = "/srv/with spaces.glb"\n' >"$dir/quoted.ini"

@@ -1,4 +1,4 @@
-/* libFuzzer: the PNG/JPEG decoder (libpng, libjpeg-turbo and our checks
+/* libFuzzer: the PNG/JPEG/WebP decoder (libpng, libjpeg-turbo, libwebp and our checks
  * around them) on any bytes, as a matcap file would hand them over. An
  * image that decodes must be what the renderer uploads blindly: a size
  * within IMAGE_MAX_SIDE and every RGBA byte readable. */

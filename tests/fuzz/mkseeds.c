@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <turbojpeg.h>
+#include <webp/encode.h>
 
 static int put_model(const char *dir, const char *name, const struct mesh *m,
 		     struct gltf_write_opts o)
@@ -160,6 +161,32 @@ static int put_jpeg(const char *dir, const char *name, int pixel_format, int sub
 	return ret;
 }
 
+/* A WebP (EXT_texture_webp): lossless (VP8L) or lossy with alpha (VP8X,
+ * VP8 and ALPH chunks), from libwebp's encoder; the program only decodes. */
+static int put_webp(const char *dir, const char *name, bool lossless)
+{
+	uint8_t px[8 * 8 * 4];
+	uint8_t *webp = NULL;
+	char path[4096];
+	size_t size;
+	FILE *f;
+	int ret = 1;
+
+	for (size_t i = 0; i < sizeof(px); i++)
+		px[i] = (uint8_t)(i % 4 == 3 ? 128 + i : i * 7);
+	size = lossless ? WebPEncodeLosslessRGBA(px, 8, 8, 8 * 4, &webp)
+			: WebPEncodeRGBA(px, 8, 8, 8 * 4, 75, &webp);
+	snprintf(path, sizeof(path), "%s/image/%s", dir, name);
+	if (size && (f = fopen(path, "wb"))) {
+		ret = fwrite(webp, 1, size, f) != size;
+		fclose(f);
+	}
+	if (ret)
+		fprintf(stderr, "mkseeds: cannot write %s\n", path);
+	WebPFree(webp);
+	return ret;
+}
+
 static int write_images(const char *dir)
 {
 	int bad = 0;
@@ -172,6 +199,8 @@ static int write_images(const char *dir)
 	bad |= put_jpeg(dir, "rgb420.jpg", TJPF_RGBX, TJSAMP_420, 0);
 	bad |= put_jpeg(dir, "gray.jpg", TJPF_GRAY, TJSAMP_GRAY, 0);
 	bad |= put_jpeg(dir, "rgb444-progressive.jpg", TJPF_RGBX, TJSAMP_444, TJFLAG_PROGRESSIVE);
+	bad |= put_webp(dir, "lossless.webp", true);
+	bad |= put_webp(dir, "lossy-alpha.webp", false);
 	return bad;
 }
 

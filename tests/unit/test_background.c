@@ -72,8 +72,8 @@ static const struct {
     {"#111111,", "'' is not a colour; expected #rrggbb"},
     {"#111111, 222222", "'222222' is not a colour; expected #rrggbb"},
     {"#111111, #222222, #333333", "a gradient has two colours, top and bottom, not more"},
-    {"red", "'red' is neither a colour nor a .png/.jpg/.jpeg file"},
-    {"shop.gif", "'shop.gif' is neither a colour nor a .png/.jpg/.jpeg file"},
+    {"red", "'red' is neither a colour nor a .png/.jpg/.jpeg/.webp file"},
+    {"shop.gif", "'shop.gif' is neither a colour nor a .png/.jpg/.jpeg/.webp file"},
 };
 
 static void reasons(void **state)

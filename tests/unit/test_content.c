@@ -84,6 +84,124 @@ static void ends_with(const char *path, const char *tail)
 		fail_msg("%s does not end with %s", path, tail);
 }
 
+/* A w x h matcap of one colour into dir/name. */
+static void flat_matcap(const char *name, uint8_t r, uint8_t g, uint8_t b)
+{
+	struct image img;
+	char path[128];
+
+	assert_int_equal(image_alloc(&img, 32, 32), 0);
+	for (int i = 0; i < 32 * 32; i++) {
+		img.rgba[i * 4] = r, img.rgba[i * 4 + 1] = g, img.rgba[i * 4 + 2] = b;
+		img.rgba[i * 4 + 3] = 255;
+	}
+	snprintf(path, sizeof(path), "%s/%s", dir, name);
+	assert_int_equal(image_write_png(path, &img), 0);
+	image_release(&img);
+}
+
+/* One triangle of baseColorFactor rgb ("" for no material) into dir/name. */
+static void triangle_model(const char *name, const char *rgb)
+{
+	char path[128], json[1024], material[160] = "";
+
+	if (*rgb)
+		snprintf(material, sizeof(material),
+			 ",\"materials\":[{\"pbrMetallicRoughness\":{\"baseColorFactor\":[%s,1]}}]",
+			 rgb);
+	snprintf(json, sizeof(json),
+		 "{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":36,\"uri\":"
+		 "\"data:application/octet-stream;base64,"
+		 "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA\"}],\"bufferViews\":[{"
+		 "\"buffer\":0,\"byteLength\":36}],\"accessors\":[{\"bufferView\":0,"
+		 "\"componentType\":5126,\"count\":3,\"type\":\"VEC3\",\"min\":[0,0,0],\"max\":"
+		 "[1,1,0]}],\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0}%s}]}],"
+		 "\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}],\"scene\":0%s}",
+		 *rgb ? ",\"material\":0" : "", material);
+	snprintf(path, sizeof(path), "%s/%s", dir, name);
+	write_text(path, json);
+}
+
+/* The chroma measure: a neutral grey has none, a gold tint much; the
+ * corners outside the disk are not counted. */
+static void matcap_chroma(void **state)
+{
+	struct image img;
+	struct matcap_tint grey, gold;
+
+	(void)state;
+	assert_int_equal(image_alloc(&img, 16, 16), 0);
+	for (int i = 0; i < 16 * 16; i++)
+		memcpy(img.rgba + i * 4, (const uint8_t[4]){128, 128, 128, 255}, 4);
+	img.rgba[3] = 0, img.rgba[0] = 255; /* a corner, never drawn */
+	matcap_measure(&img, &grey);
+	for (int i = 0; i < 16 * 16; i++)
+		memcpy(img.rgba + i * 4, (const uint8_t[4]){230, 180, 60, 255}, 4);
+	matcap_measure(&img, &gold);
+	image_release(&img);
+	assert_true(grey.chroma == 0 && grey.value == 128);
+	assert_true(gold.chroma == 170 && gold.value == 230);
+}
+
+/* [scene] matcap_first = auto (the default): a coloured model starts on
+ * the folder's least tinted matcap bright enough to show a colour (not
+ * the dark grey, not the first by name, the gold one), or on one called
+ * pearl; an uncoloured one (no material, or white) on the first by name;
+ * a name set by hand wins. Gold used to multiply the blue: olive. */
+static void matcap_first_auto(void **state)
+{
+	char blue[128], white[128];
+	struct content_config o = {.matcap = dir, .model = blue};
+	struct content s;
+
+	(void)state;
+	snprintf(blue, sizeof(blue), "%s/blue.gltf", dir);
+	snprintf(white, sizeof(white), "%s/white.gltf", dir);
+	triangle_model("blue.gltf", "0.1,0.2,0.9");
+	triangle_model("white.gltf", "1,1,1");
+	flat_matcap("a-gold.png", 230, 180, 60);
+	flat_matcap("b-dark.png", 20, 20, 20);
+	flat_matcap("c-grey.png", 200, 196, 190);
+	flat_matcap("d-red.png", 200, 60, 50);
+	assert_int_equal(content_load(&s, &o, true), 0);
+	ends_with(matcap_set_path(s.set, 0), "/c-grey.png");
+	ends_with(matcap_set_path(s.set, 1), "/d-red.png");
+	/* A rescan starts where auto chose. */
+	assert_int_equal(content_rescan_matcaps(&s), 0);
+	ends_with(matcap_set_path(s.set, 0), "/c-grey.png");
+	content_release(&s);
+	o.matcap_first = "auto";
+	o.model = white;
+	assert_int_equal(content_load(&s, &o, true), 0);
+	ends_with(matcap_set_path(s.set, 0), "/a-gold.png");
+	content_release(&s);
+	o.model = NULL; /* the knot */
+	assert_int_equal(content_load(&s, &o, true), 0);
+	ends_with(matcap_set_path(s.set, 0), "/a-gold.png");
+	content_release(&s);
+	o.model = blue;
+	o.matcap_first = "d-red";
+	assert_int_equal(content_load(&s, &o, true), 0);
+	ends_with(matcap_set_path(s.set, 0), "/d-red.png");
+	content_release(&s);
+	/* [material] base_color = off: the colours are not drawn. */
+	o.matcap_first = NULL;
+	o.material.base_color = MATERIAL_OFF;
+	assert_int_equal(content_load(&s, &o, true), 0);
+	ends_with(matcap_set_path(s.set, 0), "/a-gold.png");
+	content_release(&s);
+	o.material.base_color = MATERIAL_AUTO;
+	flat_matcap("pearl.png", 240, 200, 200);
+	assert_int_equal(content_load(&s, &o, true), 0);
+	ends_with(matcap_set_path(s.set, 0), "/pearl.png");
+	content_release(&s);
+	/* The shipped folder: pearl for the blue model. */
+	o.matcap = NULL;
+	assert_int_equal(content_load(&s, &o, true), 0);
+	ends_with(matcap_set_path(s.set, 0), "/pearl.png");
+	content_release(&s);
+}
+
 /* [scene] matcap_first: where a folder's cycle starts, the rest in name
  * order and round; a name that is not there starts at the first (and
  * says so); a rescan starts there again. The shipped folder starts at
@@ -334,6 +452,8 @@ int main(void)
 	    cmocka_unit_test(stop_captions),
 	    cmocka_unit_test_setup_teardown(rescans_the_folder, make_dir, remove_dir),
 	    cmocka_unit_test_setup_teardown(matcap_first, make_dir, remove_dir),
+	    cmocka_unit_test(matcap_chroma),
+	    cmocka_unit_test_setup_teardown(matcap_first_auto, make_dir, remove_dir),
 	    cmocka_unit_test_setup_teardown(second_parse_sees_the_new_file, make_dir, remove_dir),
 	    cmocka_unit_test_setup_teardown(watch_reports_written_and_moved_files, make_dir,
 					    remove_dir),

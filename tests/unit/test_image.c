@@ -3,12 +3,14 @@
 #include <errno.h>
 #include <setjmp.h>
 #include <stdarg.h>
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <cmocka.h>
 #include <turbojpeg.h>
+#include <webp/encode.h>
 #include <unistd.h>
 #include <zlib.h>
 
@@ -260,6 +262,100 @@ static void jpeg_fit(void **state)
 	tjDestroy(tj);
 }
 
+/* A w x h WebP of rgba from libwebp's encoder (the tests may encode; the
+ * program only decodes); lossless keeps every byte. */
+static uint8_t *webp_of(const uint8_t *rgba, int w, int h, bool lossless, size_t *size)
+{
+	uint8_t *out = NULL;
+
+	*size = lossless ? WebPEncodeLosslessRGBA(rgba, w, h, w * 4, &out)
+			 : WebPEncodeRGBA(rgba, w, h, w * 4, 90, &out);
+	assert_true(*size > 12);
+	return out;
+}
+
+/* EXT_texture_webp's images: found by their RIFF/WEBP signature, decoded
+ * to the same RGBA as a PNG (lossless: byte for byte, alpha kept). */
+static void webp_round_trip(void **state)
+{
+	uint8_t rgba[8 * 4 * 4];
+	struct image img;
+	size_t size;
+	uint8_t *webp;
+
+	(void)state;
+	for (size_t i = 0; i < sizeof(rgba); i++)
+		rgba[i] = (uint8_t)(i * 37 + 11);
+	webp = webp_of(rgba, 8, 4, true, &size);
+	assert_int_equal(image_decode("a.webp", webp, size, &img), 0);
+	assert_true(img.width == 8 && img.height == 4);
+	assert_memory_equal(img.rgba, rgba, sizeof(rgba));
+	image_release(&img);
+	WebPFree(webp);
+}
+
+/* A truncated or corrupt WebP is refused (never shown half decoded), and
+ * so is one whose header declares more than IMAGE_MAX_SIDE. */
+static void webp_truncated_and_huge(void **state)
+{
+	static uint8_t rgba[64 * 64 * 4];
+	struct image img;
+	size_t size;
+	uint8_t *webp;
+
+	(void)state;
+	for (size_t i = 0; i < sizeof(rgba); i++)
+		rgba[i] = (uint8_t)rand();
+	webp = webp_of(rgba, 64, 64, false, &size);
+	for (size_t cut = 12; cut < size; cut += size / 13 + 1) {
+		assert_int_equal(image_decode("cut.webp", webp, cut, &img), -EINVAL);
+		assert_null(img.rgba);
+	}
+	WebPFree(webp);
+	/* One side over IMAGE_MAX_SIDE: refused from the header. */
+	static uint8_t row[(IMAGE_MAX_SIDE + 1) * 4];
+	webp = webp_of(row, IMAGE_MAX_SIDE + 1, 1, true, &size);
+	assert_int_equal(image_decode("wide.webp", webp, size, &img), -EINVAL);
+	WebPFree(webp);
+	assert_null(img.rgba);
+}
+
+/* A WebP over its fit is scaled by libwebp as it decodes: the fit's size
+ * comes back, and the full size is reported. */
+static void webp_fit(void **state)
+{
+	static uint8_t rgba[512 * 64 * 4];
+	struct image_fit fit = {4, 0};
+	struct image img;
+	size_t size;
+	int fw, fh;
+	uint8_t *webp;
+
+	(void)state;
+	for (size_t i = 0; i < sizeof(rgba); i++)
+		rgba[i] = (i % 4 == 0) ? 200 : (i % 4 == 3) ? 255 : 40;
+	webp = webp_of(rgba, 512, 64, true, &size);
+	assert_int_equal(image_decode_fit("a.webp", webp, size, &fit, &img, &fw, &fh), 0);
+	assert_true(fw == 512 && fh == 64);
+	assert_true(img.width == 4 && img.height == 4);
+	assert_true(abs(img.rgba[0] - 200) < 8 && abs(img.rgba[1] - 40) < 8);
+	image_release(&img);
+	WebPFree(webp);
+}
+
+/* KTX2 (KHR_texture_basisu) is refused by name: Debian 12 and 13 ship no
+ * transcoder. */
+static void ktx2_refused(void **state)
+{
+	static const uint8_t ktx2[16] = {0xab, 'K',  'T',  'X',	 ' ', '2', '0', 0xbb,
+					 '\r', '\n', 0x1a, '\n', 0,   0,   0,	0};
+	struct image img;
+
+	(void)state;
+	assert_int_equal(image_decode("a.ktx2", ktx2, sizeof(ktx2), &img), -EINVAL);
+	assert_null(img.rgba);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -272,6 +368,10 @@ int main(void)
 	    cmocka_unit_test(png_fit_box_filter),
 	    cmocka_unit_test(png_fit_bomb),
 	    cmocka_unit_test(jpeg_fit),
+	    cmocka_unit_test(webp_round_trip),
+	    cmocka_unit_test(webp_truncated_and_huge),
+	    cmocka_unit_test(webp_fit),
+	    cmocka_unit_test(ktx2_refused),
 	};
 	return cmocka_run_group_tests_name("image", tests, NULL, NULL);
 }

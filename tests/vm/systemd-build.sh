@@ -35,7 +35,7 @@ die() {
 # packages of those ldd names are added below). /init is systemd itself and
 # the guest powers off through systemctl: no systemd-sysv.
 PACKAGES="systemd udev kmod procps libegl-mesa0 libgl1-mesa-dri libgbm1 libegl1
-libgles2 libdrm2 libpng16-16 libturbojpeg0 libtinygltf2d libsystemd0 libgpiod2 libevdev2
+libgles2 libdrm2 libpng16-16 libturbojpeg0 libwebp7 libtinygltf2d libsystemd0 libgpiod2 libevdev2
 libcamera0.0.3 libosmesa6 libstdc++6 zlib1g libmeshoptimizer2d"
 
 # shellcheck disable=SC2086
