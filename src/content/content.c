@@ -157,6 +157,12 @@ static int load_mesh_file(struct content *s, const struct content_config *o, con
 		log_info("%s: not cached: each start says its warnings (above)", path);
 		s->cacheable = false;
 	}
+	/* The cache's entry holds one set of materials' factors and no
+	 * variant table: a model with variants is loaded each start. */
+	if (!ret && s->cacheable && s->mesh.variant_count) {
+		log_info("%s: not cached: it has material variants", path);
+		s->cacheable = false;
+	}
 	return ret;
 }
 

@@ -21,6 +21,7 @@ struct renderer *renderer_new(const struct gl *gl, const char *shader_dir)
 	r->gl = gl;
 	r->shader_dir = shader_dir;
 	r->stop = -1;
+	r->look = -1;
 	/* A CPU rasteriser emulates 16-bit mediump with conversions: there
 	 * highp is faster as well as exact (the mediump rows of
 	 * tests/bench/report/speed-error.md: about twice as slow). A GPU runs
@@ -74,6 +75,7 @@ void renderer_free(struct renderer *r)
 	drop_texture(r->gl, &r->detail);
 	drop_texture(r->gl, &r->ramp);
 	drop_surfaces(r);
+	render_variants_drop(r);
 	draw_list_release(&r->list);
 	background_free(r->background);
 	caption_gl_free(r->caption);
@@ -114,6 +116,7 @@ static int upload_indices(struct renderer *r, const struct mesh_packed *m)
 	memset(r->variant_used, 0, sizeof(r->variant_used));
 	for (uint32_t i = 0; i < l->count; i++)
 		r->variant_used[draw_item_variant(&l->items[i])] = true;
+	render_variants_mark(r);
 	gl->BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->ibo);
 	gl->BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)l->index_count * (l->wide ? 4 : 2),
 		       l->wide ? (const void *)l->indices32 : (const void *)l->indices16,
@@ -221,6 +224,8 @@ int renderer_set_mesh(struct renderer *r, const struct mesh *m)
 	struct mesh_packed packed;
 	int ret = mesh_pack(m, r->format, &packed);
 
+	if (!ret)
+		ret = render_variants_take(r, m);
 	if (!ret)
 		ret = renderer_set_packed(r, &packed);
 	mesh_packed_release(&packed);

@@ -34,6 +34,7 @@ template <typename T> bool negative(T v)
 const char *const supported_extensions[] = {
     "KHR_mesh_quantization",	 "EXT_meshopt_compression", "KHR_draco_mesh_compression",
     "KHR_materials_iridescence", "KHR_texture_transform",
+    "KHR_materials_variants",
 };
 
 std::string path_of(const char *array, size_t i)
