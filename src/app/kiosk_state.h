@@ -11,6 +11,7 @@
 #include "state/app.h"
 #include "content/content.h"
 #include "app/kiosk_models.h"
+#include "app/kiosk_variant.h"
 #include "app/reload.h"
 #include "content/matcap_job.h"
 #include "content/worker.h"
@@ -112,6 +113,8 @@ struct kiosk {
 	unsigned caption_plane;	  /* the caption picture on an overlay plane; 0: none */
 	unsigned caption_refused; /* the one no plane took (drawn with GL) */
 	struct kiosk_anim *anim;  /* the animation player (kiosk_anim.h) */
+	/* The material variant shown (kiosk_variant.h). */
+	struct kiosk_variant variant;
 };
 
 void kiosk_tell_app(struct kiosk *k, enum app_msg_kind kind);

@@ -235,6 +235,8 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "auto: the matcap times the model's base colour (glTF colour, texture, COLOR_0); off: not"},
     {"model-scene", 0, OPTIONS_SCENE, "model_scene", K_STRING, AT(content.model_scene), 0, 0, 0,
      NULL, "SCENE", "which of the model's glTF scenes: an index or a name (default: its own)"},
+    {"variant", 0, OPTIONS_SCENE, "variant", K_STRING, AT(content.variant), 0, 0, 0, NULL, "NAME",
+     "the glTF file's KHR_materials_variants variant shown first (default: its own materials)"},
     {"animation", 0, OPTIONS_SCENE, "animation", K_STRING, AT(content.animation), 0, 0, 0, NULL,
      "WHICH",
      "the glTF animation played, or posed for --time: auto (the first), off, all, an index or a "
