@@ -78,6 +78,16 @@ static int stop_word(char *at, const char *key, const char *what, char *dst, cha
 	return 0;
 }
 
+/* The last `key` in s, or NULL. */
+static char *last_of(char *s, const char *key)
+{
+	char *last = NULL;
+
+	for (char *at = strstr(s, key); at; at = strstr(at + 1, key))
+		last = at;
+	return last;
+}
+
 /* A stop's optional last words, animation=CLIP and variant=NAME (after
  * its text, if any, in either order), cut off s into st: the later one
  * first. */
@@ -85,8 +95,8 @@ static int stop_clip(char *s, struct frame_stop *st, char *err, size_t n)
 {
 	char *q = strrchr(s, '"');
 
-	for (int i = 0; i < 2; i++) {
-		char *a = strstr(q ? q : s, "animation="), *v = strstr(q ? q : s, "variant=");
+	for (int i = 0; i < 3; i++) {
+		char *a = last_of(q ? q : s, "animation="), *v = last_of(q ? q : s, "variant=");
 
 		if (a && (!v || a > v)) {
 			if (stop_word(a, "animation=", "a clip (its name, an index or all)",

@@ -4,7 +4,11 @@
  * list (materials changed, nothing else). What a variant looks like on
  * screen: tests/suite.sh's variants check (--variant blue). */
 #include "gltf_variants.h"
+#include "offscreen.h"
+#include "config/settings.h"
+#include "content/content.h"
 #include "render/draw_list.h"
+#include "render/render.h"
 #include "scene/gltf.h"
 #include "scene/material.h"
 #include "scene/mesh.h"
@@ -145,6 +149,80 @@ static void test_draw_list_switch(void **state)
 	draw_list_release(&l);
 }
 
+#define W 48
+
+/* The centre pixel of the frame drawn. */
+static void centre(struct display *d, struct renderer *r, const struct view *v, uint8_t rgb[3])
+{
+	struct image f;
+
+	renderer_draw(r, v, W, W);
+	assert_int_equal(d->read_frame(d, &f), 0);
+	memcpy(rgb, f.rgba + ((size_t)(W / 2) * (size_t)f.width + W / 2) * 4, 3);
+	image_release(&f);
+}
+
+/* The kiosk's own path: loaded (not cached: the cache holds no variant
+ * table), uploaded once, drawn red; "blue" shown is drawn blue with
+ * nothing uploaded again, and the default comes back. A white matcap
+ * leaves the base colour as it is. */
+static void test_switch_draws_the_variant(void **state)
+{
+	char dir[] = "/tmp/mk-variants-draw-XXXXXX", model[96], white[96], cmd[128];
+	struct display *d = offscreen_open(W, W);
+	struct renderer *r = d ? renderer_new(&d->gl, NULL) : NULL;
+	struct renderer_stats before, after;
+	struct content s;
+	struct options o;
+	struct image img;
+	struct view v;
+	uint8_t px[3];
+
+	(void)state;
+	assert_non_null(r);
+	assert_non_null(mkdtemp(dir));
+	snprintf(model, sizeof(model), "%s/variants.gltf", dir);
+	snprintf(white, sizeof(white), "%s/white.png", dir);
+	assert_int_equal(gltf_write_variants(model, VARIANTS_OK), 0);
+	assert_int_equal(image_alloc(&img, 8, 8), 0);
+	memset(img.rgba, 255, 8 * 8 * 4);
+	assert_int_equal(image_write_png(white, &img), 0);
+	image_release(&img);
+	setenv("XDG_CACHE_HOME", dir, 1);
+	option_defaults(&o);
+	o.content.model = model;
+	o.content.matcap = white;
+	for (int pass = 0; pass < 2; pass++) { /* the second start: still not cached */
+		assert_int_equal(content_load(&s, &o.content, true), 0);
+		assert_null(s.cached);
+		assert_int_equal(content_prepare(&s, &o.content, W, W), 0);
+		assert_non_null(s.mesh.positions); /* not packed for the cache */
+		assert_int_equal(content_upload(&s, r), 0);
+		if (pass == 0)
+			content_release(&s);
+	}
+	assert_int_equal(renderer_set_mode(r, o.content.mode, false), 0);
+	assert_int_equal(renderer_variant_count(r), 2);
+	v = content_view(&o.content);
+	centre(d, r, &v, px);
+	assert_true(px[0] > 200 && px[1] < 40 && px[2] < 40);
+	renderer_get_stats(r, &before);
+	assert_true(renderer_show_variant(r, content_variant_find(&s, "blue")));
+	assert_false(renderer_show_variant(r, 1)); /* shown already */
+	centre(d, r, &v, px);
+	assert_true(px[2] > 200 && px[0] < 40 && px[1] < 40);
+	renderer_get_stats(r, &after);
+	assert_int_equal(after.vertex_bytes, before.vertex_bytes);
+	assert_true(renderer_show_variant(r, -1));
+	centre(d, r, &v, px);
+	assert_true(px[0] > 200 && px[2] < 40);
+	content_release(&s);
+	renderer_free(r);
+	unsetenv("XDG_CACHE_HOME");
+	snprintf(cmd, sizeof(cmd), "rm -rf %s", dir);
+	assert_int_equal(system(cmd), 0);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -153,6 +231,7 @@ int main(void)
 	    cmocka_unit_test(test_missing_material_refused),
 	    cmocka_unit_test(test_missing_variant_refused),
 	    cmocka_unit_test(test_draw_list_switch),
+	    cmocka_unit_test(test_switch_draws_the_variant),
 	};
 
 	log_set_level(LOG_ERR);
