@@ -11,7 +11,6 @@
 #include "state/app.h"
 #include "content/content.h"
 #include "app/kiosk_models.h"
-#include "app/kiosk_variant.h"
 #include "app/reload.h"
 #include "content/matcap_job.h"
 #include "content/worker.h"
@@ -32,6 +31,15 @@
 #include <stdint.h>
 
 struct kiosk_anim; /* app/kiosk_anim.h */
+
+/* The material variant shown (src/app/kiosk_variant.c): what was last
+ * applied, to act on changes alone. */
+struct kiosk_variant {
+	unsigned serial;	    /* the renderer's mesh it was set up for */
+	int step;		    /* app_state variant_step seen */
+	char stop[FRAME_STOP_CLIP]; /* the stop's variant seen; "": none */
+	int shown;		    /* -1: the file's default materials */
+};
 
 /* Input sources at most (kiosk_add_input). */
 #define KIOSK_MAX_INPUTS 16
@@ -122,6 +130,10 @@ void kiosk_tell_app(struct kiosk *k, enum app_msg_kind kind);
  * when it changed; returns when the next frame is due (CLOCK_NEVER:
  * none). */
 uint64_t kiosk_play_animation(struct kiosk *k, uint64_t now, bool awake);
+/* src/app/kiosk_variant.c: the variant the settings, the stop reached
+ * and next-variant ask for, shown by the renderer (the draw list's
+ * materials changed: no upload); a frame asked for when it changed. */
+void kiosk_show_variant(struct kiosk *k);
 /* src/app/kiosk_content.c: the content worker's jobs (reload, matcap,
  * the matcap folder). */
 int kiosk_content_start(struct kiosk *k);

@@ -4,7 +4,6 @@
  * next-variant on from the one shown. Names the model lacks were said at
  * load ([scene] variant) or are said once here (a stop's); the model
  * shows what it showed. */
-#include "app/kiosk_variant.h"
 #include "app/kiosk_state.h"
 #include "util/log.h"
 

@@ -19,6 +19,7 @@ scenes="$scenes sphere-beetle-gltf sphere-displaced sphere-lit sphere-lit-beside
 scenes="$scenes sphere-vertex-color sphere-base-map sphere-base-map-off"
 scenes="$scenes background-color background-gradient background-image fit-long fit-long-half"
 scenes="$scenes parts-textures parts-mask parts-blend parts-leaf parts-normals parts-iridescence"
+scenes="$scenes variant-blue"
 scenes="$scenes caption-latin caption-rtl caption-logo"
 scenes="$scenes frame-up frame-start-view frame-own-look"
 scenes="$scenes render-scale-half"
@@ -131,6 +132,11 @@ render() {
 	# below); two halves each with its own iridescent film.
 	parts-textures | parts-mask | parts-blend | parts-leaf | parts-normals | parts-iridescence)
 		$k -c matcaps/pearl.png --model "$m/$1.glb" --output "$o"
+		;;
+	# KHR_materials_variants: the cube's "blue" variant (its default is red;
+	# blue is a material only the variant uses).
+	variant-blue)
+		$k -c matcaps/pearl.png --model "$m/variants.gltf" --variant blue --output "$o"
 		;;
 	# [caption]: Latin with kerning (AV, Te) and a ligature (fi) in two
 	# lines; Hebrew (its brackets mirrored, a number left to right
