@@ -39,6 +39,7 @@ struct kiosk_variant {
 	int step;		    /* app_state variant_step seen */
 	char stop[FRAME_STOP_CLIP]; /* the stop's variant seen; "": none */
 	int shown;		    /* -1: the file's default materials */
+	unsigned warned;	    /* the stops whose missing variant was said (bits) */
 };
 
 /* Input sources at most (kiosk_add_input). */

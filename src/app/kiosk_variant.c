@@ -9,13 +9,18 @@
 
 #include <string.h>
 
-static int find(struct kiosk *k, const char *name, const char *what)
+/* A stop's variant, said once for each stop (the tour comes back). */
+static int find(struct kiosk *k, struct kiosk_variant *kv, int stop, const char *name)
 {
 	int v = content_variant_find(k->content, name);
+	unsigned bit = stop >= 0 && stop < 32 ? 1u << stop : 0;
 
-	if (v < 0)
-		log_warn("%s: %s '%s': the model has no such variant",
-			 k->content->model_path ? k->content->model_path : "the model", what, name);
+	if (v < 0 && !(kv->warned & bit))
+		log_warn("%s: [frame] stops (stop %d) variant=%s: the model has no such variant; "
+			 "the one shown stays",
+			 k->content->model_path ? k->content->model_path : "the model", stop + 1,
+			 name);
+	kv->warned |= bit;
 	return v;
 }
 
@@ -26,6 +31,7 @@ static void set_up(struct kiosk *k, struct kiosk_variant *kv, const struct app_s
 	kv->serial = renderer_mesh_serial(k->renderer);
 	kv->step = st->variant_step;
 	kv->stop[0] = '\0';
+	kv->warned = 0;
 	/* Its absence was said at load. */
 	kv->shown = cfg->variant ? content_variant_find(k->content, cfg->variant) : -1;
 }
@@ -36,11 +42,12 @@ void kiosk_show_variant(struct kiosk *k)
 	const struct app_state *st = app_state(k->app);
 	const char *stop = st->stop_variant ? st->stop_variant : "";
 	int count = renderer_variant_count(k->renderer);
+	bool named;
 
 	if (kv->serial != renderer_mesh_serial(k->renderer))
 		set_up(k, kv, st);
 	if (strcmp(stop, kv->stop)) {
-		int v = stop[0] && count ? find(k, stop, "[frame] stops' variant=") : -1;
+		int v = stop[0] && count ? find(k, kv, st->stop, stop) : -1;
 
 		if (v >= 0)
 			kv->shown = v;
@@ -50,6 +57,11 @@ void kiosk_show_variant(struct kiosk *k)
 		kv->shown = app_variant_step(kv->shown, count, st->variant_step - kv->step);
 		kv->step = st->variant_step;
 	}
-	if (renderer_show_variant(k->renderer, kv->shown))
-		kiosk_tell_app(k, APP_DISPLAY_BACK);
+	if (!renderer_show_variant(k->renderer, kv->shown))
+		return;
+	named = kv->shown >= 0 && (uint32_t)kv->shown < k->content->mesh.variant_count;
+	log_debug("%s: showing %s%s", k->content->model_path ? k->content->model_path : "the model",
+		  named ? "variant " : "its own materials",
+		  named ? k->content->mesh.variant_names[kv->shown] : "");
+	kiosk_tell_app(k, APP_DISPLAY_BACK);
 }

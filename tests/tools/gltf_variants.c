@@ -73,6 +73,7 @@ int gltf_write_variants(const char *path, enum gltf_variants_fault fault)
 	cube(b.pos, b.nrm, b.idx);
 	fprintf(f,
 		"{\"asset\":{\"version\":\"2.0\"},\"extensionsUsed\":[\"KHR_materials_variants\"],"
+		"\"extensionsRequired\":[\"KHR_materials_variants\"],"
 		"\"extensions\":{\"KHR_materials_variants\":{\"variants\":"
 		"[{\"name\":\"red\"},{\"name\":\"blue\"}]}},"
 		"\"scene\":0,\"scenes\":[{\"nodes\":[0]}],"
