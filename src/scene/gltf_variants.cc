@@ -33,6 +33,13 @@ bool read_names(const tinygltf::Model &m, GltfVariants *out, std::string *err)
 		*err = at + ": expected an array of {\"name\": ...}";
 		return false;
 	}
+	// Each variant costs an index per draw range (and per primitive while
+	// read): a product has a handful; a file of thousands is a bomb.
+	if (list.ArrayLen() > GLTF_MAX_VARIANTS) {
+		*err = at + ": " + std::to_string(list.ArrayLen()) +
+		       " variants, expected at most " + std::to_string(GLTF_MAX_VARIANTS);
+		return false;
+	}
 	for (size_t v = 0; v < list.ArrayLen(); v++) {
 		const tinygltf::Value &name = list.Get((int)v).Get("name");
 		if (!name.IsString() || name.Get<std::string>().empty()) {

@@ -13,6 +13,10 @@
 #include <string>
 #include <vector>
 
+// More variants than this refuse the file (their table is one index per
+// variant and draw range).
+#define GLTF_MAX_VARIANTS 256
+
 // A primitive as the builder appended it: its part, and where the file
 // has it (meshes[mesh].primitives[primitive], the file's own indices).
 struct GltfVariantPart {

@@ -75,10 +75,13 @@ int gltf_write_variants(const char *path, enum gltf_variants_fault fault)
 		"{\"asset\":{\"version\":\"2.0\"},\"extensionsUsed\":[\"KHR_materials_variants\"],"
 		"\"extensionsRequired\":[\"KHR_materials_variants\"],"
 		"\"extensions\":{\"KHR_materials_variants\":{\"variants\":"
-		"[{\"name\":\"red\"},{\"name\":\"blue\"}]}},"
-		"\"scene\":0,\"scenes\":[{\"nodes\":[0]}],"
-		"\"nodes\":[{\"mesh\":0,\"rotation\":[0.2,0.3,0,0.9327379]}],\"meshes\":[{"
-		"\"primitives\":[");
+		"[{\"name\":\"red\"},{\"name\":\"blue\"}");
+	for (int k = 2; fault == VARIANTS_TOO_MANY && k < 257; k++)
+		fprintf(f, ",{\"name\":\"v%d\"}", k);
+	fprintf(f, "]}},"
+		   "\"scene\":0,\"scenes\":[{\"nodes\":[0]}],"
+		   "\"nodes\":[{\"mesh\":0,\"rotation\":[0.2,0.3,0,0.9327379]}],\"meshes\":[{"
+		   "\"primitives\":[");
 	for (int p = 0; p < 2; p++)
 		fprintf(
 		    f,

@@ -10,6 +10,7 @@ enum gltf_variants_fault {
 	VARIANTS_MISSING_MATERIAL, /* a mapping names material 7 (there are 2) */
 	VARIANTS_MISSING_VARIANT,  /* a mapping names variant 5 (there are 2) */
 	VARIANTS_SPLIT,		   /* "blue" maps the second primitive only */
+	VARIANTS_TOO_MANY,	   /* 257 variants (at most 256) */
 };
 
 /* A .gltf with its buffer in a data: URI. Returns 0 or -1. */

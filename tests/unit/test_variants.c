@@ -117,6 +117,13 @@ static void test_missing_variant_refused(void **state)
 		       "expected one of the 2 variants");
 }
 
+static void test_too_many_refused(void **state)
+{
+	(void)state;
+	assert_refused(VARIANTS_TOO_MANY, "extensions.KHR_materials_variants.variants",
+		       "257 variants, expected at most 256");
+}
+
 /* The draw list's switch: each item's surface, alpha mode and program
  * follow the variant's material; the indices stay. */
 static void test_draw_list_switch(void **state)
@@ -230,6 +237,7 @@ int main(void)
 	    cmocka_unit_test(test_per_primitive),
 	    cmocka_unit_test(test_missing_material_refused),
 	    cmocka_unit_test(test_missing_variant_refused),
+	    cmocka_unit_test(test_too_many_refused),
 	    cmocka_unit_test(test_draw_list_switch),
 	    cmocka_unit_test(test_switch_draws_the_variant),
 	};
