@@ -115,8 +115,7 @@ bool is_blend(const tinygltf::Model &m, int material)
 }
 
 // Each part's materials: the default, then one per variant.
-std::vector<int> signature(const tinygltf::Model &m, const GltfVariants &v,
-			   const GltfVariantPart &p)
+std::vector<int> signature(const GltfVariants &v, const GltfVariantPart &p)
 {
 	std::vector<int> sig(1, p.part.material);
 	for (size_t k = 0; k < v.names.size(); k++) {
@@ -126,7 +125,6 @@ std::vector<int> signature(const tinygltf::Model &m, const GltfVariants &v,
 			mapped = v.map[(size_t)p.mesh][(size_t)p.primitive][k];
 		sig.push_back(mapped >= 0 ? mapped : p.part.material);
 	}
-	(void)m;
 	return sig;
 }
 
@@ -192,7 +190,7 @@ int gltf_variants_group(const tinygltf::Model &m, const std::vector<GltfVariantP
 	for (size_t i = 0; i < parts.size(); i++) {
 		if (!parts[i].part.index_count)
 			continue;
-		std::vector<int> sig = signature(m, v, parts[i]);
+		std::vector<int> sig = signature(v, parts[i]);
 		bool blend =
 		    std::any_of(sig.begin(), sig.end(), [&m](int k) { return is_blend(m, k); });
 		size_t g =
