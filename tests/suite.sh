@@ -404,6 +404,22 @@ test_cli() {
 		! cmp -s $out/bad/first-auto.png $out/bad/first-gold.png &&
 		r sphere plain '' | grep -q 'matcap_first = auto: .*matcaps starts on gold: the model has no colour of its own'"
 
+	# KHR_materials_variants in the live kiosk: the attract tour steps
+	# through a product's variants by its stops' variant=, and a name the
+	# model lacks is said once, however often the tour comes back to it.
+	printf '[scene]\nmodel = %s\nvariant = red\n[kiosk]\nattract_after = 0.2\n[frame]\nstops = 0 0 1 variant=blue; 90 0 1 variant=teal; 180 0 1 variant=red\nstop_seconds = 0.3\n' \
+		"$PWD/$out/models/variants.gltf" >"$out/bad/variants-tour.ini"
+	check "the attract tour shows the stops' variants; a missing one is said once" sh -c "
+		ASAN_OPTIONS=detect_leaks=0 XDG_CACHE_HOME=$PWD/$out/cache-variants $ASAN_KIOSK \
+			--config $out/bad/variants-tour.ini --backend $offscreen --size 64x64 \
+			--keyboard none --matcap matcaps/pearl.png --log-level debug \
+			2>$out/bad/variants-tour.log & p=\$!; i=0
+		until [ \$(grep -c 'showing variant blue' $out/bad/variants-tour.log) -ge 2 ] || [ \$i -gt 300 ]; do
+			sleep 0.1; i=\$((i+1)); done
+		kill -TERM \$p && wait \$p && grep -q 'showing variant red' $out/bad/variants-tour.log &&
+		[ \$(grep -c 'stop 2) variant=teal: the model has no such variant' $out/bad/variants-tour.log) = 1 ] &&
+		grep -q 'not cached: it has material variants' $out/bad/variants-tour.log &&
+		! grep -qE 'Sanitizer|runtime error' $out/bad/variants-tour.log"
 	# The log says "from the cache" only when the cached mesh is drawn: the
 	# same size again, not another size (which prepares the model again).
 	check "'from the cache' only when the cached mesh is used" sh -c "

@@ -21,6 +21,7 @@ UNIT_TESTS  += anim anim_palette anim_play kiosk_anim anim_frames
 UNIT_TESTS  += caption import gltf_depth load_guard
 UNIT_TESTS  += ini stranger_settings
 UNIT_TESTS  += textures
+UNIT_TESTS  += variants
 TOOLS_DIR   := $(BUILD)/tools
 ASAN_BUILD  := $(BUILD)/asan
 # MK_TEST_HOOKS: the test hooks (MK_TEST_PREPARE_DELAY_MS, src/app/reload.c)
@@ -46,7 +47,7 @@ $(BUILD)/oracle/%.o: tests/oracle/%.c
 # only the objects it calls. Each test compiled the helpers again and
 # linked every object, 39 MB an ASan test and 1.8 GB the unit tests, and a
 # CI machine ran out of disk.
-TEST_HELPERS := gltf_write gltf_parts gltf_morph gltf_joints maps parts_models
+TEST_HELPERS := gltf_write gltf_parts gltf_morph gltf_joints maps parts_models gltf_variants
 TESTKIT      := $(BUILD)/libtestkit.a
 TEST_LINK     = $(TESTKIT) $(LIB_ARCHIVE) $(TEST_LIBS)
 

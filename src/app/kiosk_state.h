@@ -32,6 +32,16 @@
 
 struct kiosk_anim; /* app/kiosk_anim.h */
 
+/* The material variant shown (src/app/kiosk_variant.c): what was last
+ * applied, to act on changes alone. */
+struct kiosk_variant {
+	unsigned serial;	    /* the renderer's mesh it was set up for */
+	int step;		    /* app_state variant_step seen */
+	char stop[FRAME_STOP_CLIP]; /* the stop's variant seen; "": none */
+	int shown;		    /* -1: the file's default materials */
+	unsigned warned;	    /* the stops whose missing variant was said (bits) */
+};
+
 /* Input sources at most (kiosk_add_input). */
 #define KIOSK_MAX_INPUTS 16
 #define MAX_EVENTS	 32
@@ -112,6 +122,8 @@ struct kiosk {
 	unsigned caption_plane;	  /* the caption picture on an overlay plane; 0: none */
 	unsigned caption_refused; /* the one no plane took (drawn with GL) */
 	struct kiosk_anim *anim;  /* the animation player (kiosk_anim.h) */
+	/* The material variant shown (kiosk_variant.h). */
+	struct kiosk_variant variant;
 };
 
 void kiosk_tell_app(struct kiosk *k, enum app_msg_kind kind);
@@ -119,6 +131,10 @@ void kiosk_tell_app(struct kiosk *k, enum app_msg_kind kind);
  * when it changed; returns when the next frame is due (CLOCK_NEVER:
  * none). */
 uint64_t kiosk_play_animation(struct kiosk *k, uint64_t now, bool awake);
+/* src/app/kiosk_variant.c: the variant the settings, the stop reached
+ * and next-variant ask for, shown by the renderer (the draw list's
+ * materials changed: no upload); a frame asked for when it changed. */
+void kiosk_show_variant(struct kiosk *k);
 /* src/app/kiosk_content.c: the content worker's jobs (reload, matcap,
  * the matcap folder). */
 int kiosk_content_start(struct kiosk *k);

@@ -176,6 +176,10 @@ static int run(const struct options *o, char **argv, struct content *s, struct d
 		ret = content_prepare(s, &o->content, d->width, d->height);
 	if (!ret)
 		ret = content_upload(s, r);
+	/* [scene] variant (--variant): its materials; none named, the file's. */
+	if (!ret)
+		renderer_show_variant(
+		    r, content_variant_find(s, content_settings(s, &o->content)->variant));
 	if (!ret)
 		ret = renderer_set_mode(r, o->content.mode, o->content.ortho);
 	if (ret)

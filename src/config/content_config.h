@@ -19,6 +19,7 @@ struct content_config {
 	char *model;	    /* a file, folder or list (model_list.h); NULL: the built-in knot */
 	char *model_scene;  /* the glTF scene by index or name; NULL: the file's */
 	char *animation;    /* the glTF clip(s) --time poses; NULL: auto (the first) */
+	char *variant;	    /* KHR_materials_variants variant shown first; NULL: the defaults */
 	int anim_loop;	    /* enum anim_loop */
 	double anim_speed;  /* the clip's speed */
 	double anim_time;   /* --time: seconds into the clip; < 0: the rest pose */

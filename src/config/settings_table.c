@@ -238,6 +238,8 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "auto: the matcap times the model's base colour (glTF colour, texture, COLOR_0); off: not"},
     {"model-scene", 0, OPTIONS_SCENE, "model_scene", K_STRING, AT(content.model_scene), 0, 0, 0,
      NULL, "SCENE", "which of the model's glTF scenes: an index or a name (default: its own)"},
+    {"variant", 0, OPTIONS_SCENE, "variant", K_STRING, AT(content.variant), 0, 0, 0, NULL, "NAME",
+     "the glTF file's KHR_materials_variants variant shown first (default: its own materials)"},
     {"animation", 0, OPTIONS_SCENE, "animation", K_STRING, AT(content.animation), 0, 0, 0, NULL,
      "WHICH",
      "the glTF animation played, or posed for --time: auto (the first), off, all, an index or a "
@@ -335,9 +337,9 @@ const struct option_def option_defs[OPTION_DEFS] = {
      180, 0, NULL, "DEG",
      "attract mode swings this far each way of the start view instead of turning; 0: full turns"},
     {"stops", 0, OPTIONS_FRAME, "stops", K_STRING, AT(content.frame.stops), 0, 0, 0, NULL,
-     "'Y P Z \"TEXT\" animation=CLIP; ...'",
-     "guided stops: views (yaw, pitch in degrees, zoom) each with a line of text and a clip "
-     "played there, stepped by next-stop and prev-stop"},
+     "'Y P Z \"TEXT\" animation=CLIP variant=NAME; ...'",
+     "guided stops: views (yaw, pitch in degrees, zoom) each with a line of text, a clip "
+     "played and a material variant shown there, stepped by next-stop and prev-stop"},
     {"stop-seconds", 0, OPTIONS_FRAME, "stop_seconds", K_DOUBLE, AT(content.frame.stop_seconds), 0,
      3600, 0, NULL, "S", "attract mode plays the stops in turn, each this long; 0: it turns"},
     {"caption", 0, OPTIONS_CAPTION, "text", K_STRING, AT(content.caption.text), 0, 0, 0, NULL,

@@ -214,7 +214,53 @@ static int load_mesh_file(struct content *s, const struct content_config *o, con
 		log_info("%s: not cached: each start says its warnings (above)", path);
 		s->cacheable = false;
 	}
+	/* The cache's entry holds one set of materials' factors and no
+	 * variant table: a model with variants is loaded each start. */
+	if (!ret && s->cacheable && s->mesh.variant_count) {
+		log_info("%s: not cached: it has material variants", path);
+		s->cacheable = false;
+	}
 	return ret;
+}
+
+int content_variant_names(const struct mesh *m, char *buf, size_t n)
+{
+	size_t len = 0;
+
+	buf[0] = '\0';
+	for (uint32_t v = 0; v < m->variant_count && len < n; v++)
+		len += (size_t)snprintf(buf + len, n - len, "%s\"%s\"", v ? ", " : "",
+					m->variant_names[v]);
+	if (!m->variant_count)
+		snprintf(buf, n, "none");
+	return (int)m->variant_count;
+}
+
+int content_variant_find(const struct content *s, const char *name)
+{
+	return mesh_variant_find(&s->mesh, name);
+}
+
+/* [scene] variant against the model's: a still stops (it was asked for
+ * that variant), the live kiosk shows the default materials and says so;
+ * --check-config says it itself, with the file and line. */
+static int check_variant(const struct content *s, const struct content_config *o, const char *path)
+{
+	const char *want = content_settings(s, o)->variant;
+	char names[512];
+
+	if (!want || o->anim_strict || mesh_variant_find(&s->mesh, want) >= 0)
+		return 0;
+	content_variant_names(&s->mesh, names, sizeof(names));
+	if (o->anim_live) {
+		log_warn("%s: [scene] variant = '%s': no such variant (it has: %s); its default "
+			 "materials shown",
+			 path, want, names);
+		return 0;
+	}
+	log_err("%s: [scene] variant = '%s': no such variant, expected one of its: %s", path, want,
+		names);
+	return -EINVAL;
 }
 
 /* The live kiosk's loads are remembered while they run: one that kills
@@ -229,6 +275,8 @@ static int load_mesh(struct content *s, const struct content_config *o, const ch
 	if (ret)
 		return ret;
 	ret = load_mesh_file(s, o, path);
+	if (!ret)
+		ret = check_variant(s, o, path);
 	if (guard)
 		load_guard_leave(dir);
 	return ret;

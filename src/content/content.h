@@ -149,6 +149,11 @@ int content_upload_model(struct content *s, struct renderer *r);
 /* The camera and panel the settings ask for, at the start view ([frame]
  * up and orientation, then its or [scene]'s yaw and pitch), with the
  * clear colour of the background. Its zoom is not set. */
+/* KHR_materials_variants: the index of the model's variant `name`, or -1
+ * (none named, or the model lacks it); the model's names quoted and
+ * comma-separated into buf ("none" without), and how many. */
+int content_variant_find(const struct content *s, const char *name);
+int content_variant_names(const struct mesh *m, char *buf, size_t n);
 struct view content_view(const struct content_config *c);
 /* Draw s's caption and its stops' pictures (content_caption.c), c's
  * [caption] and [frame] stops. A picture that fails is left out (the

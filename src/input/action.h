@@ -25,10 +25,11 @@ enum app_action {
 	ACTION_PREV_STOP,
 	ACTION_PLAY_PAUSE,     /* the model's animation stops where it is, or goes on */
 	ACTION_NEXT_ANIMATION, /* its next clip, crossfaded */
+	ACTION_NEXT_VARIANT,   /* its next KHR_materials_variants variant (then its default) */
 	ACTION_COUNT
 };
 
-/* "none", "turn-left", ... "next-animation", then NULL: the config file's names. */
+/* "none", "turn-left", ... "next-variant", then NULL: the config file's names. */
 extern const char *const app_action_names[ACTION_COUNT + 1];
 
 struct app_event {

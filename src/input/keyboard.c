@@ -38,6 +38,7 @@ static const struct {
     {KEY_K, ACTION_PLAY_PAUSE},
     {KEY_PLAYPAUSE, ACTION_PLAY_PAUSE},
     {KEY_A, ACTION_NEXT_ANIMATION},
+    {KEY_V, ACTION_NEXT_VARIANT},
 };
 
 #define N_KEYS (sizeof(keys) / sizeof(keys[0]))

@@ -24,6 +24,7 @@ struct check {
 	int bad_files;
 	int bad_settings; /* models' own NAME.ini files with errors */
 	int bad_clips;	  /* animations named that a model lacks */
+	int bad_variants; /* material variants named that a model lacks */
 };
 
 int check_model_settings(const struct content_config *cfg, FILE *out, bool stick)
@@ -194,6 +195,47 @@ static void check_clips(struct check *c, const struct content_config *cfg, const
 	}
 }
 
+/* One variant named that the model lacks, with the names it has. */
+static void no_variant(struct check *c, const char *at, const char *setting, const char *want,
+		       const struct content *s)
+{
+	char names[512];
+
+	content_variant_names(&s->mesh, names, sizeof(names));
+	log_err("%s: %s = '%s': %s has no such variant, expected one of its KHR_materials_variants "
+		"(%s)",
+		at, setting, want, s->model_path, names);
+	c->bad_variants++;
+}
+
+/* [scene] variant and the stops' variant= against the model's variants:
+ * the kiosk would show its default materials, or at a stop keep the one
+ * shown. */
+static void check_variants(struct check *c, const struct content_config *cfg,
+			   const struct content *s)
+{
+	const struct content_config *use = s->own ? s->own : cfg;
+	struct frame_stop stops[FRAME_STOPS];
+	char at[PATH_MAX + 16], err[256], setting[64];
+	int n;
+
+	if (use->variant && content_variant_find(s, use->variant) < 0) {
+		where_own(c, s, use->variant, cfg->variant, "scene", "variant", at, sizeof(at));
+		no_variant(c, at, "[scene] variant", use->variant, s);
+	}
+	n = use->frame.stops
+		? frame_stops_parse(use->frame.stops, stops, FRAME_STOPS, err, sizeof(err))
+		: 0;
+	for (int i = 0; i < n; i++) {
+		if (!stops[i].variant[0] || content_variant_find(s, stops[i].variant) >= 0)
+			continue;
+		where_own(c, s, use->frame.stops, cfg->frame.stops, "frame", "stops", at,
+			  sizeof(at));
+		snprintf(setting, sizeof(setting), "[frame] stops (stop %d) variant", i + 1);
+		no_variant(c, at, setting, stops[i].variant, s);
+	}
+}
+
 /* The model loaded as the live kiosk loads it, but for a clip the
  * settings name that it lacks: the kiosk shows it still, and the check
  * says so. A load that fails for that alone is done again without the
@@ -248,6 +290,7 @@ static void check_models(struct check *c, const struct content_config *cfg)
 		if (!ret) {
 			check_own_look(c, &s);
 			check_clips(c, cfg, &s, strict);
+			check_variants(c, cfg, &s);
 			content_release(&s);
 		}
 		found(c, "scene", "model", path, ret);
@@ -385,6 +428,13 @@ int check_config_run(const struct options *o, FILE *out)
 			"show it still, or at a stop go on with the one playing",
 			name, c.bad_clips, c.bad_clips == 1 ? "" : "s",
 			c.bad_clips == 1 ? "is" : "are", c.bad_clips == 1 ? "" : "s");
+		return CHECK_BAD_SETTINGS;
+	}
+	if (c.bad_variants) {
+		log_err("%s: %d material variant%s named %s not in the model%s (above): the kiosk "
+			"would show its default materials, or at a stop keep the ones shown",
+			name, c.bad_variants, c.bad_variants == 1 ? "" : "s",
+			c.bad_variants == 1 ? "is" : "are", c.bad_variants == 1 ? "" : "s");
 		return CHECK_BAD_SETTINGS;
 	}
 	if (c.bad_files) {

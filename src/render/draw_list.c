@@ -22,6 +22,43 @@ static int item_order(const void *a, const void *b)
 	return x->first < y->first ? -1 : x->first > y->first;
 }
 
+/* What an item takes from its material: how it blends, its sides, and
+ * the model's features it lacks (its program variant). */
+static void item_surface(struct draw_item *it, uint32_t s, const struct material_surface *surfaces,
+			 uint32_t surface_count, unsigned model)
+{
+	it->surface = s;
+	it->alpha_mode = MESH_ALPHA_OPAQUE;
+	it->double_sided = false;
+	it->missing = 0;
+	it->adds = 0;
+	if (surfaces && s < surface_count) {
+		it->alpha_mode = surfaces[s].alpha_mode;
+		it->double_sided = surfaces[s].double_sided;
+		it->missing = material_surface_missing(model, &surfaces[s]);
+		it->adds = surfaces[s].features & MATERIAL_PER_RANGE;
+	}
+}
+
+static unsigned model_features(const struct material_surface *surfaces, uint32_t surface_count)
+{
+	unsigned model = 0;
+
+	for (uint32_t k = 0; surfaces && k < surface_count; k++)
+		model |= surfaces[k].features;
+	return model;
+}
+
+/* Opaque first, blended last, each group in the order item_order keeps. */
+static void order_items(struct draw_list *l)
+{
+	if (l->count > 1)
+		qsort(l->items, l->count, sizeof(*l->items), item_order);
+	l->blend_first = l->count;
+	while (l->blend_first > 0 && l->items[l->blend_first - 1].alpha_mode == MESH_ALPHA_BLEND)
+		l->blend_first--;
+}
+
 static bool push(struct draw_list *l, uint32_t *cap, const struct draw_item *it)
 {
 	if (l->count == *cap) {
@@ -126,8 +163,7 @@ int draw_list_build(struct draw_list *l, const struct mesh_range *ranges, uint32
 	for (uint32_t i = 0; !l->wide && !split && i < index_count; i++)
 		l->indices16[i] = (uint16_t)indices[i];
 	l->index_count = split ? 0 : index_count;
-	for (uint32_t k = 0; surfaces && k < surface_count; k++)
-		model |= surfaces[k].features;
+	model = model_features(surfaces, surface_count);
 	for (uint32_t r = 0; r < range_count; r++) {
 		const struct mesh_range *g = &ranges[r];
 		uint32_t s = g->material < surface_count ? g->material : 0;
@@ -142,22 +178,13 @@ int draw_list_build(struct draw_list *l, const struct mesh_range *ranges, uint32
 				       {g->center[0], g->center[1], g->center[2]},
 				       r};
 
-		if (surfaces && s < surface_count) {
-			it.alpha_mode = surfaces[s].alpha_mode;
-			it.double_sided = surfaces[s].double_sided;
-			it.missing = material_surface_missing(model, &surfaces[s]);
-			it.adds = surfaces[s].features & MATERIAL_PER_RANGE;
-		}
+		item_surface(&it, s, surfaces, surface_count, model);
 		if (!g->index_count)
 			continue;
 		if (!(split ? split_range(l, &cap, &gat, indices, &it) : push(l, &cap, &it)))
 			goto out;
 	}
-	if (l->count > 1)
-		qsort(l->items, l->count, sizeof(*l->items), item_order);
-	l->blend_first = l->count;
-	while (l->blend_first > 0 && l->items[l->blend_first - 1].alpha_mode == MESH_ALPHA_BLEND)
-		l->blend_first--;
+	order_items(l);
 	ret = 0;
 out:
 	free(gat.local);
@@ -165,6 +192,20 @@ out:
 	if (ret)
 		draw_list_release(l);
 	return ret;
+}
+
+void draw_list_use_materials(struct draw_list *l, const uint32_t *materials, uint32_t range_count,
+			     const struct material_surface *surfaces, uint32_t surface_count)
+{
+	unsigned model = model_features(surfaces, surface_count);
+
+	for (uint32_t i = 0; i < l->count; i++) {
+		struct draw_item *it = &l->items[i];
+		uint32_t s = it->range < range_count ? materials[it->range] : it->surface;
+
+		item_surface(it, s < surface_count ? s : 0, surfaces, surface_count, model);
+	}
+	order_items(l);
 }
 
 void draw_list_release(struct draw_list *l)

@@ -54,6 +54,14 @@ int draw_list_build(struct draw_list *l, const struct mesh_range *ranges, uint32
 		    const struct material_surface *surfaces, uint32_t surface_count, bool wide);
 void draw_list_release(struct draw_list *l);
 
+/* Each item draws with materials[item.range] (a KHR_materials_variants
+ * variant's, or the ranges' own to go back): its surface, alpha mode,
+ * sides and program variant follow, and the items are ordered again.
+ * Indices and arrays stay as uploaded: a switch is this, no upload. An
+ * item whose range is past range_count keeps its material. */
+void draw_list_use_materials(struct draw_list *l, const uint32_t *materials, uint32_t range_count,
+			     const struct material_surface *surfaces, uint32_t surface_count);
+
 /* The renderer's program variants: an alpha mode, + 3 when double sided,
  * + 6 x which of the model's features the material lacks (none; the
  * detail map; its normal; iridescence; both the detail map and iridescence;

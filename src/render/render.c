@@ -21,6 +21,7 @@ struct renderer *renderer_new(const struct gl *gl, const char *shader_dir)
 	r->gl = gl;
 	r->shader_dir = shader_dir;
 	r->stop = -1;
+	r->look = -1;
 	/* A CPU rasteriser emulates 16-bit mediump with conversions: there
 	 * highp is faster as well as exact (the mediump rows of
 	 * tests/bench/report/speed-error.md: about twice as slow). A GPU runs
@@ -74,6 +75,7 @@ void renderer_free(struct renderer *r)
 	drop_texture(r->gl, &r->detail);
 	drop_texture(r->gl, &r->ramp);
 	drop_surfaces(r);
+	render_variants_drop(r);
 	draw_list_release(&r->list);
 	background_free(r->background);
 	caption_gl_free(r->caption);
@@ -117,6 +119,7 @@ static int upload_indices(struct renderer *r, const struct mesh_packed *m)
 	memset(r->variant_used, 0, sizeof(r->variant_used));
 	for (uint32_t i = 0; i < l->count; i++)
 		r->variant_used[draw_item_variant(&l->items[i])] = true;
+	render_variants_mark(r);
 	gl->BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->ibo);
 	gl->BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)l->index_count * (l->wide ? 4 : 2),
 		       l->wide ? (const void *)l->indices32 : (const void *)l->indices16,
@@ -225,6 +228,8 @@ int renderer_set_mesh(struct renderer *r, const struct mesh *m)
 	int ret = mesh_pack(m, r->format, &packed);
 
 	if (!ret)
+		ret = render_variants_take(r, m);
+	if (!ret)
 		ret = renderer_set_packed(r, &packed);
 	mesh_packed_release(&packed);
 	return ret;
@@ -301,89 +306,6 @@ int renderer_set_background(struct renderer *r, const struct background_spec *s,
 	background_free(r->background);
 	r->background = b;
 	return 0;
-}
-
-int renderer_set_caption(struct renderer *r, const struct image *img,
-			 const struct caption_config *c)
-{
-	struct caption_gl *cap = img && img->rgba ? caption_gl_new(r->gl, img, c) : NULL;
-
-	if (img && img->rgba && !cap)
-		return -EINVAL;
-	caption_gl_free(r->caption);
-	r->caption = cap;
-	r->caption_serial = cap ? ++r->serials : 0;
-	return 0;
-}
-
-int renderer_set_stop_captions(struct renderer *r, const struct image *imgs, int count,
-			       const struct caption_config *c)
-{
-	struct caption_gl *caps[CAPTION_STOPS] = {0};
-	int i;
-
-	for (i = 0; i < count && i < CAPTION_STOPS; i++)
-		if (imgs[i].rgba && !(caps[i] = caption_gl_new(r->gl, &imgs[i], c)))
-			break;
-	if (i < count && i < CAPTION_STOPS) {
-		while (i--)
-			caption_gl_free(caps[i]);
-		return -EINVAL;
-	}
-	for (i = 0; i < CAPTION_STOPS; i++) {
-		caption_gl_free(r->stop_caption[i]);
-		r->stop_caption[i] = caps[i];
-		r->stop_serial[i] = caps[i] ? ++r->serials : 0;
-	}
-	return 0;
-}
-
-void renderer_show_stop(struct renderer *r, int stop)
-{
-	r->stop = stop;
-}
-
-/* The picture shown: the stop's where it has one, else the caption. */
-static const struct caption_gl *shown(const struct renderer *r, unsigned *serial)
-{
-	int i = r->stop;
-
-	if (i >= 0 && i < CAPTION_STOPS && r->stop_caption[i]) {
-		*serial = r->stop_serial[i];
-		return r->stop_caption[i];
-	}
-	*serial = r->caption ? r->caption_serial : 0;
-	return r->caption;
-}
-
-unsigned renderer_caption_serial(const struct renderer *r)
-{
-	unsigned serial;
-
-	shown(r, &serial);
-	return serial;
-}
-
-bool renderer_caption_at(const struct renderer *r, const struct view *v, double seconds, int width,
-			 int height, int out[2])
-{
-	unsigned serial;
-	const struct caption_gl *cap = shown(r, &serial);
-
-	if (!cap)
-		return false;
-	caption_gl_at(cap, seconds, width, height, v->rotation, out);
-	return true;
-}
-
-void renderer_draw_caption(struct renderer *r, const struct view *v, double seconds, int width,
-			   int height)
-{
-	unsigned serial;
-	const struct caption_gl *cap = shown(r, &serial);
-
-	if (cap)
-		caption_gl_draw(cap, seconds, width, height, v->rotation);
 }
 
 void renderer_set_matcap_filter(struct renderer *r, enum matcap_filter filter)

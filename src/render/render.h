@@ -108,6 +108,14 @@ int renderer_set_stop_captions(struct renderer *r, const struct image *imgs, int
  * state's stop; -1: none) where it has one, else the caption. Picking is
  * all the loop thread does: every picture is uploaded already. */
 void renderer_show_stop(struct renderer *r, int stop);
+
+/* KHR_materials_variants: draw the mesh's ranges with variant `variant`'s
+ * materials (-1, or one the mesh lacks: the file's default ones). Every
+ * material was uploaded with the mesh: this changes the draw list only,
+ * on the loop thread, no upload. Returns whether the picture changed. */
+bool renderer_show_variant(struct renderer *r, int variant);
+/* The variants of the mesh set (0: none, or a mesh drawn without them). */
+int renderer_variant_count(const struct renderer *r);
 /* Blend the caption over the frame, at seconds of its drift: call it last,
  * after the scene (and after any scaling of it: full resolution). */
 void renderer_draw_caption(struct renderer *r, const struct view *v, double seconds, int width,

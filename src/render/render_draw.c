@@ -138,6 +138,9 @@ static void draw_item(struct renderer *r, struct draw_state *st, int side,
 	if (p != st->program)
 		use_program(r, st, p);
 	render_skin_palette(r, p, it->range, &st->palette);
+	bool recolour = it->surface != st->surface || it->base_vertex != st->base;
+	const float *colour = render_variant_color(r, it->surface);
+
 	if (it->surface != st->surface) {
 		set_surface(r, p, it->surface);
 		st->surface = it->surface;
@@ -146,6 +149,10 @@ static void draw_item(struct renderer *r, struct draw_state *st, int side,
 		bind_arrays(r, it->base_vertex);
 		st->base = it->base_vertex;
 	}
+	/* Colours by material (a model with variants): the constant colour
+	 * attribute is this range's material's, as its variant has it. */
+	if (recolour && colour && !r->attr_bytes[SHADER_ATTR_COLOR])
+		gl->VertexAttrib4fv(SHADER_ATTR_COLOR, colour);
 	if (it->double_sided == st->culled) {
 		st->culled = !it->double_sided;
 		(st->culled ? gl->Enable : gl->Disable)(GL_CULL_FACE);

@@ -22,6 +22,8 @@ int renderer_set_mesh_live(struct renderer *r, const struct mesh *m)
 	/* Its gather (16-bit chunks) is kept: each pose is gathered alike. */
 	r->live_next = true;
 	if (!ret)
+		ret = render_variants_take(r, m);
+	if (!ret)
 		ret = renderer_set_packed(r, &packed);
 	mesh_packed_release(&packed);
 	return ret;

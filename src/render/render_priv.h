@@ -33,6 +33,16 @@ struct program {
 	GLint morph_weights; /* u_morph_weights: a program that morphs; else -1 */
 };
 
+/* Which material each range draws in each variant; defaults: the
+ * ranges' own; colors: each material's vertex colour (rgba) where the
+ * mesh's base colours are by material (mesh colors_by_material), or NULL. */
+struct render_variants {
+	uint32_t count, ranges, surfaces;
+	uint32_t *materials; /* [variant * ranges + range] */
+	uint32_t *defaults;
+	float *colors;
+};
+
 struct renderer {
 	const struct gl *gl;
 	const char *shader_dir;
@@ -104,6 +114,11 @@ struct renderer {
 	size_t morph_array;
 	GLuint morph_location[SHADER_MAX_ATTRIBUTES];
 	float morph_weights[8];
+	/* KHR_materials_variants (render_variant.c): the mesh's table (none:
+	 * count 0), the next mesh's until it is set, and the variant shown
+	 * (-1: the file's default materials). */
+	struct render_variants looks, looks_next;
+	int look;
 };
 
 /* render.c: every program dropped (built again on use). render_live.c:
@@ -137,5 +152,14 @@ void render_morph_free(struct renderer *r);
 void render_skin_source(const struct renderer *r, struct shader_source *src);
 /* The matcap's minifying filter for a viewport (render.c). */
 void render_matcap_choose_filter(struct renderer *r, const int vp[4]);
+
+/* render_variant.c: the mesh's variants taken for the next
+ * renderer_set_packed (renderer_set_mesh: 0 or -ENOMEM); made current
+ * there, every variant's programs marked used; all dropped; a surface's
+ * colour where the colours are by material, else NULL. */
+int render_variants_take(struct renderer *r, const struct mesh *m);
+void render_variants_mark(struct renderer *r);
+void render_variants_drop(struct renderer *r);
+const float *render_variant_color(const struct renderer *r, uint32_t surface);
 
 #endif

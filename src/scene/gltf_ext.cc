@@ -43,6 +43,7 @@ const char *const supported_extensions[] = {
     // glossiness are not needed by a matcap, which holds its own light.
     "KHR_materials_pbrSpecularGlossiness",
     "EXT_texture_webp",
+    "KHR_materials_variants",
 };
 
 // Extensions refused with a reason beyond "not supported": what the

@@ -4,6 +4,7 @@
 // struct mesh. Split from gltf.cc, which reads and parses the file.
 #include "scene/gltf_ext.h"
 #include "scene/gltf_material.h"
+#include "scene/gltf_variants.h"
 #include "scene/gltf_mesh.h"
 #include "scene/gltf_anim.h"
 #include "scene/gltf_play.h"
@@ -552,12 +553,13 @@ int finish_mesh(Builder &b, const tinygltf::Model &m, struct mesh *out, GltfFit 
 		mesh_fit_positions(b.positions.data(), nv, out->positions);
 	std::memcpy(out->normals, b.normals.data(), b.normals.size() * sizeof(float));
 	std::memcpy(out->indices, b.indices.data(), b.indices.size() * sizeof(uint32_t));
-	std::vector<GltfPart> parts;
+	std::vector<GltfVariantPart> parts;
 	for (const Range &r : b.ranges)
-		parts.push_back({r.first_index, r.index_count, r.material});
-	if (gltf_group_ranges(m, parts, b.indices.data(), out, &b.slots)) {
+		parts.push_back({{r.first_index, r.index_count, r.material}, r.mesh, r.primitive});
+	int grouped = gltf_variants_group(m, parts, b.indices.data(), out, &b.slots, &b.error);
+	if (grouped) {
 		mesh_release(out);
-		return -ENOMEM;
+		return grouped;
 	}
 	if (b.any_uvs)
 		std::memcpy(out->uvs, b.uvs.data(), b.uvs.size() * sizeof(float));
@@ -687,6 +689,8 @@ int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_opti
 		keep_play(b, *orig, *fit, o);
 	gltf_keep_colors(out,
 			 b.uniform_set && b.any_colors && b.colors.empty() ? b.uniform : nullptr);
+	if (ret == 0)
+		gltf_variants_colors(m, b.want_colors, shown, out);
 	if (ret && o->anim) {
 		mesh_anim_free(*o->anim);
 		*o->anim = nullptr;

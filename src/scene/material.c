@@ -472,6 +472,7 @@ static int displace(const struct material *m, struct mesh *mesh, int width, int 
 		}
 		mesh->ranges = NULL, mesh->range_count = 0;
 		mesh->materials = NULL, mesh->material_count = 0;
+		mesh_variants_move(&fine, mesh);
 		mesh_material_default(&mesh->material);
 		mesh_release(mesh);
 		*mesh = fine;

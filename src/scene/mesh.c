@@ -65,6 +65,7 @@ void mesh_release(struct mesh *m)
 		mesh_material_release(&m->materials[i]);
 	free(m->materials);
 	free(m->ranges);
+	mesh_variants_release(m);
 	memset(m, 0, sizeof(*m));
 }
 
@@ -309,4 +310,53 @@ int mesh_copy_factors(struct mesh *to, const struct mesh *from)
 	}
 	to->material_count = (uint32_t)n;
 	return 0;
+}
+
+void mesh_material_vertex_color(const struct mesh_material *mat, float rgba[4])
+{
+	for (int k = 0; k < 3; k++)
+		rgba[k] = mat->base_color[k];
+	rgba[3] = mat->has_base_map ? 1.0f : 0.0f;
+}
+
+int mesh_variant_find(const struct mesh *m, const char *name)
+{
+	for (uint32_t v = 0; name && v < m->variant_count; v++)
+		if (!strcmp(m->variant_names[v], name))
+			return (int)v;
+	return -1;
+}
+
+uint32_t mesh_range_material(const struct mesh *m, int v, uint32_t r)
+{
+	if (v < 0 || (uint32_t)v >= m->variant_count || !m->variant_materials ||
+	    r >= m->variant_ranges)
+		return m->ranges[r].material;
+	return m->variant_materials[(size_t)v * m->range_count + r];
+}
+
+void mesh_variants_release(struct mesh *m)
+{
+	for (uint32_t v = 0; m->variant_names && v < m->variant_count; v++)
+		free(m->variant_names[v]);
+	free(m->variant_names);
+	free(m->variant_materials);
+	m->variant_names = NULL;
+	m->variant_materials = NULL;
+	m->variant_count = 0;
+	m->variant_ranges = 0;
+	m->colors_by_material = false;
+}
+
+void mesh_variants_move(struct mesh *to, struct mesh *from)
+{
+	mesh_variants_release(to);
+	to->variant_count = from->variant_count;
+	to->variant_ranges = from->variant_ranges;
+	to->variant_names = from->variant_names;
+	to->variant_materials = from->variant_materials;
+	to->colors_by_material = from->colors_by_material;
+	from->variant_names = NULL;
+	from->variant_materials = NULL;
+	mesh_variants_release(from);
 }

@@ -112,6 +112,20 @@ struct mesh {
 	 * thickness maps, iridescence, alpha, sides. */
 	uint32_t material_count;
 	struct mesh_material *materials;
+	/* KHR_materials_variants: the file's variant names, and which
+	 * material each range draws in each: variant v draws range r with
+	 * materials[variant_materials[v * range_count + r]] (ranges[r].material
+	 * is the file's default). Every material any variant uses is in
+	 * materials[], decoded: a switch changes indices, it loads nothing.
+	 * No variants: variant_count 0, both NULL. */
+	uint32_t variant_count;
+	uint32_t variant_ranges; /* the range_count the table was made for */
+	char **variant_names;
+	uint32_t *variant_materials;
+	/* colors is NULL and each range's colour is its material's
+	 * (mesh_material_vertex_color), set per draw: a variant's base colour
+	 * factor changes with the variant, which vertex colours could not. */
+	bool colors_by_material;
 };
 
 int mesh_alloc(struct mesh *m, uint32_t vertex_count, uint32_t index_count, bool with_uvs);
@@ -135,6 +149,18 @@ void mesh_material_release(struct mesh_material *mat);
 int mesh_copy_factors(struct mesh *to, const struct mesh *from);
 /* The material with every field at the glTF default and no image. */
 void mesh_material_default(struct mesh_material *mat);
+/* What a range of this material reads as its vertex colour when the mesh
+ * has colors_by_material: rgb its base colour factor, a 1 where it reads
+ * its base map (as struct mesh colors). */
+void mesh_material_vertex_color(const struct mesh_material *mat, float rgba[4]);
+/* The index of the variant named `name` (exact), or -1. */
+int mesh_variant_find(const struct mesh *m, const char *name);
+/* The material range r draws with in variant v (-1: the file's default). */
+uint32_t mesh_range_material(const struct mesh *m, int v, uint32_t r);
+/* Frees the variants' names and table (variant_count 0 after). */
+void mesh_variants_release(struct mesh *m);
+/* to takes from's variants (to's own released first; from has none after). */
+void mesh_variants_move(struct mesh *to, struct mesh *from);
 
 /* rep[i] = the lowest-numbered vertex with exactly the position of vertex
  * i (by value, so -0.0 and 0.0 are one): seams and poles split vertices

@@ -89,6 +89,9 @@ static void set_stop(struct app *a, int stop)
 	a->state.stop_animation = stop >= 0 && a->cfg.frame.stops[stop].animation[0]
 				      ? a->cfg.frame.stops[stop].animation
 				      : NULL;
+	a->state.stop_variant = stop >= 0 && a->cfg.frame.stops[stop].variant[0]
+				    ? a->cfg.frame.stops[stop].variant
+				    : NULL;
 }
 
 static void home(struct app *a)
@@ -351,6 +354,9 @@ static void press(struct app *a, enum app_action action, uint64_t t)
 		break;
 	case ACTION_NEXT_ANIMATION:
 		st->anim_step++;
+		break;
+	case ACTION_NEXT_VARIANT:
+		st->variant_step++;
 		break;
 	case ACTION_RESET:
 		home(a);
@@ -627,4 +633,17 @@ void app_apply(struct app *a, const struct app_msg *m)
 		frame(a, m->frame.frame, m->frame.rest, m->frame.mode, m->frame.now_ns);
 		break;
 	}
+}
+
+int app_variant_step(int shown, int count, int steps)
+{
+	int n = count + 1; /* every variant, and the default */
+	int at;
+
+	if (count <= 0)
+		return -1;
+	if (shown < -1 || shown >= count)
+		shown = -1;
+	at = ((shown + 1 + steps) % n + n) % n;
+	return at - 1;
 }

@@ -57,6 +57,11 @@ struct app_state {
 	const char *stop_animation;
 	bool anim_paused; /* play-pause: the animation is held */
 	int anim_step;	  /* next-animation: how many clips on from the one set */
+	/* next-variant: how many variants on from the one shown (the kiosk
+	 * steps by the difference: app_variant_step); the variant the stop
+	 * shows ([frame] stops' variant=), or NULL. */
+	int variant_step;
+	const char *stop_variant;
 };
 
 enum app_msg_kind {
@@ -119,5 +124,10 @@ void app_apply(struct app *a, const struct app_msg *m);
 uint64_t app_advance(struct app *a, uint64_t now_ns);
 /* True while the model moves by itself or by a held turn. */
 bool app_moving(const struct app *a);
+
+/* The variant shown after `steps` next-variant presses from `shown`, of
+ * a model of `count` variants: each in turn, then the file's default
+ * materials (-1), then the first again. -1 for a model without any. */
+int app_variant_step(int shown, int count, int steps);
 
 #endif

@@ -57,28 +57,56 @@ int frame_base(const struct frame_config *f, struct quat *out, char *err, size_t
 	return 0;
 }
 
-/* A stop's optional last word, animation=CLIP (after its text, if any),
- * cut off s into st->animation. */
-static int stop_clip(char *s, struct frame_stop *st, char *err, size_t n)
+/* One of a stop's last words, KEY=VALUE at `at`: its value (to the end
+ * of what is left of the stop: a clip's or a variant's name may have
+ * spaces) into dst, and the word cut off the stop. */
+static int stop_word(char *at, const char *key, const char *what, char *dst, char *err, size_t n)
 {
-	char *q = strrchr(s, '"'), *at = strstr(q ? q : s, "animation=");
 	size_t len;
 
-	if (!at)
-		return 0;
 	*at = '\0';
-	at += strlen("animation=");
-	len = strlen(at); /* to the stop's end: a clip's name may have spaces */
+	at += strlen(key);
+	len = strlen(at);
 	while (len && (at[len - 1] == ' ' || at[len - 1] == '\t'))
 		len--;
-	if (!len || len >= FRAME_STOP_CLIP || at[0] == ' ' || at[0] == '\t') {
-		snprintf(err, n,
-			 "a stop's animation= names a clip (its name, an index or all) "
-			 "of up to %d bytes, last in the stop",
-			 FRAME_STOP_CLIP - 1);
+	if (dst[0] || !len || len >= FRAME_STOP_CLIP || at[0] == ' ' || at[0] == '\t') {
+		snprintf(err, n, "a stop's %s names %s of up to %d bytes, once, after its text",
+			 key, what, FRAME_STOP_CLIP - 1);
 		return -1;
 	}
-	memcpy(st->animation, at, len);
+	memcpy(dst, at, len);
+	return 0;
+}
+
+/* The last `key` in s, or NULL. */
+static char *last_of(char *s, const char *key)
+{
+	char *last = NULL;
+
+	for (char *at = strstr(s, key); at; at = strstr(at + 1, key))
+		last = at;
+	return last;
+}
+
+/* A stop's optional last words, animation=CLIP and variant=NAME (after
+ * its text, if any, in either order), cut off s into st: the later one
+ * first. */
+static int stop_clip(char *s, struct frame_stop *st, char *err, size_t n)
+{
+	char *q = strrchr(s, '"');
+
+	for (int i = 0; i < 3; i++) {
+		char *a = last_of(q ? q : s, "animation="), *v = last_of(q ? q : s, "variant=");
+
+		if (a && (!v || a > v)) {
+			if (stop_word(a, "animation=", "a clip (its name, an index or all)",
+				      st->animation, err, n))
+				return -1;
+		} else if (v && stop_word(v, "variant=", "a variant of the model (its name)",
+					  st->variant, err, n)) {
+			return -1;
+		}
+	}
 	return 0;
 }
 
@@ -112,8 +140,9 @@ static int stop_parse(char *s, struct frame_stop *st, char *err, size_t n)
 	if (sscanf(s, "%lf %lf %lf %n", &y, &p, &z, &used) != 3 || s[used] || !isfinite(y) ||
 	    !isfinite(p) || !(z > 0 && z <= 20)) {
 		snprintf(err, n,
-			 "each stop is YAW PITCH ZOOM \"text\" animation=CLIP (degrees, "
-			 "degrees, a zoom above 0 up to 20; the text and clip optional)");
+			 "each stop is YAW PITCH ZOOM \"text\" animation=CLIP variant=NAME "
+			 "(degrees, degrees, a zoom above 0 up to 20; the text, clip and "
+			 "variant optional)");
 		return -1;
 	}
 	st->yaw = y * RAD;

@@ -46,6 +46,9 @@ struct frame_stop {
 	/* The animation played there ([scene] animation's words: a name, an
 	 * index, all); "": the one playing goes on. */
 	char animation[FRAME_STOP_CLIP];
+	/* The KHR_materials_variants variant shown there (its name); "": the
+	 * one shown stays. */
+	char variant[FRAME_STOP_CLIP];
 };
 
 /* In radians, as the app state uses it. */
@@ -64,8 +67,9 @@ void frame_config_defaults(struct frame_config *f);
 /* The model's turn before everything (up, then orientation). 0, or -1
  * with err naming what is wrong. */
 int frame_base(const struct frame_config *f, struct quat *out, char *err, size_t n);
-/* Parse 'yaw pitch zoom "text" animation=CLIP; ...' (degrees; the text
- * and the clip optional). The count, or -1 with err. */
+/* Parse 'yaw pitch zoom "text" animation=CLIP variant=NAME; ...'
+ * (degrees; the text, the clip and the variant optional, the last two in
+ * either order). The count, or -1 with err. */
 int frame_stops_parse(const char *text, struct frame_stop *out, int max, char *err, size_t n);
 /* f in radians for the app, with the start yaw and pitch (degrees) that
  * apply when f sets none. -1 with err when its stops do not parse or a

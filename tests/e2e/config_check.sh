@@ -110,6 +110,21 @@ rm "$dir/anim/box.ini"
 w '[scene]\nmodel = srv/sphere.glb\nanimation = nope\n' >"$dir/anim-still.ini"
 case_ animation-on-a-still-model 0 "anim-still.ini: the settings are valid" "$dir/anim-still.ini" $mc
 
+# KHR_materials_variants: a variant the model lacks, in [scene] variant or
+# a stop's variant=, is named with its file and line and the model's
+# variants (the kiosk would show its own materials, or keep those shown).
+cp "$models/variants.gltf" "$dir/srv/"
+w '[scene]\nmodel = srv/variants.gltf\nvariant = green\n\n[frame]\nstops = 0 0 1 variant=blue; 90 0 1 variant=teal\n' \
+	>"$dir/variants.ini"
+case_ variant-missing 78 "variants.ini:3: \[scene\] variant = 'green': .*variants.gltf has no such variant, .*(\"red\", \"blue\")" \
+	"$dir/variants.ini" $mc
+case_ stop-variant-missing 78 "variants.ini:6: \[frame\] stops (stop 2) variant = 'teal': .*variants.gltf has no such variant" \
+	"$dir/variants.ini" $mc
+case_ variant-missing-verdict 78 "variants.ini: 2 material variants named are not in the models" "$dir/variants.ini" $mc
+w '[scene]\nmodel = srv/variants.gltf\nvariant = blue\n\n[frame]\nstops = 0 0 1 variant=red animation=open\n' \
+	>"$dir/variants-good.ini"
+case_ variants-there 0 "variants-good.ini: the settings are valid" "$dir/variants-good.ini" $mc
+
 w '[kiosk]\ninclude = typo.ini\n' >"$dir/inc.ini"
 w '[scene]\nmodle = x.glb\n' >"$dir/typo.ini"
 case_ include-with-errors 78 "typo.ini:2: unknown key 'modle'" "$dir/inc.ini" $mc

@@ -20,6 +20,7 @@ scenes="$scenes sphere-vertex-color sphere-base-map sphere-base-map-off"
 scenes="$scenes background-color background-gradient background-image fit-long fit-long-half"
 scenes="$scenes parts-textures parts-mask parts-blend parts-leaf parts-normals parts-iridescence"
 scenes="$scenes parts-unlit parts-unlit-shade parts-emissive parts-emissive-sem-vertex parts-specgloss"
+scenes="$scenes variant-blue"
 scenes="$scenes caption-latin caption-rtl caption-logo"
 scenes="$scenes frame-up frame-start-view frame-own-look"
 scenes="$scenes render-scale-half"
@@ -145,6 +146,11 @@ render() {
 		;;
 	parts-emissive-sem-vertex)
 		$k -c matcaps/gold.png --model "$m/parts-emissive.glb" --mode sem-vertex --output "$o"
+		;;
+	# KHR_materials_variants: the cube's "blue" variant (its default is red;
+	# blue is a material only the variant uses).
+	variant-blue)
+		$k -c matcaps/pearl.png --model "$m/variants.gltf" --variant blue --output "$o"
 		;;
 	# [caption]: Latin with kerning (AV, Te) and a ligature (fi) in two
 	# lines; Hebrew (its brackets mirrored, a number left to right

@@ -9,6 +9,7 @@
  *                         colour as its base colour, normal, occlusion and
  *                         film thickness textures (tests/suite.sh) */
 #include "gltf_morph.h"
+#include "gltf_variants.h"
 #include "gltf_write.h"
 #include "maps.h"
 #include "parts_models.h"
@@ -380,6 +381,15 @@ static int write_bomb(const char *dir, int side)
 	return bad;
 }
 
+/* KHR_materials_variants: the cube of "red" and "blue" (gltf_variants.h). */
+static int write_variants(const char *dir)
+{
+	char path[512];
+
+	snprintf(path, sizeof(path), "%s/variants.gltf", dir);
+	return gltf_write_variants(path, VARIANTS_OK) ? 1 : 0;
+}
+
 int main(int argc, char **argv)
 {
 	struct mesh s;
@@ -432,6 +442,7 @@ int main(int argc, char **argv)
 	bad |= write_material_models(argv[1]);
 	bad |= parts_models_write(argv[1]);
 	bad |= write_corpus(argv[1]);
+	bad |= write_variants(argv[1]);
 	if (argc > 2 && strcmp(argv[2], "--bench") == 0)
 		bad |= write_bench(argv[1]) | parts_models_write_bench(argv[1]);
 	return bad;

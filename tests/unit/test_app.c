@@ -578,6 +578,31 @@ static void display_back_redraws(void **state)
 	app_free(a);
 }
 
+/* next-variant counts presses (the state holds no model's variants); the
+ * kiosk steps the variant shown by them: each in turn, then the file's
+ * default materials, then the first again, either way. */
+static void next_variant_steps(void **state)
+{
+	struct app *a = app_new(&base, MATCAPS, 0);
+
+	(void)state;
+	assert_int_equal(st(a)->variant_step, 0);
+	event(a, 0, ACTION_NEXT_VARIANT, true);
+	event(a, 0, ACTION_NEXT_VARIANT, false); /* a release is no press */
+	event(a, MS, ACTION_NEXT_VARIANT, true);
+	assert_int_equal(st(a)->variant_step, 2);
+	assert_null(st(a)->stop_variant);
+	app_free(a);
+	assert_int_equal(app_variant_step(-1, 2, 1), 0);
+	assert_int_equal(app_variant_step(0, 2, 1), 1);
+	assert_int_equal(app_variant_step(1, 2, 1), -1);
+	assert_int_equal(app_variant_step(-1, 2, 3), -1);
+	assert_int_equal(app_variant_step(-1, 2, -1), 1);
+	assert_int_equal(app_variant_step(7, 2, 1), 0);	  /* one it lacks: from the default */
+	assert_int_equal(app_variant_step(-1, 0, 1), -1); /* no variants: the default */
+	assert_string_equal(app_action_names[ACTION_NEXT_VARIANT], "next-variant");
+}
+
 static void action_names_match_the_enum(void **state)
 {
 	(void)state;
@@ -615,6 +640,7 @@ int main(void)
 	    cmocka_unit_test(reload_starts_afresh_but_keeps_the_camera),
 	    cmocka_unit_test(display_back_redraws),
 	    cmocka_unit_test(action_names_match_the_enum),
+	    cmocka_unit_test(next_variant_steps),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

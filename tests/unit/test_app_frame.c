@@ -303,6 +303,51 @@ static void stops_refused_with_reason(void **state)
 	    -1);
 }
 
+/* variant= after the text, before or after animation=, each to the next
+ * word or the stop's end; reaching the stop (by hand or the attract
+ * tour) says which variant it shows. */
+static void stops_show_variants(void **state)
+{
+	struct frame_stop s[FRAME_STOPS];
+	struct app_config c = config();
+	struct frame_config f;
+	char err[200],
+	    stops[] = "0 0 1 variant=blue; 90 0 1 \"Red\" variant=dark red animation=open";
+	struct app *a;
+
+	(void)state;
+	assert_int_equal(frame_stops_parse(stops, s, FRAME_STOPS, err, sizeof(err)), 2);
+	assert_string_equal(s[0].variant, "blue");
+	assert_string_equal(s[0].animation, "");
+	assert_string_equal(s[1].variant, "dark red");
+	assert_string_equal(s[1].animation, "open");
+	assert_string_equal(s[1].text, "Red");
+	assert_int_equal(frame_stops_parse("1 2 1 animation=open variant=blue ", s, FRAME_STOPS,
+					   err, sizeof(err)),
+			 1);
+	assert_string_equal(s[0].animation, "open");
+	assert_string_equal(s[0].variant, "blue");
+	assert_int_equal(frame_stops_parse("1 2 1 variant=", s, FRAME_STOPS, err, sizeof(err)), -1);
+	assert_non_null(strstr(err, "variant="));
+	assert_int_equal(
+	    frame_stops_parse("1 2 1 variant=a variant=b", s, FRAME_STOPS, err, sizeof(err)), -1);
+	assert_non_null(strstr(err, "once"));
+	frame_config_defaults(&f);
+	f.stops = stops;
+	f.stop_seconds = 10;
+	frame_of(&c, &f);
+	c.attract_after_s = 1;
+	a = app_new(&c, 3, 0);
+	assert_null(app_state(a)->stop_variant);
+	app_advance(a, 2 * SEC);
+	assert_int_equal(app_state(a)->stop, 0);
+	assert_string_equal(app_state(a)->stop_variant, "blue");
+	app_advance(a, 13 * SEC);
+	assert_int_equal(app_state(a)->stop, 1);
+	assert_string_equal(app_state(a)->stop_variant, "dark red");
+	app_free(a);
+}
+
 static void rotate(struct quat q, const double p[3], double out[3])
 {
 	struct quat v = {0, p[0], p[1], p[2]}, c = {q.w, -q.x, -q.y, -q.z};
@@ -345,6 +390,7 @@ int main(void)
 	    cmocka_unit_test(sway_is_smooth_and_bounded),
 	    cmocka_unit_test(stops_step_and_play),
 	    cmocka_unit_test(stops_refused_with_reason),
+	    cmocka_unit_test(stops_show_variants),
 	    cmocka_unit_test(orientation_turns_first),
 	};
 
