@@ -185,7 +185,7 @@ DEBIAN_TEST_PACKAGES := libcmocka-dev zlib1g-dev systemd \
 	qemu-system-x86 busybox-static lz4 cpio kmod udev xz-utils kmscube libdrm-tests \
 	libcamera-tools gpiod v4l-utils \
 	draco gltfpack assimp-testmodels \
-	dosfstools mtools e2fsprogs rsync \
+	dosfstools mtools e2fsprogs rsync time \
 	prometheus-node-exporter curl ansible mmdebstrap
 
 deps:
