@@ -19,7 +19,7 @@ UNIT_TESTS  += status poster file metrics background framing
 UNIT_TESTS  += kiosk_reload app_frame model_settings render_scale
 UNIT_TESTS  += anim anim_palette anim_play kiosk_anim anim_frames
 UNIT_TESTS  += caption import gltf_depth load_guard
-UNIT_TESTS  += ini stranger_settings
+UNIT_TESTS  += ini stranger_settings normals
 TOOLS_DIR   := $(BUILD)/tools
 ASAN_BUILD  := $(BUILD)/asan
 # MK_TEST_HOOKS: the test hooks (MK_TEST_PREPARE_DELAY_MS, src/app/reload.c)

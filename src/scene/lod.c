@@ -411,6 +411,94 @@ static int weld_duplicates(struct mesh *m)
 	return ret;
 }
 
+/* flat[v]: vertex v has, bit for bit, the face normal of every triangle
+ * that uses it: a flat-shaded corner (the loader's split of a primitive
+ * without normals, [scene] normals = flat, or a file's own flat normals). */
+static int flat_corners(const struct mesh *m, uint8_t **out)
+{
+	uint8_t *flat = malloc((size_t)m->vertex_count + 1);
+
+	*out = flat;
+	if (!flat)
+		return -ENOMEM;
+	memset(flat, 1, m->vertex_count);
+	for (uint32_t t = 0; t + 2 < m->index_count; t += 3) {
+		const uint32_t *c = m->indices + t;
+		float n[3];
+
+		mesh_face_normal(m->positions + (size_t)c[0] * 3, m->positions + (size_t)c[1] * 3,
+				 m->positions + (size_t)c[2] * 3, n);
+		for (int k = 0; k < 3; k++)
+			if (memcmp(m->normals + (size_t)c[k] * 3, n, sizeof(n)))
+				flat[c[k]] = 0;
+	}
+	return 0;
+}
+
+/* Room for `extra` more vertices in every attribute array. */
+static int grow_streams(struct mesh *m, uint32_t extra)
+{
+	float **streams[5] = {&m->positions, &m->normals, &m->uvs, &m->tangents, &m->colors};
+	const size_t width[5] = {3, 3, 2, 4, 4};
+
+	for (int s = 0; s < 5; s++) {
+		float *p = *streams[s] ? realloc(*streams[s], ((size_t)m->vertex_count + extra) *
+								  width[s] * sizeof(float))
+				       : NULL;
+
+		if (*streams[s] && !p)
+			return -ENOMEM;
+		if (p)
+			*streams[s] = p;
+	}
+	return 0;
+}
+
+/* A simplified triangle of flat corners spans faces that were many: its
+ * corners took their normals from one of those (unweld_triangle), so it
+ * would shade as a blend. Each corner off its new face's normal becomes a
+ * vertex of its own with that normal: flat stays flat after simplifying.
+ * remap grows with the vertices. */
+static int keep_flat(struct mesh *m, const uint8_t *flat, unsigned *idx, size_t n, unsigned **remap)
+{
+	unsigned *more = realloc(*remap, ((size_t)m->vertex_count + n) * sizeof(unsigned) + 1);
+	uint32_t added = 0;
+
+	if (more)
+		*remap = more;
+	if (!more || grow_streams(m, (uint32_t)n))
+		return -ENOMEM;
+	for (size_t t = 0; t + 2 < n; t += 3) {
+		unsigned *c = idx + t;
+		float f[3];
+
+		if (c[0] >= m->vertex_count || c[1] >= m->vertex_count || c[2] >= m->vertex_count ||
+		    !flat[c[0]] || !flat[c[1]] || !flat[c[2]])
+			continue;
+		mesh_face_normal(m->positions + (size_t)c[0] * 3, m->positions + (size_t)c[1] * 3,
+				 m->positions + (size_t)c[2] * 3, f);
+		for (int k = 0; k < 3; k++) {
+			uint32_t v = m->vertex_count + added;
+
+			if (!memcmp(m->normals + (size_t)c[k] * 3, f, sizeof(f)))
+				continue;
+			memcpy(m->positions + (size_t)v * 3, m->positions + (size_t)c[k] * 3, 12);
+			memcpy(m->normals + (size_t)v * 3, f, 12);
+			if (m->uvs)
+				memcpy(m->uvs + (size_t)v * 2, m->uvs + (size_t)c[k] * 2, 8);
+			if (m->tangents)
+				memcpy(m->tangents + (size_t)v * 4, m->tangents + (size_t)c[k] * 4,
+				       16);
+			if (m->colors)
+				memcpy(m->colors + (size_t)v * 4, m->colors + (size_t)c[k] * 4, 16);
+			c[k] = v;
+			added++;
+		}
+	}
+	m->vertex_count += added;
+	return 0;
+}
+
 int lod_prepare_mesh(struct mesh *m, double pixels, int width, int height,
 		     struct lod_result *result)
 {
@@ -420,9 +508,10 @@ int lod_prepare_mesh(struct mesh *m, double pixels, int width, int height,
 			       .vertices_before = m->vertex_count};
 	size_t n = m->index_count;
 	float error = 0.0f;
+	uint8_t *flat = NULL;
 	int ret = -ENOMEM;
 
-	if (!idx || !remap || weld_duplicates(m))
+	if (!idx || !remap || weld_duplicates(m) || flat_corners(m, &flat))
 		goto out;
 	n = m->index_count;
 	r.wanted = lod_triangles_wanted(m, pixels, width, height);
@@ -440,6 +529,10 @@ int lod_prepare_mesh(struct mesh *m, double pixels, int width, int height,
 		memcpy(idx, m->indices, n * sizeof(unsigned));
 	if (m->range_count == 1)
 		m->ranges[0].index_count = (uint32_t)n;
+	if (n < m->index_count && keep_flat(m, flat, idx, n, &remap)) {
+		ret = -ENOMEM;
+		goto out;
+	}
 	/* Ordered within each range: the ranges stay where they are. */
 	for (uint32_t g = 0; g < (m->range_count ? m->range_count : 1); g++) {
 		unsigned *part = idx + (m->range_count ? m->ranges[g].first_index : 0);
@@ -476,5 +569,6 @@ out:
 		*result = r;
 	free(idx);
 	free(remap);
+	free(flat);
 	return ret;
 }

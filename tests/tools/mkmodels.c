@@ -380,6 +380,21 @@ static int write_bomb(const char *dir, int side)
 	return bad;
 }
 
+/* A cube without normals, its corners shared: flat sides by default,
+ * a pillow with --normals smooth (golden normals-flat, normals-smooth). */
+static int write_cube(const char *dir)
+{
+	struct gltf_write_opts o = {.index_bytes = 2, .bad_index = -1};
+	struct mesh c;
+	int bad;
+
+	if (gltf_test_cube(&c))
+		return 1;
+	bad = put(dir, "cube-nonormals.glb", &c, o);
+	mesh_release(&c);
+	return bad;
+}
+
 int main(int argc, char **argv)
 {
 	struct mesh s;
@@ -400,6 +415,7 @@ int main(int argc, char **argv)
 	o.container = GLTF_EXTERNAL_BIN;
 	o.with_normals = 0;
 	bad |= put(argv[1], "sphere-nonormals.gltf", &s, o);
+	bad |= write_cube(argv[1]);
 	o = ok;
 	o.container = GLTF_DATA_URI;
 	bad |= put(argv[1], "sphere-datauri.gltf", &s, o);
