@@ -1,6 +1,10 @@
 // A primitive without normals split at its faces (gltf_flat.h).
 #include "scene/gltf_flat.h"
 
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+
 namespace
 {
 
@@ -39,12 +43,26 @@ uint32_t gltf_split_faces(const GltfSplit &s, size_t first_vertex, size_t first_
 	return (uint32_t)n;
 }
 
+int gltf_tag_flat(struct mesh *out, uint32_t first_vertex, uint32_t vertex_count)
+{
+	if (!out->flat) {
+		out->flat = (uint8_t *)std::calloc((size_t)out->vertex_count + 1, 1);
+		out->flat_count = out->vertex_count;
+	}
+	if (!out->flat)
+		return -ENOMEM;
+	std::memset(out->flat + first_vertex, 1, vertex_count);
+	return 0;
+}
+
 int gltf_range_normals(struct mesh *out, const uint32_t *idx, uint32_t index_count,
 		       uint32_t first_vertex, uint32_t vertex_count, bool has_normals, bool flat)
 {
-	if (flat)
+	if (flat) {
 		mesh_flat_normals(out->positions, idx, index_count, out->normals);
-	else if (!has_normals)
+		return gltf_tag_flat(out, first_vertex, vertex_count);
+	}
+	if (!has_normals)
 		return mesh_generate_normals(out->positions, idx, index_count, first_vertex,
 					     vertex_count, out->normals);
 	return 0;

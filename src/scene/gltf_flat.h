@@ -25,6 +25,10 @@ struct GltfSplit {
 // not kept (glTF ignores them without normals). Returns its vertex count.
 uint32_t gltf_split_faces(const GltfSplit &s, size_t first_vertex, size_t first_index);
 
+// out->flat set over the vertices of a split primitive (first_vertex,
+// vertex_count), allocated at the first. Returns 0 or -ENOMEM.
+int gltf_tag_flat(struct mesh *out, uint32_t first_vertex, uint32_t vertex_count);
+
 // The normals of a primitive that lacks the file's (has_normals false):
 // flat (split by gltf_split_faces) or averaged. Returns 0 or -ENOMEM.
 int gltf_range_normals(struct mesh *out, const uint32_t *idx, uint32_t index_count,

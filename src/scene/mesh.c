@@ -59,6 +59,7 @@ void mesh_release(struct mesh *m)
 	free(m->tangents);
 	free(m->colors);
 	free(m->indices);
+	free(m->flat);
 	mesh_material_release(&m->material);
 	for (uint32_t i = 0; m->materials && i < m->material_count; i++)
 		mesh_material_release(&m->materials[i]);

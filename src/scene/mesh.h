@@ -100,6 +100,13 @@ struct mesh {
 	 * thickness maps, iridescence, alpha, sides. */
 	uint32_t material_count;
 	struct mesh_material *materials;
+	/* flat[v] 1: the loader split vertex v's primitive at its faces for
+	 * flat normals (no NORMAL, or [scene] normals = flat), so the level of
+	 * detail keeps its simplified triangles flat (lod.c); NULL when no
+	 * primitive was split. flat_count: the vertices it covers (lod.c reads
+	 * vertices appended after it as not flat) */
+	uint8_t *flat;
+	uint32_t flat_count;
 };
 
 int mesh_alloc(struct mesh *m, uint32_t vertex_count, uint32_t index_count, bool with_uvs);

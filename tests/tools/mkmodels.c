@@ -4,7 +4,7 @@
  *                         and models
  *   mkmodels DIR --bench  also torus knots of about 10k, 100k and 1M triangles,
  *                         and the 100k one textured, skinned (still and turning), morphing
- *                         and flat-shaded
+ *                         and flat-shaded, and the 10k and 100k ones without normals
  *   mkmodels DIR --bomb SIDE  only bomb.gltf: four SIDE x SIDE PNGs of one
  *                         colour as its base colour, normal, occlusion and
  *                         film thickness textures (tests/suite.sh) */
@@ -288,6 +288,11 @@ static int write_bench(const char *dir)
 	bad |= put(dir, "knot-100k.glb", &k100, o);
 	bad |= put(dir, "knot-1m.glb", &k1m, o);
 	bad |= write_bench_forms(dir, &k100);
+	/* Without normals, as a CAD or STL conversion: [scene] normals'
+	 * figures, flat against smooth (tests/bench/bench_normals.sh). */
+	o.with_normals = 0;
+	bad |= put(dir, "knot-10k-nonormals.glb", &k10, o);
+	bad |= put(dir, "knot-100k-nonormals.glb", &k100, o);
 	printf("knot-100k.glb %u triangles, knot-1m.glb %u triangles\n", k100.index_count / 3,
 	       k1m.index_count / 3);
 	mesh_release(&k10);
