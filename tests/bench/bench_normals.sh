@@ -20,7 +20,7 @@ out=tests/out/bench-normals
 mkdir -p "$out"
 "$TOOLS/mkmodels" "$out" --bench >/dev/null
 # A cache of its own: the counts come from a load, never from an entry.
-XDG_CACHE_HOME=$out/cache
+XDG_CACHE_HOME=$PWD/$out/cache # absolute: XDG ignores a relative one
 export XDG_CACHE_HOME
 
 # row MODEL: one row per [scene] normals.
@@ -37,12 +37,12 @@ row() {
 		rm -rf "$XDG_CACHE_HOME"
 		# The vertices loaded (lod_pixels 0: every one drawn), then drawn
 		# after the level of detail at its default.
-		loaded=$($k --normals $n --lod-pixels 0 --frames 1 2>&1 |
-			sed -n 's/.*: \([0-9]*\) vertices, \([0-9]*\) triangles$/\1 | \2/p' | head -n 1)
-		drawn=$($k --log-level debug --normals $n --frames 1 2>&1 |
-			sed -n -e 's/.*lod: [0-9]* -> \([0-9]*\) triangles for .*, [0-9]* -> \([0-9]*\) vertices$/\2 | \1/p' \
-				-e 's/.*lod: \([0-9]*\) triangles kept for .*, \([0-9]*\) vertices$/\2 | \1/p' |
-			head -n 1)
+		loaded=$($k --normals $n --lod-pixels 0 --output "$out/frame.png" 2>&1 |
+			sed -n 's/.*: \([0-9]*\) vertices, \([0-9]*\) triangles$/\1 | \2/p')
+		rm -rf "$XDG_CACHE_HOME"
+		drawn=$($k --log-level debug --normals $n --output "$out/frame.png" 2>&1 | sed -n \
+			-e 's/.*lod: [0-9]* -> \([0-9]*\) triangles for .*, [0-9]* -> \([0-9]*\) vertices$/\2 | \1/p' \
+			-e 's/.*lod: \([0-9]*\) triangles kept for .*, \([0-9]*\) vertices$/\2 | \1/p')
 		median=$(awk -v n=$n '$1 == n { print $5 }' "$out/times" | sort -n |
 			awk '{ m[NR] = $1 } END { printf "%.1f", m[int((NR + 1) / 2)] }')
 		p90=$(awk -v n=$n '$1 == n && $7 > p { p = $7 } END { printf "%.1f", p }' "$out/times")
