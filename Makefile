@@ -95,7 +95,7 @@ LIB_C  := $(SRC_APP) $(SRC_OPS) $(SRC_CONTENT) $(SRC_CONFIG) $(SRC_STATE) $(SRC_
 # The C++ shims, each behind a C header (gltf_ext.h is internal to the glTF one).
 LIB_CC := scene/gltf scene/gltf_mesh scene/gltf_fs scene/gltf_material scene/gltf_ext scene/gltf_files scene/gltf_pose \
 	  scene/gltf_draco camera/camera
-LIB_CC += scene/gltf_words scene/gltf_anim scene/gltf_fit scene/gltf_name scene/gltf_play
+LIB_CC += scene/gltf_words scene/gltf_anim scene/gltf_fit scene/gltf_name scene/gltf_play scene/gltf_flat
 LIB_CC += scene/gltf_variants
 SHADERS := shaders/mapping.glsl shaders/morph.glsl shaders/matcap.vert shaders/matcap.frag shaders/material.glsl
 SHADERS += shaders/camera.vert shaders/camera.frag

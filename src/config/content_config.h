@@ -32,6 +32,7 @@ struct content_config {
 	bool ortho;
 	double yaw, pitch; /* degrees, the resting orientation */
 	double lod_pixels; /* simplify to this error on the display; 0: off */
+	int normals;	   /* [scene] normals: enum mesh_normals (0: file) */
 	/* [scene] texture_memory: MiB the model's decoded textures share; 0:
 	 * auto (scene/texture.h) */
 	double texture_memory;

@@ -22,7 +22,7 @@ static const struct {
     {"scene", "fit"},	     {"scene", "yaw"},		{"scene", "pitch"},
     {"scene", "base_color"}, {"scene", "model_scene"},	{"scene", "lod_pixels"},
     {"scene", "matcap"},     {"scene", "matcap_first"}, {"display", "background"},
-    {"caption", NULL},	     {"scene", "variant"},
+    {"scene", "normals"},    {"caption", NULL},	     {"scene", "variant"},
 };
 
 #define MODEL_KEYS (sizeof(model_keys) / sizeof(model_keys[0]))

@@ -38,6 +38,7 @@ static const char *const switch_names[] = {"auto", "off", "on", NULL}; /* enum m
 static const char *const lit_names[] = {"off", "on", "beside", NULL};  /* enum material_lit */
 static const char *const camera_names[] = {"off", "on", NULL};	       /* enum camera_feed_use */
 static const char *const import_names[] = {"auto", "off", NULL};       /* enum camera_feed_import */
+static const char *const normals_names[] = {"file", "flat", "smooth", NULL}; /* enum mesh_normals */
 static const char *const loop_names[] = {"repeat", "once", "pingpong", NULL}; /* enum anim_loop */
 static const char *const antialias_names[] = {"auto", "off", "2", "4", "8", NULL};
 static const char *const base_color_names[] = {"auto", "off", NULL}; /* enum material_switch */
@@ -105,6 +106,10 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "tilt the model about the horizontal axis"},
     {"lod-pixels", 0, OPTIONS_SCENE, "lod_pixels", K_DOUBLE, AT(content.lod_pixels), 0, 64, 0, NULL,
      "PX", "draw no detail under PX pixels: simplify smaller triangles to that; 0: never"},
+    {"normals", 0, OPTIONS_SCENE, "normals", K_CHOICE, AT(content.normals), 0, 0, 0, normals_names,
+     "HOW",
+     "file: the file's normals, flat (per face) where it gives none, as glTF requires; flat: "
+     "flat everywhere; smooth: averaged where it gives none"},
     {"texture-memory", 0, OPTIONS_SCENE, "texture_memory", K_DOUBLE, AT(content.texture_memory), 8,
      65536, 1, auto_names, "MIB", "MiB the model's decoded textures share; auto: RAM/4, <= 256"},
     {"log-level", 0, OPTIONS_KIOSK, "log_level", K_LEVEL, AT(log_level), 0, 0, 0, log_level_names,

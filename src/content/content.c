@@ -43,7 +43,8 @@ static int load_model(const char *path, const struct content_config *o, struct m
 					 .animation_setting = "[scene] animation",
 					 .time = o->anim_time >= 0 ? o->anim_time : 0,
 					 .speed = o->anim_speed,
-					 .loop = o->anim_loop};
+					 .loop = o->anim_loop,
+					 .normals = o->normals};
 
 		return gltf_load_options(path, &g, mesh);
 	}

@@ -203,7 +203,9 @@ void anim_play_pose(struct anim_play *p, const struct anim_pose *pose, float *po
 	for (uint32_t i = 0; i < p->part_count; i++) {
 		const struct anim_play_part *part = &p->parts[i];
 
-		if (!part->has_normals)
+		if (!part->has_normals && part->flat)
+			mesh_flat_normals(positions, part->indices, part->index_count, normals);
+		else if (!part->has_normals)
 			mesh_generate_normals(positions, part->indices, part->index_count,
 					      part->first_vertex, part->vertex_count, normals);
 	}

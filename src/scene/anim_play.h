@@ -37,6 +37,10 @@ struct anim_play_part {
 	/* Its normals as the file gives them; false: generated each pose
 	 * from its triangles (indices: index_count, into the mesh's vertices). */
 	bool has_normals;
+	/* Generated flat: each triangle's own vertices given its face normal
+	 * (the loader split it, as glTF requires without NORMAL); false: smooth
+	 * ([scene] normals = smooth). */
+	bool flat;
 	uint32_t index_count;
 	uint32_t *indices;
 	/* Morph targets: target_count deltas of vertex_count xyz each

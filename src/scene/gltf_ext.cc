@@ -3,6 +3,7 @@
 // Every one becomes a plain buffer, bufferView and accessor, so that the
 // builder in gltf.cc checks and reads one kind of data only.
 #include "scene/gltf_ext.h"
+#include "util/log.h"
 #include "scene/gltf_draco.h"
 
 #include <meshoptimizer.h>
@@ -537,6 +538,18 @@ bool make_dense(tinygltf::Model &m, std::string *err)
 				return false;
 		}
 	return true;
+}
+
+bool prepare(tinygltf::Model &m, const char *name, Pose *pose, std::string *err)
+{
+	std::string unused = unsupported(m.extensionsUsed);
+	if (!unused.empty() && unsupported(m.extensionsRequired).empty())
+		log_info("%s: ignoring extensions it uses but does not need: %s",
+			 escape(name).c_str(), escape(unused).c_str());
+	if (!decode_meshopt(m, err) || !decode_draco(m, err) || !make_dense(m, err) ||
+	    !node_worlds(m, &pose->worlds, &pose->parent, err) || !apply_morphs(m, err))
+		return false;
+	return apply_skins(m, pose->worlds, &pose->mesh_source, err);
 }
 
 } // namespace gltf_ext

@@ -157,6 +157,19 @@ bool apply_morphs(tinygltf::Model &m, std::string *err);
 bool apply_skins(tinygltf::Model &m, const std::vector<Mat4> &worlds, std::vector<int> *mesh_source,
 		 std::string *err);
 
+// What the passes before the builder found: every node's world matrix
+// and parent, and for each mesh the file's index it came from (a skinned
+// node shows a posed copy).
+struct Pose {
+	std::vector<Mat4> worlds;
+	std::vector<int> parent;
+	std::vector<int> mesh_source;
+};
+
+// Every pass above but the scene's choice, in order, on m (name for the
+// journal's line on extensions it uses but does not need).
+bool prepare(tinygltf::Model &m, const char *name, Pose *pose, std::string *err);
+
 } // namespace gltf_ext
 
 #endif

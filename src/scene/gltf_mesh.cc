@@ -7,6 +7,7 @@
 #include "scene/gltf_variants.h"
 #include "scene/gltf_mesh.h"
 #include "scene/gltf_anim.h"
+#include "scene/gltf_flat.h"
 #include "scene/gltf_play.h"
 #include "util/log.h"
 #include "util/math3d.h"
@@ -29,7 +30,8 @@ namespace
 // the glTF material it names (-1: none).
 struct Range {
 	uint32_t first_vertex, vertex_count, first_index, index_count;
-	bool has_normals, has_tangents;
+	bool has_normals, has_tangents, flat; // flat: split at its faces (gltf_flat.h)
+	size_t source_at;		      // its vertices' file vertex in Builder::source (flat)
 	int material;
 	int node, mesh, primitive; // the node showing it, the file's mesh and primitive
 };
@@ -51,19 +53,14 @@ struct Builder {
 	// (mesh_material.color), so a model of one material costs no array.
 	float uniform[4] = {1, 1, 1, 0};
 	bool uniform_set = false;
-	unsigned textures = 0;	  // enum gltf_texture: what is asked, for the UV set
-	std::vector<int> slots;	  // the glTF material of each of out->materials
-	size_t not_triangles = 0; // primitives of points or lines, left out
+	unsigned textures = 0;		      // enum gltf_texture: what is asked, for the UV set
+	std::vector<int> slots;		      // the glTF material of each of out->materials
+	size_t not_triangles = 0;	      // primitives of points or lines, left out
+	int normals_mode = MESH_NORMALS_FILE; // [scene] normals
+	std::vector<uint32_t> source;	      // each flat range's vertices' in the primitive
 };
 
 typedef double Mat4[16]; // column-major, as glTF stores it
-
-// The normal matrix is the inverse transpose of the upper 3x3: its
-// cofactor matrix up to a scale (util/math3d.h, shared with playback).
-double normal_matrix(const Mat4 m, double n[9])
-{
-	return mat4_normal_matrix(m, n);
-}
 
 // A checked view of one accessor: where element i starts, and how to read
 // its components. Built only after every offset has been proven in range.
@@ -403,10 +400,12 @@ bool read_vertices(Builder &b, const tinygltf::Model &m, const tinygltf::Primiti
 	if (!check_attributes(b, m, p, what, &a))
 		return false;
 	double nm[9];
-	double det = normal_matrix(world, nm);
+	// The normal matrix: the inverse transpose of the upper 3x3 (math3d.h).
+	double det = mat4_normal_matrix(world, nm);
 	float base[4];
 	bool coloured = gltf_primitive_base(m, p.material, base);
-	r->has_normals = a.nrm.count > 0 && det != 0.0;
+	r->has_normals = a.nrm.count > 0 && det != 0.0 && b.normals_mode != MESH_NORMALS_FLAT;
+	r->flat = !r->has_normals && b.normals_mode != MESH_NORMALS_SMOOTH;
 	r->has_tangents = a.tan.count > 0 && r->has_normals;
 	bool per_vertex = colors_per_vertex(b, base, a.col.count > 0, b.positions.size() / 3);
 	make_room(b, a.pos.count, r->has_tangents, per_vertex);
@@ -448,22 +447,20 @@ bool add_primitive(Builder &b, const tinygltf::Model &m, const tinygltf::Primiti
 	    !read_indices(b, m, p, r.vertex_count, what, &idx))
 		return false;
 	double nm[9];
-	bool mirrored = normal_matrix(world, nm) < 0;
+	bool mirrored = mat4_normal_matrix(world, nm) < 0;
 	append_triangles(b, idx, p.mode == -1 ? TINYGLTF_MODE_TRIANGLES : p.mode, mirrored,
 			 r.first_vertex);
+	r.source_at = b.source.size();
+	if (r.flat)
+		r.vertex_count = gltf_split_faces(
+		    {&b.positions, &b.normals, &b.uvs, &b.colors, &b.indices, &b.source},
+		    r.first_vertex, r.first_index);
 	r.index_count = (uint32_t)(b.indices.size() - r.first_index);
 	b.ranges.push_back(r);
 	return true;
 }
 
-// What the passes before the builder found: every node's world matrix
-// and parent, and for each mesh the file's index it came from (a skinned
-// node shows a posed copy).
-struct Pose {
-	std::vector<gltf_ext::Mat4> worlds;
-	std::vector<int> parent;
-	std::vector<int> mesh_source;
-};
+typedef gltf_ext::Pose Pose;
 
 bool add_mesh(Builder &b, const tinygltf::Model &m, size_t node, const Mat4 world, const Pose &pose)
 {
@@ -581,28 +578,12 @@ int finish_mesh(Builder &b, const tinygltf::Model &m, struct mesh *out, GltfFit 
 		std::memcpy(out->tangents, b.tangents.data(), b.tangents.size() * sizeof(float));
 	}
 	for (const Range &r : b.ranges)
-		if (!r.has_normals &&
-		    mesh_generate_normals(out->positions, b.indices.data() + r.first_index,
-					  r.index_count, r.first_vertex, r.vertex_count,
-					  out->normals)) {
+		if (gltf_range_normals(out, b.indices.data() + r.first_index, r.index_count,
+				       r.first_vertex, r.vertex_count, r.has_normals, r.flat)) {
 			mesh_release(out);
 			return -ENOMEM;
 		}
 	return 0;
-}
-
-bool prepare(tinygltf::Model &m, const char *name, Pose *pose, std::string *err)
-{
-	std::string unused = gltf_ext::unsupported(m.extensionsUsed);
-	if (!unused.empty() && gltf_ext::unsupported(m.extensionsRequired).empty())
-		log_info("%s: ignoring extensions it uses but does not need: %s",
-			 gltf_ext::escape(name).c_str(), gltf_ext::escape(unused).c_str());
-	if (!gltf_ext::decode_meshopt(m, err) || !gltf_ext::decode_draco(m, err) ||
-	    !gltf_ext::make_dense(m, err) ||
-	    !gltf_ext::node_worlds(m, &pose->worlds, &pose->parent, err) ||
-	    !gltf_ext::apply_morphs(m, err))
-		return false;
-	return gltf_ext::apply_skins(m, pose->worlds, &pose->mesh_source, err);
 }
 
 // The model's material (the first part's) for what applies to the whole
@@ -638,7 +619,8 @@ void keep_play(const Builder &b, tinygltf::Model &orig, const GltfFit &fit,
 	std::string err;
 	for (const Range &r : b.ranges)
 		parts.push_back({r.node, r.mesh, r.primitive, r.first_vertex, r.vertex_count,
-				 r.first_index, r.index_count, r.has_normals});
+				 r.first_index, r.index_count, r.has_normals, r.flat,
+				 r.flat ? b.source.data() + r.source_at : nullptr});
 	if (!gltf_play_build(orig, parts, b.indices, fit.center, fit.scale, o->play, &err))
 		log_warn("%s: %s; it shows still", gltf_ext::escape(b.name).c_str(),
 			 gltf_ext::escape(err.empty() ? "no animation to play" : err).c_str());
@@ -655,10 +637,11 @@ int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_opti
 	b.name = name;
 	b.want_colors = (o->textures & GLTF_TEXTURE_BASE_COLOR) != 0;
 	b.textures = o->textures;
+	b.normals_mode = o->normals;
 	std::unique_ptr<tinygltf::Model> orig; // before a pose is baked into it
 	if (o->play && !(*o->play = nullptr) && !m.animations.empty() && fit && fit->use_fit)
 		orig.reset(new tinygltf::Model(m));
-	if (gltf_anim_load(name, m, o, &b.error) && prepare(m, name, &pose, &b.error) &&
+	if (gltf_anim_load(name, m, o, &b.error) && gltf_ext::prepare(m, name, &pose, &b.error) &&
 	    gltf_ext::choose_scene(m, o->scene, o->scene_setting, &scene, &b.error)) {
 		std::vector<int> roots;
 		if (scene >= 0)

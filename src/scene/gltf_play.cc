@@ -53,6 +53,28 @@ void put(const std::vector<double> &v, size_t at, float *out)
 		out[at + i] = (float)v[i];
 }
 
+// A flat part's vertices are copies of the file's (gltf_flat.h): v (width
+// values a file vertex) gathered to one value set per copy. Left as read
+// when the part is not split or v is absent; false where a copy's vertex
+// is past v (the builder checked the indices against POSITION).
+bool gather(std::vector<double> *v, size_t width, const GltfPlayPart &g, std::string *err)
+{
+	if (!g.source || v->empty())
+		return true;
+	std::vector<double> out((size_t)g.vertex_count * width);
+	for (size_t i = 0; i < g.vertex_count; i++) {
+		if ((size_t)(g.source[i] + 1) * width > v->size()) {
+			*err = "an attribute's count differs from POSITION";
+			return false;
+		}
+		std::copy(v->begin() + (std::ptrdiff_t)(g.source[i] * width),
+			  v->begin() + (std::ptrdiff_t)((g.source[i] + 1) * width),
+			  out.begin() + (std::ptrdiff_t)(i * width));
+	}
+	v->swap(out);
+	return true;
+}
+
 // The slot in p->skins of the file's skin, read the first time it is met.
 bool skin_slot(const tinygltf::Model &m, int skin, struct anim_play *p, std::vector<int> *slots,
 	       int *slot, std::string *err)
@@ -113,7 +135,8 @@ bool skin_attributes(const tinygltf::Model &m, const tinygltf::Primitive &pr, co
 		std::string jn = "JOINTS_" + std::to_string(set),
 			    wn = "WEIGHTS_" + std::to_string(set);
 		if (!attribute(m, pr.attributes, jn.c_str(), &j, err) ||
-		    !attribute(m, pr.attributes, wn.c_str(), &w, err))
+		    !attribute(m, pr.attributes, wn.c_str(), &w, err) || !gather(&j, 4, g, err) ||
+		    !gather(&w, 4, g, err))
 			return false;
 		if (j.size() != (size_t)g.vertex_count * 4 || w.size() != j.size()) {
 			*err = jn + ": expected one VEC4 a vertex, with " + wn;
@@ -128,8 +151,10 @@ bool skin_attributes(const tinygltf::Model &m, const tinygltf::Primitive &pr, co
 	return true;
 }
 
-bool targets(const tinygltf::Model &m, const tinygltf::Primitive &pr, struct anim_play_part *part,
-	     std::string *err)
+// A part without the file's normals generates them each pose: its targets'
+// normal deltas are not read (glTF: they apply to given normals).
+bool targets(const tinygltf::Model &m, const tinygltf::Primitive &pr, const GltfPlayPart &g,
+	     struct anim_play_part *part, std::string *err)
 {
 	size_t count = (size_t)part->vertex_count * 3;
 	part->target_count = (uint32_t)pr.targets.size();
@@ -139,7 +164,8 @@ bool targets(const tinygltf::Model &m, const tinygltf::Primitive &pr, struct ani
 	for (size_t t = 0; t < pr.targets.size(); t++) {
 		std::vector<double> dp, dn;
 		if (!attribute(m, pr.targets[t], "POSITION", &dp, err) ||
-		    !attribute(m, pr.targets[t], "NORMAL", &dn, err))
+		    (g.has_normals && !attribute(m, pr.targets[t], "NORMAL", &dn, err)) ||
+		    !gather(&dp, 3, g, err))
 			return false;
 		if ((!dp.empty() && dp.size() != count) || (!dn.empty() && dn.size() != count)) {
 			*err = "targets[" + std::to_string(t) + "]: count differs from POSITION";
@@ -169,8 +195,9 @@ bool fill_part(const tinygltf::Model &m, const GltfPlayPart &g,
 	part->first_vertex = g.first_vertex;
 	part->vertex_count = g.vertex_count;
 	part->has_normals = g.has_normals;
+	part->flat = g.flat;
 	if (!attribute(m, pr.attributes, "POSITION", &pos, err) ||
-	    !attribute(m, pr.attributes, "NORMAL", &nrm, err))
+	    !attribute(m, pr.attributes, "NORMAL", &nrm, err) || !gather(&pos, 3, g, err))
 		return false;
 	if (pos.size() != (size_t)g.vertex_count * 3) {
 		*err = "POSITION: count differs from the mesh built";
@@ -188,7 +215,7 @@ bool fill_part(const tinygltf::Model &m, const GltfPlayPart &g,
 	if (skin >= 0 && !part->at_root &&
 	    (!skin_slot(m, skin, p, slots, &part->skin, err) || !skin_attributes(m, pr, g, p, err)))
 		return false;
-	return targets(m, pr, part, err);
+	return targets(m, pr, g, part, err);
 }
 
 } // namespace

@@ -16,6 +16,10 @@ struct GltfPlayPart {
 	int node, mesh, primitive;
 	uint32_t first_vertex, vertex_count, first_index, index_count;
 	bool has_normals;
+	// Split at its faces for flat normals (gltf_flat.h): source[i] is the
+	// primitive's vertex that vertex first_vertex + i copies; NULL: none.
+	bool flat;
+	const uint32_t *source;
 };
 
 // m: the file as parsed (no pose baked in; its accessors are decoded and

@@ -60,6 +60,9 @@ struct gltf_options {
 	const char *animation, *animation_setting;
 	double time, speed;
 	int loop;
+	/* [scene] normals: enum mesh_normals (scene/mesh.h); 0: the file's,
+	 * flat where it gives none. */
+	int normals;
 };
 
 #endif

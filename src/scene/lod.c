@@ -382,11 +382,28 @@ static int simplify_ranges(struct mesh *m, double wanted, double target, unsigne
 	return ret;
 }
 
+/* The flat tag in the order of remap (weld_duplicates). */
+static int remap_flat(struct mesh *m, const unsigned *remap, uint32_t unique)
+{
+	uint8_t *fresh;
+
+	if (!m->flat)
+		return 0;
+	fresh = malloc((size_t)unique + 1);
+	if (!fresh)
+		return -ENOMEM;
+	meshopt_remapVertexBuffer(fresh, m->flat, m->vertex_count, 1, remap);
+	free(m->flat);
+	m->flat = fresh;
+	m->flat_count = unique;
+	return 0;
+}
+
 /* Vertices equal in every attribute (a glTF exporter's duplicates) are
  * one: lossless, and gives the simplifier fewer false seams. */
 static int weld_duplicates(struct mesh *m)
 {
-	struct meshopt_Stream streams[5] = {{m->positions, 12, 12}, {m->normals, 12, 12}};
+	struct meshopt_Stream streams[6] = {{m->positions, 12, 12}, {m->normals, 12, 12}};
 	unsigned *remap = malloc((size_t)m->vertex_count * sizeof(unsigned) + 1);
 	size_t count = 2, unique;
 	int ret = -ENOMEM;
@@ -399,16 +416,116 @@ static int weld_duplicates(struct mesh *m)
 		streams[count++] = (struct meshopt_Stream){m->tangents, 16, 16};
 	if (m->colors)
 		streams[count++] = (struct meshopt_Stream){m->colors, 16, 16};
+	/* A split (flat) corner stays apart from a smooth one. */
+	if (m->flat)
+		streams[count++] = (struct meshopt_Stream){m->flat, 1, 1};
 	unique = meshopt_generateVertexRemapMulti(remap, m->indices, m->index_count,
 						  m->vertex_count, streams, count);
 	ret = 0;
 	if (unique < m->vertex_count) {
-		ret = remap_streams(m, remap, (uint32_t)unique);
+		ret = remap_flat(m, remap, (uint32_t)unique);
+		if (!ret)
+			ret = remap_streams(m, remap, (uint32_t)unique);
 		if (!ret)
 			meshopt_remapIndexBuffer(m->indices, m->indices, m->index_count, remap);
 	}
 	free(remap);
 	return ret;
+}
+
+/* m->flat over every vertex: those a step after the loader appended
+ * (tangent.c's twins of a mirrored UV) are not flat; a tag that no longer
+ * fits the vertices is dropped. */
+static int flat_cover(struct mesh *m)
+{
+	uint8_t *f;
+
+	if (m->flat && m->flat_count > m->vertex_count) {
+		free(m->flat);
+		m->flat = NULL;
+	}
+	if (!m->flat || m->flat_count == m->vertex_count)
+		return 0;
+	f = realloc(m->flat, (size_t)m->vertex_count + 1);
+	if (!f)
+		return -ENOMEM;
+	memset(f + m->flat_count, 0, m->vertex_count - m->flat_count);
+	m->flat = f;
+	m->flat_count = m->vertex_count;
+	return 0;
+}
+
+/* The flat tag after the level of detail: nothing reads it further (the
+ * cache keeps the mesh as simplified). */
+static void flat_drop(struct mesh *m)
+{
+	free(m->flat);
+	m->flat = NULL;
+	m->flat_count = 0;
+}
+
+/* Room for `extra` more vertices in every attribute array. */
+static int grow_streams(struct mesh *m, uint32_t extra)
+{
+	float **streams[5] = {&m->positions, &m->normals, &m->uvs, &m->tangents, &m->colors};
+	const size_t width[5] = {3, 3, 2, 4, 4};
+
+	for (int s = 0; s < 5; s++) {
+		float *p = *streams[s] ? realloc(*streams[s], ((size_t)m->vertex_count + extra) *
+								  width[s] * sizeof(float))
+				       : NULL;
+
+		if (*streams[s] && !p)
+			return -ENOMEM;
+		if (p)
+			*streams[s] = p;
+	}
+	return 0;
+}
+
+/* A simplified triangle of flat corners spans faces that were many: its
+ * corners took their normals from one of those (unweld_triangle), so it
+ * would shade as a blend. Each corner off its new face's normal becomes a
+ * vertex of its own with that normal: flat stays flat after simplifying.
+ * remap grows with the vertices. */
+static int keep_flat(struct mesh *m, unsigned *idx, size_t n, unsigned **remap)
+{
+	unsigned *more = realloc(*remap, ((size_t)m->vertex_count + n) * sizeof(unsigned) + 1);
+	uint32_t added = 0;
+
+	if (more)
+		*remap = more;
+	if (!more || grow_streams(m, (uint32_t)n))
+		return -ENOMEM;
+	for (size_t t = 0; t + 2 < n; t += 3) {
+		unsigned *c = idx + t;
+		float f[3];
+
+		if (c[0] >= m->flat_count || c[1] >= m->flat_count || c[2] >= m->flat_count ||
+		    !m->flat[c[0]] || !m->flat[c[1]] || !m->flat[c[2]])
+			continue;
+		mesh_face_normal(m->positions + (size_t)c[0] * 3, m->positions + (size_t)c[1] * 3,
+				 m->positions + (size_t)c[2] * 3, f);
+		for (int k = 0; k < 3; k++) {
+			uint32_t v = m->vertex_count + added;
+
+			if (!memcmp(m->normals + (size_t)c[k] * 3, f, sizeof(f)))
+				continue;
+			memcpy(m->positions + (size_t)v * 3, m->positions + (size_t)c[k] * 3, 12);
+			memcpy(m->normals + (size_t)v * 3, f, 12);
+			if (m->uvs)
+				memcpy(m->uvs + (size_t)v * 2, m->uvs + (size_t)c[k] * 2, 8);
+			if (m->tangents)
+				memcpy(m->tangents + (size_t)v * 4, m->tangents + (size_t)c[k] * 4,
+				       16);
+			if (m->colors)
+				memcpy(m->colors + (size_t)v * 4, m->colors + (size_t)c[k] * 4, 16);
+			c[k] = v;
+			added++;
+		}
+	}
+	m->vertex_count += added;
+	return 0;
 }
 
 int lod_prepare_mesh(struct mesh *m, double pixels, int width, int height,
@@ -422,7 +539,7 @@ int lod_prepare_mesh(struct mesh *m, double pixels, int width, int height,
 	float error = 0.0f;
 	int ret = -ENOMEM;
 
-	if (!idx || !remap || weld_duplicates(m))
+	if (!idx || !remap || flat_cover(m) || weld_duplicates(m))
 		goto out;
 	n = m->index_count;
 	r.wanted = lod_triangles_wanted(m, pixels, width, height);
@@ -440,6 +557,10 @@ int lod_prepare_mesh(struct mesh *m, double pixels, int width, int height,
 		memcpy(idx, m->indices, n * sizeof(unsigned));
 	if (m->range_count == 1)
 		m->ranges[0].index_count = (uint32_t)n;
+	if (m->flat && n < m->index_count && keep_flat(m, idx, n, &remap)) {
+		ret = -ENOMEM;
+		goto out;
+	}
 	/* Ordered within each range: the ranges stay where they are. */
 	for (uint32_t g = 0; g < (m->range_count ? m->range_count : 1); g++) {
 		unsigned *part = idx + (m->range_count ? m->ranges[g].first_index : 0);
@@ -453,6 +574,7 @@ int lod_prepare_mesh(struct mesh *m, double pixels, int width, int height,
 	    m, remap, (uint32_t)meshopt_optimizeVertexFetchRemap(remap, idx, n, m->vertex_count));
 	if (ret)
 		goto out;
+	flat_drop(m);
 	/* n never exceeds the old count: the index array is reused. */
 	meshopt_remapIndexBuffer(m->indices, idx, n, remap);
 	m->index_count = (uint32_t)n;
@@ -466,12 +588,13 @@ out:
 		log_err("lod: no memory to simplify %u triangles", r.triangles_before);
 	else if (r.triangles_after < r.triangles_before)
 		log_info(
-		    "lod: %u -> %u triangles for %dx%d (%.0f of %.1f px wanted; error %.2f px)",
+		    "lod: %u -> %u triangles for %dx%d (%.0f of %.1f px wanted; error %.2f px), "
+		    "%u -> %u vertices",
 		    r.triangles_before, r.triangles_after, width, height, r.wanted, pixels,
-		    r.error_pixels);
+		    r.error_pixels, r.vertices_before, r.vertices_after);
 	else
-		log_debug("lod: %u triangles kept for %dx%d (%.0f of %.1f px wanted)",
-			  r.triangles_before, width, height, r.wanted, pixels);
+		log_debug("lod: %u triangles kept for %dx%d (%.0f of %.1f px wanted), %u vertices",
+			  r.triangles_before, width, height, r.wanted, pixels, r.vertices_after);
 	if (result)
 		*result = r;
 	free(idx);

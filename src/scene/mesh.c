@@ -60,6 +60,7 @@ void mesh_release(struct mesh *m)
 	free(m->tangents);
 	free(m->colors);
 	free(m->indices);
+	free(m->flat);
 	mesh_material_release(&m->material);
 	for (uint32_t i = 0; m->materials && i < m->material_count; i++)
 		mesh_material_release(&m->materials[i]);
@@ -282,6 +283,35 @@ out:
 	free(rep);
 	free(acc);
 	return ret;
+}
+
+void mesh_face_normal(const float *a, const float *b, const float *c, float out[3])
+{
+	double e1[3], e2[3], n[3], len;
+
+	for (int k = 0; k < 3; k++) {
+		e1[k] = (double)b[k] - a[k];
+		e2[k] = (double)c[k] - a[k];
+	}
+	n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+	n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+	n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+	len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+	for (int k = 0; k < 3; k++)
+		out[k] = len > 0.0 && isfinite(len) ? (float)(n[k] / len) : (k == 2);
+}
+
+void mesh_flat_normals(const float *positions, const uint32_t *idx, uint32_t index_count,
+		       float *normals)
+{
+	for (uint32_t t = 0; t + 2 < index_count; t += 3) {
+		float n[3];
+
+		mesh_face_normal(positions + (size_t)idx[t] * 3, positions + (size_t)idx[t + 1] * 3,
+				 positions + (size_t)idx[t + 2] * 3, n);
+		for (int j = 0; j < 3; j++)
+			memcpy(normals + (size_t)idx[t + j] * 3, n, sizeof(n));
+	}
 }
 
 /* An image left out of a copy of the factors. */

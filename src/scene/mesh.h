@@ -126,6 +126,13 @@ struct mesh {
 	 * (mesh_material_vertex_color), set per draw: a variant's base colour
 	 * factor changes with the variant, which vertex colours could not. */
 	bool colors_by_material;
+	/* flat[v] 1: the loader split vertex v's primitive at its faces for
+	 * flat normals (no NORMAL, or [scene] normals = flat), so the level of
+	 * detail keeps its simplified triangles flat (lod.c); NULL when no
+	 * primitive was split. flat_count: the vertices it covers (lod.c reads
+	 * vertices appended after it as not flat) */
+	uint8_t *flat;
+	uint32_t flat_count;
 };
 
 int mesh_alloc(struct mesh *m, uint32_t vertex_count, uint32_t index_count, bool with_uvs);
@@ -185,6 +192,21 @@ void mesh_fit_to(const double *world, uint32_t count, const double center[3], do
  * normal, so split UV seams shade smoothly. Degenerate areas get +Z. */
 int mesh_generate_normals(const float *positions, const uint32_t *idx, uint32_t index_count,
 			  uint32_t first, uint32_t count, float *normals);
+
+/* [scene] normals: what a primitive is drawn with. FILE: the file's
+ * normals where it gives them, flat ones where not (glTF requires flat
+ * normals, tangents ignored, for a primitive without NORMAL); FLAT: flat
+ * everywhere (low-poly, CAD); SMOOTH: the file's where given, else
+ * averaged (mesh_generate_normals: a scan without normals). */
+enum mesh_normals { MESH_NORMALS_FILE, MESH_NORMALS_FLAT, MESH_NORMALS_SMOOTH };
+
+/* The unit normal of triangle a b c (counter-clockwise front), computed in
+ * double; +Z for a degenerate one. */
+void mesh_face_normal(const float *a, const float *b, const float *c, float out[3]);
+/* Each triangle's face normal written to its three corners: flat shading
+ * for triangles that share no vertex (the loader splits them so). */
+void mesh_flat_normals(const float *positions, const uint32_t *idx, uint32_t index_count,
+		       float *normals);
 
 /* The built-in models, already in the unit sphere. */
 int mesh_torus_knot(struct mesh *m, int tubular, int radial);

@@ -39,9 +39,10 @@ int mesh_cache_hash_model(const char *path, uint64_t *out);
 /* The key of a scene showing model with these settings, for any display
  * (width, height 0). Returns 0, -ENOENT for a scene the cache does not
  * keep (one its settings reshape beyond the model: src/scene/mesh_cache_key.c),
- * or another negative errno code when the model cannot be read. */
-int mesh_cache_scene_key(const char *model, double lod_pixels, const struct material_config *m,
-			 struct mesh_cache_key *out);
+ * or another negative errno code when the model cannot be read. normals:
+ * [scene] normals (enum mesh_normals). */
+int mesh_cache_scene_key(const char *model, double lod_pixels, int normals,
+			 const struct material_config *m, struct mesh_cache_key *out);
 
 /* $CACHE_DIRECTORY (systemd's CacheDirectory=, the first when it lists
  * several), else $XDG_CACHE_HOME/matcap-kiosk, else ~/.cache/matcap-kiosk.

@@ -12,7 +12,7 @@
 #include <string.h>
 
 #define ANIM_MAGIC   0x4e414b4du /* "MKAN" */
-#define ANIM_VERSION 1u
+#define ANIM_VERSION 2u		 /* 2: a part's flat normals (bit 1 of has_normals) */
 #define NO_NAME	     0xffffffffu
 /* Joints a vertex at most: the loader reads three joint sets (gltf_play.cc). */
 #define INFLUENCES_MAX 12u
@@ -215,7 +215,7 @@ static void put_play(struct put *b, const struct anim_play *p)
 		put_u32(b, part->at_root);
 		put_u32(b, part->first_vertex);
 		put_u32(b, part->vertex_count);
-		put_u32(b, part->has_normals);
+		put_u32(b, (uint32_t)part->has_normals | (uint32_t)part->flat << 1);
 		put_u32(b, part->index_count);
 		put_bytes(b, part->indices, part->index_count * sizeof(uint32_t));
 		put_u32(b, part->target_count);
@@ -378,13 +378,16 @@ static bool get_part(struct get *g, const struct anim_play *p, struct anim_play_
 {
 	size_t deltas;
 	bool has_normals;
+	uint32_t flags;
 
 	part->node = (int)get_u32(g);
 	part->skin = (int)get_u32(g);
 	part->at_root = get_u32(g);
 	part->first_vertex = get_u32(g);
 	part->vertex_count = get_u32(g);
-	part->has_normals = get_u32(g);
+	flags = get_u32(g);
+	part->has_normals = flags & 1;
+	part->flat = (flags >> 1) & 1;
 	part->index_count = get_count(g, 4);
 	if (!g->ok || part->node < 0 || (size_t)part->node >= p->anim->node_count ||
 	    part->skin < -1 || (part->skin >= 0 && (uint32_t)part->skin >= p->skin_count) ||

@@ -291,11 +291,13 @@ static int build_id_note(struct dl_phdr_info *info, size_t size, void *data)
  * is part of the key: a rebuilt kiosk (another loader, another
  * simplifier) prepares again rather than trust what an older one wrote;
  * without a build ID, the program's bytes are. */
-int mesh_cache_scene_key(const char *model, double lod_pixels, const struct material_config *m,
-			 struct mesh_cache_key *out)
+int mesh_cache_scene_key(const char *model, double lod_pixels, int normals,
+			 const struct material_config *m, struct mesh_cache_key *out)
 {
-	const double values[] = {lod_pixels, m->detail, m->iridescence, VERTEX_COMPACT,
-				 m->base_color};
+	/* normals: [scene] normals splits (flat) or averages (smooth) a
+	 * primitive's vertices, another mesh. */
+	const double values[] = {lod_pixels,	 m->detail,	m->iridescence,
+				 VERTEX_COMPACT, m->base_color, normals};
 	uint64_t program = 0;
 	int ret = 0;
 

@@ -18,6 +18,11 @@ if [ -n "${KIOSK:-}" ]; then
 	echo >>"$out/speed-error.md"
 	sh tests/bench/bench_scale.sh 1920x1080 3840x2160 >>"$out/speed-error.md"
 fi
+# [scene] normals: the flat split's vertices and cost (bench_normals.sh).
+if [ -n "${KIOSK:-}" ]; then
+	echo >>"$out/speed-error.md"
+	sh tests/bench/bench_normals.sh >>"$out/speed-error.md"
+fi
 # Live playback's paths (bench_anim_paths.sh).
 echo >>"$out/speed-error.md"
 sh tests/bench/bench_anim_paths.sh >>"$out/speed-error.md"

@@ -23,7 +23,7 @@ scenes="$scenes parts-unlit parts-unlit-shade parts-emissive parts-emissive-sem-
 scenes="$scenes variant-blue"
 scenes="$scenes caption-latin caption-rtl caption-logo"
 scenes="$scenes frame-up frame-start-view frame-own-look"
-scenes="$scenes render-scale-half"
+scenes="$scenes render-scale-half normals-flat normals-smooth"
 scenes="$scenes morph-t1 morph-t3 morph-pingpong skin-t1 nodes-t1.7"
 mkdir -p "$out" "$models"
 "$TOOLS/mkmodels" "$models" >/dev/null
@@ -194,6 +194,12 @@ render() {
 		;;
 	# [display] render_scale 0.5: the knot drawn at 160x120 and scaled
 	# up by the GL pass (render/render_scale.c), filtered linearly.
+	normals-flat) # the default: flat where the file gives no normals
+		$k -c matcaps/pearl.png --model "$m/cube-nonormals.glb" --output "$o"
+		;;
+	normals-smooth)
+		$k -c matcaps/pearl.png --model "$m/cube-nonormals.glb" --normals smooth --output "$o"
+		;;
 	render-scale-half)
 		$k -c matcaps/gold.png --render-scale 0.5 --output "$o"
 		;;

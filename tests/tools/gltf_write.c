@@ -417,3 +417,21 @@ int gltf_write(const char *path, const struct mesh *m, const struct gltf_write_o
 	free(bin);
 	return 0;
 }
+
+int gltf_test_cube(struct mesh *m)
+{
+	/* Corner i at x = bit 0, y = bit 1, z = bit 2 (-0.5 or 0.5); each
+	 * side two triangles, counter-clockwise seen from outside. */
+	static const uint32_t sides[36] = {0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4,
+					   2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5};
+
+	if (mesh_alloc(m, 8, 36, false))
+		return -1;
+	for (uint32_t v = 0; v < 8; v++)
+		for (int k = 0; k < 3; k++) {
+			m->positions[v * 3 + k] = (v >> k) & 1 ? 0.5f : -0.5f;
+			m->normals[v * 3 + k] = 0.0f;
+		}
+	memcpy(m->indices, sides, sizeof(sides));
+	return 0;
+}

@@ -57,4 +57,9 @@ struct gltf_write_opts {
  * Returns 0 or -1. */
 int gltf_write(const char *path, const struct mesh *m, const struct gltf_write_opts *o);
 
+/* A cube of side 1 about the origin as an STL conversion has it: its 8
+ * corners shared by its 12 triangles, no normals (zeros), no UVs. Returns
+ * 0 or -1. */
+int gltf_test_cube(struct mesh *m);
+
 #endif

@@ -4,7 +4,7 @@
  *                         and models
  *   mkmodels DIR --bench  also torus knots of about 10k, 100k and 1M triangles,
  *                         and the 100k one textured, skinned (still and turning), morphing
- *                         and flat-shaded
+ *                         and flat-shaded, and the 10k and 100k ones without normals
  *   mkmodels DIR --bomb SIDE  only bomb.gltf: four SIDE x SIDE PNGs of one
  *                         colour as its base colour, normal, occlusion and
  *                         film thickness textures (tests/suite.sh) */
@@ -289,6 +289,11 @@ static int write_bench(const char *dir)
 	bad |= put(dir, "knot-100k.glb", &k100, o);
 	bad |= put(dir, "knot-1m.glb", &k1m, o);
 	bad |= write_bench_forms(dir, &k100);
+	/* Without normals, as a CAD or STL conversion: [scene] normals'
+	 * figures, flat against smooth (tests/bench/bench_normals.sh). */
+	o.with_normals = 0;
+	bad |= put(dir, "knot-10k-nonormals.glb", &k10, o);
+	bad |= put(dir, "knot-100k-nonormals.glb", &k100, o);
 	printf("knot-100k.glb %u triangles, knot-1m.glb %u triangles\n", k100.index_count / 3,
 	       k1m.index_count / 3);
 	mesh_release(&k10);
@@ -390,6 +395,21 @@ static int write_variants(const char *dir)
 	return gltf_write_variants(path, VARIANTS_OK) ? 1 : 0;
 }
 
+/* A cube without normals, its corners shared: flat sides by default,
+ * a pillow with --normals smooth (golden normals-flat, normals-smooth). */
+static int write_cube(const char *dir)
+{
+	struct gltf_write_opts o = {.index_bytes = 2, .bad_index = -1};
+	struct mesh c;
+	int bad;
+
+	if (gltf_test_cube(&c))
+		return 1;
+	bad = put(dir, "cube-nonormals.glb", &c, o);
+	mesh_release(&c);
+	return bad;
+}
+
 int main(int argc, char **argv)
 {
 	struct mesh s;
@@ -410,6 +430,7 @@ int main(int argc, char **argv)
 	o.container = GLTF_EXTERNAL_BIN;
 	o.with_normals = 0;
 	bad |= put(argv[1], "sphere-nonormals.gltf", &s, o);
+	bad |= write_cube(argv[1]);
 	o = ok;
 	o.container = GLTF_DATA_URI;
 	bad |= put(argv[1], "sphere-datauri.gltf", &s, o);
