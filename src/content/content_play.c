@@ -94,6 +94,9 @@ static int upload_split(struct content *s, struct renderer *r, struct anim_play_
 	m.indices = sp->indices;
 	m.range_count = sp->range_count;
 	m.ranges = sp->ranges;
+	/* The variants' table over the draws (their names are the mesh's). */
+	m.variant_materials = sp->variant_materials;
+	m.variant_ranges = sp->variant_materials ? sp->range_count : 0;
 	if (!ret)
 		ret = renderer_set_mesh_skinned(r, &m, sp->joints, sp->weights, sp->palette_max,
 						&pal, morphs);

@@ -180,7 +180,10 @@ int renderer_set_mesh_skinned(struct renderer *r, const struct mesh *m, const fl
 	r->bones_next = bones;
 	r->morph_next = morphs ? morphs->targets : 0;
 	r->morph_normals_next = morphs && morphs->targets && morphs->normals;
-	ret = renderer_set_packed(r, &packed);
+	/* Its variants' table, as a still's (a split's is over its draws). */
+	ret = render_variants_take(r, m);
+	if (!ret)
+		ret = renderer_set_packed(r, &packed);
 	mesh_packed_release(&packed);
 	if (!ret)
 		ret = upload_vec4(r, r->skin_vbo[0], joints, m->vertex_count);

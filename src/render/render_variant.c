@@ -52,7 +52,7 @@ int render_variants_take(struct renderer *r, const struct mesh *m)
 
 	table_free(&r->looks_next);
 	/* Only for the ranges the table was made for (a split palette's
-	 * are others: it shows the default). */
+	 * draws have a table of their own: anim_play_split). */
 	if (m->variant_count && m->variant_materials && m->variant_ranges == m->range_count)
 		ret = copy_table(&r->looks_next, m);
 	if (ret)

@@ -142,7 +142,12 @@ struct anim_play_split {
 	uint32_t *source;
 	uint32_t *indices;
 	struct mesh_range *ranges; /* one a draw, its range's material */
-	uint32_t *palette_first;   /* per range, into bones */
+	/* KHR_materials_variants: variant v draws range r with
+	 * variant_materials[v * range_count + r], the material of the mesh
+	 * range it was cut from in v (NULL: the mesh has no variants). */
+	uint32_t *variant_materials;
+	uint32_t *origin;	 /* per range: the mesh's range it was cut from */
+	uint32_t *palette_first; /* per range, into bones */
 	uint32_t *palette_count;
 	uint16_t *bones;	    /* the draws' palettes, one after another */
 	uint32_t palette_max;	    /* the largest draw's */

@@ -14,6 +14,8 @@ void anim_play_split_release(struct anim_play_split *s)
 	free(s->source);
 	free(s->indices);
 	free(s->ranges);
+	free(s->variant_materials);
+	free(s->origin);
 	free(s->palette_first);
 	free(s->palette_count);
 	free(s->bones);
@@ -54,6 +56,10 @@ static int grow(struct anim_play_split *o, const struct anim_palette *sp, uint32
 	o->palette_first = b ? b : o->palette_first;
 	if (!a || !b)
 		return -ENOMEM;
+	a = realloc(o->origin, r * 4 + 4);
+	o->origin = a ? a : o->origin;
+	if (!a)
+		return -ENOMEM;
 	a = realloc(o->palette_count, r * 4 + 4);
 	o->palette_count = a ? a : o->palette_count;
 	b = realloc(o->bones, (bones + (size_t)sp->draws[sp->draw_count - 1].joint_first +
@@ -66,7 +72,8 @@ static int grow(struct anim_play_split *o, const struct anim_palette *sp, uint32
 
 /* One range's split appended to out; bones: how many out holds so far. */
 static int append(struct anim_play_split *o, const struct anim_play *p,
-		  const struct mesh_range *range, const struct anim_palette *sp, uint32_t *bones)
+		  const struct mesh_range *range, uint32_t from, const struct anim_palette *sp,
+		  uint32_t *bones)
 {
 	uint32_t v0 = o->vertex_count, i0 = o->index_count;
 	int ret = sp->draw_count ? grow(o, sp, *bones) : 0;
@@ -88,6 +95,7 @@ static int append(struct anim_play_split *o, const struct anim_play *p,
 		uint32_t r = o->range_count++;
 
 		o->ranges[r] = *range;
+		o->origin[r] = from;
 		o->ranges[r].first_index = i0 + w->first_index;
 		o->ranges[r].index_count = w->index_count;
 		o->palette_first[r] = *bones + w->joint_first;
@@ -103,6 +111,25 @@ static int append(struct anim_play_split *o, const struct anim_play *p,
 	    sp->draws[sp->draw_count - 1].joint_first + sp->draws[sp->draw_count - 1].joint_count;
 	o->vertex_count += sp->vertex_count;
 	o->index_count += sp->index_count;
+	return 0;
+}
+
+/* Each variant's table over the split's draws: a draw shows, in every
+ * variant, what the range it was cut from shows, so that a switch stays a
+ * change of materials (render_variant.c) on these draws too. */
+static int split_variants(struct anim_play_split *o, const struct mesh *m)
+{
+	size_t n = (size_t)m->variant_count * o->range_count;
+
+	if (!m->variant_count || !m->variant_materials || m->variant_ranges != m->range_count)
+		return 0;
+	o->variant_materials = malloc(n * sizeof(uint32_t) + 1);
+	if (!o->variant_materials)
+		return -ENOMEM;
+	for (uint32_t v = 0; v < m->variant_count; v++)
+		for (uint32_t r = 0; r < o->range_count; r++)
+			o->variant_materials[(size_t)v * o->range_count + r] =
+			    m->variant_materials[(size_t)v * m->range_count + o->origin[r]];
 	return 0;
 }
 
@@ -125,10 +152,12 @@ int anim_play_split(const struct anim_play *p, const struct mesh *m, uint32_t pa
 					 joints, p->gpu_weights, m->vertex_count, p->bones, palette,
 					 &sp);
 		if (!ret)
-			ret = append(out, p, &ranges[r], &sp, &bones);
+			ret = append(out, p, &ranges[r], r, &sp, &bones);
 		anim_palette_release(&sp); /* a failed split left it empty */
 	}
 	free(joints);
+	if (!ret)
+		ret = split_variants(out, m);
 	if (!ret) {
 		out->positions = malloc((size_t)out->vertex_count * 12 + 4);
 		out->normals = malloc((size_t)out->vertex_count * 12 + 4);

@@ -15,5 +15,10 @@ enum gltf_variants_fault {
 
 /* A .gltf with its buffer in a data: URI. Returns 0 or -1. */
 int gltf_write_variants(const char *path, enum gltf_variants_fault fault);
+/* The same cube skinned: its first three faces on joint 0, the others on
+ * joint 1 (JOINTS_0/WEIGHTS_0), a clip of 1 s holding both still, so that
+ * live playback skins it on the GPU (split into a draw a joint where the
+ * palette holds one bone). */
+int gltf_write_variants_skinned(const char *path, enum gltf_variants_fault fault);
 
 #endif

@@ -5,10 +5,12 @@
  * screen: tests/suite.sh's variants check (--variant blue). */
 #include "gltf_variants.h"
 #include "offscreen.h"
+#include "app/kiosk_anim.h"
 #include "config/settings.h"
 #include "content/content.h"
 #include "render/draw_list.h"
 #include "render/render.h"
+#include "scene/anim_play.h"
 #include "scene/gltf.h"
 #include "scene/material.h"
 #include "scene/mesh.h"
@@ -230,6 +232,151 @@ static void test_switch_draws_the_variant(void **state)
 	assert_int_equal(system(cmd), 0);
 }
 
+/* A white matcap (the base colour as it is) and a model written by
+ * `write` in a folder of their own, which is the cache too. */
+struct scene_dir {
+	char dir[40], model[96], white[96];
+};
+
+static void scene_dir_make(struct scene_dir *t,
+			   int (*write)(const char *, enum gltf_variants_fault),
+			   enum gltf_variants_fault fault)
+{
+	struct image img;
+
+	snprintf(t->dir, sizeof(t->dir), "/tmp/mk-variants-skin-XXXXXX");
+	assert_non_null(mkdtemp(t->dir));
+	snprintf(t->model, sizeof(t->model), "%s/variants.gltf", t->dir);
+	snprintf(t->white, sizeof(t->white), "%s/white.png", t->dir);
+	assert_int_equal(write(t->model, fault), 0);
+	assert_int_equal(image_alloc(&img, 8, 8), 0);
+	memset(img.rgba, 255, 8 * 8 * 4);
+	assert_int_equal(image_write_png(t->white, &img), 0);
+	image_release(&img);
+	setenv("XDG_CACHE_HOME", t->dir, 1);
+}
+
+static void scene_dir_remove(struct scene_dir *t)
+{
+	char cmd[64];
+
+	unsetenv("XDG_CACHE_HOME");
+	snprintf(cmd, sizeof(cmd), "rm -rf %s", t->dir);
+	assert_int_equal(system(cmd), 0);
+}
+
+/* The live kiosk's GPU skinning (bones: the palette at most; 1 splits the
+ * draws, a joint each): posed once by the player, drawn red, "blue" drawn
+ * blue with nothing uploaded again, the default back. */
+static void skinned_switch(uint32_t bones, bool split)
+{
+	struct display *d = offscreen_open(W, W);
+	struct renderer *r = d ? renderer_new(&d->gl, NULL) : NULL;
+	struct kiosk_anim *a = kiosk_anim_new();
+	struct renderer_stats before, after;
+	struct scene_dir t;
+	struct content s;
+	struct options o;
+	struct view v;
+	uint64_t next;
+	uint8_t px[3];
+
+	assert_non_null(r);
+	scene_dir_make(&t, gltf_write_variants_skinned, VARIANTS_OK);
+	option_defaults(&o);
+	o.content.model = t.model;
+	o.content.matcap = t.white;
+	o.content.anim_live = true;
+	o.content.anim_time = -1;
+	o.content.lod_pixels = 0;
+	renderer_set_bone_limit(r, bones);
+	assert_int_equal(content_load(&s, &o.content, true), 0);
+	assert_int_equal(content_prepare(&s, &o.content, W, W), 0);
+	assert_int_equal(content_upload(&s, r), 0);
+	assert_non_null(s.play);
+	assert_true(s.play_gpu);
+	assert_true(split ? s.play_split && s.play_split->range_count == 2 : !s.play_split);
+	assert_int_equal(renderer_set_mode(r, o.content.mode, false), 0);
+	struct kiosk_anim_input in = {.running = true, .config = &o.content};
+	assert_true(kiosk_anim_step(a, &s, r, &in, 1000000000ull, &next));
+	assert_int_equal(renderer_variant_count(r), 2);
+	v = content_view(&o.content);
+	centre(d, r, &v, px);
+	assert_true(px[0] > 200 && px[1] < 40 && px[2] < 40);
+	renderer_get_stats(r, &before);
+	assert_true(renderer_show_variant(r, content_variant_find(&s, "blue")));
+	centre(d, r, &v, px);
+	assert_true(px[2] > 200 && px[0] < 40 && px[1] < 40);
+	renderer_get_stats(r, &after);
+	assert_int_equal(after.vertex_bytes, before.vertex_bytes);
+	assert_true(renderer_show_variant(r, -1));
+	centre(d, r, &v, px);
+	assert_true(px[0] > 200 && px[2] < 40);
+	kiosk_anim_free(a);
+	content_release(&s);
+	renderer_free(r);
+	scene_dir_remove(&t);
+}
+
+static void test_skinned_switch(void **state)
+{
+	(void)state;
+	skinned_switch(UINT32_MAX, false);
+}
+
+static void test_split_skinned_switch(void **state)
+{
+	(void)state;
+	skinned_switch(1, true);
+}
+
+/* A split's draws each carry, per variant, the material of the range
+ * they were cut from: "blue" maps the second primitive alone, so only
+ * the draws cut from it change. */
+static void test_split_draws_keep_their_range(void **state)
+{
+	struct mesh m;
+	struct anim_play_split *sp;
+	struct scene_dir t;
+	struct content s;
+	struct options o;
+	struct renderer *r;
+	struct display *d = offscreen_open(W, W);
+
+	(void)state;
+	r = d ? renderer_new(&d->gl, NULL) : NULL;
+	assert_non_null(r);
+	scene_dir_make(&t, gltf_write_variants_skinned, VARIANTS_SPLIT);
+	option_defaults(&o);
+	o.content.model = t.model;
+	o.content.anim_live = true;
+	o.content.anim_time = -1;
+	o.content.lod_pixels = 0;
+	renderer_set_bone_limit(r, 1);
+	assert_int_equal(content_load(&s, &o.content, true), 0);
+	assert_int_equal(content_prepare(&s, &o.content, W, W), 0);
+	assert_int_equal(content_upload(&s, r), 0);
+	sp = s.play_split;
+	assert_non_null(sp);
+	assert_non_null(sp->variant_materials);
+	m = s.mesh;
+	assert_int_equal(m.range_count, 2);
+	for (uint32_t k = 0; k < sp->range_count; k++) {
+		uint32_t from = sp->origin[k];
+
+		assert_true(from < m.range_count);
+		assert_int_equal(sp->ranges[k].material, m.ranges[from].material);
+		for (int var = 0; var < 2; var++)
+			assert_int_equal(sp->variant_materials[(size_t)var * sp->range_count + k],
+					 mesh_range_material(&m, var, from));
+	}
+	assert_int_not_equal(mesh_range_material(&m, 1, 1), m.ranges[1].material);
+	assert_int_equal(renderer_variant_count(r), 2);
+	content_release(&s);
+	renderer_free(r);
+	scene_dir_remove(&t);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -240,6 +387,9 @@ int main(void)
 	    cmocka_unit_test(test_too_many_refused),
 	    cmocka_unit_test(test_draw_list_switch),
 	    cmocka_unit_test(test_switch_draws_the_variant),
+	    cmocka_unit_test(test_skinned_switch),
+	    cmocka_unit_test(test_split_skinned_switch),
+	    cmocka_unit_test(test_split_draws_keep_their_range),
 	};
 
 	log_set_level(LOG_ERR);
