@@ -53,6 +53,11 @@ step "... naming the setting and the sizes" grep -q \
 #    (the kiosk died of SIGBUS in Mesa's mapped index).
 if [ "$(id -u)" != 0 ] || ! command -v unshare >/dev/null; then
 	echo "note not root, or no unshare: the full cache file system is not tried"
+elif ! unshare -m true 2>/dev/null; then
+	# In a chroot (test-trixie's) / is no mount point, and unshare -m
+	# cannot make it private ("cannot change root filesystem
+	# propagation"): the host's run of this group tries it.
+	echo "note no private mount namespace here (a chroot?): the full cache file system is not tried"
 else
 	mkdir -p "$dir/full"
 	CACHE=$dir/full KIOSK=$kiosk BACKEND=$backend MODEL=$dir/bomb/bomb.gltf OUT=$dir \
