@@ -86,18 +86,33 @@ for suite in $suites; do
 		echo "$deb: $(stat -c %s "$deb") bytes"
 		echo "  Depends: $(dpkg-deb -f "$deb" Depends)"
 	done
+	# This machine's install first: its render is the others' reference.
+	deb=$out/matcap-kiosk_${version}_$native.deb
+	[ -e "$deb" ] && part "install $suite $native" sh "$dir/deb-install.sh" "$deb" \
+		"build/deb-root-$suite-$native" "$suite"
+	ref=build/deb-root-$suite-$native.png
+	[ -e "$ref" ] || ref=
+	# The other architectures' installs run side by side: each is dpkg and
+	# the program under qemu-user, one emulated thread, minutes long. Each
+	# keeps its output and time, shown and counted afterwards in order.
+	foreign=
 	for arch in $order; do
 		deb=$out/matcap-kiosk_${version}_$arch.deb
-		[ -e "$deb" ] || continue
-		ref=
-		if [ "$arch" != "$native" ]; then
-			wanted "$suite" "$arch" || continue
-			part "binfmt $arch" sh "$dir/binfmt.sh" "$arch" || continue
-			ref=build/deb-root-$suite-$native.png
-			[ -e "$ref" ] || ref=
-		fi
-		part "install $suite $arch" sh "$dir/deb-install.sh" "$deb" \
-			"build/deb-root-$suite-$arch" "$suite" $ref ${ref:+"$imgdiff"}
+		[ "$arch" != "$native" ] && [ -e "$deb" ] && wanted "$suite" "$arch" || continue
+		part "binfmt $arch" sh "$dir/binfmt.sh" "$arch" || continue
+		foreign="$foreign $arch"
+		(
+			t1=$(date +%s)
+			sh "$dir/deb-install.sh" "$deb" "build/deb-root-$suite-$arch" "$suite" $ref \
+				${ref:+"$imgdiff"} >"$tmp/install-$arch.log" 2>&1
+			echo $? >"$tmp/install-$arch.rc"
+			echo $(($(date +%s) - t1)) >"$tmp/install-$arch.s"
+		) &
+	done
+	wait
+	for arch in $foreign; do
+		part "install $suite $arch (beside the others: $(cat "$tmp/install-$arch.s") s)" \
+			sh -c 'cat "$1.log"; exit "$(cat "$1.rc")"' sh "$tmp/install-$arch"
 	done
 done
 

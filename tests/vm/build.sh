@@ -114,11 +114,24 @@ KSRC=$KDIR/src
 if [ ! -e "$KDIR/.extracted" ]; then
 	say "downloading $KPKG $KDEB, its headers and linux-source-6.1"
 	rm -rf "$KDIR"; mkdir -p "$KDIR/debs" "$KROOT" "$KSRC"
+	# The build tools and the source are separate source packages: a
+	# security update can publish them under another Debian revision of the
+	# same upstream release (6.1.192-3 beside the image's 6.1.192-2, the
+	# -2 gone). Same version where the mirror has it, else the newest of
+	# the same upstream release.
+	same_upstream() { # PACKAGE
+		apt-cache madison "$1" 2>/dev/null | awk -v want="$KDEB" -v up="${KDEB%-*}-" '
+			{ v = $3 } v == want { print v; found = 1; exit }
+			index(v, up) == 1 && !best { best = v }
+			END { if (!found && best) print best }'
+	}
 	kdownload() {
+		kbuild=$(same_upstream linux-kbuild-6.1)
+		ksource=$(same_upstream linux-source-6.1)
 		(cd "$KDIR/debs" && apt-get download -o APT::Sandbox::User=root \
 			"$KPKG=$KDEB" "linux-headers-$KVER=$KDEB" \
-			"linux-headers-${KVER%-*}-common=$KDEB" "linux-kbuild-6.1=$KDEB" \
-			"linux-source-6.1=$KDEB" >"$KDIR/download.log" 2>&1)
+			"linux-headers-${KVER%-*}-common=$KDEB" "linux-kbuild-6.1=${kbuild:-$KDEB}" \
+			"linux-source-6.1=${ksource:-$KDEB}" >"$KDIR/download.log" 2>&1)
 	}
 	# Stale package lists name files the mirror no longer has: update once.
 	kdownload || { apt_update && kdownload; } ||
