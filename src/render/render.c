@@ -178,7 +178,7 @@ int renderer_set_packed(struct renderer *r, const struct mesh_packed *m)
 	bool uvs = material_needs_uvs(f);
 	bool tangents = material_needs_tangents(f);
 	bool colors = material_needs_colors(f);
-	bool used[SHADER_ATTR_COUNT] = {true, true, uvs, tangents, colors};
+	bool used[SHADER_ATTR_COUNT] = {true, true, uvs, tangents, colors, material_needs_uv1(f)};
 	bool live = r->live_next;
 	int ret = upload_indices(r, m);
 

@@ -56,6 +56,12 @@ void gltf_keep_colors(struct mesh *out, const float uniform[4]);
 // is asked for and no other texture asked for needs TEXCOORD_0; else 0.
 int gltf_uv_set(const tinygltf::Model &m, int material, unsigned textures);
 
+// Which TEXCOORD_n a primitive of this material loads as the mesh's uv1:
+// its emissive map's, when the map is drawn (a factor not black) and reads
+// another set than gltf_uv_set's; else -1 (no second set: the common case,
+// which costs nothing).
+int gltf_emissive_uv_set(const tinygltf::Model &m, int material, unsigned textures);
+
 // A primitive's triangles in the builder's index array, and its material
 // (-1: none).
 struct GltfPart {

@@ -40,6 +40,9 @@ struct Builder {
 	std::vector<double> positions; // world space, before fitting
 	std::vector<float> normals;
 	std::vector<float> uvs;
+	// A second set (struct mesh uv1): empty until a primitive's emissive
+	// map reads another set than its base map (gltf_emissive_uv_set).
+	std::vector<float> uv1;
 	std::vector<float> tangents; // xyzw, kept only when every primitive has them
 	std::vector<float> colors;   // rgba, linear (struct mesh colors), when they differ
 	std::vector<uint32_t> indices;
@@ -281,7 +284,7 @@ bool check_color(Builder &b, const tinygltf::Model &m, int index, const std::str
 
 // A primitive's vertex attributes, checked: an absent one has count 0.
 struct Attributes {
-	View pos, nrm, uv, tan, col;
+	View pos, nrm, uv, tan, col, uv1;
 };
 
 int find_attribute(const tinygltf::Primitive &p, const char *key)
@@ -320,11 +323,16 @@ bool check_attributes(Builder &b, const tinygltf::Model &m, const tinygltf::Prim
 			    &a->tan))
 		return false;
 	size_t n = a->pos.count;
+	int set1 = gltf_emissive_uv_set(m, p.material, b.textures);
+	std::string uv1 = "TEXCOORD_" + std::to_string(set1);
+	if (set1 >= 0 && !check_optional(b, m, find_attribute(p, uv1.c_str()), TINYGLTF_TYPE_VEC2,
+					 position_types, at + uv1, &a->uv1))
+		return false;
 	int icol = b.want_colors ? find_attribute(p, "COLOR_0") : -1;
 	if (icol >= 0 && !check_color(b, m, icol, at + "COLOR_0", &a->col))
 		return false;
 	if (!same_count(a->nrm, n) || !same_count(a->uv, n) || !same_count(a->tan, n) ||
-	    !same_count(a->col, n))
+	    !same_count(a->col, n) || !same_count(a->uv1, n))
 		return fail(b, what, "attributes differ in count from POSITION");
 	if (b.positions.size() / 3 + n > 0x7fffffff)
 		return fail(b, what, "too many vertices in the model");
@@ -396,6 +404,18 @@ void make_room(Builder &b, size_t n, bool tangents, bool colors)
 		grow(b.colors, 4 * n);
 }
 
+// The primitive's second UVs: once one primitive has them, every vertex
+// has a pair (0, 0 where its primitive has none), those before it too.
+void read_uv1(Builder &b, const View &uv1, size_t before, size_t n)
+{
+	if (!uv1.count && b.uv1.empty())
+		return;
+	b.uv1.resize(before * 2, 0.0f);
+	for (size_t i = 0; i < n; i++)
+		for (int k = 0; k < 2; k++)
+			b.uv1.push_back(uv1.count ? (float)read_component(uv1, i, k) : 0.0f);
+}
+
 bool read_vertices(Builder &b, const tinygltf::Model &m, const tinygltf::Primitive &p,
 		   const Mat4 world, const std::string &what, Range *r)
 {
@@ -423,6 +443,7 @@ bool read_vertices(Builder &b, const tinygltf::Model &m, const tinygltf::Primiti
 			b.colors.push_back(base[k] * (float)(c >= 0.0 ? std::fmin(c, 1.0) : 0.0));
 		}
 	}
+	read_uv1(b, a.uv1, b.positions.size() / 3 - a.pos.count, a.pos.count);
 	b.any_uvs |= a.uv.count > 0;
 	b.any_colors |= a.col.count > 0 || coloured;
 	r->vertex_count = (uint32_t)a.pos.count;
@@ -563,6 +584,13 @@ int finish_mesh(Builder &b, const tinygltf::Model &m, struct mesh *out, GltfFit 
 	}
 	if (b.any_uvs)
 		std::memcpy(out->uvs, b.uvs.data(), b.uvs.size() * sizeof(float));
+	if (b.any_uvs && b.uv1.size() == (size_t)nv * 2) {
+		if (mesh_alloc_uv1(out)) {
+			mesh_release(out);
+			return -ENOMEM;
+		}
+		std::memcpy(out->uv1, b.uv1.data(), b.uv1.size() * sizeof(float));
+	}
 	if (b.any_colors && b.colors.size() == (size_t)nv * 4) {
 		if (mesh_alloc_colors(out)) {
 			mesh_release(out);

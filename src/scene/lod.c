@@ -49,11 +49,12 @@ double lod_triangles_wanted(const struct mesh *m, double pixels, int width, int 
  * vertices no triangle uses any more; all or nothing. */
 static int remap_streams(struct mesh *m, const unsigned *remap, uint32_t unique)
 {
-	float **streams[5] = {&m->positions, &m->normals, &m->uvs, &m->tangents, &m->colors};
-	const size_t width[5] = {3, 3, 2, 4, 4};
-	float *fresh[5] = {NULL, NULL, NULL, NULL, NULL};
+	float **streams[6] = {&m->positions, &m->normals, &m->uvs,
+			      &m->tangents,  &m->colors,  &m->uv1};
+	const size_t width[6] = {3, 3, 2, 4, 4, 2};
+	float *fresh[6] = {NULL, NULL, NULL, NULL, NULL, NULL};
 
-	for (int s = 0; s < 5; s++) {
+	for (int s = 0; s < 6; s++) {
 		if (!*streams[s])
 			continue;
 		fresh[s] = malloc(unique * width[s] * sizeof(float) + 1);
@@ -63,7 +64,7 @@ static int remap_streams(struct mesh *m, const unsigned *remap, uint32_t unique)
 			return -ENOMEM;
 		}
 	}
-	for (int s = 0; s < 5; s++) {
+	for (int s = 0; s < 6; s++) {
 		if (!fresh[s])
 			continue;
 		meshopt_remapVertexBuffer(fresh[s], *streams[s], m->vertex_count,
@@ -386,7 +387,7 @@ static int simplify_ranges(struct mesh *m, double wanted, double target, unsigne
  * one: lossless, and gives the simplifier fewer false seams. */
 static int weld_duplicates(struct mesh *m)
 {
-	struct meshopt_Stream streams[5] = {{m->positions, 12, 12}, {m->normals, 12, 12}};
+	struct meshopt_Stream streams[6] = {{m->positions, 12, 12}, {m->normals, 12, 12}};
 	unsigned *remap = malloc((size_t)m->vertex_count * sizeof(unsigned) + 1);
 	size_t count = 2, unique;
 	int ret = -ENOMEM;
@@ -399,6 +400,8 @@ static int weld_duplicates(struct mesh *m)
 		streams[count++] = (struct meshopt_Stream){m->tangents, 16, 16};
 	if (m->colors)
 		streams[count++] = (struct meshopt_Stream){m->colors, 16, 16};
+	if (m->uv1)
+		streams[count++] = (struct meshopt_Stream){m->uv1, 8, 8};
 	unique = meshopt_generateVertexRemapMulti(remap, m->indices, m->index_count,
 						  m->vertex_count, streams, count);
 	ret = 0;
