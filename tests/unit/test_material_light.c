@@ -189,6 +189,16 @@ static void emission_on_its_own_uv_set(void **state)
 	assert_true(mat.features & MATERIAL_BASE_MAP);
 	assert_false(mat.surfaces[1].features & MATERIAL_EMISSIVE_UV1);
 	assert_true(material_needs_uv1(mat.features) && material_needs_uvs(mat.features));
+	/* The part's program variant reads the second set; the other's none. */
+	struct draw_list l;
+	assert_int_equal(draw_list_build(&l, m.ranges, m.range_count, m.indices, m.index_count,
+					 m.vertex_count, mat.surfaces, mat.surface_count, true),
+			 0);
+	for (uint32_t i = 0; i < l.count; i++)
+		assert_int_equal(draw_variant_adds(draw_item_variant(&l.items[i])) &
+				     MATERIAL_EMISSIVE_UV1,
+				 l.items[i].surface == 0 ? MATERIAL_EMISSIVE_UV1 : 0u);
+	draw_list_release(&l);
 	material_release(&mat);
 	mesh_release(&m);
 	free(uv1);
