@@ -3,6 +3,7 @@
 // buffers, nothing tinygltf hands back is trusted: every index, offset and
 // length is checked here before a byte is read.
 #include "scene/gltf_material.h"
+#include "scene/gltf_ext.h"
 #include "scene/gltf_fs.h"
 #include "util/log.h"
 
@@ -547,8 +548,29 @@ static void read_colour(const tinygltf::Model &m, int index, unsigned textures, 
 			     base_name, &out->base_map, out->images_decoded);
 	if (out->has_emissive_map)
 		read_texture(m, glow.index, glow.coord == set || out->emissive_uv1 ? 0 : glow.coord,
-			     images, name,
-			     "emissiveTexture", &out->emissive_map, out->images_decoded);
+			     images, name, "emissiveTexture", &out->emissive_map,
+			     out->images_decoded);
+}
+
+void gltf_read_materials(const tinygltf::Model &m, const std::vector<int> &slots, int first,
+			 const std::string &name, unsigned textures, size_t budget,
+			 const GltfImages &images, struct mesh *out)
+{
+	std::string shown = gltf_ext::escape(name);
+	gltf_fit_textures(m, slots, textures, budget, images);
+	gltf_read_material(m, first, textures, 0, images, name, &out->material);
+	for (size_t k = 0; k < slots.size(); k++) {
+		gltf_read_material(m, slots[k], textures, ~0u, images, name, &out->materials[k]);
+		out->material.images_decoded += out->materials[k].images_decoded;
+		out->material.has_base_map |= out->materials[k].has_base_map;
+	}
+	gltf_say_scaled(shown, images, budget);
+	unsigned mapped = 0;
+	for (uint32_t k = 0; k < out->material_count; k++)
+		mapped += out->materials[k].base_map.width > 0;
+	if (slots.size() > 1)
+		log_info("%s: %zu materials (%u with a base map shown), %u draw ranges",
+			 shown.c_str(), slots.size(), mapped, out->range_count);
 }
 
 void gltf_read_material(const tinygltf::Model &m, int index, unsigned textures, unsigned decode,

@@ -78,6 +78,15 @@ struct GltfPart {
 int gltf_group_ranges(const tinygltf::Model &m, const std::vector<GltfPart> &parts,
 		      const uint32_t *indices, struct mesh *out, std::vector<int> *slots);
 
+// The model's material (`first`: the first part's) for what applies to the
+// whole model, its factors only; then every range's material (slots[k] for
+// out->materials[k]) with its own textures, each decoded once. textures: 0
+// where the model has no UVs (no texture can be placed). Moved here from
+// gltf_mesh.cc, which is at its length.
+void gltf_read_materials(const tinygltf::Model &m, const std::vector<int> &slots, int first,
+			 const std::string &name, unsigned textures, size_t budget,
+			 const GltfImages &images, struct mesh *out);
+
 // Fill out from material `index` (-1: none). textures: enum gltf_texture
 // bits asked for (they chose the UV set: gltf_uv_set); of those, decode
 // the ones in `decode`. A texture that cannot be used is logged as a

@@ -40,9 +40,7 @@ struct Builder {
 	std::vector<double> positions; // world space, before fitting
 	std::vector<float> normals;
 	std::vector<float> uvs;
-	// A second set (struct mesh uv1): empty until a primitive's emissive
-	// map reads another set than its base map (gltf_emissive_uv_set).
-	std::vector<float> uv1;
+	std::vector<float> uv1;	     // only once an emissive map needs it: gltf_emissive_uv_set
 	std::vector<float> tangents; // xyzw, kept only when every primitive has them
 	std::vector<float> colors;   // rgba, linear (struct mesh colors), when they differ
 	std::vector<uint32_t> indices;
@@ -404,8 +402,7 @@ void make_room(Builder &b, size_t n, bool tangents, bool colors)
 		grow(b.colors, 4 * n);
 }
 
-// The primitive's second UVs: once one primitive has them, every vertex
-// has a pair (0, 0 where its primitive has none), those before it too.
+// Second UVs: once a primitive has them, every vertex has them (or 0, 0).
 void read_uv1(Builder &b, const View &uv1, size_t before, size_t n)
 {
 	if (!uv1.count && b.uv1.empty())
@@ -584,12 +581,9 @@ int finish_mesh(Builder &b, const tinygltf::Model &m, struct mesh *out, GltfFit 
 	}
 	if (b.any_uvs)
 		std::memcpy(out->uvs, b.uvs.data(), b.uvs.size() * sizeof(float));
-	if (b.any_uvs && b.uv1.size() == (size_t)nv * 2) {
-		if (mesh_alloc_uv1(out)) {
-			mesh_release(out);
-			return -ENOMEM;
-		}
-		std::memcpy(out->uv1, b.uv1.data(), b.uv1.size() * sizeof(float));
+	if (b.any_uvs && b.uv1.size() == (size_t)nv * 2 && mesh_alloc_uv1(out, b.uv1.data())) {
+		mesh_release(out);
+		return -ENOMEM;
 	}
 	if (b.any_colors && b.colors.size() == (size_t)nv * 4) {
 		if (mesh_alloc_colors(out)) {
@@ -631,31 +625,6 @@ bool prepare(tinygltf::Model &m, const char *name, Pose *pose, std::string *err)
 	    !gltf_ext::apply_morphs(m, err))
 		return false;
 	return gltf_ext::apply_skins(m, pose->worlds, &pose->mesh_source, err);
-}
-
-// The model's material (the first part's) for what applies to the whole
-// model, its factors only; then every range's material with its own
-// textures (base map, normal, occlusion, film thickness), each decoded once.
-// Without UVs no texture can be placed.
-void read_materials(const Builder &b, const tinygltf::Model &m, unsigned textures, size_t budget,
-		    const GltfImages &images, struct mesh *out)
-{
-	unsigned t = b.any_uvs ? textures : 0;
-	gltf_fit_textures(m, b.slots, t, budget, images);
-	gltf_read_material(m, b.material, t, 0, images, b.name, &out->material);
-	for (size_t k = 0; k < b.slots.size(); k++) {
-		gltf_read_material(m, b.slots[k], t, ~0u, images, b.name, &out->materials[k]);
-		out->material.images_decoded += out->materials[k].images_decoded;
-		out->material.has_base_map |= out->materials[k].has_base_map;
-	}
-	gltf_say_scaled(gltf_ext::escape(b.name), images, budget);
-	unsigned mapped = 0;
-	for (uint32_t k = 0; k < out->material_count; k++)
-		mapped += out->materials[k].base_map.width > 0;
-	if (b.slots.size() > 1)
-		log_info("%s: %zu materials (%u with a base map shown), %u draw ranges",
-			 gltf_ext::escape(b.name).c_str(), b.slots.size(), mapped,
-			 out->range_count);
 }
 
 // Live playback's data from the file as parsed; else it shows its still.
@@ -712,7 +681,8 @@ int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_opti
 		log_info("%s: %zu primitives of points or lines left out (only triangles show)",
 			 shown.c_str(), b.not_triangles);
 	if (ret == 0 && say)
-		read_materials(b, m, o->textures, o->texture_memory, images, out);
+		gltf_read_materials(m, b.slots, b.material, b.name, b.any_uvs ? o->textures : 0,
+				    o->texture_memory, images, out);
 	if (ret == 0 && orig)
 		keep_play(b, *orig, *fit, o);
 	gltf_keep_colors(out,

@@ -139,8 +139,9 @@ int mesh_alloc(struct mesh *m, uint32_t vertex_count, uint32_t index_count, bool
 int mesh_alloc_tangents(struct mesh *m);
 /* Adds (uninitialised) colour storage to an allocated mesh. */
 int mesh_alloc_colors(struct mesh *m);
-/* Adds (uninitialised) second-UV storage to an allocated mesh. */
-int mesh_alloc_uv1(struct mesh *m);
+/* Adds second-UV storage to an allocated mesh: a copy of `from`'s
+ * vertex_count pairs, or uninitialised (from NULL). */
+int mesh_alloc_uv1(struct mesh *m, const float *from);
 /* Frees the arrays and the materials' images. */
 void mesh_release(struct mesh *m);
 /* One range over every index and one material (a copy of m->material's

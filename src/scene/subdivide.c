@@ -218,7 +218,7 @@ static int alloc_out(struct subdiv *s, uint64_t nv, uint64_t ni)
 		return -ENOMEM;
 	if (s->in->colors && mesh_alloc_colors(s->out))
 		return -ENOMEM;
-	if (s->in->uv1 && mesh_alloc_uv1(s->out))
+	if (s->in->uv1 && mesh_alloc_uv1(s->out, NULL))
 		return -ENOMEM;
 	return 0;
 }
