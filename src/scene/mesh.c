@@ -52,11 +52,21 @@ int mesh_alloc_colors(struct mesh *m)
 	return m->colors ? 0 : -ENOMEM;
 }
 
+int mesh_alloc_uv1(struct mesh *m, const float *from)
+{
+	free(m->uv1);
+	m->uv1 = malloc((size_t)m->vertex_count * 2 * sizeof(float) + 1);
+	if (m->uv1 && from)
+		memcpy(m->uv1, from, (size_t)m->vertex_count * 2 * sizeof(float));
+	return m->uv1 ? 0 : -ENOMEM;
+}
+
 void mesh_release(struct mesh *m)
 {
 	free(m->positions);
 	free(m->normals);
 	free(m->uvs);
+	free(m->uv1);
 	free(m->tangents);
 	free(m->colors);
 	free(m->indices);
