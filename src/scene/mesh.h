@@ -160,6 +160,8 @@ int mesh_alloc_ranges(struct mesh *m, uint32_t n, uint32_t k);
 /* Each range's center from the positions of the triangles it draws. */
 void mesh_range_centers(struct mesh *m);
 void mesh_material_release(struct mesh_material *mat);
+/* Whether the material holds a decoded image (any of its maps). */
+bool mesh_material_decoded(const struct mesh_material *mat);
 /* to's material and materials from from's, their images left out (to's
  * own materials array is not freed first). Returns 0 or -ENOMEM. */
 int mesh_copy_factors(struct mesh *to, const struct mesh *from);
