@@ -3,7 +3,8 @@
 // CAMERA_ORTHO when the projection is orthographic. DETAIL_MAP and
 // DETAIL_NORMAL add the UV and the tangent frame, and only then; BASE_COLOR
 // the vertex colour, BASE_MAP the UV through the base map's transform,
-// EMISSIVE_MAP the UV through the emissive map's own.
+// EMISSIVE_MAP the UV through the emissive map's own, EMISSIVE_UV1 its UV
+// the second set (a_uv1: a map on another TEXCOORD_n than the base map).
 // SKIN_BONES (a model that plays its animation on the GPU) poses each
 // vertex by its four bones of the palette: rows of 3x4 matrices that hold
 // the node worlds, inverse binds and the model's fit. MORPH_TARGETS (with
@@ -28,6 +29,9 @@ varying vec2 v_base_uv;
 #ifdef EMISSIVE_MAP
 uniform mat3 u_emissive_transform;
 varying vec2 v_emissive_uv;
+#endif
+#ifdef EMISSIVE_UV1
+attribute vec2 a_uv1;
 #endif
 #ifdef DETAIL_NORMAL
 attribute vec4 a_tangent;
@@ -99,7 +103,11 @@ void main()
 	v_base_uv = (u_base_transform * vec3(a_uv, 1.0)).xy;
 #endif
 #ifdef EMISSIVE_MAP
+#ifdef EMISSIVE_UV1
+	v_emissive_uv = (u_emissive_transform * vec3(a_uv1, 1.0)).xy;
+#else
 	v_emissive_uv = (u_emissive_transform * vec3(a_uv, 1.0)).xy;
+#endif
 #endif
 #ifdef DETAIL_NORMAL
 	// The model-view is a rotation: tangents turn as normals do.

@@ -95,17 +95,13 @@ bool content_cache_fits(const struct content *s, int width, int height)
 	return k && k->width == (uint32_t)width && k->height == (uint32_t)height;
 }
 
+/* An entry holds no image: a model with one is prepared at each start. */
 static bool decoded_images(const struct mesh *mesh)
 {
-	const struct mesh_material *m = &mesh->material;
-	bool any = m->normal_map.width || m->occlusion_map.width || m->thickness_map.width ||
-		   m->base_map.width;
+	bool any = mesh_material_decoded(&mesh->material);
 
-	for (uint32_t k = 0; k < mesh->material_count; k++) {
-		m = &mesh->materials[k];
-		any |= m->normal_map.width || m->occlusion_map.width || m->thickness_map.width ||
-		       m->base_map.width;
-	}
+	for (uint32_t k = 0; k < mesh->material_count; k++)
+		any |= mesh_material_decoded(&mesh->materials[k]);
 	return any;
 }
 

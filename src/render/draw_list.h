@@ -66,8 +66,9 @@ void draw_list_use_materials(struct draw_list *l, const uint32_t *materials, uin
  * + 6 x which of the model's features the material lacks (none; the
  * detail map; its normal; iridescence; both the detail map and iridescence;
  * the normal and iridescence), + 36 x (unlit + 2 x its emission: none,
- * the factor, the factor and a map). Variant 0: the model's own program. */
-enum { DRAW_SIDES_VARIANTS = 6, DRAW_LACKS_VARIANTS = 36, DRAW_VARIANTS = 36 * 6 };
+ * the factor, the factor and a map, the factor and a map on the second UV
+ * set). Variant 0: the model's own program. */
+enum { DRAW_SIDES_VARIANTS = 6, DRAW_LACKS_VARIANTS = 36, DRAW_VARIANTS = 36 * 8 };
 
 static inline int draw_item_variant(const struct draw_item *it)
 {
@@ -75,7 +76,10 @@ static inline int draw_item_variant(const struct draw_item *it)
 		    : (it->missing & MATERIAL_DETAIL_NORMAL) ? 2
 							     : 0;
 
-	int emits = (it->adds & MATERIAL_EMISSIVE_MAP) ? 2 : (it->adds & MATERIAL_EMISSIVE) ? 1 : 0;
+	int emits = (it->adds & MATERIAL_EMISSIVE_UV1)	 ? 3
+		    : (it->adds & MATERIAL_EMISSIVE_MAP) ? 2
+		    : (it->adds & MATERIAL_EMISSIVE)	 ? 1
+							 : 0;
 
 	if (it->missing & MATERIAL_IRIDESCENCE)
 		lacks = lacks == 2 ? 5 : lacks + 3;
@@ -86,8 +90,9 @@ static inline int draw_item_variant(const struct draw_item *it)
 /* The MATERIAL_PER_RANGE features variant v adds to the model's. */
 static inline unsigned draw_variant_adds(int v)
 {
-	static const unsigned emits[3] = {0, MATERIAL_EMISSIVE,
-					  MATERIAL_EMISSIVE | MATERIAL_EMISSIVE_MAP};
+	static const unsigned emits[4] = {
+	    0, MATERIAL_EMISSIVE, MATERIAL_EMISSIVE | MATERIAL_EMISSIVE_MAP,
+	    MATERIAL_EMISSIVE | MATERIAL_EMISSIVE_MAP | MATERIAL_EMISSIVE_UV1};
 	int extra = v / DRAW_LACKS_VARIANTS;
 
 	return (extra & 1 ? MATERIAL_UNLIT : 0u) | emits[extra / 2];

@@ -178,7 +178,7 @@ int renderer_set_packed(struct renderer *r, const struct mesh_packed *m)
 	bool uvs = material_needs_uvs(f);
 	bool tangents = material_needs_tangents(f);
 	bool colors = material_needs_colors(f);
-	bool used[SHADER_ATTR_COUNT] = {true, true, uvs, tangents, colors};
+	bool used[SHADER_ATTR_COUNT] = {true, true, uvs, tangents, colors, material_needs_uv1(f)};
 	bool live = r->live_next;
 	int ret = upload_indices(r, m);
 
@@ -191,7 +191,8 @@ int renderer_set_packed(struct renderer *r, const struct mesh_packed *m)
 	if (!ret && r->mode_set)
 		prepare_variants(r);
 	/* Colours without an array are one constant (material vertex_color). */
-	if ((uvs && !m->arrays[MESH_UVS]) || (tangents && !m->arrays[MESH_TANGENTS]))
+	if ((uvs && !m->arrays[MESH_UVS]) || (tangents && !m->arrays[MESH_TANGENTS]) ||
+	    (material_needs_uv1(f) && !m->arrays[MESH_UV1]))
 		log_warn("render: the mesh lacks the UVs or tangents its material needs");
 	for (int a = 0; a < SHADER_ATTR_COUNT && !ret; a++) {
 		if (used[a] && m->arrays[a]) {

@@ -38,6 +38,7 @@ static void used_locations(const struct renderer *r, bool used[SHADER_MAX_ATTRIB
 	used[SHADER_ATTR_UV] = material_needs_uvs(f);
 	used[SHADER_ATTR_TANGENT] = material_needs_tangents(f);
 	used[SHADER_ATTR_COLOR] = material_needs_colors(f);
+	used[SHADER_ATTR_UV1] = material_needs_uv1(f);
 	used[SHADER_ATTR_JOINTS] = used[SHADER_ATTR_WEIGHTS] = true;
 }
 

@@ -65,7 +65,8 @@ int shader_source_matcap(struct shader_source *s, const char *dir, unsigned feat
 	    {MATERIAL_BASE_COLOR, "BASE_COLOR"},     {MATERIAL_BASE_MAP, "BASE_MAP"},
 	    {MATERIAL_ALPHA_MASK, "ALPHA_MASK"},     {MATERIAL_ALPHA_BLEND, "ALPHA_BLEND"},
 	    {MATERIAL_DOUBLE_SIDED, "DOUBLE_SIDED"}, {MATERIAL_EMISSIVE, "EMISSIVE"},
-	    {MATERIAL_EMISSIVE_MAP, "EMISSIVE_MAP"}, {MATERIAL_UNLIT, "UNLIT"}};
+	    {MATERIAL_EMISSIVE_MAP, "EMISSIVE_MAP"}, {MATERIAL_EMISSIVE_UV1, "EMISSIVE_UV1"},
+	    {MATERIAL_UNLIT, "UNLIT"}};
 	int ret;
 
 	/* The lit mode compares shapes: it keeps its own grey, and shades
@@ -81,6 +82,9 @@ int shader_source_matcap(struct shader_source *s, const char *dir, unsigned feat
 						   [SHADER_ATTR_UV] = "a_uv",
 						   [SHADER_ATTR_TANGENT] = "a_tangent",
 						   [SHADER_ATTR_COLOR] = "a_color"}};
+	/* Bound only where a program reads it: the others keep the location free. */
+	if (features & MATERIAL_EMISSIVE_UV1)
+		s->attributes[SHADER_ATTR_UV1] = "a_uv1";
 	/* These read the normal per fragment, which sem-vertex has not. */
 	if (mode == SHADING_SEM_VERTEX &&
 	    (lit ||

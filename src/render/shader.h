@@ -22,6 +22,7 @@ enum shader_attribute {
 	SHADER_ATTR_UV,
 	SHADER_ATTR_TANGENT,
 	SHADER_ATTR_COLOR,
+	SHADER_ATTR_UV1, /* an emissive map's own UV set (EMISSIVE_UV1) */
 	SHADER_ATTR_COUNT,
 	/* A skinning program's (SKIN_BONES) bone indices and weights: after
 	 * the mesh's arrays, bound only where a program skins. */

@@ -38,6 +38,7 @@ uint32_t gltf_split_faces(const GltfSplit &s, size_t first_vertex, size_t first_
 	split_tail(*s.normals, 3, first_vertex, idx, n);
 	split_tail(*s.uvs, 2, first_vertex, idx, n);
 	split_tail(*s.colors, 4, first_vertex, idx, n);
+	split_tail(*s.uv1, 2, first_vertex, idx, n);
 	for (size_t i = 0; i < n; i++)
 		idx[i] = (uint32_t)(first_vertex + i);
 	return (uint32_t)n;

@@ -12,10 +12,11 @@
 #include <cstdint>
 #include <vector>
 
-// The builder's arrays a split rewrites (colors may be empty: one colour).
+// The builder's arrays a split rewrites (colors and uv1 may be empty or
+// shorter: one colour, no second UV set yet).
 struct GltfSplit {
 	std::vector<double> *positions;
-	std::vector<float> *normals, *uvs, *colors;
+	std::vector<float> *normals, *uvs, *colors, *uv1;
 	std::vector<uint32_t> *indices;
 	std::vector<uint32_t> *source; // each copy's vertex in its primitive
 };

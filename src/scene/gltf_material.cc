@@ -3,6 +3,7 @@
 // buffers, nothing tinygltf hands back is trusted: every index, offset and
 // length is checked here before a byte is read.
 #include "scene/gltf_material.h"
+#include "scene/gltf_ext.h"
 #include "scene/gltf_fs.h"
 #include "util/log.h"
 
@@ -470,9 +471,9 @@ int gltf_uv_set(const tinygltf::Model &m, int material, unsigned textures)
 		return 0;
 	const tinygltf::Material &mat = m.materials[(size_t)material];
 	TexRef base = base_texture(mat), glow = texture_ref(mat.emissiveTexture);
-	// The base map's set, else the emissive map's: one set a primitive is
-	// carried, and a base map on another set than its emissive map leaves
-	// the emissive one out (gltf_read_material says so).
+	// The base map's set, else the emissive map's: an emissive map on
+	// another set than the base map's is carried as the mesh's uv1
+	// (gltf_emissive_uv_set).
 	int set = base.index >= 0 ? base.coord : glow.index >= 0 ? glow.coord : 0;
 	// The detail map packs the others on the one UV set it reads.
 	bool others = ((textures & GLTF_TEXTURE_NORMAL) && mat.normalTexture.index >= 0) ||
@@ -480,6 +481,23 @@ int gltf_uv_set(const tinygltf::Model &m, int material, unsigned textures)
 		      ((textures & GLTF_TEXTURE_THICKNESS) &&
 		       mat.extensions.count("KHR_materials_iridescence"));
 	return others || set < 0 || set > 7 ? 0 : set;
+}
+
+int gltf_emissive_uv_set(const tinygltf::Model &m, int material, unsigned textures)
+{
+	if (!(textures & GLTF_TEXTURE_BASE_COLOR) || material < 0 ||
+	    (size_t)material >= m.materials.size())
+		return -1;
+	const tinygltf::Material &mat = m.materials[(size_t)material];
+	TexRef glow = texture_ref(mat.emissiveTexture);
+	float emissive[3];
+	read_emission(mat, emissive);
+	// A black factor leaves the map undecoded: no set is carried for it.
+	bool glows = emissive[0] > 0.0f || emissive[1] > 0.0f || emissive[2] > 0.0f;
+	if (glow.index < 0 || !glows || glow.coord < 0 || glow.coord > 7 ||
+	    glow.coord == gltf_uv_set(m, material, textures))
+		return -1;
+	return glow.coord;
 }
 
 bool gltf_keep_image(tinygltf::Image *image, const int index, std::string *, std::string *, int,
@@ -495,13 +513,15 @@ bool gltf_keep_image(tinygltf::Image *image, const int index, std::string *, std
 }
 
 // The base colour's and emission's factors and maps (decoded when
-// `decode`): each map's UV set is the mesh's when gltf_uv_set chose it.
+// `decode`): each map's UV set is the mesh's when gltf_uv_set chose it, the
+// emissive map's its uv1 when gltf_emissive_uv_set did.
 static void read_colour(const tinygltf::Model &m, int index, unsigned textures, bool decode,
 			const GltfImages &images, const std::string &name,
 			struct mesh_material *out)
 {
 	const tinygltf::Material &mat = m.materials[(size_t)index];
 	int set = gltf_uv_set(m, index, textures);
+	int glow_set = gltf_emissive_uv_set(m, index, textures);
 	float rgba[4] = {1.0f, 1.0f, 1.0f, 1.0f};
 
 	if (base_factor(mat, rgba)) {
@@ -517,6 +537,7 @@ static void read_colour(const tinygltf::Model &m, int index, unsigned textures, 
 	// An emissive map with a black factor adds nothing: not decoded.
 	bool glows = out->emissive[0] > 0.0f || out->emissive[1] > 0.0f || out->emissive[2] > 0.0f;
 	out->has_emissive_map = glow.index >= 0 && glows;
+	out->emissive_uv1 = out->has_emissive_map && glow_set >= 0;
 	std::copy(glow.m, glow.m + 6, out->emissive_transform);
 	read_wrap(m, glow.index, out->emissive_wrap, &out->emissive_no_mipmaps);
 	if (!decode)
@@ -526,8 +547,30 @@ static void read_colour(const tinygltf::Model &m, int index, unsigned textures, 
 		read_texture(m, base.index, base.coord == set ? 0 : base.coord, images, name,
 			     base_name, &out->base_map, out->images_decoded);
 	if (out->has_emissive_map)
-		read_texture(m, glow.index, glow.coord == set ? 0 : glow.coord, images, name,
-			     "emissiveTexture", &out->emissive_map, out->images_decoded);
+		read_texture(m, glow.index, glow.coord == set || out->emissive_uv1 ? 0 : glow.coord,
+			     images, name, "emissiveTexture", &out->emissive_map,
+			     out->images_decoded);
+}
+
+void gltf_read_materials(const tinygltf::Model &m, const std::vector<int> &slots, int first,
+			 const std::string &name, unsigned textures, size_t budget,
+			 const GltfImages &images, struct mesh *out)
+{
+	std::string shown = gltf_ext::escape(name);
+	gltf_fit_textures(m, slots, textures, budget, images);
+	gltf_read_material(m, first, textures, 0, images, name, &out->material);
+	for (size_t k = 0; k < slots.size(); k++) {
+		gltf_read_material(m, slots[k], textures, ~0u, images, name, &out->materials[k]);
+		out->material.images_decoded += out->materials[k].images_decoded;
+		out->material.has_base_map |= out->materials[k].has_base_map;
+	}
+	gltf_say_scaled(shown, images, budget);
+	unsigned mapped = 0;
+	for (uint32_t k = 0; k < out->material_count; k++)
+		mapped += out->materials[k].base_map.width > 0;
+	if (slots.size() > 1)
+		log_info("%s: %zu materials (%u with a base map shown), %u draw ranges",
+			 shown.c_str(), slots.size(), mapped, out->range_count);
 }
 
 void gltf_read_material(const tinygltf::Model &m, int index, unsigned textures, unsigned decode,

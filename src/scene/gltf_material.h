@@ -56,6 +56,12 @@ void gltf_keep_colors(struct mesh *out, const float uniform[4]);
 // is asked for and no other texture asked for needs TEXCOORD_0; else 0.
 int gltf_uv_set(const tinygltf::Model &m, int material, unsigned textures);
 
+// Which TEXCOORD_n a primitive of this material loads as the mesh's uv1:
+// its emissive map's, when the map is drawn (a factor not black) and reads
+// another set than gltf_uv_set's; else -1 (no second set: the common case,
+// which costs nothing).
+int gltf_emissive_uv_set(const tinygltf::Model &m, int material, unsigned textures);
+
 // A primitive's triangles in the builder's index array, and its material
 // (-1: none).
 struct GltfPart {
@@ -71,6 +77,15 @@ struct GltfPart {
 // Returns 0 or -ENOMEM.
 int gltf_group_ranges(const tinygltf::Model &m, const std::vector<GltfPart> &parts,
 		      const uint32_t *indices, struct mesh *out, std::vector<int> *slots);
+
+// The model's material (`first`: the first part's) for what applies to the
+// whole model, its factors only; then every range's material (slots[k] for
+// out->materials[k]) with its own textures, each decoded once. textures: 0
+// where the model has no UVs (no texture can be placed). Moved here from
+// gltf_mesh.cc, which is at its length.
+void gltf_read_materials(const tinygltf::Model &m, const std::vector<int> &slots, int first,
+			 const std::string &name, unsigned textures, size_t budget,
+			 const GltfImages &images, struct mesh *out);
 
 // Fill out from material `index` (-1: none). textures: enum gltf_texture
 // bits asked for (they chose the UV set: gltf_uv_set); of those, decode

@@ -42,6 +42,7 @@ struct Builder {
 	std::vector<double> positions; // world space, before fitting
 	std::vector<float> normals;
 	std::vector<float> uvs;
+	std::vector<float> uv1;	     // only once an emissive map needs it: gltf_emissive_uv_set
 	std::vector<float> tangents; // xyzw, kept only when every primitive has them
 	std::vector<float> colors;   // rgba, linear (struct mesh colors), when they differ
 	std::vector<uint32_t> indices;
@@ -278,7 +279,7 @@ bool check_color(Builder &b, const tinygltf::Model &m, int index, const std::str
 
 // A primitive's vertex attributes, checked: an absent one has count 0.
 struct Attributes {
-	View pos, nrm, uv, tan, col;
+	View pos, nrm, uv, tan, col, uv1;
 };
 
 int find_attribute(const tinygltf::Primitive &p, const char *key)
@@ -317,11 +318,16 @@ bool check_attributes(Builder &b, const tinygltf::Model &m, const tinygltf::Prim
 			    &a->tan))
 		return false;
 	size_t n = a->pos.count;
+	int set1 = gltf_emissive_uv_set(m, p.material, b.textures);
+	std::string uv1 = "TEXCOORD_" + std::to_string(set1);
+	if (set1 >= 0 && !check_optional(b, m, find_attribute(p, uv1.c_str()), TINYGLTF_TYPE_VEC2,
+					 position_types, at + uv1, &a->uv1))
+		return false;
 	int icol = b.want_colors ? find_attribute(p, "COLOR_0") : -1;
 	if (icol >= 0 && !check_color(b, m, icol, at + "COLOR_0", &a->col))
 		return false;
 	if (!same_count(a->nrm, n) || !same_count(a->uv, n) || !same_count(a->tan, n) ||
-	    !same_count(a->col, n))
+	    !same_count(a->col, n) || !same_count(a->uv1, n))
 		return fail(b, what, "attributes differ in count from POSITION");
 	if (b.positions.size() / 3 + n > 0x7fffffff)
 		return fail(b, what, "too many vertices in the model");
@@ -393,6 +399,17 @@ void make_room(Builder &b, size_t n, bool tangents, bool colors)
 		grow(b.colors, 4 * n);
 }
 
+// Second UVs: once a primitive has them, every vertex has them (or 0, 0).
+void read_uv1(Builder &b, const View &uv1, size_t before, size_t n)
+{
+	if (!uv1.count && b.uv1.empty())
+		return;
+	b.uv1.resize(before * 2, 0.0f);
+	for (size_t i = 0; i < n; i++)
+		for (int k = 0; k < 2; k++)
+			b.uv1.push_back(uv1.count ? (float)read_component(uv1, i, k) : 0.0f);
+}
+
 bool read_vertices(Builder &b, const tinygltf::Model &m, const tinygltf::Primitive &p,
 		   const Mat4 world, const std::string &what, Range *r)
 {
@@ -422,6 +439,7 @@ bool read_vertices(Builder &b, const tinygltf::Model &m, const tinygltf::Primiti
 			b.colors.push_back(base[k] * (float)(c >= 0.0 ? std::fmin(c, 1.0) : 0.0));
 		}
 	}
+	read_uv1(b, a.uv1, b.positions.size() / 3 - a.pos.count, a.pos.count);
 	b.any_uvs |= a.uv.count > 0;
 	b.any_colors |= a.col.count > 0 || coloured;
 	r->vertex_count = (uint32_t)a.pos.count;
@@ -453,7 +471,7 @@ bool add_primitive(Builder &b, const tinygltf::Model &m, const tinygltf::Primiti
 	r.source_at = b.source.size();
 	if (r.flat)
 		r.vertex_count = gltf_split_faces(
-		    {&b.positions, &b.normals, &b.uvs, &b.colors, &b.indices, &b.source},
+		    {&b.positions, &b.normals, &b.uvs, &b.colors, &b.uv1, &b.indices, &b.source},
 		    r.first_vertex, r.first_index);
 	r.index_count = (uint32_t)(b.indices.size() - r.first_index);
 	b.ranges.push_back(r);
@@ -560,6 +578,10 @@ int finish_mesh(Builder &b, const tinygltf::Model &m, struct mesh *out, GltfFit 
 	}
 	if (b.any_uvs)
 		std::memcpy(out->uvs, b.uvs.data(), b.uvs.size() * sizeof(float));
+	if (b.any_uvs && b.uv1.size() == (size_t)nv * 2 && mesh_alloc_uv1(out, b.uv1.data())) {
+		mesh_release(out);
+		return -ENOMEM;
+	}
 	if (b.any_colors && b.colors.size() == (size_t)nv * 4) {
 		if (mesh_alloc_colors(out)) {
 			mesh_release(out);
@@ -584,31 +606,6 @@ int finish_mesh(Builder &b, const tinygltf::Model &m, struct mesh *out, GltfFit 
 			return -ENOMEM;
 		}
 	return 0;
-}
-
-// The model's material (the first part's) for what applies to the whole
-// model, its factors only; then every range's material with its own
-// textures (base map, normal, occlusion, film thickness), each decoded once.
-// Without UVs no texture can be placed.
-void read_materials(const Builder &b, const tinygltf::Model &m, unsigned textures, size_t budget,
-		    const GltfImages &images, struct mesh *out)
-{
-	unsigned t = b.any_uvs ? textures : 0;
-	gltf_fit_textures(m, b.slots, t, budget, images);
-	gltf_read_material(m, b.material, t, 0, images, b.name, &out->material);
-	for (size_t k = 0; k < b.slots.size(); k++) {
-		gltf_read_material(m, b.slots[k], t, ~0u, images, b.name, &out->materials[k]);
-		out->material.images_decoded += out->materials[k].images_decoded;
-		out->material.has_base_map |= out->materials[k].has_base_map;
-	}
-	gltf_say_scaled(gltf_ext::escape(b.name), images, budget);
-	unsigned mapped = 0;
-	for (uint32_t k = 0; k < out->material_count; k++)
-		mapped += out->materials[k].base_map.width > 0;
-	if (b.slots.size() > 1)
-		log_info("%s: %zu materials (%u with a base map shown), %u draw ranges",
-			 gltf_ext::escape(b.name).c_str(), b.slots.size(), mapped,
-			 out->range_count);
 }
 
 // Live playback's data from the file as parsed; else it shows its still.
@@ -667,7 +664,8 @@ int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_opti
 		log_info("%s: %zu primitives of points or lines left out (only triangles show)",
 			 shown.c_str(), b.not_triangles);
 	if (ret == 0 && say)
-		read_materials(b, m, o->textures, o->texture_memory, images, out);
+		gltf_read_materials(m, b.slots, b.material, b.name, b.any_uvs ? o->textures : 0,
+				    o->texture_memory, images, out);
 	if (ret == 0 && orig)
 		keep_play(b, *orig, *fit, o);
 	gltf_keep_colors(out,

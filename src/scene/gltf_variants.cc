@@ -1,7 +1,7 @@
 // KHR_materials_variants: names at the root, mappings per primitive. A
 // variant changes which material a range draws with; the materials of
 // every variant are read with the default's (gltf_mesh.cc's
-// read_materials decodes every slot), so a switch uploads nothing.
+// gltf_read_materials decodes every slot), so a switch uploads nothing.
 #include "scene/gltf_variants.h"
 #include "util/log.h"
 

@@ -49,11 +49,12 @@ double lod_triangles_wanted(const struct mesh *m, double pixels, int width, int 
  * vertices no triangle uses any more; all or nothing. */
 static int remap_streams(struct mesh *m, const unsigned *remap, uint32_t unique)
 {
-	float **streams[5] = {&m->positions, &m->normals, &m->uvs, &m->tangents, &m->colors};
-	const size_t width[5] = {3, 3, 2, 4, 4};
-	float *fresh[5] = {NULL, NULL, NULL, NULL, NULL};
+	float **streams[6] = {&m->positions, &m->normals, &m->uvs,
+			      &m->tangents,  &m->colors,  &m->uv1};
+	const size_t width[6] = {3, 3, 2, 4, 4, 2};
+	float *fresh[6] = {NULL, NULL, NULL, NULL, NULL, NULL};
 
-	for (int s = 0; s < 5; s++) {
+	for (int s = 0; s < 6; s++) {
 		if (!*streams[s])
 			continue;
 		fresh[s] = malloc(unique * width[s] * sizeof(float) + 1);
@@ -63,7 +64,7 @@ static int remap_streams(struct mesh *m, const unsigned *remap, uint32_t unique)
 			return -ENOMEM;
 		}
 	}
-	for (int s = 0; s < 5; s++) {
+	for (int s = 0; s < 6; s++) {
 		if (!fresh[s])
 			continue;
 		meshopt_remapVertexBuffer(fresh[s], *streams[s], m->vertex_count,
@@ -403,7 +404,7 @@ static int remap_flat(struct mesh *m, const unsigned *remap, uint32_t unique)
  * one: lossless, and gives the simplifier fewer false seams. */
 static int weld_duplicates(struct mesh *m)
 {
-	struct meshopt_Stream streams[6] = {{m->positions, 12, 12}, {m->normals, 12, 12}};
+	struct meshopt_Stream streams[7] = {{m->positions, 12, 12}, {m->normals, 12, 12}};
 	unsigned *remap = malloc((size_t)m->vertex_count * sizeof(unsigned) + 1);
 	size_t count = 2, unique;
 	int ret = -ENOMEM;
@@ -419,6 +420,8 @@ static int weld_duplicates(struct mesh *m)
 	/* A split (flat) corner stays apart from a smooth one. */
 	if (m->flat)
 		streams[count++] = (struct meshopt_Stream){m->flat, 1, 1};
+	if (m->uv1)
+		streams[count++] = (struct meshopt_Stream){m->uv1, 8, 8};
 	unique = meshopt_generateVertexRemapMulti(remap, m->indices, m->index_count,
 						  m->vertex_count, streams, count);
 	ret = 0;
@@ -467,10 +470,11 @@ static void flat_drop(struct mesh *m)
 /* Room for `extra` more vertices in every attribute array. */
 static int grow_streams(struct mesh *m, uint32_t extra)
 {
-	float **streams[5] = {&m->positions, &m->normals, &m->uvs, &m->tangents, &m->colors};
-	const size_t width[5] = {3, 3, 2, 4, 4};
+	float **streams[6] = {&m->positions, &m->normals, &m->uvs,
+			      &m->tangents,  &m->colors,  &m->uv1};
+	const size_t width[6] = {3, 3, 2, 4, 4, 2};
 
-	for (int s = 0; s < 5; s++) {
+	for (int s = 0; s < 6; s++) {
 		float *p = *streams[s] ? realloc(*streams[s], ((size_t)m->vertex_count + extra) *
 								  width[s] * sizeof(float))
 				       : NULL;
@@ -520,6 +524,8 @@ static int keep_flat(struct mesh *m, unsigned *idx, size_t n, unsigned **remap)
 				       16);
 			if (m->colors)
 				memcpy(m->colors + (size_t)v * 4, m->colors + (size_t)c[k] * 4, 16);
+			if (m->uv1)
+				memcpy(m->uv1 + (size_t)v * 2, m->uv1 + (size_t)c[k] * 2, 8);
 			c[k] = v;
 			added++;
 		}

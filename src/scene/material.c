@@ -346,6 +346,7 @@ static int resolve_surfaces(const struct mesh *mesh, bool base, struct material 
 static int surface_light(const struct material_config *cfg, const struct mesh *mesh,
 			 const struct mesh_material *g, struct material_surface *s)
 {
+	bool placed;
 	int ret = 0;
 
 	if (g->unlit && cfg->unlit == UNLIT_FILE)
@@ -357,13 +358,16 @@ static int surface_light(const struct material_config *cfg, const struct mesh *m
 	memcpy(s->emissive_transform, g->emissive_transform, sizeof(s->emissive_transform));
 	memcpy(s->emissive_wrap, g->emissive_wrap, sizeof(s->emissive_wrap));
 	s->emissive_no_mipmaps = g->emissive_no_mipmaps;
-	if (g->emissive_map.width && mesh->uvs)
+	/* Its UVs: the mesh's second set where it reads another than the base map. */
+	placed = g->emissive_uv1 ? mesh->uv1 != NULL : mesh->uvs != NULL;
+	if (g->emissive_map.width && placed)
 		ret = copy_base_map(&g->emissive_map, &s->emissive_map);
 	if (!ret && s->emissive_map.width)
-		s->features |= MATERIAL_EMISSIVE_MAP;
+		s->features |= MATERIAL_EMISSIVE_MAP | (g->emissive_uv1 ? MATERIAL_EMISSIVE_UV1 : 0);
 	else if (g->emissive_map.width)
-		log_warn("the model's emissiveTexture has no TEXCOORD_0 to place it: its "
-			 "emissiveFactor alone is drawn");
+		log_warn("the model's emissiveTexture has no %s to place it: its "
+			 "emissiveFactor alone is drawn",
+			 g->emissive_uv1 ? "second TEXCOORD_n" : "TEXCOORD_0");
 	return ret;
 }
 
@@ -509,6 +513,11 @@ int material_prepare_mesh(const struct material *m, struct mesh *mesh, int width
 bool material_needs_uvs(unsigned features)
 {
 	return (features & (MATERIAL_DETAIL | MATERIAL_BASE_MAP | MATERIAL_EMISSIVE_MAP)) != 0;
+}
+
+bool material_needs_uv1(unsigned features)
+{
+	return (features & MATERIAL_EMISSIVE_UV1) != 0;
 }
 
 bool material_needs_tangents(unsigned features)

@@ -32,11 +32,15 @@ enum material_feature {
 	/* KHR_materials_unlit: the base colour as it is, no matcap; per range
 	 * as emission. */
 	MATERIAL_UNLIT = 1u << 12,
+	/* ... the emissive map placed by the mesh's second UVs (uv1): it
+	 * reads another TEXCOORD_n than the base map. */
+	MATERIAL_EMISSIVE_UV1 = 1u << 13,
 };
 
 /* What a range's own program variant adds (draw_variant_adds), never the
  * model's program: a model without them compiles as before. */
-#define MATERIAL_PER_RANGE (MATERIAL_EMISSIVE | MATERIAL_EMISSIVE_MAP | MATERIAL_UNLIT)
+#define MATERIAL_PER_RANGE                                                                         \
+	(MATERIAL_EMISSIVE | MATERIAL_EMISSIVE_MAP | MATERIAL_EMISSIVE_UV1 | MATERIAL_UNLIT)
 
 /* Not settings: the renderer's program variants for a range's alphaMode
  * (shaders/matcap.frag), never in material.features. */
@@ -163,6 +167,7 @@ static inline unsigned material_surface_missing(unsigned model, const struct mat
 
 /* The vertex attributes a program with these features reads. */
 bool material_needs_uvs(unsigned features);
+bool material_needs_uv1(unsigned features);
 bool material_needs_tangents(unsigned features);
 bool material_needs_colors(unsigned features);
 

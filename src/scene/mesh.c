@@ -52,11 +52,21 @@ int mesh_alloc_colors(struct mesh *m)
 	return m->colors ? 0 : -ENOMEM;
 }
 
+int mesh_alloc_uv1(struct mesh *m, const float *from)
+{
+	free(m->uv1);
+	m->uv1 = malloc((size_t)m->vertex_count * 2 * sizeof(float) + 1);
+	if (m->uv1 && from)
+		memcpy(m->uv1, from, (size_t)m->vertex_count * 2 * sizeof(float));
+	return m->uv1 ? 0 : -ENOMEM;
+}
+
 void mesh_release(struct mesh *m)
 {
 	free(m->positions);
 	free(m->normals);
 	free(m->uvs);
+	free(m->uv1);
 	free(m->tangents);
 	free(m->colors);
 	free(m->indices);
@@ -314,14 +324,37 @@ void mesh_flat_normals(const float *positions, const uint32_t *idx, uint32_t ind
 	}
 }
 
+/* Every image a material holds, in one list: a map added to struct
+ * mesh_material and not here would be copied by a copy of the factors
+ * and, worse, missed by mesh_material_decoded, so that a model whose only
+ * texture it is would be cached as if it had none and drawn without it
+ * from the cache (as the emissive map was). */
+#define MATERIAL_IMAGES 5
+static void material_images(const struct mesh_material *m, const struct image *out[])
+{
+	out[0] = &m->normal_map, out[1] = &m->occlusion_map, out[2] = &m->thickness_map;
+	out[3] = &m->base_map, out[4] = &m->emissive_map;
+}
+
+bool mesh_material_decoded(const struct mesh_material *m)
+{
+	const struct image *images[MATERIAL_IMAGES];
+
+	material_images(m, images);
+	for (int i = 0; i < MATERIAL_IMAGES; i++)
+		if (images[i]->width)
+			return true;
+	return false;
+}
+
 /* An image left out of a copy of the factors. */
 static void drop_images(struct mesh_material *m)
 {
-	memset(&m->normal_map, 0, sizeof(m->normal_map));
-	memset(&m->occlusion_map, 0, sizeof(m->occlusion_map));
-	memset(&m->thickness_map, 0, sizeof(m->thickness_map));
-	memset(&m->base_map, 0, sizeof(m->base_map));
-	memset(&m->emissive_map, 0, sizeof(m->emissive_map));
+	const struct image *images[MATERIAL_IMAGES];
+
+	material_images(m, images);
+	for (int i = 0; i < MATERIAL_IMAGES; i++)
+		memset((struct image *)images[i], 0, sizeof(*images[i]));
 }
 
 int mesh_copy_factors(struct mesh *to, const struct mesh *from)

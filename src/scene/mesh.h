@@ -61,10 +61,12 @@ struct mesh_material {
 	bool unlit;
 	/* emissiveFactor x KHR_materials_emissive_strength, linear (0: none),
 	 * and emissiveTexture (sRGB as stored, as the base map) with its own
-	 * KHR_texture_transform and sampler. Its UVs are the mesh's uvs: the
-	 * loader carries one set a primitive (gltf_uv_set). */
+	 * KHR_texture_transform and sampler. Its UVs are the mesh's uvs, or
+	 * its uv1 when emissive_uv1 (the map reads another TEXCOORD_n than the
+	 * base map: gltf_emissive_uv_set). */
 	float emissive[3];
 	bool has_emissive_map;
+	bool emissive_uv1;
 	struct image emissive_map;
 	float emissive_transform[6];
 	int emissive_wrap[2];
@@ -86,6 +88,10 @@ struct mesh {
 	float *positions;     /* xyz per vertex */
 	float *normals;	      /* xyz per vertex, unit length */
 	float *uvs;	      /* uv per vertex, NULL when the model has none */
+	/* A second uv per vertex, NULL unless an emissive map reads another
+	 * set than its base map (mesh_material.emissive_uv1): only the models
+	 * that need it carry it. */
+	float *uv1;
 	/* xyz w per vertex: a unit tangent along +u, w = +1 or -1 the
 	 * handedness, so that the bitangent is cross(normal, tangent) * w (the
 	 * glTF convention). NULL unless the model or a feature provides it. */
@@ -140,6 +146,9 @@ int mesh_alloc(struct mesh *m, uint32_t vertex_count, uint32_t index_count, bool
 int mesh_alloc_tangents(struct mesh *m);
 /* Adds (uninitialised) colour storage to an allocated mesh. */
 int mesh_alloc_colors(struct mesh *m);
+/* Adds second-UV storage to an allocated mesh: a copy of `from`'s
+ * vertex_count pairs, or uninitialised (from NULL). */
+int mesh_alloc_uv1(struct mesh *m, const float *from);
 /* Frees the arrays and the materials' images. */
 void mesh_release(struct mesh *m);
 /* One range over every index and one material (a copy of m->material's
@@ -151,6 +160,8 @@ int mesh_alloc_ranges(struct mesh *m, uint32_t n, uint32_t k);
 /* Each range's center from the positions of the triangles it draws. */
 void mesh_range_centers(struct mesh *m);
 void mesh_material_release(struct mesh_material *mat);
+/* Whether the material holds a decoded image (any of its maps). */
+bool mesh_material_decoded(const struct mesh_material *mat);
 /* to's material and materials from from's, their images left out (to's
  * own materials array is not freed first). Returns 0 or -ENOMEM. */
 int mesh_copy_factors(struct mesh *to, const struct mesh *from);

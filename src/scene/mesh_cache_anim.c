@@ -518,7 +518,7 @@ static void *copy_of(const void *from, size_t size)
 int mesh_cache_unpack_live(const struct mesh_packed *p, struct mesh *out)
 {
 	float **to[MESH_ARRAYS] = {&out->positions, &out->normals, &out->uvs, &out->tangents,
-				   &out->colors};
+				   &out->colors,    &out->uv1};
 	bool ok = true;
 
 	if (p->format != VERTEX_FLOAT32)

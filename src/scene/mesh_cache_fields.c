@@ -45,6 +45,7 @@ static const struct mesh_cache_field material_fields[] = {
     FIELD(mesh_material, emissive_transform, float, MESH_FIELD_FLOAT, 0),
     FIELD(mesh_material, emissive_wrap, int, MESH_FIELD_INT, MESH_WRAP_MIRROR),
     FIELD(mesh_material, emissive_no_mipmaps, bool, MESH_FIELD_BOOL, 1),
+    FIELD(mesh_material, emissive_uv1, bool, MESH_FIELD_BOOL, 1),
     /* Images are not stored: an entry is written only for a scene that
      * decodes none (src/app/content.c), and read back with none. */
     FIELD(mesh_material, normal_map, struct image, MESH_FIELD_NONE, 0),

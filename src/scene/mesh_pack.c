@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const int components[MESH_ARRAYS] = {3, 3, 2, 4, 4};
+static const int components[MESH_ARRAYS] = {3, 3, 2, 4, 4, 2};
 static const size_t component_bytes[] = {[MESH_FLOAT32] = 4, [MESH_SNORM16] = 2, [MESH_UNORM8] = 1};
 
 int mesh_array_components(enum mesh_array a)
@@ -15,7 +15,7 @@ int mesh_array_components(enum mesh_array a)
 
 enum mesh_component mesh_array_component(enum vertex_format f, enum mesh_array a)
 {
-	if (f != VERTEX_COMPACT || a == MESH_UVS)
+	if (f != VERTEX_COMPACT || a == MESH_UVS || a == MESH_UV1)
 		return MESH_FLOAT32;
 	return a == MESH_COLORS ? MESH_UNORM8 : MESH_SNORM16;
 }
@@ -62,7 +62,8 @@ static void to_int16(const float *src, size_t values, float scale, int16_t *out)
 
 int mesh_pack(const struct mesh *m, enum vertex_format f, struct mesh_packed *out)
 {
-	const float *src[MESH_ARRAYS] = {m->positions, m->normals, m->uvs, m->tangents, m->colors};
+	const float *src[MESH_ARRAYS] = {m->positions, m->normals, m->uvs,
+					 m->tangents,  m->colors,  m->uv1};
 	size_t offset[MESH_ARRAYS], total = 0;
 	char *block;
 
@@ -108,7 +109,7 @@ int mesh_pack(const struct mesh *m, enum vertex_format f, struct mesh_packed *ou
 		if (!src[a])
 			continue;
 		out->arrays[a] = block + offset[a];
-		if (a == MESH_UVS)
+		if (a == MESH_UVS || a == MESH_UV1)
 			memcpy(block + offset[a], src[a], values * sizeof(float));
 		else if (a == MESH_COLORS)
 			to_unorm8(src[a], values, (uint8_t *)(block + offset[a]));

@@ -15,8 +15,17 @@
  * COLOR_0 may be). */
 enum vertex_format { VERTEX_FLOAT32, VERTEX_COMPACT };
 
-/* In the order of the shaders' attribute indices (render/shader.h). */
-enum mesh_array { MESH_POSITIONS, MESH_NORMALS, MESH_UVS, MESH_TANGENTS, MESH_COLORS, MESH_ARRAYS };
+/* In the order of the shaders' attribute indices (render/shader.h).
+ * MESH_UV1: the second UV set, float as the first (struct mesh uv1). */
+enum mesh_array {
+	MESH_POSITIONS,
+	MESH_NORMALS,
+	MESH_UVS,
+	MESH_TANGENTS,
+	MESH_COLORS,
+	MESH_UV1,
+	MESH_ARRAYS
+};
 
 /* How an array's components are stored. */
 enum mesh_component { MESH_FLOAT32, MESH_SNORM16, MESH_UNORM8 };

@@ -127,6 +127,13 @@ static void put_vertex(const struct subdiv *s, uint32_t out, const uint32_t *v, 
 			u += w[i] * in->uvs[(size_t)v[i] * 2 + c];
 		o->uvs[(size_t)out * 2 + c] = (float)u;
 	}
+	for (int c = 0; in->uv1 && c < 2; c++) {
+		double u = 0;
+
+		for (int i = 0; i < k; i++)
+			u += w[i] * in->uv1[(size_t)v[i] * 2 + c];
+		o->uv1[(size_t)out * 2 + c] = (float)u;
+	}
 	for (int c = 0; in->colors && c < 4; c++) {
 		double u = 0;
 
@@ -211,6 +218,8 @@ static int alloc_out(struct subdiv *s, uint64_t nv, uint64_t ni)
 		return -ENOMEM;
 	if (s->in->colors && mesh_alloc_colors(s->out))
 		return -ENOMEM;
+	if (s->in->uv1 && mesh_alloc_uv1(s->out, NULL))
+		return -ENOMEM;
 	return 0;
 }
 
@@ -243,6 +252,8 @@ int subdivide_mesh(const struct mesh *in, int n, struct mesh *out)
 		memcpy(out->tangents, in->tangents, (size_t)in->vertex_count * 16);
 	if (in->colors)
 		memcpy(out->colors, in->colors, (size_t)in->vertex_count * 16);
+	if (in->uv1)
+		memcpy(out->uv1, in->uv1, (size_t)in->vertex_count * 8);
 	for (size_t i = 0; i <= s.edges.mask; i++)
 		if (s.edges.keys[i]) {
 			uint64_t key = s.edges.keys[i] - 1;

@@ -142,7 +142,8 @@ static int split_mirrored(struct mesh *m, const double *weight, uint32_t *twin)
 	/* Every per-vertex array grows with the twins, the colours too. */
 	if (grow(&m->positions, (size_t)(n + extra) * 3) ||
 	    grow(&m->normals, (size_t)(n + extra) * 3) || grow(&m->uvs, (size_t)(n + extra) * 2) ||
-	    (m->colors && grow(&m->colors, (size_t)(n + extra) * 4)))
+	    (m->colors && grow(&m->colors, (size_t)(n + extra) * 4)) ||
+	    (m->uv1 && grow(&m->uv1, (size_t)(n + extra) * 2)))
 		return -ENOMEM;
 	for (uint32_t v = 0; v < n; v++)
 		if (twin[v] != NO_TWIN) {
@@ -153,6 +154,8 @@ static int split_mirrored(struct mesh *m, const double *weight, uint32_t *twin)
 			if (m->colors)
 				memcpy(m->colors + (size_t)twin[v] * 4, m->colors + (size_t)v * 4,
 				       16);
+			if (m->uv1)
+				memcpy(m->uv1 + (size_t)twin[v] * 2, m->uv1 + (size_t)v * 2, 8);
 		}
 	m->vertex_count = n + extra;
 	return 0;

@@ -20,6 +20,7 @@ scenes="$scenes sphere-vertex-color sphere-base-map sphere-base-map-off"
 scenes="$scenes background-color background-gradient background-image fit-long fit-long-half"
 scenes="$scenes parts-textures parts-mask parts-blend parts-leaf parts-normals parts-iridescence"
 scenes="$scenes parts-unlit parts-unlit-shade parts-emissive parts-emissive-sem-vertex parts-specgloss"
+scenes="$scenes parts-emissive-uv1"
 scenes="$scenes variant-blue"
 scenes="$scenes caption-latin caption-rtl caption-logo"
 scenes="$scenes frame-up frame-start-view frame-own-look"
@@ -138,7 +139,9 @@ render() {
 	# anyway, [material] unlit = shade); a label glowing by its
 	# emissive map on TEXCOORD_1 (in the default mode and sem-vertex); a
 	# spec-gloss material's diffuse as its base colour.
-	parts-unlit | parts-emissive | parts-specgloss)
+	# parts-emissive-uv1: its base map on TEXCOORD_0, its emissive
+	# label on TEXCOORD_1 (the mesh's second set), its band upright.
+	parts-unlit | parts-emissive | parts-specgloss | parts-emissive-uv1)
 		$k -c matcaps/gold.png --model "$m/$1.glb" --output "$o"
 		;;
 	parts-unlit-shade)

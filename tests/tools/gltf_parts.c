@@ -113,7 +113,7 @@ int gltf_write_parts(const char *path, const struct gltf_part *parts, int n)
 int gltf_write_parts_more(const char *path, const struct gltf_part *parts,
 			  const struct gltf_part_more *more, int n)
 {
-	static const struct gltf_part_more none = {NULL, NULL, 0, 0};
+	static const struct gltf_part_more none = {NULL, NULL, 0, 0, NULL, 0};
 	char *vbuf = NULL, *abuf = NULL, *mbuf = NULL, *pbuf = NULL, *ibuf = NULL, *json = NULL;
 	size_t vs = 0, as = 0, ms = 0, ps = 0, is = 0, js = 0;
 	FILE *views = open_memstream(&vbuf, &vs), *acc = open_memstream(&abuf, &as),
@@ -122,7 +122,13 @@ int gltf_write_parts_more(const char *path, const struct gltf_part *parts,
 	struct blob b = {NULL, 0};
 	int material = -1, images = 0, ret = -1;
 	size_t img_off[MAX_IMAGES], img_len[MAX_IMAGES];
+	/* Second UV sets: their views and accessors after the parts' (4 n + j),
+	 * the images' views after those. */
+	size_t uv1_off[MAX_IMAGES], uv1_count[MAX_IMAGES];
+	int uv1s = 0, first_image = 4 * n;
 
+	for (int k = 0; more && k < n; k++)
+		first_image += more[k].uv1 != NULL;
 	for (int k = 0; k < n; k++) {
 		const struct gltf_part_more *x = more ? &more[k] : &none;
 
@@ -136,8 +142,8 @@ int gltf_write_parts_more(const char *path, const struct gltf_part *parts,
 			fprintf(mats, ":[%g,%g,%g,%g]", parts[k].factor[0], parts[k].factor[1],
 				parts[k].factor[2], parts[k].factor[3]);
 			if (parts[k].png) {
-				int t =
-				    embed(parts[k].png, &b, imgs, 4 * n, &images, img_off, img_len);
+				int t = embed(parts[k].png, &b, imgs, first_image, &images, img_off,
+					      img_len);
 
 				if (t < 0)
 					goto out;
@@ -149,8 +155,8 @@ int gltf_write_parts_more(const char *path, const struct gltf_part *parts,
 			fprintf(mats, x->spec_gloss ? ",\"glossinessFactor\":0.5}}"
 						    : ",\"metallicFactor\":0}");
 			if (x->emissive_png) {
-				int t = embed(x->emissive_png, &b, imgs, 4 * n, &images, img_off,
-					      img_len);
+				int t = embed(x->emissive_png, &b, imgs, first_image, &images,
+					      img_off, img_len);
 
 				if (t < 0)
 					goto out;
@@ -159,7 +165,7 @@ int gltf_write_parts_more(const char *path, const struct gltf_part *parts,
 					x->emissive_info ? x->emissive_info : "");
 			}
 			if (parts[k].normal_png) {
-				int t = embed(parts[k].normal_png, &b, imgs, 4 * n, &images,
+				int t = embed(parts[k].normal_png, &b, imgs, first_image, &images,
 					      img_off, img_len);
 
 				if (t < 0)
@@ -170,9 +176,22 @@ int gltf_write_parts_more(const char *path, const struct gltf_part *parts,
 				parts[k].material ? parts[k].material : "");
 		}
 		fprintf(prims,
-			"%s{\"attributes\":{\"POSITION\":%d,\"NORMAL\":%d,\"TEXCOORD_%d\":%d},"
-			"\"indices\":%d,\"material\":%d}",
-			k ? "," : "", 4 * k, 4 * k + 1, x->uv_set, 4 * k + 2, 4 * k + 3, material);
+			"%s{\"attributes\":{\"POSITION\":%d,\"NORMAL\":%d,\"TEXCOORD_%d\":%d",
+			k ? "," : "", 4 * k, 4 * k + 1, x->uv_set, 4 * k + 2);
+		if (x->uv1) {
+			uv1_count[uv1s] = parts[k].mesh->vertex_count;
+			uv1_off[uv1s] = put(&b, x->uv1, uv1_count[uv1s] * 8);
+			fprintf(prims, ",\"TEXCOORD_%d\":%d", x->uv1_set, 4 * n + uv1s++);
+		}
+		fprintf(prims, "},\"indices\":%d,\"material\":%d}", 4 * k + 3, material);
+	}
+	for (int j = 0; j < uv1s; j++) {
+		fprintf(views, ",{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu}", uv1_off[j],
+			uv1_count[j] * 8);
+		fprintf(acc,
+			",{\"bufferView\":%d,\"componentType\":5126,\"count\":%zu,"
+			"\"type\":\"VEC2\"}",
+			4 * n + j, uv1_count[j]);
 	}
 	/* The images' views after every part's. */
 	for (int i = 0; i < images; i++)

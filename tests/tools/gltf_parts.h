@@ -27,6 +27,10 @@ struct gltf_part_more {
 	/* factor and png written as KHR_materials_pbrSpecularGlossiness's
 	 * diffuseFactor and diffuseTexture, not pbrMetallicRoughness's. */
 	int spec_gloss;
+	/* A second UV set, one pair per vertex of the part's mesh, written as
+	 * TEXCOORD_<uv1_set> beside the first; NULL: none. */
+	const float *uv1;
+	int uv1_set;
 };
 
 /* One node, one mesh of n primitives. Returns 0 or -1. */

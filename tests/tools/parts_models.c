@@ -197,6 +197,35 @@ static int put(const char *dir, const char *name, const struct gltf_part *parts,
 	return put_more(dir, name, parts, NULL, n);
 }
 
+/* A label whose base map (stripes) reads TEXCOORD_0 and whose emissive
+ * map reads TEXCOORD_1, through its own transform: the second set swaps
+ * u and v, so the label's white band runs up the quad where the first set
+ * would lay it across. */
+static int two_sets(const char *dir, const struct mesh *s, const struct mesh *q,
+		    const char *tex_base, const char *tex_label)
+{
+	static const char glow[] = "\"emissiveFactor\":[1,0.6,0.2]";
+	static const char glow_info[] = "\"texCoord\":1,\"extensions\":{\"KHR_texture_transform\":{"
+					"\"offset\":[0.25,0],\"scale\":[0.5,1]}}";
+	struct gltf_part label[2] = {{s, {0.5, 0.5, 0.55, 1}, NULL, NULL, NULL, 1, NULL},
+				     {q, {0.4, 0.4, 0.4, 1}, tex_base, glow, NULL, 1, NULL}};
+	struct gltf_part_more more[2] = {{NULL, NULL, 0, 0, NULL, 0},
+					 {tex_label, glow_info, 0, 0, NULL, 1}};
+	float *uv1 = malloc((size_t)q->vertex_count * 8 + 1);
+	int bad;
+
+	if (!uv1)
+		return 1;
+	for (uint32_t i = 0; i < q->vertex_count; i++) {
+		uv1[i * 2] = q->uvs[i * 2 + 1];
+		uv1[i * 2 + 1] = q->uvs[i * 2];
+	}
+	more[1].uv1 = uv1;
+	bad = put_more(dir, "parts-emissive-uv1.glb", label, more, 2);
+	free(uv1);
+	return bad;
+}
+
 /* Unlit, emission and spec-gloss (issue 37): a scan's unlit textured top
  * above a shaded bottom; a glowing label, its emissive map on TEXCOORD_1
  * through its own transform, before a grey body; a spec-gloss top
@@ -216,14 +245,17 @@ static int light_models(const char *dir, const struct mesh *s, const struct mesh
 				    {bottom, {1, 1, 1, 1}, tex_b, NULL, NULL, 1, NULL}};
 	struct gltf_part label[2] = {{s, {0.5, 0.5, 0.55, 1}, NULL, NULL, NULL, 1, NULL},
 				     {q, {0.2, 0.2, 0.2, 1}, NULL, glow, NULL, 1, NULL}};
-	struct gltf_part_more label_more[2] = {{NULL, NULL, 0, 0}, {tex_label, glow_info, 1, 0}};
+	struct gltf_part_more label_more[2] = {{NULL, NULL, 0, 0, NULL, 0},
+					       {tex_label, glow_info, 1, 0, NULL, 0}};
 	struct gltf_part sg[2] = {{top, {0.9, 0.6, 0.4, 1}, tex_a, NULL, NULL, 1, NULL},
 				  {bottom, {0.3, 0.5, 1, 1}, NULL, NULL, NULL, 1, NULL}};
-	struct gltf_part_more sg_more[2] = {{NULL, NULL, 0, 1}, {NULL, NULL, 0, 1}};
+	struct gltf_part_more sg_more[2] = {{NULL, NULL, 0, 1, NULL, 0},
+					    {NULL, NULL, 0, 1, NULL, 0}};
 
 	return put(dir, "parts-unlit.glb", scan, 2) |
 	       put_more(dir, "parts-emissive.glb", label, label_more, 2) |
-	       put_more(dir, "parts-specgloss.glb", sg, sg_more, 2);
+	       put_more(dir, "parts-specgloss.glb", sg, sg_more, 2) |
+	       two_sets(dir, s, q, tex_b, tex_label);
 }
 
 int parts_models_write(const char *dir)

@@ -360,6 +360,28 @@ static void keeps_seams_and_attributes(void **state)
 	mesh_release(&sphere);
 }
 
+/* A second UV set (an emissive map's own) follows simplification and the
+ * vertex reorder as the first does: each kept vertex keeps its own pair. */
+static void a_second_uv_set_follows(void **state)
+{
+	struct mesh m;
+	struct lod_result r;
+
+	(void)state;
+	assert_int_equal(mesh_uv_sphere(&m, 64, 32), 0);
+	assert_int_equal(mesh_alloc_uv1(&m, NULL), 0);
+	for (uint32_t v = 0; v < m.vertex_count; v++) {
+		m.uv1[v * 2] = m.uvs[v * 2 + 1];
+		m.uv1[v * 2 + 1] = m.uvs[v * 2];
+	}
+	assert_int_equal(lod_prepare_mesh(&m, 4.0, 160, 90, &r), 0);
+	assert_true(r.triangles_after < r.triangles_before / 2);
+	assert_non_null(m.uv1);
+	for (uint32_t v = 0; v < m.vertex_count; v++)
+		assert_true(m.uv1[v * 2] == m.uvs[v * 2 + 1] && m.uv1[v * 2 + 1] == m.uvs[v * 2]);
+	mesh_release(&m);
+}
+
 /* The sphere as four parts (quarters by longitude), each with vertices of
  * its own, as four glTF primitives are: range k, material k, every vertex
  * of part k coloured k / 4. */
@@ -528,6 +550,7 @@ int main(void)
 	    cmocka_unit_test(follows_the_display),
 	    cmocka_unit_test(surface_and_normals_within_bounds),
 	    cmocka_unit_test(keeps_seams_and_attributes),
+	    cmocka_unit_test(a_second_uv_set_follows),
 	    cmocka_unit_test(several_materials_keep_their_triangles_and_no_crack),
 	    cmocka_unit_test(creases_do_not_stop_it),
 	    cmocka_unit_test(zero_budget_only_reorders),

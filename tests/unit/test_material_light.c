@@ -11,6 +11,7 @@
 #include "scene/material.h"
 #include "scene/mesh.h"
 #include "util/image.h"
+#include "util/log.h"
 
 #include <math.h>
 #include <setjmp.h>
@@ -115,7 +116,8 @@ static void emission_factor_strength_and_map(void **state)
 	struct fixture *f = *state;
 	struct gltf_part p[2] = {{&f->sphere, {1, 1, 1, 1}, NULL, glow, NULL, 1, NULL},
 				 {&f->sphere, {0.5, 0.5, 1, 1}, NULL, NULL, NULL, 1, NULL}};
-	struct gltf_part_more more[2] = {{f->png, info, 1, 0}, {NULL, NULL, 1, 0}};
+	struct gltf_part_more more[2] = {{f->png, info, 1, 0, NULL, 0},
+					 {NULL, NULL, 1, 0, NULL, 0}};
 	static const float want[6] = {0.5f, 0, 0, 1, 0.5f, 0};
 	struct material_config cfg;
 	struct material mat;
@@ -133,8 +135,73 @@ static void emission_factor_strength_and_map(void **state)
 		assert_true(fabsf(mat.surfaces[0].emissive_transform[k] - want[k]) < 1e-6f);
 	assert_false(mat.surfaces[1].features & MATERIAL_EMISSIVE);
 	assert_true(material_needs_uvs(mat.features));
+	/* One set in the file: no second one is carried, nor bound. */
+	assert_null(m.uv1);
+	assert_false(material_needs_uv1(mat.features));
 	material_release(&mat);
 	mesh_release(&m);
+}
+
+/* The base map on TEXCOORD_0 and the emissive map on TEXCOORD_1: the
+ * second set is carried as the mesh's uv1 (the part's own, zeros for the
+ * part without one) and the map drawn by it, with no warning; before, the
+ * emissive factor was drawn alone and the journal said so. */
+static void emission_on_its_own_uv_set(void **state)
+{
+	static const char glow[] = "\"emissiveFactor\":[1,0.5,0.25]";
+	static const char info[] = "\"texCoord\":1,\"extensions\":{\"KHR_texture_transform\":{"
+				   "\"offset\":[0.25,0],\"scale\":[0.5,1]}}";
+	struct fixture *f = *state;
+	uint32_t nv = f->sphere.vertex_count;
+	float *uv1 = malloc((size_t)nv * 8);
+	struct gltf_part p[2] = {{&f->sphere, {1, 1, 1, 1}, f->png, glow, NULL, 1, NULL},
+				 {&f->sphere, {0.5, 0.5, 1, 1}, NULL, NULL, NULL, 1, NULL}};
+	struct gltf_part_more more[2] = {{f->png, info, 0, 0, NULL, 1},
+					 {NULL, NULL, 0, 0, NULL, 0}};
+	struct material_config cfg;
+	struct material mat;
+	struct mesh m;
+	unsigned warned;
+
+	assert_non_null(uv1);
+	/* Another mapping than TEXCOORD_0's: u and v swapped. */
+	for (uint32_t i = 0; i < nv; i++) {
+		uv1[i * 2] = f->sphere.uvs[i * 2 + 1];
+		uv1[i * 2 + 1] = f->sphere.uvs[i * 2];
+	}
+	more[0].uv1 = uv1;
+	material_config_defaults(&cfg);
+	warned = log_warnings();
+	load(f, p, more, 2, &cfg, &m, &mat);
+	assert_int_equal(log_warnings(), warned);
+	assert_non_null(m.uvs);
+	assert_non_null(m.uv1);
+	assert_int_equal(m.vertex_count, 2 * nv);
+	for (uint32_t i = 0; i < nv * 2; i++) {
+		assert_true(m.uv1[i] == uv1[i]);
+		assert_true(m.uv1[nv * 2 + i] == 0.0f);
+	}
+	assert_true(m.materials[0].emissive_uv1 && !m.materials[1].emissive_uv1);
+	assert_int_equal(mat.surfaces[0].features &
+			     (MATERIAL_EMISSIVE_MAP | MATERIAL_EMISSIVE_UV1 | MATERIAL_BASE_MAP),
+			 MATERIAL_EMISSIVE_MAP | MATERIAL_EMISSIVE_UV1);
+	assert_int_equal(mat.surfaces[0].emissive_map.width, 4);
+	assert_true(mat.features & MATERIAL_BASE_MAP);
+	assert_false(mat.surfaces[1].features & MATERIAL_EMISSIVE_UV1);
+	assert_true(material_needs_uv1(mat.features) && material_needs_uvs(mat.features));
+	/* The part's program variant reads the second set; the other's none. */
+	struct draw_list l;
+	assert_int_equal(draw_list_build(&l, m.ranges, m.range_count, m.indices, m.index_count,
+					 m.vertex_count, mat.surfaces, mat.surface_count, true),
+			 0);
+	for (uint32_t i = 0; i < l.count; i++)
+		assert_int_equal(draw_variant_adds(draw_item_variant(&l.items[i])) &
+				     MATERIAL_EMISSIVE_UV1,
+				 l.items[i].surface == 0 ? MATERIAL_EMISSIVE_UV1 : 0u);
+	draw_list_release(&l);
+	material_release(&mat);
+	mesh_release(&m);
+	free(uv1);
 }
 
 /* A spec-gloss material: diffuseFactor (with its alpha) and diffuseTexture
@@ -143,7 +210,7 @@ static void spec_gloss_diffuse_is_the_base_colour(void **state)
 {
 	struct fixture *f = *state;
 	struct gltf_part p[1] = {{&f->sphere, {0.25, 0.5, 0.75, 0.6}, f->png, NULL, NULL, 1, NULL}};
-	struct gltf_part_more more[1] = {{NULL, NULL, 0, 1}};
+	struct gltf_part_more more[1] = {{NULL, NULL, 0, 1, NULL, 0}};
 	struct material_config cfg;
 	struct material mat;
 	struct mesh m;
@@ -165,6 +232,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(unlit_per_material),
 	    cmocka_unit_test(emission_factor_strength_and_map),
+	    cmocka_unit_test(emission_on_its_own_uv_set),
 	    cmocka_unit_test(spec_gloss_diffuse_is_the_base_colour),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);

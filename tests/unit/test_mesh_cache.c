@@ -157,6 +157,30 @@ static void an_entry_reads_back_as_written(void **state)
 	mesh_cache_entry_free(e);
 }
 
+/* A mesh with a second UV set (an emissive map on its own TEXCOORD_n)
+ * stores it, and the material's emissive_uv1, and reads both back. */
+static void a_second_uv_set_reads_back(void **state)
+{
+	struct fixture *f = *state;
+	struct mesh_cache_entry *e;
+	struct mesh m;
+	struct mesh_packed p;
+
+	assert_int_equal(mesh_uv_sphere(&m, 12, 8), 0);
+	assert_int_equal(mesh_alloc_uv1(&m, m.uvs), 0);
+	m.uv1[3] = 7.5f; /* a repeated map's UVs leave [0, 1]: stored as float */
+	m.material.emissive_uv1 = true;
+	assert_int_equal(mesh_pack(&m, VERTEX_COMPACT, &p), 0);
+	assert_int_equal(mesh_cache_write(f->dir, &f->key, &p, &m, MESH_CACHE_MAX_BYTES), 0);
+	assert_int_equal(mesh_cache_open(f->dir, &f->key, &e), 0);
+	assert_non_null(mesh_cache_entry_mesh(e)->arrays[MESH_UV1]);
+	assert_memory_equal(mesh_cache_entry_mesh(e)->arrays[MESH_UV1], m.uv1, m.vertex_count * 8);
+	assert_true(mesh_cache_entry_materials(e)->material.emissive_uv1);
+	mesh_cache_entry_free(e);
+	mesh_packed_release(&p);
+	mesh_release(&m);
+}
+
 /* Every truncation and every single-bit flip of the header, and flips
  * spread over the payload: each is refused, none crashes. */
 static void a_damaged_entry_is_refused(void **state)
@@ -373,7 +397,7 @@ static void every_field_is_in_the_cache_table(void **state)
 	/* Stored: every field but the five images (34 words, and 14 for
 	 * unlit and emission). */
 	assert_int_equal(mesh_cache_record_words(MESH_CACHE_RANGE), 6);
-	assert_int_equal(mesh_cache_record_words(MESH_CACHE_MATERIAL), 48);
+	assert_int_equal(mesh_cache_record_words(MESH_CACHE_MATERIAL), 49);
 }
 
 static void the_directory_is_named_as_systemd_and_xdg_say(void **state)
@@ -693,6 +717,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test_setup_teardown(compact_vertices_are_within_a_step, setup, teardown),
 	    cmocka_unit_test_setup_teardown(an_entry_reads_back_as_written, setup, teardown),
+	    cmocka_unit_test_setup_teardown(a_second_uv_set_reads_back, setup, teardown),
 	    cmocka_unit_test_setup_teardown(a_damaged_entry_is_refused, setup, teardown),
 	    cmocka_unit_test_setup_teardown(a_resealed_entry_is_still_checked, setup, teardown),
 	    cmocka_unit_test_setup_teardown(another_key_or_version_is_a_miss, setup, teardown),
