@@ -199,7 +199,7 @@ deps-test:
 
 # The test targets say what is missing before anything is built (one
 # dpkg-query, read only when such a target is asked for).
-TEST_GOALS := $(filter test unit check golden bench,$(MAKECMDGOALS))
+TEST_GOALS := $(filter test unit quick check golden bench,$(MAKECMDGOALS))
 ifneq ($(TEST_GOALS),)
 DEPS_INSTALLED := $(shell dpkg-query -W -f='$${db:Status-Abbrev} $${Package}\n' \
 	$(DEBIAN_PACKAGES) $(DEBIAN_TEST_PACKAGES) 2>/dev/null | sed -n 's/^ii *//p')
