@@ -72,7 +72,7 @@ LDLIBS    = $(PKG_LIBS) -lmeshoptimizer -ldl -lm
 SRC_APP     := app/kiosk_models app/kiosk app/kiosk_anim app/kiosk_variant app/kiosk_content app/kiosk_report app/reload \
 	       app/signals
 SRC_OPS     := ops/check ops/import ops/import_copy ops/import_ini ops/metrics ops/screen ops/service ops/status
-SRC_CONTENT := content/content content/load_guard content/content_cache content/content_look content/content_caption content/content_play content/matcap_set content/matcap_job content/model_list \
+SRC_CONTENT := content/content content/load_guard content/content_cache content/content_look content/content_view content/content_caption content/content_play content/matcap_set content/matcap_job content/model_list \
 	       content/model_loader content/worker
 SRC_CONFIG  := config/options config/options_file config/model_settings config/settings config/settings_table config/settings_origin
 SRC_STATE   := state/app state/view state/power state/schedule
@@ -85,7 +85,7 @@ SRC_INPUT   := input/action input/button input/gesture input/touch_decode input/
 SRC_CAMERA  := camera/camera_feed camera/camera_link camera/camera_math camera/camera_proto \
 	       camera/camera_texture
 SRC_RENDER  := render/background render/bake render/draw_list render/framing render/gl render/poster render/render_scale render/render_caption \
-	       render/caption render/render render/render_draw render/render_live render/render_morph render/render_variant render/shader render/shading
+	       render/caption render/render render/render_draw render/render_live render/render_skin render/render_morph render/render_variant render/shader render/shading
 SRC_SCENE   := scene/lod scene/material scene/mesh scene/mesh_cache scene/mesh_cache_anim scene/mesh_cache_fields scene/mesh_cache_key scene/mesh_gen scene/mesh_pack scene/subdivide scene/tangent \
 	       scene/texture scene/caption scene/caption_text
 SRC_SCENE   += scene/gltf_json_depth
@@ -199,7 +199,7 @@ deps-test:
 
 # The test targets say what is missing before anything is built (one
 # dpkg-query, read only when such a target is asked for).
-TEST_GOALS := $(filter test unit check golden bench,$(MAKECMDGOALS))
+TEST_GOALS := $(filter test unit quick check golden bench,$(MAKECMDGOALS))
 ifneq ($(TEST_GOALS),)
 DEPS_INSTALLED := $(shell dpkg-query -W -f='$${db:Status-Abbrev} $${Package}\n' \
 	$(DEBIAN_PACKAGES) $(DEBIAN_TEST_PACKAGES) 2>/dev/null | sed -n 's/^ii *//p')

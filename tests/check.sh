@@ -80,7 +80,7 @@ resolve() {
 # the test runs.
 needs() {
 	case $1 in
-	layers) ;;
+	layers) echo all ;;
 	unit) if [ -n "$2" ]; then echo "asan-test_$2"; else echo asan-unit; fi ;;
 	golden) echo "all $TOOLS/mkmodels $TOOLS/imgdiff" ;;
 	egl) echo "all $TOOLS/mkmodels $TOOLS/imgdiff" ;;

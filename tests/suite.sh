@@ -74,10 +74,11 @@ imgdiff_golden() {
 	"$TOOLS/imgdiff" --tol 8 --share $_share "$1" "$2"
 }
 
-# The layers of src/: no include goes up or across, no circle, no file
-# over 700 lines; and the checker itself, on fake trees.
+# The layers of src/: no include goes up or across, no circle of includes
+# or of calls between files (read from build/'s objects), no file over 700
+# lines; and the checker itself, on fake trees.
 test_layers() {
-	check "layers: no include goes up" sh tests/tools/layers.sh src
+	check "layers: no include goes up, no circle of includes or calls" sh tests/tools/layers.sh src
 	sh tests/tools/layers_selftest.sh >"$out/layers-selftest.log" 2>&1
 	[ -s "$out/layers-selftest.log" ] ||
 		echo "not ok the self-test printed nothing" >"$out/layers-selftest.log"

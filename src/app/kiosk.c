@@ -24,13 +24,6 @@
 #include <time.h>
 #include <unistd.h>
 
-void kiosk_tell_app(struct kiosk *k, enum app_msg_kind kind)
-{
-	struct app_msg m = {.kind = kind};
-
-	app_apply(k->app, &m);
-}
-
 static bool awake(const struct kiosk *k)
 {
 	return !k->screen || screen_on(k->screen);
@@ -353,8 +346,9 @@ static void reopen_devices(struct kiosk *k, unsigned sections)
 }
 
 /* A reload's content is on the screen (kiosk_content.c): its settings
- * now, and the devices whose sections changed opened again. */
-void kiosk_apply_reload(struct kiosk *k, uint64_t now_ns)
+ * now, and the devices whose sections changed opened again; then the
+ * reload is over for systemd. */
+static void apply_reload(struct kiosk *k, uint64_t now_ns)
 {
 	unsigned reopen = reload_reopen(&k->started, &k->applied, &k->reload.fresh);
 
@@ -368,6 +362,7 @@ void kiosk_apply_reload(struct kiosk *k, uint64_t now_ns)
 	reopen_devices(k, reopen);
 	log_info("reload: done (%ld frames drawn meanwhile)", k->frames_drawn - k->reload_frames);
 	k->counts.reloads++;
+	service_reloading(true);
 }
 
 /* SIGHUPs queued together are one reload. */
@@ -566,8 +561,10 @@ static int loop_once(struct kiosk *k, int sig_fd)
 		return 1;
 	/* After a reload was applied the inputs and the camera may be new:
 	 * their revents are stale, and the next poll asks again. */
-	if (kiosk_content_service(k, fds))
+	if (kiosk_content_service(k, fds)) {
+		apply_reload(k, monotonic_ns());
 		return 0;
+	}
 	if ((ret = service_display(k, fds)))
 		return ret;
 	service_camera(k, fds[FD_CAMERA].revents);

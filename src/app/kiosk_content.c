@@ -25,14 +25,15 @@ static void reload_ready(void *ctx)
 		if (k->reload.ret == 0)
 			k->shown_matcap = -1;
 		reload_job_release(&k->reload);
+		service_reloading(true);
 	} else {
-		/* The old content's cache write is waited for on the worker. */
+		/* The old content's cache write is waited for on the worker.
+		 * Its settings are the loop's to apply (kiosk_content_service's
+		 * caller), then the reload is over. */
 		worker_retire(k->worker, &old);
 		k->matcap_set_id++;
-		kiosk_apply_reload(k, monotonic_ns());
 		k->reload_applied = true;
 	}
-	service_reloading(true);
 }
 
 /* A file that fails keeps the previous texture and says so; the image is

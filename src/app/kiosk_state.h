@@ -126,7 +126,16 @@ struct kiosk {
 	struct kiosk_variant variant;
 };
 
-void kiosk_tell_app(struct kiosk *k, enum app_msg_kind kind);
+/* A message with no payload to the app state (a frame shown, the display
+ * to draw again). Inline: every file of the loop tells the app, and a
+ * function of kiosk.c called from the files kiosk.c calls would make them
+ * one piece again (tests/tools/layers.sh refuses circles of calls). */
+static inline void kiosk_tell_app(struct kiosk *k, enum app_msg_kind kind)
+{
+	struct app_msg m = {.kind = kind};
+
+	app_apply(k->app, &m);
+}
 /* src/app/kiosk_anim.c: the animation's pose at now, a frame asked for
  * when it changed; returns when the next frame is due (CLOCK_NEVER:
  * none). */
@@ -142,8 +151,9 @@ void kiosk_content_stop(struct kiosk *k);
 void kiosk_content_reload(struct kiosk *k);
 /* Before the loop sleeps: the next job, when the worker is idle. */
 void kiosk_content_start_jobs(struct kiosk *k);
-/* A job done is handed on. True when a reload was applied (the devices
- * may be new). */
+/* A job done is handed on. True when a reload's content was uploaded:
+ * the loop then applies its settings (kiosk.c; the devices may be new)
+ * and tells systemd the reload is over (service_reloading). */
 bool kiosk_content_service(struct kiosk *k, const struct pollfd *fds);
 void kiosk_watch_matcaps(struct kiosk *k);
 /* kiosk_models_parts.look_changed: a model's own matcaps or background
@@ -151,7 +161,5 @@ void kiosk_watch_matcaps(struct kiosk *k);
  * clear colour follow. */
 void kiosk_look_changed(void *ctx, unsigned what);
 void kiosk_service_matcaps(struct kiosk *k, const struct pollfd *fds, uint64_t now);
-/* src/app/kiosk.c: the settings of a reload whose content is on the GPU now. */
-void kiosk_apply_reload(struct kiosk *k, uint64_t now_ns);
 
 #endif

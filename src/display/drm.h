@@ -16,6 +16,10 @@ enum drm_api { DRM_API_AUTO, DRM_API_ATOMIC, DRM_API_LEGACY };
 
 struct drm_ops {
 	const char *name;
+	/* The atomic backend: the overlay and scaling planes need it. A flag
+	 * rather than a comparison with &drm_atomic_ops, so that what
+	 * drm_atomic.c calls (kms_overlay.c) does not refer back to it. */
+	bool atomic;
 	/* Show fb and request an event at the next vblank. The first call
 	 * (or any after a hotplug) also sets the mode. Never blocks. */
 	int (*flip)(struct drm *drm, uint32_t fb, bool modeset);

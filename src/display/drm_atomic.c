@@ -238,6 +238,7 @@ static void atomic_destroy(struct drm *drm)
 
 const struct drm_ops drm_atomic_ops = {
     .name = "atomic",
+    .atomic = true,
     .flip = atomic_flip,
     .disable = atomic_disable,
     .sleep = atomic_sleep,

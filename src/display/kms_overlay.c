@@ -95,7 +95,7 @@ static struct kms_overlay *overlay_new(const struct drm *drm)
 	struct kms_overlay *o;
 	bool immutable = true;
 
-	if (drm->ops != &drm_atomic_ops)
+	if (!drm->ops || !drm->ops->atomic)
 		return NULL;
 	o = calloc(1, sizeof(*o));
 	if (!o)

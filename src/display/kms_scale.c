@@ -37,7 +37,7 @@ bool kms_scale_plane(struct drm *drm, struct gbm_device *gbm, uint32_t format,
 
 	if (scale >= 1)
 		return unscaled(drm);
-	if (drm->ops != &drm_atomic_ops) {
+	if (!drm->ops || !drm->ops->atomic) {
 		log_info("kms: render_scale %.2f: legacy modesetting scales no plane: a GL pass "
 			 "scales the frame",
 			 scale);

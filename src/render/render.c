@@ -69,7 +69,7 @@ void renderer_free(struct renderer *r)
 		return;
 	render_drop_programs(r);
 	r->gl->DeleteBuffers(SHADER_ATTR_COUNT, r->vbo);
-	render_live_free(r);
+	render_skin_free(r);
 	r->gl->DeleteBuffers(1, &r->ibo);
 	r->gl->DeleteTextures(1, &r->matcap);
 	drop_texture(r->gl, &r->detail);
@@ -186,8 +186,11 @@ int renderer_set_packed(struct renderer *r, const struct mesh_packed *m)
 	r->mesh_serial++;
 	r->drawn = m->format;
 	r->position_scale = m->position_scale;
-	if (!ret)
-		ret = render_skin_set(r);
+	/* Skinned or morphed otherwise than the last mesh: other programs. */
+	if (!ret && render_skin_set(r)) {
+		render_drop_programs(r);
+		ret = r->mode_set ? renderer_set_mode(r, r->mode, r->ortho) : 0;
+	}
 	if (!ret && r->mode_set)
 		prepare_variants(r);
 	/* Colours without an array are one constant (material vertex_color). */
@@ -500,7 +503,7 @@ static struct program *program_get(struct renderer *r, enum shading_mode mode, b
 		return p;
 	if (shader_source_matcap(&src, r->shader_dir, features, mode, ortho, lit, r->highp))
 		return NULL;
-	render_skin_source(r, &src); /* a model skinned on the GPU (render_live.c) */
+	render_skin_source(r, &src); /* a model skinned on the GPU (render_skin.c) */
 	if (shader_program_build(r->gl, &src, &id))
 		return NULL;
 	p->id = id;

@@ -88,7 +88,7 @@ struct renderer {
 	 * poses replace; live_scratch: room for a pose gathered into chunks. */
 	bool live, live_next;
 	float *live_scratch;
-	/* Skinned on the GPU (render_live.c): the palette's bones (0: no
+	/* Skinned on the GPU (render_skin.c): the palette's bones (0: no
 	 * skinning, today's programs), its rows (12 floats a bone), the
 	 * bone limit (GL_MAX_VERTEX_UNIFORM_VECTORS' palette, or less for the
 	 * bench), the bones' indices and weights arrays. */
@@ -121,15 +121,18 @@ struct renderer {
 	int look;
 };
 
-/* render.c: every program dropped (built again on use). render_live.c:
- * the palette of the mesh being set (bones_next, else none) in place, the
- * programs rebuilt when it changed (the skinning arrays disabled when
- * none skins); the skinning arrays bound from vertex `base`; the
- * palette's rows for a program that skins. */
+/* render.c: every program dropped (built again on use). */
 void render_drop_programs(struct renderer *r);
-/* What render_live.c holds, given back (renderer_free). */
-void render_live_free(struct renderer *r);
-int render_skin_set(struct renderer *r);
+/* render_skin.c: what the skinning holds, given back (renderer_free); the
+ * palette of the mesh being set (bones_next, else none) in place, true
+ * when it changed and the programs must be built again (the skinning
+ * arrays disabled when none skins); a split's palettes copied (0 or
+ * -ENOMEM); the skinning arrays bound from vertex `base`; the palette's
+ * rows for a program that skins. */
+void render_skin_free(struct renderer *r);
+bool render_skin_set(struct renderer *r);
+struct skin_palettes; /* render.h */
+int render_skin_set_palettes(struct renderer *r, const struct skin_palettes *sp);
 void render_skin_bind(const struct renderer *r, uint32_t base);
 void render_skin_uniforms(const struct renderer *r, const struct program *p);
 /* A split palette's: the rows of the range's bones, when it is another
@@ -147,7 +150,7 @@ void render_morph_uniforms(const struct renderer *r, const struct program *p);
 struct skin_morphs; /* render.h */
 int render_morph_upload(struct renderer *r, const struct skin_morphs *m, uint32_t vertex_count);
 void render_morph_free(struct renderer *r);
-/* render_live.c: a program that skins (r->bones), its palette, attributes
+/* render_skin.c: a program that skins (r->bones), its palette, attributes
  * and morphs. */
 void render_skin_source(const struct renderer *r, struct shader_source *src);
 /* The matcap's minifying filter for a viewport (render.c). */
