@@ -14,8 +14,8 @@ trap 'rm -rf "$scratch"' EXIT
 "$TOOLS/mkmodels" "$scratch" --bench >/dev/null
 echo "## Live playback's paths"
 echo
-echo "A model that plays its animation is posed each frame on one of three paths (README:"
-echo "live playback): its bones and morph targets in the vertex shader (\"GPU, morphs too\"),"
+echo "A model that plays its animation is posed each frame on one of three paths (docs/curator.md,"
+echo "Animations): its bones and morph targets in the vertex shader (\"GPU, morphs too\"),"
 echo "the bones there and the targets on the CPU where the GPU's vertex attributes do not"
 echo "hold them (\"GPU, morphs on the CPU\": the arrays replaced a frame), or all on the CPU."
 echo "Time: the median of 100 frames at 1280x720 through OSMesa, ms to pose and set what the"
