@@ -42,7 +42,7 @@
 	X(CONFIG, 78,                                                                              \
 	  "a bad setting, named with its file and line (also two buttons on one line, or what a "  \
 	  "USB stick may not set in --import); the service is not restarted",                      \
-	  "config(uration)? (file|error)|bad setting|may not set")
+	  "config(uration)? (file|error)|bad setting|has an error|may not")
 
 #define EXIT_CODE_ENUM(name, number, means, words) EXIT_CODE_##name = number,
 enum exit_code { EXIT_CODE_ROWS(EXIT_CODE_ENUM) };
