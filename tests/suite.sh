@@ -495,8 +495,9 @@ test_man() {
 # what the program returns (tests/e2e/exit_claims.sh, against
 # src/config/exit_codes.h).
 test_doc_claims() {
-	check "README.md, docs/*.md, config/kiosk.ini: every exit status stated is the program's" \
-		sh -c "sh tests/e2e/exit_claims.sh $MKMAN README.md \$(ls docs/*.md 2>/dev/null) config/kiosk.ini"
+	check "README.md, docs/*.md, config/kiosk.ini, README.Debian: every exit status stated is the program's" \
+		sh -c "sh tests/e2e/exit_claims.sh $MKMAN README.md \$(ls docs/*.md 2>/dev/null) config/kiosk.ini \\
+		config/debian/README.Debian"
 }
 
 # The shipped matcaps regenerate byte for byte from the baker.

@@ -26,7 +26,7 @@ BEGIN {
 	}
 	rows_n = n
 	trig = "[Ee]xit(s|ed)?( (status|code)(es)?)?( (is|of|with|was))? [(]?[0-9]+"
-	list = "(, (and |or )?|,? (and|or) )[0-9]+"
+	list = "([,;] (and |or )?|,? (and|or) )[0-9]+"
 	bad = 0
 }
 # The number at the end of a match.
