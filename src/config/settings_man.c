@@ -172,11 +172,12 @@ static void who_may_set(FILE *out, const struct option_def *d)
 {
 	const char *section = options_sections[d->section].name;
 
-	fprintf(out,
-		"kiosk.ini, kiosk.ini.d: yes; a model's NAME.ini: %s; a USB stick: %s; "
-		"the command line: ",
-		model_settings_allowed(section, d->key) ? "yes" : "no",
-		options_rules_stick.allowed(section, d->key) ? "yes" : "no");
+	fprintf(
+	    out,
+	    "Who may set it: kiosk.ini, kiosk.ini.d: yes; a model's NAME.ini: %s; a USB stick: %s; "
+	    "the command line: ",
+	    model_settings_allowed(section, d->key) ? "yes" : "no",
+	    options_rules_stick.allowed(section, d->key) ? "yes" : "no");
 	man_option(out, d);
 	fputs(".\n", out);
 }
