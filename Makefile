@@ -149,6 +149,32 @@ matcaps: $(BUILD)/bake
 run: matcap-kiosk
 	./matcap-kiosk
 
+# The manual pages, written at build time from the settings table and the
+# exit statuses (src/config/settings_man.c, through tests/tools/mkman), so
+# that they cannot drift from the program; dated by the source
+# (SOURCE_DATE_EPOCH, else the last commit) for a reproducible build.
+MAN_DATE  ?= $(shell date -u -d @$${SOURCE_DATE_EPOCH:-$$(git log -1 --format=%ct 2>/dev/null || date +%s)} +%F)
+MKMAN     := $(BUILD)/mkman
+MAN_PAGES := $(BUILD)/man/matcap-kiosk.1 $(BUILD)/man/kiosk.ini.5
+MAN_OBJS  := $(BUILD)/config/settings_man.o $(BUILD)/config/settings_man_cli.o
+
+all: $(MAN_PAGES)
+
+$(BUILD)/mkman.o: tests/tools/mkman.c
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -MMD -MP -c -o $@ $<
+
+$(MKMAN): $(BUILD)/mkman.o $(MAN_OBJS) $(LIB_ARCHIVE)
+	$(CXX) -o $@ $^ $(LDFLAGS) $(LDLIBS)
+
+$(BUILD)/man/matcap-kiosk.1: $(MKMAN)
+	@mkdir -p $(@D)
+	$(MKMAN) 1 $(VERSION) $(MAN_DATE) $(SYSCONFDIR) $(DATADIR) >$@.tmp && mv $@.tmp $@
+
+$(BUILD)/man/kiosk.ini.5: $(MKMAN)
+	@mkdir -p $(@D)
+	$(MKMAN) 5 $(VERSION) $(MAN_DATE) $(SYSCONFDIR) $(DATADIR) >$@.tmp && mv $@.tmp $@
+
 include tests/tests.mk
 -include tests/vm/vm.mk
 -include tests/cross/cross.mk
@@ -218,12 +244,13 @@ endif
 test-trixie:
 	$(if $(filter 0,$(shell id -u)),,sudo) tests/trixie/chroot.sh
 
-install: matcap-kiosk
+install: matcap-kiosk $(MAN_PAGES)
 	install -D -m 0755 matcap-kiosk $(DESTDIR)$(BINDIR)/matcap-kiosk
 	install -d $(DESTDIR)$(DATADIR)/matcaps
 	install -m 0644 matcaps/*.png $(DESTDIR)$(DATADIR)/matcaps/
 	install -D -m 0644 config/kiosk.ini $(DESTDIR)$(DATADIR)/kiosk.ini.example
-	install -D -m 0644 config/matcap-kiosk.1 $(DESTDIR)$(MANDIR)/man1/matcap-kiosk.1
+	install -D -m 0644 $(BUILD)/man/matcap-kiosk.1 $(DESTDIR)$(MANDIR)/man1/matcap-kiosk.1
+	install -D -m 0644 $(BUILD)/man/kiosk.ini.5 $(DESTDIR)$(MANDIR)/man5/kiosk.ini.5
 	# Settings in pieces: packages and Ansible roles drop *.ini files here.
 	install -d $(DESTDIR)$(SYSCONFDIR)/matcap-kiosk/kiosk.ini.d
 	# An edited config survives a reinstall.
@@ -249,7 +276,7 @@ install: matcap-kiosk
 
 uninstall:
 	rm -f $(DESTDIR)$(BINDIR)/matcap-kiosk
-	rm -f $(DESTDIR)$(MANDIR)/man1/matcap-kiosk.1
+	rm -f $(DESTDIR)$(MANDIR)/man1/matcap-kiosk.1 $(DESTDIR)$(MANDIR)/man5/kiosk.ini.5
 	rm -rf $(DESTDIR)$(DATADIR)
 	rm -f $(DESTDIR)$(SYSTEMD_UNITDIR)/matcap-kiosk.service \
 		$(DESTDIR)$(SYSTEMD_UNITDIR)/matcap-kiosk-import@.service \

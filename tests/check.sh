@@ -12,7 +12,7 @@ set -u
 
 groups="layers unit golden egl program_check mirror_check ortho loaders bad-input not-a-file corpus cli"
 groups="$groups config_doc baker live metrics install systemd fuzz soak no-camera board hands"
-groups="$groups base_color_check sync tsan systemd-board limits"
+groups="$groups base_color_check sync tsan systemd-board limits man doc_claims"
 
 unit_names() { (cd tests/unit && ls test_*.c) | sed 's/^test_//; s/\.c$//'; }
 golden_names() { (cd tests/golden && ls ./*.png) | sed 's|^\./||; s/\.png$//'; }
@@ -88,7 +88,7 @@ needs() {
 	ortho) echo "all $TOOLS/mkmodels $TOOLS/imgdiff" ;;
 	loaders) echo "all $TOOLS/mkmodels" ;;
 	cli) echo "all asan-kiosk $TOOLS/mkmodels" ;;
-	config_doc | install | systemd | no-camera) echo all ;;
+	config_doc | install | systemd | no-camera | man | doc_claims) echo all ;;
 	bad-input | not-a-file) echo "asan-kiosk $TOOLS/mkmodels" ;;
 	limits) echo "all $TOOLS/mkmodels" ;;
 	corpus) echo "asan-kiosk fuzzers $TOOLS/mkmodels $TOOLS/silhouette $TOOLS/imgdiff" ;;

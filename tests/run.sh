@@ -48,6 +48,8 @@ timed test_corpus
 # 8. The command line itself; every config key documented in the example.
 timed test_cli
 timed test_config_doc
+timed test_man
+timed test_doc_claims
 # 9. The shipped matcaps regenerate byte for byte from the baker.
 timed test_baker
 # 10. The live loop as systemd runs it, through the ASan binary.

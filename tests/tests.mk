@@ -208,7 +208,7 @@ tsan:
 TEST_ENV = KIOSK=./$(KIOSK) ASAN_KIOSK=$(ASAN_BUILD)/matcap-kiosk UNIT_DIR=$(ASAN_BUILD)/tests \
 	   TSAN_KIOSK=$(TSAN_BUILD)/matcap-kiosk TSAN_UNIT_DIR=$(TSAN_BUILD)/tests \
 	   UNIT_TESTS="$(UNIT_TESTS)" TOOLS=$(TOOLS_DIR) BAKE=$(BUILD)/bake FUZZ_DIR=$(FUZZ_BUILD) \
-	   FUZZ_SECONDS=$(FUZZ_SECONDS) TSAN=$(TSAN)
+	   FUZZ_SECONDS=$(FUZZ_SECONDS) TSAN=$(TSAN) MKMAN=$(MKMAN) MAN_DIR=$(BUILD)/man
 
 # TSAN=0 leaves the ThreadSanitizer build and group out (make test-trixie:
 # the threads are proven once, on the host's build; the chroot's run would

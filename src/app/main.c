@@ -7,6 +7,7 @@
 #include "app/kiosk.h"
 #include "app/signals.h"
 #include "util/log.h"
+#include "config/exit_codes.h"
 #include "config/options.h"
 #include "render/render.h"
 #include "content/content.h"
@@ -196,24 +197,13 @@ out:
 	return ret;
 }
 
-/* The exit status: 2 for a bad command line, 78 (EX_CONFIG) for a bad
- * config file; for a display that does not open, why (sysexits.h): 77
- * (EX_NOPERM) forbidden, 75 (EX_TEMPFAIL) busy, 69 (EX_UNAVAILABLE)
- * absent; 1 when a model, image or display fails otherwise. The unit's
- * RestartPreventExitStatus= names those a restart cannot fix (77, 78).
- * --check-config says 66 (EX_NOINPUT) for a named file that is missing
- * or broken. */
-enum exit_code {
-	EXIT_CODE_OK = 0,
-	EXIT_CODE_FAILED = 1,
-	EXIT_CODE_USAGE = 2,
-	EXIT_CODE_UNAVAILABLE = 69,
-	EXIT_CODE_TEMPFAIL = 75,
-	EXIT_CODE_NOPERM = 77,
-	EXIT_CODE_CONFIG = 78
-};
-
-/* -EEXIST comes only from kiosk_open_devices: two buttons on one line,
+/* The exit status (config/exit_codes.h): 2 for a bad command line, 78 for
+ * a bad config file; for a display that does not open, why: 77
+ * forbidden, 75 busy, 69 absent; 1 when a model, image or display fails
+ * otherwise. --check-config says 66 for a named file that is missing or
+ * broken.
+ *
+ * -EEXIST comes only from kiosk_open_devices: two buttons on one line,
  * which the settings could not tell (GPIO17 and 17), a config error. The
  * display's reasons come from display_kms_open, wrapped by show(). */
 static enum exit_code exit_code(int ret)

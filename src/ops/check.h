@@ -4,6 +4,7 @@
 #ifndef MK_CHECK_H
 #define MK_CHECK_H
 
+#include "config/exit_codes.h"
 #include "config/settings.h"
 
 #include <stdio.h>
@@ -14,7 +15,7 @@
  * or does not load. Each problem, and a failed verdict, is logged (stderr)
  * with file, line and cause; the files read, where each value came from
  * and a "valid" verdict go to out. */
-enum { CHECK_BAD_FILE = 66, CHECK_BAD_SETTINGS = 78 };
+enum { CHECK_BAD_FILE = EXIT_CODE_NOINPUT, CHECK_BAD_SETTINGS = EXIT_CODE_CONFIG };
 int check_config_run(const struct options *o, FILE *out);
 /* Each model of cfg's [scene] model with a NAME.ini: that file read over
  * cfg, its errors logged with file and line; each one read is said on out

@@ -1,36 +1,51 @@
 #!/bin/sh
-# Every key the program accepts in the config file (as --help lists them)
-# must appear in config/kiosk.ini, set or commented out, in its section;
+# Every key of the settings table (as tests/tools/mkman lists them) must
+# appear in the documented example config/kiosk.ini, set or commented out,
+# in its section, and in the generated kiosk.ini(5) under that section;
 # and what --help says a reload does with each section must be said, in
-# the same words, under that section in kiosk.ini and in the README.
+# the same words, under that section in both.
+#   tests/e2e/config_doc.sh KIOSK MKMAN [INI] [PAGE5]
 set -eu
 kiosk=$1
-ini=${2:-config/kiosk.ini}
-readme=${3:-README.md}
-missing=0
-keys=$($kiosk --help | sed -n 's/.*\[\([a-z]*\)\] \([a-z_]*\) in the config file.*/\1 \2/p')
-[ -n "$keys" ] || { echo "no keys found in --help"; exit 1; }
-echo "$keys" | while read -r section key; do
-	if ! awk -v s="[$section]" -v k="$key" '
-		/^\[/ { in_s = ($0 == s) }
-		in_s && ($0 ~ "^;?" k " *=") { found = 1 }
-		END { exit !found }' "$ini"; then
+mkman=$2
+ini=${3:-config/kiosk.ini}
+page=${4:-build/man/kiosk.ini.5}
+bad=0
+keys=$($mkman keys)
+[ "$(echo "$keys" | wc -l)" -gt 100 ] || { echo "$mkman keys: too few keys"; exit 1; }
+# in_section FILE HEADER PATTERN [LINE]: a line matching the extended
+# regular expression PATTERN (or, with LINE, that very line) under HEADER.
+# Through the environment: awk -v would take the backslashes as escapes.
+in_section() {
+	S=$2 P=$3 L=${4:-} awk '
+		/^\[/ || /^\.SS / { in_s = ($0 == ENVIRON["S"]) }
+		in_s && (ENVIRON["L"] != "" ? $0 == ENVIRON["L"] : $0 ~ ENVIRON["P"]) { found = 1 }
+		END { exit !found }' "$1"
+}
+while read -r section key; do
+	if ! in_section "$ini" "[$section]" "^;?$key *="; then
 		echo "undocumented in $ini: [$section] $key"
-		exit 1
+		bad=1
 	fi
-done
+	if ! in_section "$page" ".SS [$section]" '^\\fB'"$key"'\\fR = '; then
+		echo "missing from $page: [$section] $key"
+		bad=1
+	fi
+done <<EOF
+$keys
+EOF
 rules=$($kiosk --help | sed -n 's/^  \[\([a-z]*\)\] *\(.*\)$/\1 \2/p')
 [ "$(echo "$rules" | wc -l)" -eq 12 ] || { echo "no reload rule per section in --help"; exit 1; }
-echo "$rules" | while read -r section says; do
-	if ! awk -v s="[$section]" -v line="; On reload: $says." '
-		/^\[/ { in_s = ($0 == s) }
-		in_s && $0 == line { found = 1 }
-		END { exit !found }' "$ini"; then
+while read -r section says; do
+	if ! in_section "$ini" "[$section]" "" "; On reload: $says."; then
 		echo "$ini: [$section] does not say what --help says a reload does: $says"
-		exit 1
+		bad=1
 	fi
-	if ! grep -qF "[$section]" "$readme" || ! grep -qF "$says" "$readme"; then
-		echo "$readme: the reload rule of [$section] is not as --help says: $says"
-		exit 1
+	if ! in_section "$page" ".SS [$section]" "" "On reload: $says."; then
+		echo "$page: [$section] does not say what --help says a reload does: $says"
+		bad=1
 	fi
-done
+done <<EOF
+$rules
+EOF
+exit $bad
