@@ -149,16 +149,21 @@ matcaps: $(BUILD)/bake
 run: matcap-kiosk
 	./matcap-kiosk
 
-# The manual pages, written at build time from the settings table and the
-# exit statuses (src/config/settings_man.c, through tests/tools/mkman), so
-# that they cannot drift from the program; dated by the source
-# (SOURCE_DATE_EPOCH, else the last commit) for a reproducible build.
-MAN_DATE  ?= $(shell date -u -d @$${SOURCE_DATE_EPOCH:-$$(git log -1 --format=%ct 2>/dev/null || date +%s)} +%F)
+# The manual pages, matcap-kiosk(1) and kiosk.ini(5), are written from the
+# settings table and the exit statuses (src/config/settings_man.c, through
+# tests/tools/mkman): `make man` writes them into config/, where they are
+# kept and from where they are installed. A cross build (the package for
+# arm64, built on amd64) cannot run a program it builds, so the build does
+# not write them; `make test` writes them again into build/man/ and fails
+# when they differ from config/'s (test_man): they cannot drift. Dated by
+# the package's changelog, so that only a release changes the date; their
+# paths are @SYSCONFDIR@ and @DATADIR@, which make install fills in.
+MAN_DATE  := $(shell sed -n 's/^ -- .*>  //p' config/debian/changelog | head -1 | \
+		xargs -r -I{} date -u -d {} +%F)
 MKMAN     := $(BUILD)/mkman
-MAN_PAGES := $(BUILD)/man/matcap-kiosk.1 $(BUILD)/man/kiosk.ini.5
+MAN_PAGES := config/matcap-kiosk.1 config/kiosk.ini.5
+MAN_BUILT := $(BUILD)/man/matcap-kiosk.1 $(BUILD)/man/kiosk.ini.5
 MAN_OBJS  := $(BUILD)/config/settings_man.o $(BUILD)/config/settings_man_cli.o
-
-all: $(MAN_PAGES)
 
 $(BUILD)/mkman.o: tests/tools/mkman.c
 	@mkdir -p $(@D)
@@ -167,13 +172,18 @@ $(BUILD)/mkman.o: tests/tools/mkman.c
 $(MKMAN): $(BUILD)/mkman.o $(MAN_OBJS) $(LIB_ARCHIVE)
 	$(CXX) -o $@ $^ $(LDFLAGS) $(LDLIBS)
 
-$(BUILD)/man/matcap-kiosk.1: $(MKMAN)
+$(BUILD)/man/matcap-kiosk.1: $(MKMAN) config/debian/changelog
 	@mkdir -p $(@D)
-	$(MKMAN) 1 $(VERSION) $(MAN_DATE) $(SYSCONFDIR) $(DATADIR) >$@.tmp && mv $@.tmp $@
+	$(MKMAN) 1 $(VERSION) $(MAN_DATE) @SYSCONFDIR@ @DATADIR@ >$@.tmp && mv $@.tmp $@
 
-$(BUILD)/man/kiosk.ini.5: $(MKMAN)
+$(BUILD)/man/kiosk.ini.5: $(MKMAN) config/debian/changelog
 	@mkdir -p $(@D)
-	$(MKMAN) 5 $(VERSION) $(MAN_DATE) $(SYSCONFDIR) $(DATADIR) >$@.tmp && mv $@.tmp $@
+	$(MKMAN) 5 $(VERSION) $(MAN_DATE) @SYSCONFDIR@ @DATADIR@ >$@.tmp && mv $@.tmp $@
+
+man: $(MAN_BUILT)
+	cp $(MAN_BUILT) config/
+
+.PHONY: man
 
 include tests/tests.mk
 -include tests/vm/vm.mk
@@ -244,13 +254,17 @@ endif
 test-trixie:
 	$(if $(filter 0,$(shell id -u)),,sudo) tests/trixie/chroot.sh
 
-install: matcap-kiosk $(MAN_PAGES)
+install: matcap-kiosk
 	install -D -m 0755 matcap-kiosk $(DESTDIR)$(BINDIR)/matcap-kiosk
 	install -d $(DESTDIR)$(DATADIR)/matcaps
 	install -m 0644 matcaps/*.png $(DESTDIR)$(DATADIR)/matcaps/
 	install -D -m 0644 config/kiosk.ini $(DESTDIR)$(DATADIR)/kiosk.ini.example
-	install -D -m 0644 $(BUILD)/man/matcap-kiosk.1 $(DESTDIR)$(MANDIR)/man1/matcap-kiosk.1
-	install -D -m 0644 $(BUILD)/man/kiosk.ini.5 $(DESTDIR)$(MANDIR)/man5/kiosk.ini.5
+	install -d $(DESTDIR)$(MANDIR)/man1 $(DESTDIR)$(MANDIR)/man5
+	for p in $(MAN_PAGES); do \
+		sed -e 's|@SYSCONFDIR@|$(SYSCONFDIR)|g' -e 's|@DATADIR@|$(DATADIR)|g' $$p \
+			>$(DESTDIR)$(MANDIR)/man$${p##*.}/$${p##*/} && \
+		chmod 0644 $(DESTDIR)$(MANDIR)/man$${p##*.}/$${p##*/} || exit 1; \
+	done
 	# Settings in pieces: packages and Ansible roles drop *.ini files here.
 	install -d $(DESTDIR)$(SYSCONFDIR)/matcap-kiosk/kiosk.ini.d
 	# An edited config survives a reinstall.

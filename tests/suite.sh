@@ -468,6 +468,10 @@ test_config_doc() {
 # of the documents' exit-status claims (tests/e2e/exit_claims.sh) catches
 # the README's old "1 when a model, image or display fails" (69, 75, 77).
 test_man() {
+	for page in matcap-kiosk.1 kiosk.ini.5; do
+		check "config/$page is what the settings table writes (else: make man)" \
+			cmp "config/$page" "$MAN_DIR/$page"
+	done
 	for page in "$MAN_DIR/matcap-kiosk.1" "$MAN_DIR/kiosk.ini.5"; do
 		check "$(basename "$page"): man --warnings and groff -ww say nothing" sh -c "
 			test -s $page &&
@@ -609,8 +613,12 @@ test_install() {
 		test -d $out/stage/etc/matcap-kiosk/kiosk.ini.d"
 	# The manual pages (written by the build, test_man checks them).
 	check "make install: the manual pages" sh -c "
-		cmp $out/stage/usr/share/man/man1/matcap-kiosk.1 $MAN_DIR/matcap-kiosk.1 &&
-		cmp $out/stage/usr/share/man/man5/kiosk.ini.5 $MAN_DIR/kiosk.ini.5"
+		sed 's|@SYSCONFDIR@|/etc|g; s|@DATADIR@|/usr/share/matcap-kiosk|g' config/matcap-kiosk.1 |
+			cmp - $out/stage/usr/share/man/man1/matcap-kiosk.1 &&
+		sed 's|@SYSCONFDIR@|/etc|g; s|@DATADIR@|/usr/share/matcap-kiosk|g' config/kiosk.ini.5 |
+			cmp - $out/stage/usr/share/man/man5/kiosk.ini.5 &&
+		grep -q /etc/matcap-kiosk/kiosk.ini $out/stage/usr/share/man/man5/kiosk.ini.5 &&
+		! grep -q @SYSCONFDIR@ $out/stage/usr/share/man/man1/matcap-kiosk.1"
 	check "make install: the unit (with its paths), sysusers.d and udev rule" sh -c "
 		grep -qx 'ExecStart=/usr/bin/matcap-kiosk --config /etc/matcap-kiosk/kiosk.ini' \
 			$out/stage/usr/lib/systemd/system/matcap-kiosk.service &&
