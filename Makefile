@@ -222,7 +222,7 @@ DEBIAN_TEST_PACKAGES := libcmocka-dev zlib1g-dev systemd \
 	libcamera-tools gpiod v4l-utils \
 	draco gltfpack assimp-testmodels \
 	dosfstools mtools e2fsprogs rsync time \
-	prometheus-node-exporter curl ansible mmdebstrap
+	prometheus-node-exporter curl ansible mmdebstrap man-db groff-base bsdextrautils
 
 deps:
 	$(APT_GET) update -qq

@@ -640,13 +640,14 @@ test_systemd() {
 	unit=$prefix/lib/systemd/system/matcap-kiosk.service
 	check "make install into a prefix for systemd-analyze" sh -c "make -s install \
 		PREFIX=$prefix SYSCONFDIR=$prefix/etc >/dev/null"
+	# Its Documentation= pages are looked up with man: the prefix's.
 	check "systemd-analyze verify: no warning" sh -c \
-		"o=\$(systemd-analyze verify $unit 2>&1); echo \"\$o\"; [ -z \"\$o\" ]"
+		"o=\$(MANPATH=$prefix/share/man systemd-analyze verify $unit 2>&1); echo \"\$o\"; [ -z \"\$o\" ]"
 	# The USB import unit is a template: verify checks it as an instance.
 	check "systemd-analyze verify of the USB import unit: no warning" sh -c \
 		"mkdir -p $out/import && cp $prefix/lib/systemd/system/matcap-kiosk-import@.service \
 		$out/import/matcap-kiosk-import@sda1.service &&
-		o=\$(systemd-analyze verify $out/import/matcap-kiosk-import@sda1.service 2>&1);
+		o=\$(MANPATH=$prefix/share/man systemd-analyze verify $out/import/matcap-kiosk-import@sda1.service 2>&1);
 		echo \"\$o\"; [ -z \"\$o\" ]"
 	# Each unit's exposure at most 1.5 (the import's was 2.2, the kiosk's
 	# 1.1): a stranger's stick is read by the one, shown by the other.
