@@ -195,7 +195,10 @@ include tests/tests.mk
 # has it. apt-get runs through sudo unless make already runs as root.
 OS_CODENAME   := $(shell . /etc/os-release 2>/dev/null && echo $$VERSION_CODENAME)
 CLANG_VERSION ?= $(if $(filter bookworm,$(OS_CODENAME)),14,19)
-APT_GET       := $(if $(filter 0,$(shell id -u)),,sudo) env DEBIAN_FRONTEND=noninteractive apt-get
+# apt waits up to ten minutes for another apt (an unattended upgrade on a
+# fresh Pi) rather than fail at once.
+APT_GET       := $(if $(filter 0,$(shell id -u)),,sudo) env DEBIAN_FRONTEND=noninteractive apt-get \
+	-o DPkg::Lock::Timeout=600
 # make deps: what building and running need, nothing more (a Pi gets no
 # test bench). procps brings /bin/kill, which the unit's ExecReload names
 # (a minimal Debian 13 has none); libcamera-ipa runs the camera matcap;

@@ -56,8 +56,8 @@ cross-arch:
 	@test -n "$(CROSS_TRIPLET)" || { echo "ARCH must be arm64 or armhf (ARCH=$(ARCH))"; exit 2; }
 
 deps-cross: cross-arch
-	$(CROSS_SUDO) apt-get update -qq
-	$(CROSS_SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
+	$(CROSS_SUDO) apt-get -o DPkg::Lock::Timeout=600 update -qq
+	$(CROSS_SUDO) env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y -qq \
 		--no-install-recommends $(CROSS_HOST_PACKAGES)
 	$(MAKE) --no-print-directory $(CROSS_SYSROOT)/.complete
 
@@ -130,9 +130,9 @@ DEB_SUDO_ROOT := $(if $(filter 0,$(shell id -u)),,sudo)
 # Debian 13 on, in systemd and udev before: for `make deb` here. The
 # roots need mmdebstrap, qemu-user-static's binfmt handlers and arch-test.
 deps-deb:
-	$(CROSS_SUDO) apt-get update -qq
+	$(CROSS_SUDO) apt-get -o DPkg::Lock::Timeout=600 update -qq
 	sd=$$(apt-cache show systemd-dev >/dev/null 2>&1 && echo systemd-dev || echo systemd udev); \
-	$(CROSS_SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
+	$(CROSS_SUDO) env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y -qq \
 		--no-install-recommends build-essential debhelper lintian dpkg-dev mmdebstrap file \
 		qemu-user-static arch-test $$sd
 

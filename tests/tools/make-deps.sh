@@ -10,7 +10,7 @@ sudo=
 [ "$(id -u)" = 0 ] || sudo=sudo
 if ! command -v make >/dev/null; then
 	# A fresh image may have no package lists yet.
-	$sudo apt-get update -qq
-	$sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends make
+	$sudo apt-get -o DPkg::Lock::Timeout=600 update -qq
+	$sudo env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y -qq --no-install-recommends make
 fi
 make deps

@@ -48,7 +48,7 @@ APT_UPDATED=0
 apt_update() {
 	[ "$APT_UPDATED" = 0 ] && [ "$(id -u)" = 0 ] || return 1
 	say "apt-get update"
-	apt-get update >>"$CACHE/apt.log" 2>&1 || die "apt-get update failed, see $CACHE/apt.log"
+	apt-get -o DPkg::Lock::Timeout=600 update >>"$CACHE/apt.log" 2>&1 || die "apt-get update failed, see $CACHE/apt.log"
 	APT_UPDATED=1
 }
 
@@ -73,9 +73,9 @@ done
 if [ -n "$missing" ]; then
 	[ "$(id -u)" = 0 ] || die "missing packages:$missing (run as root, or: apt-get install$missing)"
 	say "installing:$missing"
-	if ! DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends $missing >"$CACHE/apt.log" 2>&1; then
+	if ! DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y --no-install-recommends $missing >"$CACHE/apt.log" 2>&1; then
 		apt_update || die "apt-get install failed, see $CACHE/apt.log"
-		DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends $missing >>"$CACHE/apt.log" 2>&1 ||
+		DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y --no-install-recommends $missing >>"$CACHE/apt.log" 2>&1 ||
 			die "apt-get install failed, see $CACHE/apt.log"
 	fi
 fi
