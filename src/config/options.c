@@ -11,38 +11,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-static bool wired(const char *line)
-{
-	return line && *line && strcmp(line, "none") != 0;
-}
-
-/* The same name, or the same offset however written. (GPIO17 and 17 may
- * be one line too; only the chip can tell, and src/input/gpio.c asks it.) */
-static bool same_line(const char *a, const char *b)
-{
-	char *end_a, *end_b;
-	unsigned long x = strtoul(a, &end_a, 10), y = strtoul(b, &end_b, 10);
-
-	if (end_a != a && !*end_a && end_b != b && !*end_b)
-		return x == y;
-	return strcmp(a, b) == 0;
-}
-
-/* Two buttons on one line would fight over it: the first such pair. */
-bool options_buttons_clash(const struct options *o, int *first, int *second)
-{
-	for (int i = 0; i < GPIO_BUTTONS; i++)
-		for (int j = i + 1; j < GPIO_BUTTONS; j++)
-			if (wired(o->buttons.buttons[i].line) &&
-			    wired(o->buttons.buttons[j].line) &&
-			    same_line(o->buttons.buttons[i].line, o->buttons.buttons[j].line)) {
-				*first = i;
-				*second = j;
-				return true;
-			}
-	return false;
-}
-
 /* The command line: getopt_long, with its table built from option_defs. */
 static void build_getopt(struct option *longs, char *shorts)
 {

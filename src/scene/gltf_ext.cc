@@ -17,6 +17,9 @@
 namespace gltf_ext
 {
 
+// Set by gltf_files.cc's tinygltf_compatible, read by make_dense below.
+const char *const moved_indices = "matcap_kiosk_indices";
+
 namespace
 {
 
@@ -538,18 +541,6 @@ bool make_dense(tinygltf::Model &m, std::string *err)
 				return false;
 		}
 	return true;
-}
-
-bool prepare(tinygltf::Model &m, const char *name, Pose *pose, std::string *err)
-{
-	std::string unused = unsupported(m.extensionsUsed);
-	if (!unused.empty() && unsupported(m.extensionsRequired).empty())
-		log_info("%s: ignoring extensions it uses but does not need: %s",
-			 escape(name).c_str(), escape(unused).c_str());
-	if (!decode_meshopt(m, err) || !decode_draco(m, err) || !make_dense(m, err) ||
-	    !node_worlds(m, &pose->worlds, &pose->parent, err) || !apply_morphs(m, err))
-		return false;
-	return apply_skins(m, pose->worlds, &pose->mesh_source, err);
 }
 
 } // namespace gltf_ext

@@ -87,8 +87,6 @@ std::string percent_decoded(const std::string &uri)
 	return out;
 }
 
-const char *const moved_indices = "matcap_kiosk_indices";
-
 namespace
 {
 

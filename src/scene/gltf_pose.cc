@@ -3,6 +3,7 @@
 // joints. Computed once at load on the CPU, and never by recursion over
 // the file's data: a hierarchy of any depth costs a loop, not the stack.
 #include "scene/gltf_ext.h"
+#include "util/log.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -382,6 +383,20 @@ bool apply_skins(tinygltf::Model &m, const std::vector<Mat4> &worlds, std::vecto
 		m.nodes[i].mesh = (int)m.meshes.size() - 1;
 	}
 	return true;
+}
+
+// The passes in order: here, beside the last three, so that gltf_ext.cc
+// (which they call) calls nothing back.
+bool prepare(tinygltf::Model &m, const char *name, Pose *pose, std::string *err)
+{
+	std::string unused = unsupported(m.extensionsUsed);
+	if (!unused.empty() && unsupported(m.extensionsRequired).empty())
+		log_info("%s: ignoring extensions it uses but does not need: %s",
+			 escape(name).c_str(), escape(unused).c_str());
+	if (!decode_meshopt(m, err) || !decode_draco(m, err) || !make_dense(m, err) ||
+	    !node_worlds(m, &pose->worlds, &pose->parent, err) || !apply_morphs(m, err))
+		return false;
+	return apply_skins(m, pose->worlds, &pose->mesh_source, err);
 }
 
 } // namespace gltf_ext

@@ -147,12 +147,6 @@ END {
 	exit (bad > 0)
 }' $files || includes_ok=1
 
-# Circles pending elsewhere: "FILE FILE" pairs (below SRC) whose calls are
-# left out of the graph until the change that owns them lands. Each is said
-# on stderr, so that it is seen and not forgotten.
-pending="scene/gltf_ext.cc scene/gltf_pose.cc
-scene/gltf_ext.cc scene/gltf_files.cc
-config/options.c config/options_file.c"
 
 # The call graph: "MAP OBJECT SOURCE" for each source built, then nm's
 # portable listing of those objects ("OBJECT: SYMBOL TYPE ...").
@@ -174,15 +168,11 @@ if [ -z "$objects" ]; then
 	echo "$src: no object file in $obj: the calls between files cannot be checked (run make first)"
 	exit 1
 fi
-notes=$(mktemp)
-trap 'rm -f "$notes"' EXIT
 # shellcheck disable=SC2086 # one word per path
 circles=$({
-	printf '%s\n' "$pending" | sed -n 's|^\([^ ]*\) \([^ ]*\)$|PENDING '"$src"'/\1 '"$src"'/\2|p'
 	printf '%s\n' "$map"
 	nm -A -P $objects
-} | awk -v notes="$notes" '
-$1 == "PENDING" { pend[$2, $3] = 1; pend[$3, $2] = 1; next }
+} | awk '
 $1 == "MAP" { name[$2] = $3; order[++files] = $2; next }
 {
 	o = $1
@@ -226,12 +216,6 @@ END {
 		to = def[p[2]]
 		if (to == "" || (p[2] in twice) || to == p[1] || ((p[1], to) in via))
 			continue
-		if ((name[p[1]], name[to]) in pend) {
-			if (!((name[p[1]], name[to]) in said))
-				print "layers.sh: pending, not counted: " name[p[1]] " calls " name[to] " (" p[2] ")" >notes
-			said[name[p[1]], name[to]] = 1
-			continue
-		}
 		via[p[1], to] = p[2]
 		adj[p[1]] = adj[p[1]] " " to
 	}
@@ -242,6 +226,5 @@ END {
 }')
 calls_ok=$?
 # C++ symbols as written in the source.
-c++filt <"$notes" >&2
 [ -z "$circles" ] || printf '%s\n' "$circles" | c++filt
 [ $includes_ok = 0 ] && [ $calls_ok = 0 ]
