@@ -41,6 +41,14 @@ const zoom = parseFloat(q.get('zoom') || '1');
 const time = q.has('t') ? parseFloat(q.get('t')) : null;
 const fitMode = q.get('fit') || (time === null ? 'pose' : 'clip');
 const variant = q.get('variant');
+// How an sRGB map is filtered: `linear` (three.js's own: decoded, then
+// filtered, in linear light) or `stored` (the kiosk's on GLES2, which has
+// no sRGB textures, and three.js's on WebGL 1 without EXT_sRGB: the stored
+// bytes filtered, then decoded). They differ where a magnified texel's
+// edge blends two colours (a checker's orange to white: blue 128 against
+// 188 at its middle); `stored` shows what is left of a difference
+// without it.
+const mapFilter = q.get('mapfilter') || 'linear';
 const out = document.getElementById('out');
 
 function fitDistance(aspect) {
@@ -172,10 +180,28 @@ function emits(m) {
 	       (m.emissive.r > 0 || m.emissive.g > 0 || m.emissive.b > 0);
 }
 
+// mapfilter = stored: the maps uploaded as their bytes (no sRGB format)
+// and decoded after sampling, through the chunks' own decode for video
+// textures (map_fragment's DECODE_VIDEO_TEXTURE, emissivemap_fragment's
+// _EMISSIVE): three.js's sRGBTransferEOTF, the kiosk's srgb_to_linear.
+function filterStored(mat) {
+	if (mapFilter !== 'stored')
+		return mat;
+	for (const [key, define] of [['map', 'DECODE_VIDEO_TEXTURE'], ['emissiveMap', 'DECODE_VIDEO_TEXTURE_EMISSIVE']]) {
+		const t = mat[key];
+		if (!t || t.colorSpace !== THREE.SRGBColorSpace)
+			continue;
+		mat[key] = t.clone();
+		mat[key].colorSpace = THREE.NoColorSpace;
+		mat.defines = { ...mat.defines, [define]: '' };
+	}
+	return mat;
+}
+
 function matcapMaterial(m, matcap) {
 	// Unlit: the base colour as it is (white with base_color = off).
 	if (m.isMeshBasicMaterial)
-		return baseColor ? m : new THREE.MeshBasicMaterial({ side: m.side });
+		return filterStored(baseColor ? m.clone() : new THREE.MeshBasicMaterial({ side: m.side }));
 	const p = { matcap, side: m.side, flatShading: m.flatShading };
 	if (baseColor) {
 		p.color = m.color;
@@ -187,7 +213,7 @@ function matcapMaterial(m, matcap) {
 		p.depthWrite = m.depthWrite;
 	}
 	const mat = new THREE.MeshMatcapMaterial(p);
-	return emits(m) ? withEmission(mat, m) : mat;
+	return filterStored(emits(m) ? withEmission(mat, m) : mat);
 }
 
 // KHR_materials_variants: each primitive that maps the named variant to a
