@@ -6,7 +6,9 @@
 # build/threejs/ at run time (npm); none of it is kept in the tree.
 #
 # Environment: CHROMIUM (default chromium), THREE_VERSION (default
-# 0.187.0), MATCAP (default matcaps/pearl.png).
+# 0.187.0), MATCAP (default matcaps/pearl.png), MAPFILTER (linear, the
+# default: three.js filters sRGB maps in linear light; stored: as the
+# kiosk, the bytes filtered and decoded after; render.js).
 
 cd "$(dirname "$0")/../../.." || exit 2
 w=${size%x*}
@@ -60,7 +62,7 @@ PY
 three() {
 	"$chromium" --headless=new --no-sandbox --user-data-dir="$work/profile" \
 		--use-angle=swiftshader --enable-unsafe-swiftshader --virtual-time-budget=20000 \
-		--dump-dom "http://127.0.0.1:$port/index.html?matcap=matcap.png&w=$w&h=$h&$2" \
+		--dump-dom "http://127.0.0.1:$port/index.html?matcap=matcap.png&w=$w&h=$h&mapfilter=${MAPFILTER:-linear}&$2" \
 		2>"$out/$1.chromium.log" >"$out/$1.html"
 	sed -n 's/.*<pre id="out">data:image\/png;base64,\([^<]*\)<.*/\1/p' "$out/$1.html" |
 		base64 -d >"$out/$1-three.png"

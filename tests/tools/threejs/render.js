@@ -14,6 +14,15 @@
 // the default without `t`) or `clip` (the whole clip, sampled at its keys
 // and at 1/60 of its length: the kiosk keeps the model in frame that way,
 // the default with `t`).
+//
+// What glTF adds to the base colour, as the kiosk draws it: a
+// KHR_materials_unlit material (GLTFLoader's MeshBasicMaterial) is kept
+// as it is, its colour, map and vertex colours without the matcap;
+// emission (emissiveFactor x KHR_materials_emissive_strength x
+// emissiveTexture, on its own UV set and transform) is added to the
+// matcap's colour in linear light (MeshMatcapMaterial has none: see
+// withEmission); `variant` names a KHR_materials_variants variant to draw
+// (GLTFLoader reads none: see applyVariant).
 import * as THREE from 'three';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 
@@ -31,6 +40,15 @@ const baseColor = (q.get('basecolor') || 'auto') !== 'off';
 const zoom = parseFloat(q.get('zoom') || '1');
 const time = q.has('t') ? parseFloat(q.get('t')) : null;
 const fitMode = q.get('fit') || (time === null ? 'pose' : 'clip');
+const variant = q.get('variant');
+// How an sRGB map is filtered: `linear` (three.js's own: decoded, then
+// filtered, in linear light) or `stored` (the kiosk's on GLES2, which has
+// no sRGB textures, and three.js's on WebGL 1 without EXT_sRGB: the stored
+// bytes filtered, then decoded). They differ where a magnified texel's
+// edge blends two colours (a checker's orange to white: blue 128 against
+// 188 at its middle); `stored` shows what is left of a difference
+// without it.
+const mapFilter = q.get('mapfilter') || 'linear';
 const out = document.getElementById('out');
 
 function fitDistance(aspect) {
@@ -130,7 +148,60 @@ function posesOf(gltf, root) {
 // GLTFLoader sets flatShading where a primitive has no NORMAL (the spec
 // asks for flat normals there, which the kiosk computes): without it the
 // matcap is looked up with a normal of (0,0,0), a corner texel.
+//
+// The kiosk's emission (shaders/material.glsl add_emission): the light
+// added to the shaded colour in linear light, the sum clamped by the
+// framebuffer. MeshMatcapMaterial has no emissive uniforms, but three.js
+// sets them for any material that has the properties (WebGLMaterials'
+// refreshUniformsCommon) and, for an emissiveMap, defines USE_EMISSIVEMAP
+// and its UV (the map's channel: its texCoord) and transform, which
+// MeshMatcapMaterial's uv chunks already carry; the fragment shader gets
+// the uniforms and the sum.
+function withEmission(mat, m) {
+	mat.emissive = m.emissive.clone();
+	mat.emissiveIntensity = m.emissiveIntensity;
+	mat.emissiveMap = m.emissiveMap;
+	mat.onBeforeCompile = (shader) => {
+		shader.uniforms.emissive = { value: new THREE.Color() };
+		shader.uniforms.emissiveMap = { value: null };
+		shader.uniforms.emissiveMapTransform = { value: new THREE.Matrix3() };
+		shader.fragmentShader = shader.fragmentShader
+		    .replace('uniform vec3 diffuse;',
+			     'uniform vec3 diffuse;\nuniform vec3 emissive;\n#include <emissivemap_pars_fragment>')
+		    .replace('#include <opaque_fragment>',
+			     'vec3 totalEmissiveRadiance = emissive;\n#include <emissivemap_fragment>\n' +
+				 'outgoingLight += totalEmissiveRadiance;\n#include <opaque_fragment>');
+	};
+	return mat;
+}
+
+function emits(m) {
+	return m.emissive !== undefined && m.emissiveIntensity > 0 &&
+	       (m.emissive.r > 0 || m.emissive.g > 0 || m.emissive.b > 0);
+}
+
+// mapfilter = stored: the maps uploaded as their bytes (no sRGB format)
+// and decoded after sampling, through the chunks' own decode for video
+// textures (map_fragment's DECODE_VIDEO_TEXTURE, emissivemap_fragment's
+// _EMISSIVE): three.js's sRGBTransferEOTF, the kiosk's srgb_to_linear.
+function filterStored(mat) {
+	if (mapFilter !== 'stored')
+		return mat;
+	for (const [key, define] of [['map', 'DECODE_VIDEO_TEXTURE'], ['emissiveMap', 'DECODE_VIDEO_TEXTURE_EMISSIVE']]) {
+		const t = mat[key];
+		if (!t || t.colorSpace !== THREE.SRGBColorSpace)
+			continue;
+		mat[key] = t.clone();
+		mat[key].colorSpace = THREE.NoColorSpace;
+		mat.defines = { ...mat.defines, [define]: '' };
+	}
+	return mat;
+}
+
 function matcapMaterial(m, matcap) {
+	// Unlit: the base colour as it is (white with base_color = off).
+	if (m.isMeshBasicMaterial)
+		return filterStored(baseColor ? m.clone() : new THREE.MeshBasicMaterial({ side: m.side }));
 	const p = { matcap, side: m.side, flatShading: m.flatShading };
 	if (baseColor) {
 		p.color = m.color;
@@ -141,7 +212,36 @@ function matcapMaterial(m, matcap) {
 		p.alphaTest = m.alphaTest;
 		p.depthWrite = m.depthWrite;
 	}
-	return new THREE.MeshMatcapMaterial(p);
+	const mat = new THREE.MeshMatcapMaterial(p);
+	return filterStored(emits(m) ? withEmission(mat, m) : mat);
+}
+
+// KHR_materials_variants: each primitive that maps the named variant to a
+// material gets it (the others keep their default), as three.js's
+// webgl_loader_gltf_variants example does: the material by its index,
+// then assignFinalMaterial for the primitive's vertex colours and flat
+// shading.
+async function applyVariant(gltf, root, name) {
+	const json = gltf.parser.json;
+	const ext = (json.extensions || {}).KHR_materials_variants;
+	const names = ext ? ext.variants.map((v) => v.name) : [];
+	const index = names.indexOf(name);
+	if (index < 0)
+		throw new Error(`no variant "${name}" (the model has ${names.join(', ') || 'none'})`);
+	const meshes = [];
+	root.traverse((o) => { if (o.isMesh) meshes.push(o); });
+	for (const o of meshes) {
+		const a = gltf.parser.associations.get(o);
+		if (!a || a.meshes === undefined || a.primitives === undefined)
+			continue;
+		const prim = json.meshes[a.meshes].primitives[a.primitives];
+		const mappings = ((prim.extensions || {}).KHR_materials_variants || {}).mappings || [];
+		const mapping = mappings.find((mp) => mp.variants.includes(index));
+		if (!mapping)
+			continue;
+		o.material = await gltf.parser.getDependency('material', mapping.material);
+		gltf.parser.assignFinalMaterial(o);
+	}
 }
 
 // three.js orders transparent meshes by their origin's depth; the kiosk
@@ -171,6 +271,8 @@ async function main() {
 	matcap.colorSpace = THREE.SRGBColorSpace;
 	const gltf = await new GLTFLoader().loadAsync(q.get('model'));
 	const root = gltf.scene || gltf.scenes[0];
+	if (variant !== null)
+		await applyVariant(gltf, root, variant);
 	root.traverse((o) => {
 		if (o.isMesh)
 			o.material = Array.isArray(o.material) ? o.material.map((m) => matcapMaterial(m, matcap))
