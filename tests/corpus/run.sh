@@ -97,6 +97,7 @@ grep -v '^#' "$here/expected.txt" | while read -r result name words; do
 	case $name in
 	assimp:*) file=$assimp/${name#assimp:} ;;
 	khronos:*) file=$here/khronos/${name#khronos:} ;;
+	gltfast:*) file=$here/gltfast/${name#gltfast:} ;;
 	blender:*) file=$here/blender/${name#blender:} ;;
 	esac
 	if [ ! -f "$file" ]; then
