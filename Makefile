@@ -86,17 +86,17 @@ SRC_CAMERA  := camera/camera_feed camera/camera_link camera/camera_math camera/c
 	       camera/camera_texture
 SRC_RENDER  := render/background render/bake render/draw_list render/framing render/gl render/poster render/render_scale render/render_caption \
 	       render/caption render/render render/render_draw render/render_live render/render_skin render/render_morph render/render_variant render/shader render/shading
-SRC_SCENE   := scene/lod scene/material scene/mesh scene/mesh_cache scene/mesh_cache_anim scene/mesh_cache_fields scene/mesh_cache_key scene/mesh_gen scene/mesh_pack scene/subdivide scene/tangent \
-	       scene/texture scene/caption scene/caption_text
-SRC_SCENE   += scene/gltf_json_depth
-SRC_SCENE   += scene/anim scene/anim_sampler scene/anim_palette scene/anim_play scene/anim_play_gpu scene/anim_play_split scene/anim_play_morph
+SRC_SCENE   := scene/mesh/lod scene/mesh/material scene/mesh/mesh scene/mesh/mesh_cache scene/mesh/mesh_cache_anim scene/mesh/mesh_cache_fields scene/mesh/mesh_cache_key scene/mesh/mesh_gen scene/mesh/mesh_pack scene/mesh/subdivide scene/mesh/tangent \
+	       scene/mesh/texture scene/text/caption scene/text/caption_text
+SRC_SCENE   += scene/gltf/gltf_json_depth
+SRC_SCENE   += scene/anim/anim scene/anim/anim_sampler scene/anim/anim_palette scene/anim/anim_play scene/anim/anim_play_gpu scene/anim/anim_play_split scene/anim/anim_play_morph
 SRC_UTIL    := util/file util/folder_watch util/image util/ini util/log util/math3d
 LIB_C  := $(SRC_APP) $(SRC_OPS) $(SRC_CONTENT) $(SRC_CONFIG) $(SRC_STATE) $(SRC_DISPLAY) $(SRC_INPUT) $(SRC_CAMERA) $(SRC_RENDER) $(SRC_SCENE) $(SRC_UTIL)
 # The C++ shims, each behind a C header (gltf_ext.h is internal to the glTF one).
-LIB_CC := scene/gltf scene/gltf_mesh scene/gltf_fs scene/gltf_material scene/gltf_ext scene/gltf_files scene/gltf_pose \
-	  scene/gltf_draco camera/camera
-LIB_CC += scene/gltf_words scene/gltf_anim scene/gltf_fit scene/gltf_name scene/gltf_play scene/gltf_flat
-LIB_CC += scene/gltf_variants
+LIB_CC := scene/gltf/gltf scene/gltf/gltf_mesh scene/gltf/gltf_fs scene/gltf/gltf_material scene/gltf/gltf_ext scene/gltf/gltf_files scene/gltf/gltf_pose \
+	  scene/gltf/gltf_draco camera/camera
+LIB_CC += scene/gltf/gltf_words scene/gltf/gltf_anim scene/gltf/gltf_fit scene/gltf/gltf_name scene/gltf/gltf_play scene/gltf/gltf_flat
+LIB_CC += scene/gltf/gltf_variants
 SHADERS := shaders/mapping.glsl shaders/morph.glsl shaders/matcap.vert shaders/matcap.frag shaders/material.glsl
 SHADERS += shaders/camera.vert shaders/camera.frag
 SHADERS += shaders/poster.vert shaders/poster.frag

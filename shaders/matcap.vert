@@ -59,7 +59,7 @@ void main()
 {
 #ifdef SKIN_BONES
 	// The weights' blend of the bones' rows, over their sum (as the CPU
-	// path: scene/anim_play.c); every vertex has a bone of weight.
+	// path: scene/anim/anim_play.c); every vertex has a bone of weight.
 	vec3 own = a_position, own_normal = a_normal;
 #ifdef MORPH_TARGETS
 	morph(own, own_normal);

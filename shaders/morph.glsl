@@ -3,7 +3,7 @@
 // move normals): each target's deltas are attributes of their own, added
 // with the pose's weights (u_morph_weights, four a vector) to the vertex's
 // own position and normal, target by target, before the skin, as glTF
-// orders them and as the CPU path adds them (scene/anim_play.c). The C
+// orders them and as the CPU path adds them (scene/anim/anim_play.c). The C
 // mirror of this sum: tests/unit/test_anim_play.c.
 
 uniform vec4 u_morph_weights[2];

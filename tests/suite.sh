@@ -12,7 +12,7 @@
 # The offscreen backend: osmesa, or egl-headless where Mesa has no OSMesa
 # (the Makefile sets OFFSCREEN_BACKEND from what the build has).
 offscreen=${OFFSCREEN_BACKEND:-osmesa}
-# The knots are simplified for their size (src/scene/lod.c), the goldens'
+# The knots are simplified for their size (src/scene/mesh/lod.c), the goldens'
 # by meshoptimizer 0.18 (Debian 12). A later one (0.22 on Debian 13) keeps
 # other triangles and the silhouette moves by a pixel in places: up to 2.5%
 # of the pixels. With the same triangles Mesa 25 draws them as Mesa 22 does,

@@ -2,7 +2,7 @@
 #include "app/kiosk_state.h"
 #include "ops/screen.h"
 #include "render/shading.h"
-#include "scene/caption.h"
+#include "scene/text/caption.h"
 #include "util/clock.h"
 #include "util/log.h"
 

@@ -16,7 +16,7 @@
 #include "ops/check.h"
 #include "render/poster.h"
 #include "render/render_scale.h"
-#include "scene/mesh_cache.h"
+#include "scene/mesh/mesh_cache.h"
 
 #include <errno.h>
 #include <math.h>

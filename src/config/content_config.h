@@ -5,8 +5,8 @@
 #define MK_CONTENT_CONFIG_H
 
 #include "render/shading.h"
-#include "scene/caption.h"
-#include "scene/material.h"
+#include "scene/text/caption.h"
+#include "scene/mesh/material.h"
 #include "state/view.h"
 
 #include <stdbool.h>

@@ -4,9 +4,9 @@
 #include "content/model_list.h"
 #include "config/model_settings.h"
 #include "render/framing.h"
-#include "scene/gltf.h"
-#include "scene/lod.h"
-#include "scene/texture.h"
+#include "scene/gltf/gltf.h"
+#include "scene/mesh/lod.h"
+#include "scene/mesh/texture.h"
 #include "util/log.h"
 
 #include <limits.h>

@@ -2,7 +2,7 @@
  * up before a parse, the prepared mesh packed (with live playback's data
  * for a model that plays) and stored once uploaded. */
 #include "content/content.h"
-#include "scene/mesh_cache_anim.h"
+#include "scene/mesh/mesh_cache_anim.h"
 #include "util/log.h"
 
 #include <errno.h>

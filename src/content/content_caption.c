@@ -3,7 +3,7 @@
  * worker when the model loads. The loop thread only picks the one of the
  * stop shown: no text is drawn on the frame thread. */
 #include "content/content.h"
-#include "scene/gltf_name.h"
+#include "scene/gltf/gltf_name.h"
 #include "util/log.h"
 
 #include <errno.h>

@@ -1,6 +1,6 @@
 #include "render/background.h"
 #include "render/shader.h"
-#include "scene/texture.h"
+#include "scene/mesh/texture.h"
 #include "util/log.h"
 
 #include <ctype.h>

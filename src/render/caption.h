@@ -5,7 +5,7 @@
 #define MK_RENDER_CAPTION_H
 
 #include "render/gl.h"
-#include "scene/caption.h"
+#include "scene/text/caption.h"
 #include "util/image.h"
 
 struct caption_gl;

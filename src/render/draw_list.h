@@ -10,8 +10,8 @@
 #ifndef MK_DRAW_LIST_H
 #define MK_DRAW_LIST_H
 
-#include "scene/material.h"
-#include "scene/mesh.h"
+#include "scene/mesh/material.h"
+#include "scene/mesh/mesh.h"
 
 #include <stdbool.h>
 #include <stdint.h>

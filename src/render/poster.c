@@ -1,7 +1,7 @@
 #include "render/poster.h"
 #include "render/background.h"
 #include "render/shader.h"
-#include "scene/texture.h"
+#include "scene/mesh/texture.h"
 #include "util/log.h"
 
 #include <errno.h>

@@ -3,8 +3,8 @@
 #include "util/log.h"
 #include "render/draw_list.h"
 #include "render/shader.h"
-#include "scene/anim_palette.h"
-#include "scene/texture.h"
+#include "scene/anim/anim_palette.h"
+#include "scene/mesh/texture.h"
 
 #include <errno.h>
 #include <math.h>

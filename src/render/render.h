@@ -3,13 +3,13 @@
 #define MK_RENDER_H
 
 #include "render/background.h"
-#include "scene/caption.h"
+#include "scene/text/caption.h"
 #include "render/gl.h"
 #include "util/image.h"
-#include "scene/material.h"
+#include "scene/mesh/material.h"
 #include "util/math3d.h"
-#include "scene/mesh.h"
-#include "scene/mesh_pack.h"
+#include "scene/mesh/mesh.h"
+#include "scene/mesh/mesh_pack.h"
 #include "render/shading.h"
 
 #include <stdbool.h>

@@ -9,8 +9,8 @@
 #include "render/gl.h"
 #include "render/shader.h"
 #include "render/shading.h"
-#include "scene/material.h"
-#include "scene/mesh_pack.h"
+#include "scene/mesh/material.h"
+#include "scene/mesh/mesh_pack.h"
 
 enum { UNIT_MATCAP, UNIT_DETAIL, UNIT_RAMP, UNIT_BASE, UNIT_EMISSIVE };
 

@@ -6,7 +6,7 @@
  * programs must be built again, render.c builds them). */
 #include "render/render.h"
 #include "render/render_priv.h"
-#include "scene/anim_palette.h"
+#include "scene/anim/anim_palette.h"
 
 #include <errno.h>
 #include <stdint.h>

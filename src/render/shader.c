@@ -1,7 +1,7 @@
 #include "render/shader.h"
 #include "util/log.h"
 #include "render/shader_files.h"
-#include "scene/material.h"
+#include "scene/mesh/material.h"
 
 #include <errno.h>
 #include <stdbool.h>

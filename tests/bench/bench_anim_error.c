@@ -12,7 +12,7 @@
  * model fills, and the largest normal error in degrees.
  *   bench_anim_error MODEL */
 #include "oracle/anim_mirror.h"
-#include "scene/gltf.h"
+#include "scene/gltf/gltf.h"
 #include "util/log.h"
 
 #include <errno.h>

@@ -7,7 +7,7 @@
  *   bench_caption BACKEND WxH LOGO [FRAMES]   (BACKEND: osmesa or egl-headless) */
 #include "display/display.h"
 #include "render/caption.h"
-#include "scene/caption.h"
+#include "scene/text/caption.h"
 #include "util/log.h"
 
 #include "bench_clock.h"

@@ -59,7 +59,7 @@ A primitive without normals is split at its faces (src/scene/gltf_flat.cc): thre
 vertices a triangle, each with its face's normal. The bench knots without normals,
 drawn at $size with the default lod_pixels (4), flat (file) against smooth (the old
 averaging): vertices and triangles as loaded, then as drawn after the level of detail
-(which keeps flat triangles flat: src/scene/lod.c keep_flat), and the time of a frame
+(which keeps flat triangles flat: src/scene/mesh/lod.c keep_flat), and the time of a frame
 in ms (median of the rounds' medians of $frames frames, largest 90th percentile, the
 first frame counted; $backend). Compare the rows of one model with each other.
 

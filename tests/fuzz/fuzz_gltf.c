@@ -5,9 +5,9 @@
  * FUZZ_GLTF_DIR names), so the fuzzer reaches the file path too. A mesh that loads must be one
  * every consumer can read blindly: whole triangles, every index in range, every position finite and
  * inside the unit sphere it was fitted to. */
-#include "scene/gltf.h"
+#include "scene/gltf/gltf.h"
 #include "util/log.h"
-#include "scene/mesh.h"
+#include "scene/mesh/mesh.h"
 
 #include <math.h>
 #include <stdint.h>

@@ -1,12 +1,12 @@
-/* libFuzzer: the prepared-mesh cache's check (src/scene/mesh_cache.c) on
+/* libFuzzer: the prepared-mesh cache's check (src/scene/mesh/mesh_cache.c) on
  * any bytes, as a damaged, truncated or planted entry would hand them
  * over: refused, or every index inside the arrays it describes. Each
  * input is checked as it is, and once more with its checksums made right
  * (mesh_cache_reseal), or the fuzzer would never get past them. An
  * entry's live playback section, accepted, is posed and prepared for the
  * GPU: every index it holds is used. */
-#include "scene/anim_play.h"
-#include "scene/mesh_cache.h"
+#include "scene/anim/anim_play.h"
+#include "scene/mesh/mesh_cache.h"
 #include "util/log.h"
 
 #include <stdint.h>

@@ -6,9 +6,9 @@
  * Every file stays under 4 KiB but the material ones, which embed a
  * 4x4 PNG. */
 #include "gltf_write.h"
-#include "scene/gltf_json_depth.h"
+#include "scene/gltf/gltf_json_depth.h"
 #include "util/image.h"
-#include "scene/mesh.h"
+#include "scene/mesh/mesh.h"
 
 #include <png.h>
 #include <stdio.h>

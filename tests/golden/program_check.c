@@ -6,12 +6,12 @@
  * differences on stderr). Not a unit test: Mesa's own allocations would
  * trip the unit tests' LeakSanitizer. */
 #include "display/display.h"
-#include "scene/lod.h"
+#include "scene/mesh/lod.h"
 #include "util/log.h"
-#include "scene/material.h"
-#include "scene/mesh.h"
+#include "scene/mesh/material.h"
+#include "scene/mesh/mesh.h"
 #include "render/render.h"
-#include "scene/tangent.h"
+#include "scene/mesh/tangent.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -219,7 +219,7 @@ out:
 }
 
 /* Only what the display shows reaches the GPU: a mesh simplified for
- * this display (src/scene/lod.c) uploads its own vertices, no more. */
+ * this display (src/scene/mesh/lod.c) uploads its own vertices, no more. */
 static int check_lod(struct display *d, const struct image *matcap)
 {
 	struct material mat = {0};

@@ -8,7 +8,7 @@
 #ifndef MK_ANIM_MIRROR_H
 #define MK_ANIM_MIRROR_H
 
-#include "scene/anim_play.h"
+#include "scene/anim/anim_play.h"
 
 #include <stdbool.h>
 #include <stdint.h>

@@ -19,8 +19,8 @@
 #include "oracle/oracle.h"
 #include "render/bake.h"
 #include "render/render.h"
-#include "scene/gltf.h"
-#include "scene/material.h"
+#include "scene/gltf/gltf.h"
+#include "scene/mesh/material.h"
 #include "util/log.h"
 
 #include <ftw.h>
@@ -109,7 +109,7 @@ static void sample_repeat(const struct image *img, double u, double v, double rg
 		}
 }
 
-/* The sphere's UV at unit point p (src/scene/mesh_gen.c's parametrisation)
+/* The sphere's UV at unit point p (src/scene/mesh/mesh_gen.c's parametrisation)
  * through KHR_texture_transform. */
 static void base_uv(const double p[3], double uv[2])
 {

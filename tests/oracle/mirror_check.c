@@ -12,8 +12,8 @@
 #include "render/bake.h"
 #include "display/display.h"
 #include "util/log.h"
-#include "scene/material.h"
-#include "scene/mesh.h"
+#include "scene/mesh/material.h"
+#include "scene/mesh/mesh.h"
 #include "render/render.h"
 #include "oracle/oracle.h"
 

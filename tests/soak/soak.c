@@ -21,7 +21,7 @@
 #include "app/kiosk.h"
 #include "app/signals.h"
 #include "util/log.h"
-#include "scene/mesh.h"
+#include "scene/mesh/mesh.h"
 #include "config/options.h"
 #include "render/render.h"
 #include "content/content.h"

@@ -9,7 +9,7 @@
 #ifndef MK_GLTF_JOINTS_H
 #define MK_GLTF_JOINTS_H
 
-#include "scene/mesh.h"
+#include "scene/mesh/mesh.h"
 
 /* The joint sets a file may have (JOINTS_0 to JOINTS_2, as the bake reads
  * them), the chain's joints at most, and where joint k of n lies at bind

@@ -8,7 +8,7 @@
 #ifndef MK_GLTF_MORPH_H
 #define MK_GLTF_MORPH_H
 
-#include "scene/mesh.h"
+#include "scene/mesh/mesh.h"
 
 /* 0, or -1 when the file cannot be written. */
 int gltf_write_morph(const char *path, const struct mesh *m, int nodes);

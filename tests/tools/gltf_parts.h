@@ -4,7 +4,7 @@
 #ifndef MK_GLTF_PARTS_H
 #define MK_GLTF_PARTS_H
 
-#include "scene/mesh.h"
+#include "scene/mesh/mesh.h"
 
 struct gltf_part {
 	const struct mesh *mesh; /* positions, normals, uvs (required), indices */

@@ -3,7 +3,7 @@
 #ifndef MK_GLTF_WRITE_H
 #define MK_GLTF_WRITE_H
 
-#include "scene/mesh.h"
+#include "scene/mesh/mesh.h"
 
 enum gltf_container { GLTF_GLB, GLTF_EXTERNAL_BIN, GLTF_DATA_URI };
 

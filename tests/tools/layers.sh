@@ -101,7 +101,8 @@ FNR == 1 {
 	file = FILENAME
 	rel = substr(file, length(src) + 2)
 	n = split(rel, part, "/")
-	own = (n == 2) ? part[1] : ""
+	# A layer may hold folders of its own (scene/gltf, scene/mesh ...).
+	own = (n == 2 || n == 3) ? part[1] : ""
 	module = rel
 	sub(/\.(c|cc|h)$/, "", module)
 	if (!(own in rank))
@@ -112,7 +113,8 @@ FNR == 1 {
 	inc = $0
 	sub(/^[^"]*"/, "", inc)
 	sub(/".*/, "", inc)
-	if (split(inc, ipart, "/") != 2) {
+	ni = split(inc, ipart, "/")
+	if (ni != 2 && ni != 3) {
 		offence(file ":" FNR, "#include \"" inc "\" names no layer folder (write \"layer/file.h\")")
 		next
 	}

@@ -13,8 +13,8 @@
 #include "gltf_write.h"
 #include "maps.h"
 #include "parts_models.h"
-#include "scene/mesh.h"
-#include "scene/tangent.h"
+#include "scene/mesh/mesh.h"
+#include "scene/mesh/tangent.h"
 #include "util/image.h"
 
 #include <math.h>

@@ -1,6 +1,6 @@
 #include "parts_models.h"
 #include "gltf_parts.h"
-#include "scene/mesh.h"
+#include "scene/mesh/mesh.h"
 #include "util/image.h"
 
 #include <math.h>

@@ -1,4 +1,4 @@
-/* The several-material test models (src/scene/mesh.h ranges): parts with
+/* The several-material test models (src/scene/mesh/mesh.h ranges): parts with
  * their own base maps, an alpha MASK label, BLEND panes in front of an
  * opaque part, a double-sided leaf, and a knot of 64 materials for the
  * bench. */

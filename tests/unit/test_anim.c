@@ -1,10 +1,10 @@
-/* glTF animation's pure maths (src/scene/anim.h): the samplers against
+/* glTF animation's pure maths (src/scene/anim/anim.h): the samplers against
  * values worked by hand, slerp the shorter way, the loop modes, a clock
  * run forward by a year, and node evaluation parents first without
  * recursion; and a glTF file's animations read into that model, a
  * malformed one refused with a warning while the still model loads. */
-#include "scene/anim.h"
-#include "scene/gltf.h"
+#include "scene/anim/anim.h"
+#include "scene/gltf/gltf.h"
 
 #include <errno.h>
 #include <math.h>

@@ -1,8 +1,8 @@
-/* Palette splitting for GPU skinning (src/scene/anim_palette.c): every
+/* Palette splitting for GPU skinning (src/scene/anim/anim_palette.c): every
  * draw's palette fits, every triangle survives with each vertex naming the
  * same skin joints through its draw's palette, a primitive that fits stays
  * one draw with no copies, and what cannot fit is refused. */
-#include "scene/anim_palette.h"
+#include "scene/anim/anim_palette.h"
 
 #include <errno.h>
 #include <setjmp.h>

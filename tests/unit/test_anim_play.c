@@ -1,4 +1,4 @@
-/* Live playback's CPU pose (src/scene/anim_play.h) against the still the
+/* Live playback's CPU pose (src/scene/anim/anim_play.h) against the still the
  * loader bakes (--time): for Khronos and assimp models that skin, morph
  * and move nodes, the positions and normals anim_play_pose writes at a
  * clip time equal the mesh loaded posed at that time, with the same fit;
@@ -9,8 +9,8 @@
  * four) with a reason for the journal.
  * A model without animation keeps nothing for playback and loads as it
  * did. */
-#include "scene/anim_play.h"
-#include "scene/gltf.h"
+#include "scene/anim/anim_play.h"
+#include "scene/gltf/gltf.h"
 #include "oracle/anim_mirror.h"
 #include "gltf_joints.h"
 

@@ -2,14 +2,14 @@
  * baseColorTexture and its KHR_texture_transform, [scene] base_color =
  * off, and what a model without colour costs (nothing). The colours on
  * screen: tests/oracle/base_color_check.c and the golden images. */
-#include "scene/gltf.h"
+#include "scene/gltf/gltf.h"
 #include "gltf_parts.h"
 #include "gltf_write.h"
 #include "render/draw_list.h"
-#include "scene/lod.h"
-#include "scene/material.h"
-#include "scene/mesh.h"
-#include "scene/mesh_pack.h"
+#include "scene/mesh/lod.h"
+#include "scene/mesh/material.h"
+#include "scene/mesh/mesh.h"
+#include "scene/mesh/mesh_pack.h"
 #include "util/image.h"
 
 #include <errno.h>

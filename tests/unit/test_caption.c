@@ -8,8 +8,8 @@
 #include "display/display.h"
 #include "render/caption.h"
 #include "render/render.h"
-#include "scene/caption.h"
-#include "scene/gltf_name.h"
+#include "scene/text/caption.h"
+#include "scene/gltf/gltf_name.h"
 #include "util/log.h"
 
 #include <errno.h>

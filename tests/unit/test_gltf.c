@@ -1,6 +1,6 @@
-#include "scene/gltf.h"
+#include "scene/gltf/gltf.h"
 #include "gltf_write.h"
-#include "scene/mesh.h"
+#include "scene/mesh/mesh.h"
 
 #include <errno.h>
 #include <math.h>

@@ -5,9 +5,9 @@
  * below the worker's (content/worker.h). */
 #include "content/worker.h"
 #include "gltf_write.h"
-#include "scene/gltf.h"
-#include "scene/gltf_json_depth.h"
-#include "scene/mesh.h"
+#include "scene/gltf/gltf.h"
+#include "scene/gltf/gltf_json_depth.h"
+#include "scene/mesh/mesh.h"
 #include "util/log.h"
 
 #include <errno.h>

@@ -2,8 +2,8 @@
  * skins and morph targets posed at load, quantized and meshopt-compressed
  * attributes, sparse accessors and accessors without a bufferView, the
  * scene choice, deep hierarchies; and refusals that name the JSON path. */
-#include "scene/gltf.h"
-#include "scene/mesh.h"
+#include "scene/gltf/gltf.h"
+#include "scene/mesh/mesh.h"
 
 #include <math.h>
 #include <meshoptimizer.h>

@@ -3,8 +3,8 @@
  * syntax error with line and column), and the files a model names in
  * subfolders of its folder (textures/, as Blender and Sketchfab write
  * them), with the real reason when one cannot be used. */
-#include "scene/gltf.h"
-#include "scene/mesh.h"
+#include "scene/gltf/gltf.h"
+#include "scene/mesh/mesh.h"
 #include "../tools/gltf_write.h"
 #include "util/image.h"
 

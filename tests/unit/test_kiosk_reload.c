@@ -12,7 +12,7 @@
 #include "display/display.h"
 #include "gltf_write.h"
 #include "render/render.h"
-#include "scene/mesh.h"
+#include "scene/mesh/mesh.h"
 #include "util/log.h"
 
 #include <setjmp.h>

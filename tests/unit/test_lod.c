@@ -1,10 +1,10 @@
-/* The level of detail that the display can show (src/scene/lod.c): the error
+/* The level of detail that the display can show (src/scene/mesh/lod.c): the error
  * budget follows the display, the simplified surface stays within it, UV
  * seams and attributes survive, and the normals' error is measured. */
-#include "scene/lod.h"
-#include "scene/mesh.h"
+#include "scene/mesh/lod.h"
+#include "scene/mesh/mesh.h"
 #include "util/math3d.h"
-#include "scene/tangent.h"
+#include "scene/mesh/tangent.h"
 
 #include <math.h>
 #include <setjmp.h>

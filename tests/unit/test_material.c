@@ -1,10 +1,10 @@
-#include "scene/gltf.h"
+#include "scene/gltf/gltf.h"
 #include "gltf_write.h"
 #include "util/image.h"
-#include "scene/material.h"
-#include "scene/mesh.h"
+#include "scene/mesh/material.h"
+#include "scene/mesh/mesh.h"
 #include "oracle/oracle.h"
-#include "scene/tangent.h"
+#include "scene/mesh/tangent.h"
 #include "render/shader.h"
 
 #include <errno.h>

@@ -7,9 +7,9 @@
  * KHR_materials_pbrSpecularGlossiness required was refused). */
 #include "gltf_parts.h"
 #include "render/draw_list.h"
-#include "scene/gltf.h"
-#include "scene/material.h"
-#include "scene/mesh.h"
+#include "scene/gltf/gltf.h"
+#include "scene/mesh/material.h"
+#include "scene/mesh/mesh.h"
 #include "util/image.h"
 #include "util/log.h"
 

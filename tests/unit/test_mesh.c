@@ -1,4 +1,4 @@
-#include "scene/mesh.h"
+#include "scene/mesh/mesh.h"
 
 #include <math.h>
 #include <setjmp.h>

@@ -7,12 +7,12 @@
 #include "display/display.h"
 #include "gltf_joints.h"
 #include "gltf_write.h"
-#include "scene/mesh.h"
-#include "scene/anim.h"
-#include "scene/anim_play.h"
-#include "scene/mesh_cache.h"
-#include "scene/mesh_cache_anim.h"
-#include "scene/mesh_pack.h"
+#include "scene/mesh/mesh.h"
+#include "scene/anim/anim.h"
+#include "scene/anim/anim_play.h"
+#include "scene/mesh/mesh_cache.h"
+#include "scene/mesh/mesh_cache_anim.h"
+#include "scene/mesh/mesh_pack.h"
 #include "util/log.h"
 
 #include <errno.h>
@@ -340,7 +340,7 @@ static void the_key_follows_the_bytes(void **state)
 	assert_int_equal(b, c);
 	assert_int_equal(mesh_cache_hash_model("/nonexistent/m.glb", &a), -ENOENT);
 	/* Hashed in 256 KiB pieces as it is read: the same as the bytes at
-	 * once (seed 1: KEY_VERSION in src/scene/mesh_cache_key.c), across
+	 * once (seed 1: KEY_VERSION in src/scene/mesh/mesh_cache_key.c), across
 	 * the pieces' edges and with every length of tail. */
 	for (size_t n = (512u << 10) - 33; n < (512u << 10) + 33; n++) {
 		unsigned char *bytes = malloc(n);
@@ -379,7 +379,7 @@ static void check_table(enum mesh_cache_table t, size_t struct_size, size_t stru
 
 		if (f[i].offset != expected)
 			fail_msg("%s: a field of %zu bytes before it has no entry in the cache's "
-				 "table (src/scene/mesh_cache_fields.c)",
+				 "table (src/scene/mesh/mesh_cache_fields.c)",
 				 f[i].name, f[i].offset - end);
 		end = f[i].offset + f[i].size;
 	}

@@ -8,9 +8,9 @@
  * flat mesh flat where it simplifies; live playback of a skinned model
  * without normals poses the split vertices as the still is baked; and a
  * second start from the prepared-mesh cache draws the same flat frame. */
-#include "scene/gltf.h"
-#include "scene/lod.h"
-#include "scene/anim_play.h"
+#include "scene/gltf/gltf.h"
+#include "scene/mesh/lod.h"
+#include "scene/anim/anim_play.h"
 #include "gltf_write.h"
 #include "anim_fixture.h"
 

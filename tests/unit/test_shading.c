@@ -2,7 +2,7 @@
 #include "oracle/oracle.h"
 #include "render/render.h"
 #include "render/shader.h"
-#include "scene/mesh.h"
+#include "scene/mesh/mesh.h"
 
 #include <errno.h>
 #include <math.h>

@@ -3,11 +3,11 @@
  * loader's double-precision fit against exact values. Every result must
  * be finite and within the bound stated beside its assertion. Binary16
  * (mediump) has its own file, test_fp16.c. */
-#include "scene/gltf.h"
+#include "scene/gltf/gltf.h"
 #include "gltf_write.h"
-#include "scene/mesh.h"
+#include "scene/mesh/mesh.h"
 #include "oracle/oracle.h"
-#include "scene/tangent.h"
+#include "scene/mesh/tangent.h"
 
 #include <float.h>
 #include <math.h>

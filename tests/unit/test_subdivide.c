@@ -1,6 +1,6 @@
 #include "util/image.h"
-#include "scene/mesh.h"
-#include "scene/subdivide.h"
+#include "scene/mesh/mesh.h"
+#include "scene/mesh/subdivide.h"
 
 #include <errno.h>
 #include <math.h>

@@ -1,5 +1,5 @@
-#include "scene/mesh.h"
-#include "scene/tangent.h"
+#include "scene/mesh/mesh.h"
+#include "scene/mesh/tangent.h"
 
 #include <math.h>
 #include <setjmp.h>

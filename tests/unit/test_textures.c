@@ -2,8 +2,8 @@
  * the texture's PNG/JPEG source, that source the fallback when the WebP
  * cannot be decoded, and KHR_texture_basisu (KTX2) refused by name: Debian
  * 12 and 13 ship no KTX2 transcoder. */
-#include "scene/gltf.h"
-#include "scene/mesh.h"
+#include "scene/gltf/gltf.h"
+#include "scene/mesh/mesh.h"
 #include "util/image.h"
 
 #include <setjmp.h>

@@ -10,10 +10,10 @@
 #include "content/content.h"
 #include "render/draw_list.h"
 #include "render/render.h"
-#include "scene/anim_play.h"
-#include "scene/gltf.h"
-#include "scene/material.h"
-#include "scene/mesh.h"
+#include "scene/anim/anim_play.h"
+#include "scene/gltf/gltf.h"
+#include "scene/mesh/material.h"
+#include "scene/mesh/mesh.h"
 #include "util/log.h"
 
 #include <errno.h>

@@ -1,0 +1,34 @@
+// Inside the glTF shim (C++ only): a parsed model's animations into the
+// plain struct mesh_anim of src/scene/anim/anim.h (gltf_anim.cc).
+#ifndef MK_GLTF_ANIM_H
+#define MK_GLTF_ANIM_H
+
+#include "scene/anim/anim.h"
+#include "scene/gltf/gltf_texture.h"
+
+#include <string>
+#include <tiny_gltf.h>
+
+// *out: NULL for a file without animations, else its nodes and clips
+// (free with mesh_anim_free). false, *out NULL and err naming the field and
+// what was expected when an animation is malformed.
+bool gltf_read_anim(const tinygltf::Model &m, struct mesh_anim **out, std::string *err);
+
+// With o->pose, the clips o->animation names, at o->time, written into the
+// nodes' translation, rotation, scale and weights (a is the model's, read
+// by gltf_read_anim; NULL: nothing to pose). false, err naming the setting,
+// for a clip the file lacks.
+bool gltf_pose_nodes(tinygltf::Model &m, const struct mesh_anim *a, const struct gltf_options *o,
+		     std::string *err);
+
+// gltf_read_anim and gltf_pose_nodes as the mesh builder runs them, before
+// the passes that bake a still: a malformed animation is a warning (the
+// still model loads); *o->anim, when asked for, takes the result.
+bool gltf_anim_load(const char *name, tinygltf::Model &m, const struct gltf_options *o,
+		    std::string *err);
+// The clip o->animation names: *clip its index, -1 for off or all (or a
+// file without clips); false and err naming the setting for one it lacks.
+bool gltf_anim_clips(const struct mesh_anim *a, const struct gltf_options *o, int *clip,
+		     std::string *err);
+
+#endif

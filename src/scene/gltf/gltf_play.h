@@ -1,0 +1,33 @@
+// Inside the glTF shim (C++ only): what live playback keeps beside the
+// baked mesh (scene/anim_play.h), from the file's own primitives
+// (gltf_play.cc).
+#ifndef MK_GLTF_PLAY_H
+#define MK_GLTF_PLAY_H
+
+#include "scene/anim/anim_play.h"
+
+#include <string>
+#include <tiny_gltf.h>
+#include <vector>
+
+// A primitive as the builder appended it: the node showing it, the file's
+// mesh and primitive, its vertices and indices in the mesh.
+struct GltfPlayPart {
+	int node, mesh, primitive;
+	uint32_t first_vertex, vertex_count, first_index, index_count;
+	bool has_normals;
+	// Split at its faces for flat normals (gltf_flat.h): source[i] is the
+	// primitive's vertex that vertex first_vertex + i copies; NULL: none.
+	bool flat;
+	const uint32_t *source;
+};
+
+// m: the file as parsed (no pose baked in; its accessors are decoded and
+// made dense here); indices: the builder's. *out NULL and err saying why, when the
+// model cannot play live (the still stands); an error is no failure of
+// the load.
+bool gltf_play_build(tinygltf::Model &m, const std::vector<GltfPlayPart> &parts,
+		     const std::vector<uint32_t> &indices, const double center[3], double scale,
+		     struct anim_play **out, std::string *err);
+
+#endif

@@ -1,0 +1,609 @@
+#include "scene/mesh/lod.h"
+#include "util/log.h"
+#include "util/math3d.h"
+
+#include <errno.h>
+#include <math.h>
+#include <meshoptimizer.h>
+#include <stdbool.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* meshoptimizer's advice: accept 5% more vertex-cache misses for less
+ * overdraw. */
+#define OVERDRAW_THRESHOLD 1.05f
+
+double lod_model_error(double pixels, int width, int height)
+{
+	return pixels / sphere_fit_pixels_per_unit(width, height);
+}
+
+static double surface_area(const struct mesh *m)
+{
+	double area = 0.0;
+
+	for (uint32_t t = 0; t + 2 < m->index_count; t += 3) {
+		const float *a = m->positions + (size_t)m->indices[t] * 3;
+		const float *b = m->positions + (size_t)m->indices[t + 1] * 3;
+		const float *c = m->positions + (size_t)m->indices[t + 2] * 3;
+		double e1[3], e2[3], x, y, z;
+
+		for (int k = 0; k < 3; k++)
+			e1[k] = (double)b[k] - a[k], e2[k] = (double)c[k] - a[k];
+		x = e1[1] * e2[2] - e1[2] * e2[1];
+		y = e1[2] * e2[0] - e1[0] * e2[2];
+		z = e1[0] * e2[1] - e1[1] * e2[0];
+		area += 0.5 * sqrt(x * x + y * y + z * z);
+	}
+	return area;
+}
+
+double lod_triangles_wanted(const struct mesh *m, double pixels, int width, int height)
+{
+	double ppu = sphere_fit_pixels_per_unit(width, height);
+
+	return pixels > 0.0 ? surface_area(m) * ppu * ppu / (2.0 * pixels * pixels) : INFINITY;
+}
+
+/* Each attribute array in the order vertex fetch wants, without the
+ * vertices no triangle uses any more; all or nothing. */
+static int remap_streams(struct mesh *m, const unsigned *remap, uint32_t unique)
+{
+	float **streams[6] = {&m->positions, &m->normals, &m->uvs,
+			      &m->tangents,  &m->colors,  &m->uv1};
+	const size_t width[6] = {3, 3, 2, 4, 4, 2};
+	float *fresh[6] = {NULL, NULL, NULL, NULL, NULL, NULL};
+
+	for (int s = 0; s < 6; s++) {
+		if (!*streams[s])
+			continue;
+		fresh[s] = malloc(unique * width[s] * sizeof(float) + 1);
+		if (!fresh[s]) {
+			for (int k = 0; k < s; k++)
+				free(fresh[k]);
+			return -ENOMEM;
+		}
+	}
+	for (int s = 0; s < 6; s++) {
+		if (!fresh[s])
+			continue;
+		meshopt_remapVertexBuffer(fresh[s], *streams[s], m->vertex_count,
+					  width[s] * sizeof(float), remap);
+		free(*streams[s]);
+		*streams[s] = fresh[s];
+	}
+	m->vertex_count = unique;
+	return 0;
+}
+
+/* m's index buffer into out, simplified down to `wanted` triangles unless
+ * the error would pass target (in model units) first; returns the new
+ * index count.
+ *
+ * Seams (a UV seam, a normal crease, a mirror-split tangent: vertices
+ * apart at one position) are meshoptimizer 0.18's own business here: it
+ * collapses a seam vertex only along the seam and both sides together,
+ * and locks a position with more than two such vertices (a pole). Where
+ * that keeps far more than wanted, simplify_welded takes over.
+ * tests/unit/test_lod.c checks that a UV sphere stays closed and no
+ * triangle spans its seam. */
+static size_t simplify(const struct mesh *m, double wanted, double target, unsigned options,
+		       unsigned *out, float *error)
+{
+	float scale = meshopt_simplifyScale(m->positions, m->vertex_count, 3 * sizeof(float));
+	size_t n = 0;
+
+	*error = 0.0f;
+	/* scale 0: every vertex at one point, nothing to judge by */
+	if (scale > 0.0f) {
+		n = meshopt_simplify(out, m->indices, m->index_count, m->positions, m->vertex_count,
+				     3 * sizeof(float), 3 * (size_t)wanted, (float)(target / scale),
+				     options, error);
+		*error *= scale;
+	}
+	/* A model smaller than the budget would vanish: it stays whole. */
+	if (!n) {
+		memcpy(out, m->indices, (size_t)m->index_count * sizeof(unsigned));
+		n = m->index_count;
+		*error = 0.0f;
+	}
+	return n;
+}
+
+/* Seams may keep this much more than the count wanted before the
+ * position-only pass is tried. */
+#define SEAM_SLACK 1.25
+
+/* Vertices at one position, by representative: list[first[r]..first[r+1])
+ * holds every vertex whose rep is r (a seam's or a crease's wedges). */
+struct wedges {
+	uint32_t *rep, *first, *list;
+};
+
+static void wedges_free(struct wedges *w)
+{
+	free(w->rep);
+	free(w->first);
+	free(w->list);
+}
+
+/* rep[v]: the first vertex equal to v in position, and in uv too when
+ * by_uv (then a UV seam stays a seam for meshoptimizer). */
+static int weld(const struct mesh *m, bool by_uv, uint32_t *rep)
+{
+	struct meshopt_Stream streams[2] = {{m->positions, 12, 12}, {m->uvs, 8, 8}};
+	uint32_t *first;
+
+	if (!by_uv || !m->uvs)
+		return mesh_weld(m->positions, m->vertex_count, rep);
+	first = malloc((size_t)m->vertex_count * sizeof(uint32_t) + 1);
+	if (!first)
+		return -ENOMEM;
+	/* Over the indices: a vertex no triangle uses stays its own. */
+	meshopt_generateVertexRemapMulti(rep, m->indices, m->index_count, m->vertex_count, streams,
+					 2);
+	for (uint32_t v = m->vertex_count; v-- > 0;)
+		if (rep[v] != ~0u)
+			first[rep[v]] = v;
+	for (uint32_t v = 0; v < m->vertex_count; v++)
+		rep[v] = rep[v] == ~0u ? v : first[rep[v]];
+	free(first);
+	return 0;
+}
+
+static int wedges_build(const struct mesh *m, bool by_uv, struct wedges *w)
+{
+	uint32_t n = m->vertex_count;
+
+	w->rep = malloc((size_t)n * sizeof(uint32_t) + 1);
+	w->first = calloc((size_t)n + 2, sizeof(uint32_t));
+	w->list = malloc((size_t)n * sizeof(uint32_t) + 1);
+	if (!w->rep || !w->first || !w->list || weld(m, by_uv, w->rep))
+		return -ENOMEM;
+	for (uint32_t v = 0; v < n; v++)
+		w->first[w->rep[v] + 2]++;
+	for (uint32_t r = 0; r < n; r++)
+		w->first[r + 2] += w->first[r + 1];
+	for (uint32_t v = 0; v < n; v++)
+		w->list[w->first[w->rep[v] + 1]++] = v;
+	return 0;
+}
+
+static double dot3f(const float *a, const double *b)
+{
+	return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* Of the wedges at position r, the one that belongs to this side: its
+ * normal nearest the face's (a crease), then its uv nearest the anchor's
+ * (a UV seam). */
+static uint32_t pick_wedge(const struct mesh *m, const struct wedges *w, uint32_t r,
+			   const double face[3], const float *anchor_uv)
+{
+	uint32_t best = r;
+	double best_score = -INFINITY;
+
+	for (uint32_t i = w->first[r]; i < w->first[r + 1]; i++) {
+		uint32_t v = w->list[i];
+		double score = dot3f(m->normals + (size_t)v * 3, face);
+
+		if (anchor_uv && m->uvs) {
+			const float *uv = m->uvs + (size_t)v * 2;
+			/* A seam's sides lie a texture apart; a crease's share uvs. */
+			score -= 4.0 * (fabs(uv[0] - anchor_uv[0]) + fabs(uv[1] - anchor_uv[1]));
+		}
+		if (score > best_score)
+			best = v, best_score = score;
+	}
+	return best;
+}
+
+/* How far apart in uv the wedges at position r lie: 0 off a UV seam. */
+static double uv_spread(const struct mesh *m, const struct wedges *w, uint32_t r)
+{
+	const float *a = m->uvs + (size_t)w->list[w->first[r]] * 2;
+	double spread = 0.0;
+
+	for (uint32_t i = w->first[r] + 1; i < w->first[r + 1]; i++) {
+		const float *b = m->uvs + (size_t)w->list[i] * 2;
+		spread = fmax(spread, fabs(a[0] - b[0]) + fabs(a[1] - b[1]));
+	}
+	return spread;
+}
+
+/* A simplified triangle over representatives back onto wedges: the corner
+ * off any UV seam anchors the uvs of the others. */
+static void unweld_triangle(const struct mesh *m, const struct wedges *w, unsigned *t)
+{
+	const float *a = m->positions + (size_t)t[0] * 3, *b = m->positions + (size_t)t[1] * 3,
+		    *c = m->positions + (size_t)t[2] * 3;
+	double e1[3], e2[3], face[3], len;
+	int anchor = 0;
+
+	for (int k = 0; k < 3; k++)
+		e1[k] = (double)b[k] - a[k], e2[k] = (double)c[k] - a[k];
+	face[0] = e1[1] * e2[2] - e1[2] * e2[1];
+	face[1] = e1[2] * e2[0] - e1[0] * e2[2];
+	face[2] = e1[0] * e2[1] - e1[1] * e2[0];
+	len = sqrt(face[0] * face[0] + face[1] * face[1] + face[2] * face[2]);
+	for (int k = 0; k < 3 && len > 0; k++)
+		face[k] /= len;
+	for (int k = 1; k < 3 && m->uvs; k++)
+		if (uv_spread(m, w, t[k]) < uv_spread(m, w, t[anchor]))
+			anchor = k;
+	t[anchor] = pick_wedge(m, w, t[anchor], face, NULL);
+	for (int k = 0; k < 3; k++)
+		if (k != anchor)
+			t[k] = pick_wedge(m, w, t[k], face,
+					  m->uvs ? m->uvs + (size_t)t[anchor] * 2 : NULL);
+}
+
+/* When seams stop meshoptimizer 0.18 short of the count (split normals
+ * and UV islands lock most of a real model), simplify the surface over
+ * its positions and uvs (creases welded, UV seams kept), or its
+ * positions alone (UV islands welded too: a texture may then stretch
+ * across a seam), then give each corner back the attributes of its side.
+ * Returns the index count, 0 when it cannot do better. */
+static size_t simplify_welded(const struct mesh *m, bool by_uv, double wanted, double target,
+			      unsigned options, unsigned *out, float *error)
+{
+	float scale = meshopt_simplifyScale(m->positions, m->vertex_count, 3 * sizeof(float));
+	unsigned *welded = malloc((size_t)m->index_count * sizeof(unsigned) + 1);
+	/* Only the representatives, numbered apart: meshoptimizer would
+	 * still see the other wedges at a position and lock it. */
+	float *points = malloc((size_t)m->vertex_count * 3 * sizeof(float) + 1);
+	uint32_t *id = malloc((size_t)m->vertex_count * sizeof(uint32_t) + 1);
+	uint32_t *back = malloc((size_t)m->vertex_count * sizeof(uint32_t) + 1);
+	struct wedges w = {NULL, NULL, NULL};
+	uint32_t count = 0;
+	size_t n = 0;
+
+	if (scale > 0.0f && welded && points && id && back && !wedges_build(m, by_uv, &w)) {
+		for (uint32_t v = 0; v < m->vertex_count; v++)
+			if (w.rep[v] == v) {
+				memcpy(points + (size_t)count * 3, m->positions + (size_t)v * 3,
+				       3 * sizeof(float));
+				back[count] = v;
+				id[v] = count++;
+			}
+		for (uint32_t i = 0; i < m->index_count; i++)
+			welded[i] = id[w.rep[m->indices[i]]];
+		n = meshopt_simplify(out, welded, m->index_count, points, count, 3 * sizeof(float),
+				     3 * (size_t)wanted, (float)(target / scale), options, error);
+		*error *= scale;
+		for (size_t i = 0; i < n; i++)
+			out[i] = back[out[i]];
+		for (size_t t = 0; t + 2 < n; t += 3)
+			unweld_triangle(m, &w, out + t);
+	}
+	wedges_free(&w);
+	free(welded);
+	free(points);
+	free(id);
+	free(back);
+	return n;
+}
+
+/* The welded pass's result in idx when it has fewer triangles than the
+ * n already there; returns the count kept. */
+static size_t simplify_seamless(const struct mesh *m, double wanted, double target,
+				unsigned options, unsigned *idx, size_t n, float *error)
+{
+	unsigned *out = malloc((size_t)m->index_count * sizeof(unsigned) + 1);
+
+	for (int by_uv = 1; by_uv >= 0 && out && n / 3 > SEAM_SLACK * wanted; by_uv--) {
+		float welded_error = 0.0f;
+		size_t w = simplify_welded(m, by_uv, wanted, target, options, out, &welded_error);
+
+		if (w > 0 && w < n) {
+			memcpy(idx, out, w * sizeof(unsigned));
+			n = w;
+			*error = welded_error;
+		}
+	}
+	free(out);
+	return n;
+}
+
+/* One range as a mesh of its own: the vertices its triangles use
+ * (back[] maps them to m's), with what simplifying reads. */
+static int range_mesh(const struct mesh *m, const struct mesh_range *g, uint32_t *local,
+		      struct mesh *sub, uint32_t **back)
+{
+	uint32_t nv = 0;
+	int ret;
+
+	for (uint32_t i = g->first_index; i < g->first_index + g->index_count; i++)
+		local[m->indices[i]] = UINT32_MAX;
+	for (uint32_t i = g->first_index; i < g->first_index + g->index_count; i++)
+		if (local[m->indices[i]] == UINT32_MAX)
+			local[m->indices[i]] = nv++;
+	ret = mesh_alloc(sub, nv, g->index_count, m->uvs != NULL);
+	*back = malloc((size_t)nv * sizeof(uint32_t) + 1);
+	if (ret || !*back) {
+		mesh_release(sub);
+		return -ENOMEM;
+	}
+	for (uint32_t i = 0; i < g->index_count; i++) {
+		uint32_t v = m->indices[g->first_index + i], l = local[v];
+
+		sub->indices[i] = l;
+		(*back)[l] = v;
+		memcpy(sub->positions + (size_t)l * 3, m->positions + (size_t)v * 3, 12);
+		memcpy(sub->normals + (size_t)l * 3, m->normals + (size_t)v * 3, 12);
+		if (m->uvs)
+			memcpy(sub->uvs + (size_t)l * 2, m->uvs + (size_t)v * 2, 8);
+	}
+	return 0;
+}
+
+/* A model of several materials: each range simplified on its own to its
+ * share of the count wanted, its border locked (meshopt_SimplifyLockBorder).
+ * Where two parts meet, both keep every vertex of the edge between them,
+ * so no crack opens there, and every triangle keeps its range's material.
+ * idx gets the ranges one after the other; m's ranges are moved to fit. */
+static int simplify_ranges(struct mesh *m, double wanted, double target, unsigned *idx, size_t *n,
+			   float *error)
+{
+	uint32_t *local = malloc((size_t)m->vertex_count * sizeof(uint32_t) + 1);
+	uint32_t at = 0;
+	int ret = local ? 0 : -ENOMEM;
+
+	*error = 0.0f;
+	for (uint32_t r = 0; !ret && r < m->range_count; r++) {
+		struct mesh_range *g = &m->ranges[r];
+		double share = wanted * g->index_count / (double)m->index_count;
+		struct mesh sub;
+		uint32_t *back = NULL;
+		size_t k = g->index_count;
+		float e = 0.0f;
+
+		ret = range_mesh(m, g, local, &sub, &back);
+		if (ret)
+			break;
+		if (share < k / 3) {
+			k = simplify(&sub, share, target, meshopt_SimplifyLockBorder, idx + at, &e);
+			if (k / 3 > SEAM_SLACK * share)
+				k = simplify_seamless(&sub, share, target,
+						      meshopt_SimplifyLockBorder, idx + at, k, &e);
+		} else {
+			memcpy(idx + at, sub.indices, k * sizeof(unsigned));
+		}
+		for (size_t i = 0; i < k; i++)
+			idx[at + i] = back[idx[at + i]];
+		*error = fmaxf(*error, e);
+		g->first_index = at;
+		g->index_count = (uint32_t)k;
+		at += (uint32_t)k;
+		free(back);
+		mesh_release(&sub);
+	}
+	free(local);
+	*n = at;
+	return ret;
+}
+
+/* The flat tag in the order of remap (weld_duplicates). */
+static int remap_flat(struct mesh *m, const unsigned *remap, uint32_t unique)
+{
+	uint8_t *fresh;
+
+	if (!m->flat)
+		return 0;
+	fresh = malloc((size_t)unique + 1);
+	if (!fresh)
+		return -ENOMEM;
+	meshopt_remapVertexBuffer(fresh, m->flat, m->vertex_count, 1, remap);
+	free(m->flat);
+	m->flat = fresh;
+	m->flat_count = unique;
+	return 0;
+}
+
+/* Vertices equal in every attribute (a glTF exporter's duplicates) are
+ * one: lossless, and gives the simplifier fewer false seams. */
+static int weld_duplicates(struct mesh *m)
+{
+	struct meshopt_Stream streams[7] = {{m->positions, 12, 12}, {m->normals, 12, 12}};
+	unsigned *remap = malloc((size_t)m->vertex_count * sizeof(unsigned) + 1);
+	size_t count = 2, unique;
+	int ret = -ENOMEM;
+
+	if (!remap)
+		return ret;
+	if (m->uvs)
+		streams[count++] = (struct meshopt_Stream){m->uvs, 8, 8};
+	if (m->tangents)
+		streams[count++] = (struct meshopt_Stream){m->tangents, 16, 16};
+	if (m->colors)
+		streams[count++] = (struct meshopt_Stream){m->colors, 16, 16};
+	/* A split (flat) corner stays apart from a smooth one. */
+	if (m->flat)
+		streams[count++] = (struct meshopt_Stream){m->flat, 1, 1};
+	if (m->uv1)
+		streams[count++] = (struct meshopt_Stream){m->uv1, 8, 8};
+	unique = meshopt_generateVertexRemapMulti(remap, m->indices, m->index_count,
+						  m->vertex_count, streams, count);
+	ret = 0;
+	if (unique < m->vertex_count) {
+		ret = remap_flat(m, remap, (uint32_t)unique);
+		if (!ret)
+			ret = remap_streams(m, remap, (uint32_t)unique);
+		if (!ret)
+			meshopt_remapIndexBuffer(m->indices, m->indices, m->index_count, remap);
+	}
+	free(remap);
+	return ret;
+}
+
+/* m->flat over every vertex: those a step after the loader appended
+ * (tangent.c's twins of a mirrored UV) are not flat; a tag that no longer
+ * fits the vertices is dropped. */
+static int flat_cover(struct mesh *m)
+{
+	uint8_t *f;
+
+	if (m->flat && m->flat_count > m->vertex_count) {
+		free(m->flat);
+		m->flat = NULL;
+	}
+	if (!m->flat || m->flat_count == m->vertex_count)
+		return 0;
+	f = realloc(m->flat, (size_t)m->vertex_count + 1);
+	if (!f)
+		return -ENOMEM;
+	memset(f + m->flat_count, 0, m->vertex_count - m->flat_count);
+	m->flat = f;
+	m->flat_count = m->vertex_count;
+	return 0;
+}
+
+/* The flat tag after the level of detail: nothing reads it further (the
+ * cache keeps the mesh as simplified). */
+static void flat_drop(struct mesh *m)
+{
+	free(m->flat);
+	m->flat = NULL;
+	m->flat_count = 0;
+}
+
+/* Room for `extra` more vertices in every attribute array. */
+static int grow_streams(struct mesh *m, uint32_t extra)
+{
+	float **streams[6] = {&m->positions, &m->normals, &m->uvs,
+			      &m->tangents,  &m->colors,  &m->uv1};
+	const size_t width[6] = {3, 3, 2, 4, 4, 2};
+
+	for (int s = 0; s < 6; s++) {
+		float *p = *streams[s] ? realloc(*streams[s], ((size_t)m->vertex_count + extra) *
+								  width[s] * sizeof(float))
+				       : NULL;
+
+		if (*streams[s] && !p)
+			return -ENOMEM;
+		if (p)
+			*streams[s] = p;
+	}
+	return 0;
+}
+
+/* A simplified triangle of flat corners spans faces that were many: its
+ * corners took their normals from one of those (unweld_triangle), so it
+ * would shade as a blend. Each corner off its new face's normal becomes a
+ * vertex of its own with that normal: flat stays flat after simplifying.
+ * remap grows with the vertices. */
+static int keep_flat(struct mesh *m, unsigned *idx, size_t n, unsigned **remap)
+{
+	unsigned *more = realloc(*remap, ((size_t)m->vertex_count + n) * sizeof(unsigned) + 1);
+	uint32_t added = 0;
+
+	if (more)
+		*remap = more;
+	if (!more || grow_streams(m, (uint32_t)n))
+		return -ENOMEM;
+	for (size_t t = 0; t + 2 < n; t += 3) {
+		unsigned *c = idx + t;
+		float f[3];
+
+		if (c[0] >= m->flat_count || c[1] >= m->flat_count || c[2] >= m->flat_count ||
+		    !m->flat[c[0]] || !m->flat[c[1]] || !m->flat[c[2]])
+			continue;
+		mesh_face_normal(m->positions + (size_t)c[0] * 3, m->positions + (size_t)c[1] * 3,
+				 m->positions + (size_t)c[2] * 3, f);
+		for (int k = 0; k < 3; k++) {
+			uint32_t v = m->vertex_count + added;
+
+			if (!memcmp(m->normals + (size_t)c[k] * 3, f, sizeof(f)))
+				continue;
+			memcpy(m->positions + (size_t)v * 3, m->positions + (size_t)c[k] * 3, 12);
+			memcpy(m->normals + (size_t)v * 3, f, 12);
+			if (m->uvs)
+				memcpy(m->uvs + (size_t)v * 2, m->uvs + (size_t)c[k] * 2, 8);
+			if (m->tangents)
+				memcpy(m->tangents + (size_t)v * 4, m->tangents + (size_t)c[k] * 4,
+				       16);
+			if (m->colors)
+				memcpy(m->colors + (size_t)v * 4, m->colors + (size_t)c[k] * 4, 16);
+			if (m->uv1)
+				memcpy(m->uv1 + (size_t)v * 2, m->uv1 + (size_t)c[k] * 2, 8);
+			c[k] = v;
+			added++;
+		}
+	}
+	m->vertex_count += added;
+	return 0;
+}
+
+int lod_prepare_mesh(struct mesh *m, double pixels, int width, int height,
+		     struct lod_result *result)
+{
+	unsigned *idx = malloc((size_t)m->index_count * sizeof(unsigned) + 1);
+	unsigned *remap = malloc((size_t)m->vertex_count * sizeof(unsigned) + 1);
+	struct lod_result r = {.triangles_before = m->index_count / 3,
+			       .vertices_before = m->vertex_count};
+	size_t n = m->index_count;
+	float error = 0.0f;
+	int ret = -ENOMEM;
+
+	if (!idx || !remap || flat_cover(m) || weld_duplicates(m))
+		goto out;
+	n = m->index_count;
+	r.wanted = lod_triangles_wanted(m, pixels, width, height);
+	if (m->range_count > 1) {
+		ret = simplify_ranges(m, r.wanted, lod_model_error(pixels, width, height), idx, &n,
+				      &error);
+		if (ret)
+			goto out;
+	} else if (r.wanted < n / 3) {
+		double target = lod_model_error(pixels, width, height);
+		n = simplify(m, r.wanted, target, 0, idx, &error);
+		if (n / 3 > SEAM_SLACK * r.wanted)
+			n = simplify_seamless(m, r.wanted, target, 0, idx, n, &error);
+	} else
+		memcpy(idx, m->indices, n * sizeof(unsigned));
+	if (m->range_count == 1)
+		m->ranges[0].index_count = (uint32_t)n;
+	if (m->flat && n < m->index_count && keep_flat(m, idx, n, &remap)) {
+		ret = -ENOMEM;
+		goto out;
+	}
+	/* Ordered within each range: the ranges stay where they are. */
+	for (uint32_t g = 0; g < (m->range_count ? m->range_count : 1); g++) {
+		unsigned *part = idx + (m->range_count ? m->ranges[g].first_index : 0);
+		size_t count = m->range_count ? m->ranges[g].index_count : n;
+
+		meshopt_optimizeVertexCache(part, part, count, m->vertex_count);
+		meshopt_optimizeOverdraw(part, part, count, m->positions, m->vertex_count,
+					 3 * sizeof(float), OVERDRAW_THRESHOLD);
+	}
+	ret = remap_streams(
+	    m, remap, (uint32_t)meshopt_optimizeVertexFetchRemap(remap, idx, n, m->vertex_count));
+	if (ret)
+		goto out;
+	flat_drop(m);
+	/* n never exceeds the old count: the index array is reused. */
+	meshopt_remapIndexBuffer(m->indices, idx, n, remap);
+	m->index_count = (uint32_t)n;
+	mesh_range_centers(m);
+out:
+	r.triangles_after = m->index_count / 3;
+	r.vertices_after = m->vertex_count;
+	r.error = error;
+	r.error_pixels = error * sphere_fit_pixels_per_unit(width, height);
+	if (ret)
+		log_err("lod: no memory to simplify %u triangles", r.triangles_before);
+	else if (r.triangles_after < r.triangles_before)
+		log_info(
+		    "lod: %u -> %u triangles for %dx%d (%.0f of %.1f px wanted; error %.2f px), "
+		    "%u -> %u vertices",
+		    r.triangles_before, r.triangles_after, width, height, r.wanted, pixels,
+		    r.error_pixels, r.vertices_before, r.vertices_after);
+	else
+		log_debug("lod: %u triangles kept for %dx%d (%.0f of %.1f px wanted), %u vertices",
+			  r.triangles_before, width, height, r.wanted, pixels, r.vertices_after);
+	if (result)
+		*result = r;
+	free(idx);
+	free(remap);
+	return ret;
+}
