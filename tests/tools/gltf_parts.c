@@ -105,6 +105,35 @@ static char *stream_text(FILE *f, char **buf)
 	return *buf;
 }
 
+/* glTF asks every extension a file uses to be named in extensionsUsed
+ * (three.js's loader refuses an unlit material without it): the names
+ * that are keys in the materials' text, each once. */
+static void put_extensions_used(FILE *out, const char *mats)
+{
+	char seen[1024] = "";
+	const char *p = mats;
+	int n = 0;
+
+	while ((p = strchr(p, '"')) != NULL) {
+		const char *name = ++p, *end = strchr(p, '"');
+
+		if (!end)
+			break;
+		p = end + 1;
+		if ((strncmp(name, "KHR_", 4) && strncmp(name, "EXT_", 4)) || *p != ':' ||
+		    end - name > 64)
+			continue;
+		char key[70];
+		snprintf(key, sizeof(key), "\"%.*s\"", (int)(end - name), name);
+		if (strstr(seen, key) || strlen(seen) + strlen(key) + 2 > sizeof(seen))
+			continue;
+		strcat(seen, n++ ? "," : "");
+		strcat(seen, key);
+	}
+	if (n)
+		fprintf(out, ",\"extensionsUsed\":[%s]", seen);
+}
+
 int gltf_write_parts(const char *path, const struct gltf_part *parts, int n)
 {
 	return gltf_write_parts_more(path, parts, NULL, n);
@@ -213,6 +242,7 @@ int gltf_write_parts_more(const char *path, const struct gltf_part *parts,
 			fprintf(out, "%s{\"source\":%d}", i ? "," : "", i);
 		fprintf(out, "]");
 	}
+	put_extensions_used(out, mbuf);
 	fprintf(out, "}");
 	fclose(out);
 	{
