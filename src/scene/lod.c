@@ -305,27 +305,29 @@ static size_t simplify_seamless(const struct mesh *m, double wanted, double targ
 	return n;
 }
 
-/* One range as a mesh of its own: the vertices its triangles use
+/* Some of m's triangles as a mesh of its own: the vertices they use
  * (back[] maps them to m's), with what simplifying reads. */
-static int range_mesh(const struct mesh *m, const struct mesh_range *g, uint32_t *local,
-		      struct mesh *sub, uint32_t **back)
+static int part_mesh(const struct mesh *m, const unsigned *indices, uint32_t count, uint32_t *local,
+		     struct mesh *sub, uint32_t **back)
 {
 	uint32_t nv = 0;
 	int ret;
 
-	for (uint32_t i = g->first_index; i < g->first_index + g->index_count; i++)
-		local[m->indices[i]] = UINT32_MAX;
-	for (uint32_t i = g->first_index; i < g->first_index + g->index_count; i++)
-		if (local[m->indices[i]] == UINT32_MAX)
-			local[m->indices[i]] = nv++;
-	ret = mesh_alloc(sub, nv, g->index_count, m->uvs != NULL);
+	for (uint32_t i = 0; i < count; i++)
+		local[indices[i]] = UINT32_MAX;
+	for (uint32_t i = 0; i < count; i++)
+		if (local[indices[i]] == UINT32_MAX)
+			local[indices[i]] = nv++;
+	ret = mesh_alloc(sub, nv, count, m->uvs != NULL);
 	*back = malloc((size_t)nv * sizeof(uint32_t) + 1);
 	if (ret || !*back) {
 		mesh_release(sub);
+		free(*back);
+		*back = NULL;
 		return -ENOMEM;
 	}
-	for (uint32_t i = 0; i < g->index_count; i++) {
-		uint32_t v = m->indices[g->first_index + i], l = local[v];
+	for (uint32_t i = 0; i < count; i++) {
+		uint32_t v = indices[i], l = local[v];
 
 		sub->indices[i] = l;
 		(*back)[l] = v;
@@ -334,6 +336,38 @@ static int range_mesh(const struct mesh *m, const struct mesh_range *g, uint32_t
 		if (m->uvs)
 			memcpy(sub->uvs + (size_t)l * 2, m->uvs + (size_t)v * 2, 8);
 	}
+	return 0;
+}
+
+/* Some of m's triangles (indices, count) simplified on their own to
+ * `share` triangles unless the error would pass target first, their
+ * border locked when options say so: into out (room for count), in m's
+ * vertex numbers; *n the count kept, *error the estimate. local: room
+ * for m's vertex count. */
+static int simplify_part(const struct mesh *m, const unsigned *indices, uint32_t count,
+			 double share, double target, unsigned options, uint32_t *local,
+			 unsigned *out, size_t *n, float *error)
+{
+	struct mesh sub;
+	uint32_t *back = NULL;
+	size_t k = count;
+	int ret = part_mesh(m, indices, count, local, &sub, &back);
+
+	*error = 0.0f;
+	if (ret)
+		return ret;
+	if (share < k / 3) {
+		k = simplify(&sub, share, target, options, out, error);
+		if (k / 3 > SEAM_SLACK * share)
+			k = simplify_seamless(&sub, share, target, options, out, k, error);
+	} else {
+		memcpy(out, sub.indices, k * sizeof(unsigned));
+	}
+	for (size_t i = 0; i < k; i++)
+		out[i] = back[out[i]];
+	*n = k;
+	free(back);
+	mesh_release(&sub);
 	return 0;
 }
 
@@ -353,30 +387,17 @@ static int simplify_ranges(struct mesh *m, double wanted, double target, unsigne
 	for (uint32_t r = 0; !ret && r < m->range_count; r++) {
 		struct mesh_range *g = &m->ranges[r];
 		double share = wanted * g->index_count / (double)m->index_count;
-		struct mesh sub;
-		uint32_t *back = NULL;
-		size_t k = g->index_count;
+		size_t k = 0;
 		float e = 0.0f;
 
-		ret = range_mesh(m, g, local, &sub, &back);
+		ret = simplify_part(m, m->indices + g->first_index, g->index_count, share, target,
+				    meshopt_SimplifyLockBorder, local, idx + at, &k, &e);
 		if (ret)
 			break;
-		if (share < k / 3) {
-			k = simplify(&sub, share, target, meshopt_SimplifyLockBorder, idx + at, &e);
-			if (k / 3 > SEAM_SLACK * share)
-				k = simplify_seamless(&sub, share, target,
-						      meshopt_SimplifyLockBorder, idx + at, k, &e);
-		} else {
-			memcpy(idx + at, sub.indices, k * sizeof(unsigned));
-		}
-		for (size_t i = 0; i < k; i++)
-			idx[at + i] = back[idx[at + i]];
 		*error = fmaxf(*error, e);
 		g->first_index = at;
 		g->index_count = (uint32_t)k;
 		at += (uint32_t)k;
-		free(back);
-		mesh_release(&sub);
 	}
 	free(local);
 	*n = at;
