@@ -1,4 +1,5 @@
 #include "scene/lod.h"
+#include "scene/lod_split.h"
 #include "util/log.h"
 #include "util/math3d.h"
 
@@ -371,13 +372,110 @@ static int simplify_part(const struct mesh *m, const unsigned *indices, uint32_t
 	return 0;
 }
 
+/* A cluster under this many triangles is not worth a thread: a smaller
+ * model (or range) is simplified as before, whatever the thread count. */
+#define CLUSTER_MIN_TRIANGLES 16384
+
+static unsigned cluster_count(int threads, uint32_t index_count)
+{
+	uint32_t most = index_count / 3 / CLUSTER_MIN_TRIANGLES;
+
+	if (threads > LOD_THREADS_MAX)
+		threads = LOD_THREADS_MAX;
+	return threads > 1 && most > 1 ? (unsigned)threads < most ? (unsigned)threads : most : 1;
+}
+
+/* One part's clusters, simplified side by side: cluster j is the j-th of
+ * `clusters` equal runs of the ordered triangles, and writes its result
+ * where its run begins in out. */
+struct cluster_job {
+	const struct mesh *m;
+	const unsigned *order;
+	uint32_t triangles;
+	unsigned clusters;
+	double share, target;
+	unsigned *out;
+	size_t n[LOD_THREADS_MAX];
+	float error[LOD_THREADS_MAX];
+	int ret[LOD_THREADS_MAX];
+};
+
+static uint32_t cluster_first(const struct cluster_job *c, unsigned j)
+{
+	return (uint32_t)((uint64_t)c->triangles * j / c->clusters);
+}
+
+static void cluster_run(void *arg, unsigned j)
+{
+	struct cluster_job *c = arg;
+	uint32_t first = cluster_first(c, j), count = cluster_first(c, j + 1) - first;
+	uint32_t *local = malloc((size_t)c->m->vertex_count * sizeof(uint32_t) + 1);
+
+	/* Its border locked: where two clusters meet both keep the edge. */
+	c->ret[j] = local ? simplify_part(c->m, c->order + (size_t)first * 3, count * 3,
+					  c->share * count / c->triangles, c->target,
+					  meshopt_SimplifyLockBorder, local,
+					  c->out + (size_t)first * 3, &c->n[j], &c->error[j])
+			  : -ENOMEM;
+	free(local);
+}
+
+/* simplify_part on `threads` threads: the part cut into spatial clusters
+ * (lod_split_order), each simplified to its share with its border locked,
+ * then all of them together once more, the locked borders now free (as
+ * options say), with what is left of the error budget: the two passes'
+ * errors add up to at most target, as one pass's would. Deterministic for
+ * a thread count: the clusters depend on it, not on which thread ran
+ * which. */
+static int simplify_clustered(const struct mesh *m, const unsigned *indices, uint32_t count,
+			      double share, double target, unsigned options, int threads,
+			      unsigned *out, size_t *n, float *error)
+{
+	struct cluster_job *c = calloc(1, sizeof(*c));
+	unsigned *order = malloc((size_t)count * sizeof(unsigned) + 1);
+	uint32_t *local = malloc((size_t)m->vertex_count * sizeof(uint32_t) + 1);
+	uint32_t joined = 0;
+	float first_error = 0.0f, second_error = 0.0f;
+	int ret =
+	    c && order && local ? lod_split_order(indices, count, m->positions, order) : -ENOMEM;
+
+	if (!ret) {
+		*c = (struct cluster_job){.m = m,
+					  .order = order,
+					  .triangles = count / 3,
+					  .clusters = cluster_count(threads, count),
+					  .share = share,
+					  .target = target,
+					  .out = out};
+		lod_pool_run(threads, c->clusters, cluster_run, c);
+	}
+	for (unsigned j = 0; !ret && j < c->clusters; j++) {
+		ret = c->ret[j];
+		memmove(out + joined, out + (size_t)cluster_first(c, j) * 3,
+			c->n[j] * sizeof(unsigned));
+		joined += (uint32_t)c->n[j];
+		first_error = fmaxf(first_error, c->error[j]);
+	}
+	/* The clusters' result is the input now: order takes it. */
+	if (!ret) {
+		memcpy(order, out, (size_t)joined * sizeof(unsigned));
+		ret = simplify_part(m, order, joined, share, fmax(target - first_error, 0.0),
+				    options, local, out, n, &second_error);
+	}
+	*error = first_error + second_error;
+	free(c);
+	free(order);
+	free(local);
+	return ret;
+}
+
 /* A model of several materials: each range simplified on its own to its
  * share of the count wanted, its border locked (meshopt_SimplifyLockBorder).
  * Where two parts meet, both keep every vertex of the edge between them,
  * so no crack opens there, and every triangle keeps its range's material.
  * idx gets the ranges one after the other; m's ranges are moved to fit. */
-static int simplify_ranges(struct mesh *m, double wanted, double target, unsigned *idx, size_t *n,
-			   float *error)
+static int simplify_ranges(struct mesh *m, double wanted, double target, int threads, unsigned *idx,
+			   size_t *n, float *error)
 {
 	uint32_t *local = malloc((size_t)m->vertex_count * sizeof(uint32_t) + 1);
 	uint32_t at = 0;
@@ -390,8 +488,14 @@ static int simplify_ranges(struct mesh *m, double wanted, double target, unsigne
 		size_t k = 0;
 		float e = 0.0f;
 
-		ret = simplify_part(m, m->indices + g->first_index, g->index_count, share, target,
-				    meshopt_SimplifyLockBorder, local, idx + at, &k, &e);
+		if (share < g->index_count / 3 && cluster_count(threads, g->index_count) > 1)
+			ret = simplify_clustered(m, m->indices + g->first_index, g->index_count,
+						 share, target, meshopt_SimplifyLockBorder, threads,
+						 idx + at, &k, &e);
+		else
+			ret = simplify_part(m, m->indices + g->first_index, g->index_count, share,
+					    target, meshopt_SimplifyLockBorder, local, idx + at, &k,
+					    &e);
 		if (ret)
 			break;
 		*error = fmaxf(*error, e);
@@ -558,6 +662,12 @@ static int keep_flat(struct mesh *m, unsigned *idx, size_t n, unsigned **remap)
 int lod_prepare_mesh(struct mesh *m, double pixels, int width, int height,
 		     struct lod_result *result)
 {
+	return lod_prepare_mesh_threads(m, pixels, width, height, 1, result);
+}
+
+int lod_prepare_mesh_threads(struct mesh *m, double pixels, int width, int height, int threads,
+			     struct lod_result *result)
+{
 	unsigned *idx = malloc((size_t)m->index_count * sizeof(unsigned) + 1);
 	unsigned *remap = malloc((size_t)m->vertex_count * sizeof(unsigned) + 1);
 	struct lod_result r = {.triangles_before = m->index_count / 3,
@@ -571,15 +681,23 @@ int lod_prepare_mesh(struct mesh *m, double pixels, int width, int height,
 	n = m->index_count;
 	r.wanted = lod_triangles_wanted(m, pixels, width, height);
 	if (m->range_count > 1) {
-		ret = simplify_ranges(m, r.wanted, lod_model_error(pixels, width, height), idx, &n,
-				      &error);
+		ret = simplify_ranges(m, r.wanted, lod_model_error(pixels, width, height), threads,
+				      idx, &n, &error);
 		if (ret)
 			goto out;
 	} else if (r.wanted < n / 3) {
 		double target = lod_model_error(pixels, width, height);
-		n = simplify(m, r.wanted, target, 0, idx, &error);
-		if (n / 3 > SEAM_SLACK * r.wanted)
-			n = simplify_seamless(m, r.wanted, target, 0, idx, n, &error);
+
+		if (cluster_count(threads, m->index_count) > 1) {
+			ret = simplify_clustered(m, m->indices, m->index_count, r.wanted, target, 0,
+						 threads, idx, &n, &error);
+			if (ret)
+				goto out;
+		} else {
+			n = simplify(m, r.wanted, target, 0, idx, &error);
+			if (n / 3 > SEAM_SLACK * r.wanted)
+				n = simplify_seamless(m, r.wanted, target, 0, idx, n, &error);
+		}
 	} else
 		memcpy(idx, m->indices, n * sizeof(unsigned));
 	if (m->range_count == 1)

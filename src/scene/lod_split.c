@@ -9,6 +9,12 @@
 #include <string.h>
 #include <unistd.h>
 
+/* The grid the triangles are sorted on: 32 cells a side, fine enough that
+ * a cut between clusters runs through a cell at most a 32nd of the model
+ * wide, coarse enough that one counting sort does it. */
+#define SPLIT_BITS  5
+#define SPLIT_CELLS (1u << (3 * SPLIT_BITS))
+
 int lod_threads_online(void)
 {
 	long n = sysconf(_SC_NPROCESSORS_ONLN);
@@ -16,15 +22,14 @@ int lod_threads_online(void)
 	return n < 1 ? 1 : n > LOD_THREADS_MAX ? LOD_THREADS_MAX : (int)n;
 }
 
-/* 10 bits of x spread to every third bit. */
+/* 5 bits of x spread to every third bit. */
 static uint32_t spread_bits(uint32_t x)
 {
-	x &= 0x3ff;
-	x = (x | (x << 16)) & 0x030000ff;
-	x = (x | (x << 8)) & 0x0300f00f;
-	x = (x | (x << 4)) & 0x030c30c3;
-	x = (x | (x << 2)) & 0x09249249;
-	return x;
+	uint32_t out = 0;
+
+	for (int b = 0; b < SPLIT_BITS; b++)
+		out |= ((x >> b) & 1u) << (3 * b);
+	return out;
 }
 
 static void bounds(const unsigned *indices, size_t index_count, const float *positions, float lo[3],
@@ -41,14 +46,19 @@ static void bounds(const unsigned *indices, size_t index_count, const float *pos
 		}
 }
 
-/* Each triangle's 30-bit Morton code of its centroid in the bounds. */
-static void morton_codes(const unsigned *indices, size_t tris, const float *positions,
-			 const float lo[3], const float hi[3], uint32_t *code)
+/* Each triangle's cell: the Morton code of its centroid on a grid of
+ * SPLIT_CELLS over the bounds. */
+static void cell_codes(const unsigned *indices, size_t tris, const float *positions,
+		       const float lo[3], const float hi[3], uint16_t *code)
 {
+	const float top = (float)((1 << SPLIT_BITS) - 1);
+	uint32_t spread[1 << SPLIT_BITS];
 	float scale[3];
 
+	for (uint32_t x = 0; x < 1u << SPLIT_BITS; x++)
+		spread[x] = spread_bits(x);
 	for (int k = 0; k < 3; k++)
-		scale[k] = hi[k] > lo[k] ? 1023.0f / (hi[k] - lo[k]) : 0.0f;
+		scale[k] = hi[k] > lo[k] ? (top + 1.0f) / (hi[k] - lo[k]) / 3.0f : 0.0f;
 	for (size_t t = 0; t < tris; t++) {
 		uint32_t c = 0;
 
@@ -56,31 +66,12 @@ static void morton_codes(const unsigned *indices, size_t tris, const float *posi
 			float sum = positions[(size_t)indices[t * 3] * 3 + k] +
 				    positions[(size_t)indices[t * 3 + 1] * 3 + k] +
 				    positions[(size_t)indices[t * 3 + 2] * 3 + k];
-			float q = (sum / 3.0f - lo[k]) * scale[k];
+			float q = (sum - 3.0f * lo[k]) * scale[k];
 
 			/* NaN and out-of-range coordinates land on an edge. */
-			c |= spread_bits(q > 0.0f ? (uint32_t)fminf(q, 1023.0f) : 0) << k;
+			c |= spread[q > 0.0f ? (uint32_t)fminf(q, top) : 0] << k;
 		}
-		code[t] = c;
-	}
-}
-
-/* A stable LSD radix sort of the triangle numbers by code, 10 bits a pass
- * (stable: equal codes keep the input order, hence deterministic). */
-static void radix_sort(const uint32_t *code, size_t tris, uint32_t *order, uint32_t *tmp)
-{
-	for (size_t t = 0; t < tris; t++)
-		order[t] = (uint32_t)t;
-	for (int shift = 0; shift < 30; shift += 10) {
-		size_t count[1025] = {0};
-
-		for (size_t t = 0; t < tris; t++)
-			count[((code[order[t]] >> shift) & 1023) + 1]++;
-		for (int b = 0; b < 1024; b++)
-			count[b + 1] += count[b];
-		for (size_t t = 0; t < tris; t++)
-			tmp[count[(code[order[t]] >> shift) & 1023]++] = order[t];
-		memcpy(order, tmp, tris * sizeof(uint32_t));
+		code[t] = (uint16_t)c;
 	}
 }
 
@@ -88,25 +79,28 @@ int lod_split_order(const unsigned *indices, size_t index_count, const float *po
 		    unsigned *out)
 {
 	size_t tris = index_count / 3;
-	/* calloc: gcc -O1 cannot see that morton_codes fills it. */
-	uint32_t *code = calloc(tris + 1, sizeof(uint32_t));
-	uint32_t *order = malloc(tris * sizeof(uint32_t) + 1);
-	uint32_t *tmp = malloc(tris * sizeof(uint32_t) + 1);
+	/* calloc: gcc -O1 cannot see that cell_codes fills it. */
+	uint16_t *code = calloc(tris + 1, sizeof(uint16_t));
+	size_t *at = calloc(SPLIT_CELLS + 1, sizeof(size_t));
 	float lo[3], hi[3];
 	int ret = -ENOMEM;
 
-	if (!code || !order || !tmp)
+	if (!code || !at)
 		goto out;
 	bounds(indices, tris * 3, positions, lo, hi);
-	morton_codes(indices, tris, positions, lo, hi, code);
-	radix_sort(code, tris, order, tmp);
+	cell_codes(indices, tris, positions, lo, hi, code);
+	/* A counting sort by cell: one pass to count, one to place, each
+	 * cell's triangles in their input order. */
 	for (size_t t = 0; t < tris; t++)
-		memcpy(out + t * 3, indices + (size_t)order[t] * 3, 3 * sizeof(unsigned));
+		at[code[t] + 1]++;
+	for (size_t c = 0; c < SPLIT_CELLS; c++)
+		at[c + 1] += at[c];
+	for (size_t t = 0; t < tris; t++)
+		memcpy(out + at[code[t]]++ * 3, indices + t * 3, 3 * sizeof(unsigned));
 	ret = 0;
 out:
 	free(code);
-	free(order);
-	free(tmp);
+	free(at);
 	return ret;
 }
 

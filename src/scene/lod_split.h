@@ -13,11 +13,12 @@
 #define LOD_THREADS_MAX 16
 int lod_threads_online(void);
 
-/* The count triangles (index_count / 3) of indices into out, ordered
- * along a Z-order curve through their centroids (positions: 3 floats a
- * vertex): any run of them lies close together, so that cutting the
- * result into equal runs gives compact clusters with short borders.
- * Ties keep the input order. Returns 0 or -ENOMEM. */
+/* The triangles (index_count / 3) of indices into out, ordered by the
+ * cell of a 32x32x32 grid over their bounds that holds their centroid,
+ * the cells along a Z-order curve (positions: 3 floats a vertex): any run
+ * of them lies close together, so that cutting the result into equal
+ * runs gives compact clusters with short borders. A cell's triangles keep
+ * their input order. Returns 0 or -ENOMEM. */
 int lod_split_order(const unsigned *indices, size_t index_count, const float *positions,
 		    unsigned *out);
 
