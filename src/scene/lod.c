@@ -376,6 +376,17 @@ static int simplify_part(const struct mesh *m, const unsigned *indices, uint32_t
  * model (or range) is simplified as before, whatever the thread count. */
 #define CLUSTER_MIN_TRIANGLES 16384
 
+/* The clusters do the bulk, the pass over them joined the rest: a
+ * cluster is cut to 1.5 times its share of the count, but by at most 16
+ * times, and to half the error budget. A locked border keeps a strip of
+ * small triangles that a cluster cut to its exact share would pay for
+ * with the error elsewhere, and that the seams' fallback (simplify_seamless)
+ * would try to remove in vain; what is left of the budget and of the
+ * count is the joined pass's, where those borders are free. */
+#define CLUSTER_SLACK  1.5
+#define CLUSTER_CUT    16.0
+#define CLUSTER_BUDGET 0.5
+
 static unsigned cluster_count(int threads, uint32_t index_count)
 {
 	uint32_t most = index_count / 3 / CLUSTER_MIN_TRIANGLES;
@@ -411,25 +422,26 @@ static void cluster_run(void *arg, unsigned j)
 	uint32_t first = cluster_first(c, j), count = cluster_first(c, j + 1) - first;
 	uint32_t *local = malloc((size_t)c->m->vertex_count * sizeof(uint32_t) + 1);
 
+	double goal = fmax(CLUSTER_SLACK * c->share * count / c->triangles, count / CLUSTER_CUT);
+
 	/* Its border locked: where two clusters meet both keep the edge. */
-	c->ret[j] = local ? simplify_part(c->m, c->order + (size_t)first * 3, count * 3,
-					  c->share * count / c->triangles, c->target,
-					  meshopt_SimplifyLockBorder, local,
-					  c->out + (size_t)first * 3, &c->n[j], &c->error[j])
+	c->ret[j] = local ? simplify_part(c->m, c->order + (size_t)first * 3, count * 3, goal,
+					  CLUSTER_BUDGET * c->target, meshopt_SimplifyLockBorder,
+					  local, c->out + (size_t)first * 3, &c->n[j], &c->error[j])
 			  : -ENOMEM;
 	free(local);
 }
 
 /* simplify_part on `threads` threads: the part cut into spatial clusters
- * (lod_split_order), each simplified to its share with its border locked,
- * then all of them together once more, the locked borders now free (as
- * options say), with what is left of the error budget: the two passes'
- * errors add up to at most target, as one pass's would. Deterministic for
+ * (lod_split_order), each simplified towards its share with its border
+ * locked, then all of them together once more, the locked borders now
+ * free (as options say), with what is left of the error budget: the two
+ * passes' errors add up to at most target, as one pass's would. Deterministic for
  * a thread count: the clusters depend on it, not on which thread ran
  * which. */
 static int simplify_clustered(const struct mesh *m, const unsigned *indices, uint32_t count,
 			      double share, double target, unsigned options, int threads,
-			      unsigned *out, size_t *n, float *error)
+			      unsigned *out, size_t *n, float *error, unsigned *clusters)
 {
 	struct cluster_job *c = calloc(1, sizeof(*c));
 	unsigned *order = malloc((size_t)count * sizeof(unsigned) + 1);
@@ -448,9 +460,12 @@ static int simplify_clustered(const struct mesh *m, const unsigned *indices, uin
 					  .target = target,
 					  .out = out};
 		lod_pool_run(threads, c->clusters, cluster_run, c);
+		*clusters = *clusters > c->clusters ? *clusters : c->clusters;
 	}
 	for (unsigned j = 0; !ret && j < c->clusters; j++) {
 		ret = c->ret[j];
+		if (ret)
+			break;
 		memmove(out + joined, out + (size_t)cluster_first(c, j) * 3,
 			c->n[j] * sizeof(unsigned));
 		joined += (uint32_t)c->n[j];
@@ -473,9 +488,10 @@ static int simplify_clustered(const struct mesh *m, const unsigned *indices, uin
  * share of the count wanted, its border locked (meshopt_SimplifyLockBorder).
  * Where two parts meet, both keep every vertex of the edge between them,
  * so no crack opens there, and every triangle keeps its range's material.
- * idx gets the ranges one after the other; m's ranges are moved to fit. */
+ * idx gets the ranges one after the other; m's ranges are moved to fit.
+ * A large range is cut further on threads (simplify_clustered). */
 static int simplify_ranges(struct mesh *m, double wanted, double target, int threads, unsigned *idx,
-			   size_t *n, float *error)
+			   size_t *n, float *error, unsigned *clusters)
 {
 	uint32_t *local = malloc((size_t)m->vertex_count * sizeof(uint32_t) + 1);
 	uint32_t at = 0;
@@ -491,7 +507,7 @@ static int simplify_ranges(struct mesh *m, double wanted, double target, int thr
 		if (share < g->index_count / 3 && cluster_count(threads, g->index_count) > 1)
 			ret = simplify_clustered(m, m->indices + g->first_index, g->index_count,
 						 share, target, meshopt_SimplifyLockBorder, threads,
-						 idx + at, &k, &e);
+						 idx + at, &k, &e, clusters);
 		else
 			ret = simplify_part(m, m->indices + g->first_index, g->index_count, share,
 					    target, meshopt_SimplifyLockBorder, local, idx + at, &k,
@@ -671,7 +687,8 @@ int lod_prepare_mesh_threads(struct mesh *m, double pixels, int width, int heigh
 	unsigned *idx = malloc((size_t)m->index_count * sizeof(unsigned) + 1);
 	unsigned *remap = malloc((size_t)m->vertex_count * sizeof(unsigned) + 1);
 	struct lod_result r = {.triangles_before = m->index_count / 3,
-			       .vertices_before = m->vertex_count};
+			       .vertices_before = m->vertex_count,
+			       .clusters = 1};
 	size_t n = m->index_count;
 	float error = 0.0f;
 	int ret = -ENOMEM;
@@ -682,7 +699,7 @@ int lod_prepare_mesh_threads(struct mesh *m, double pixels, int width, int heigh
 	r.wanted = lod_triangles_wanted(m, pixels, width, height);
 	if (m->range_count > 1) {
 		ret = simplify_ranges(m, r.wanted, lod_model_error(pixels, width, height), threads,
-				      idx, &n, &error);
+				      idx, &n, &error, &r.clusters);
 		if (ret)
 			goto out;
 	} else if (r.wanted < n / 3) {
@@ -690,7 +707,7 @@ int lod_prepare_mesh_threads(struct mesh *m, double pixels, int width, int heigh
 
 		if (cluster_count(threads, m->index_count) > 1) {
 			ret = simplify_clustered(m, m->indices, m->index_count, r.wanted, target, 0,
-						 threads, idx, &n, &error);
+						 threads, idx, &n, &error, &r.clusters);
 			if (ret)
 				goto out;
 		} else {

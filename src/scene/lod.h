@@ -30,6 +30,7 @@ struct lod_result {
 	double wanted;	     /* lod_triangles_wanted */
 	double error;	     /* meshoptimizer's estimate, in model units */
 	double error_pixels; /* ... and in pixels at the front of the sphere */
+	unsigned clusters;   /* the most any part was cut into: 1 without threads */
 };
 
 /* Simplify m in place for a width x height display (pixels <= 0: keep
