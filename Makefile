@@ -86,7 +86,7 @@ SRC_CAMERA  := camera/camera_feed camera/camera_link camera/camera_math camera/c
 	       camera/camera_texture
 SRC_RENDER  := render/background render/bake render/draw_list render/framing render/gl render/poster render/render_scale render/render_caption \
 	       render/caption render/render render/render_draw render/render_live render/render_skin render/render_morph render/render_variant render/shader render/shading
-SRC_SCENE   := scene/lod scene/lod_split scene/material scene/mesh scene/mesh_cache scene/mesh_cache_anim scene/mesh_cache_fields scene/mesh_cache_key scene/mesh_gen scene/mesh_pack scene/subdivide scene/tangent \
+SRC_SCENE   := scene/lod scene/lod_seams scene/lod_split scene/material scene/mesh scene/mesh_cache scene/mesh_cache_anim scene/mesh_cache_fields scene/mesh_cache_key scene/mesh_gen scene/mesh_pack scene/subdivide scene/tangent \
 	       scene/texture scene/caption scene/caption_text
 SRC_SCENE   += scene/gltf_json_depth
 SRC_SCENE   += scene/anim scene/anim_sampler scene/anim_palette scene/anim_play scene/anim_play_gpu scene/anim_play_split scene/anim_play_morph
