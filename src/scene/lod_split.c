@@ -15,9 +15,9 @@
 #define SPLIT_BITS  5
 #define SPLIT_CELLS (1u << (3 * SPLIT_BITS))
 
-int lod_threads_online(void)
+int lod_threads(int asked)
 {
-	long n = sysconf(_SC_NPROCESSORS_ONLN);
+	long n = asked > 0 ? asked : sysconf(_SC_NPROCESSORS_ONLN);
 
 	return n < 1 ? 1 : n > LOD_THREADS_MAX ? LOD_THREADS_MAX : (int)n;
 }

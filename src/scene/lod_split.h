@@ -8,10 +8,10 @@
 
 #include <stddef.h>
 
-/* The count prepare_threads = auto stands for: the cores online (1 when
- * that cannot be read), at most LOD_THREADS_MAX. */
+/* The threads [kiosk] prepare_threads asks for, at most LOD_THREADS_MAX;
+ * 0 (auto): one a core online (1 when that cannot be read). */
 #define LOD_THREADS_MAX 16
-int lod_threads_online(void);
+int lod_threads(int asked);
 
 /* The triangles (index_count / 3) of indices into out, ordered by the
  * cell of a 32x32x32 grid over their bounds that holds their centroid,
