@@ -280,8 +280,9 @@ static int simplify_clustered(const struct mesh *m, const unsigned *indices, uin
 	uint32_t *local = malloc((size_t)m->vertex_count * sizeof(uint32_t) + 1);
 	uint32_t joined = 0;
 	float first_error = 0.0f, second_error = 0.0f;
-	int ret =
-	    c && order && local ? lod_split_order(indices, count, m->positions, order) : -ENOMEM;
+	int ret = c && order && local
+		      ? lod_split_order(indices, count, m->positions, m->vertex_count, order)
+		      : -ENOMEM;
 
 	if (!ret) {
 		*c = (struct cluster_job){.m = m,

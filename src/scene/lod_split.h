@@ -14,13 +14,14 @@
 int lod_threads(int asked);
 
 /* The triangles (index_count / 3) of indices into out, ordered by the
- * cell of a 32x32x32 grid over their bounds that holds their centroid,
- * the cells along a Z-order curve (positions: 3 floats a vertex): any run
+ * cell of a 32x32x32 grid over the vertices' bounds that holds their
+ * centroid, the cells along a Z-order curve (positions: 3 floats a
+ * vertex, vertex_count of them): any run
  * of them lies close together, so that cutting the result into equal
  * runs gives compact clusters with short borders. A cell's triangles keep
  * their input order. Returns 0 or -ENOMEM. */
 int lod_split_order(const unsigned *indices, size_t index_count, const float *positions,
-		    unsigned *out);
+		    size_t vertex_count, unsigned *out);
 
 /* job(arg, j) for every j < jobs, on up to `threads` threads (the caller
  * being one of them). A thread that cannot be started leaves its share
