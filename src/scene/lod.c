@@ -306,6 +306,8 @@ static int simplify_clustered(const struct mesh *m, const unsigned *indices, uin
 	}
 	/* The clusters' result is the input now: order takes it. */
 	if (!ret) {
+		log_debug("lod: %u triangles as %u clusters on %d threads, %u joined", count / 3,
+			  c->clusters, threads, joined / 3);
 		memcpy(order, out, (size_t)joined * sizeof(unsigned));
 		ret = simplify_part(m, order, joined, share, fmax(target - first_error, 0.0),
 				    options, local, out, n, &second_error);
