@@ -161,6 +161,13 @@ $(TOOLS_DIR)/bench_anim_live: tests/bench/bench_anim_live.c tests/bench/bench_cl
 
 test-tools: $(TOOLS_DIR)/bench_anim_live
 
+# The level of detail's time on 1, 2, 4 threads (issue 34).
+$(TOOLS_DIR)/bench_lod_threads: tests/bench/bench_lod_threads.c tests/bench/bench_clock.h $(LIB_ARCHIVE)
+	@mkdir -p $(@D)
+	$(CC) $(TEST_CFLAGS) -o $@ $< $(LIB_ARCHIVE) $(TEST_LIBS)
+
+test-tools: $(TOOLS_DIR)/bench_lod_threads
+
 # What its paths cost in error (the C mirror of the vertex shader).
 $(TOOLS_DIR)/bench_anim_error: tests/bench/bench_anim_error.c $(TESTKIT) $(LIB_ARCHIVE)
 	@mkdir -p $(@D)

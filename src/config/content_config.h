@@ -36,6 +36,9 @@ struct content_config {
 	/* [scene] texture_memory: MiB the model's decoded textures share; 0:
 	 * auto (scene/texture.h) */
 	double texture_memory;
+	/* [kiosk] prepare_threads: the level of detail's threads; 0: auto
+	 * (one a core, scene/mesh/lod_split.h) */
+	int prepare_threads;
 	int rotation; /* the panel's, degrees */
 	struct material_config material;
 	struct frame_config frame;     /* [frame]: orientation, start view, limits, stops */

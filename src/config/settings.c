@@ -7,7 +7,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-
 static double radians(double degrees)
 {
 	return degrees * M_PI / 180;
@@ -29,6 +28,9 @@ void option_defaults(struct options *o)
 	o->content.pitch = 20.0;
 	o->content.yaw = -30.0;
 	o->content.lod_pixels = 4.0;
+	/* One thread until the speed-up of several is measured on free cores
+	 * (issue 34): auto is there to try. */
+	o->content.prepare_threads = 1;
 	o->content.fit = CONTENT_FIT_DEFAULT;
 	o->content.caption.size = CAPTION_SIZE_DEFAULT;
 	o->content.caption.padding = 12;
@@ -209,7 +211,9 @@ void option_accepted(const struct option_def *d, char *buf, size_t n)
 		if (d->step > 1)
 			snprintf(buf, n, "a multiple of %g from %g to %g", d->step, d->lo, d->hi);
 		else
-			snprintf(buf, n, "a whole number from %g to %g", d->lo, d->hi);
+			snprintf(buf, n, "%s%sa whole number from %g to %g",
+				 d->choices ? d->choices[0] : "", d->choices ? " or " : "", d->lo,
+				 d->hi);
 		return;
 	case K_DOUBLE:
 	case K_DEGREES:
@@ -286,7 +290,10 @@ static bool set_number(void *p, const struct option_def *d, const char *value)
 	double v;
 
 	if (d->choices && strcmp(value, d->choices[0]) == 0) {
-		*(double *)p = 0;
+		if (d->kind == K_INT)
+			*(int *)p = 0;
+		else
+			*(double *)p = 0;
 		return true;
 	}
 	if (!parse_number(value, d->lo, d->hi, d->kind == K_INT ? (d->step ? d->step : 1) : 0, &v))

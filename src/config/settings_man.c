@@ -125,7 +125,10 @@ static void default_text(const struct options *o, const struct option_def *d, ch
 		snprintf(buf, n, "%s", p ? p : "");
 		break;
 	case K_INT:
-		snprintf(buf, n, "%d", *(const int *)p);
+		if (d->choices && *(const int *)p == 0)
+			snprintf(buf, n, "%s", d->choices[0]);
+		else
+			snprintf(buf, n, "%d", *(const int *)p);
 		break;
 	case K_SIZE:
 		snprintf(buf, n, "%dx%d", ((const int *)p)[0], ((const int *)p)[1]);

@@ -6,6 +6,7 @@
 #include "render/framing.h"
 #include "scene/gltf/gltf.h"
 #include "scene/mesh/lod.h"
+#include "scene/mesh/lod_split.h"
 #include "scene/mesh/texture.h"
 #include "util/log.h"
 
@@ -414,8 +415,9 @@ static int prepare_mesh(struct content *s, const struct content_config *o, int w
 		content_play_check(s);
 	/* No level of detail for a model that plays (content.h). */
 	if (!ret && !s->play)
-		ret = lod_prepare_mesh(&s->mesh, displaced ? 0.0 : o->lod_pixels / s->zoom, width,
-				       height, NULL);
+		ret =
+		    lod_prepare_mesh_threads(&s->mesh, displaced ? 0.0 : o->lod_pixels / s->zoom,
+					     width, height, lod_threads(o->prepare_threads), NULL);
 	if (!ret)
 		content_cache_pack(s, width, height);
 	if (!ret)

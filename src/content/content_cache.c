@@ -2,6 +2,7 @@
  * up before a parse, the prepared mesh packed (with live playback's data
  * for a model that plays) and stored once uploaded. */
 #include "content/content.h"
+#include "scene/mesh/lod_split.h"
 #include "scene/mesh/mesh_cache_anim.h"
 #include "util/log.h"
 
@@ -56,6 +57,15 @@ int content_cache_lookup(struct content *s, const struct content_config *c, cons
 
 		s->cache_key.settings = mesh_cache_hash(t, sizeof(t), s->cache_key.settings);
 		s->cache_key.settings = mesh_cache_hash(a, strlen(a), s->cache_key.settings);
+	}
+	/* The level of detail on several threads is another mesh (the
+	 * clusters follow the count: scene/lod.h); one thread's key is as
+	 * it was. */
+	if (!ret && lod_threads(c->prepare_threads) > 1) {
+		int threads = lod_threads(c->prepare_threads);
+
+		s->cache_key.settings =
+		    mesh_cache_hash(&threads, sizeof(threads), s->cache_key.settings);
 	}
 	/* The fit's zoom (or --zoom) sets the level of detail's pixels. */
 	if (!ret)

@@ -196,6 +196,39 @@ static void attract_settings(void **state)
 	options_release(&o);
 }
 
+/* [kiosk] prepare_threads: auto (0, one a core) by default and in the
+ * shipped kiosk.ini, or a whole number from 1 to 16. Its auto is the
+ * first word for 0 of a whole number: kept as a double it would zero the
+ * int beside it too (the panel's rotation). */
+static void prepare_threads_setting(void **state)
+{
+	const char *path = write_ini("[kiosk]\nprepare_threads = 3\n");
+	const char *argv[] = {"mk", "--config", path};
+	const char *auto_[] = {"mk", "--rotate", "90", "--prepare-threads", "auto"};
+	const char *bad[][3] = {{"mk", "--prepare-threads", "17"},
+				{"mk", "--prepare-threads", "2.5"},
+				{"mk", "--prepare-threads", "0"}};
+	struct options o;
+
+	(void)state;
+	/* One thread unless asked (auto is 0). */
+	assert_int_equal(parse(&o, 1, argv), OPTIONS_OK);
+	assert_int_equal(o.content.prepare_threads, 1);
+	options_release(&o);
+	assert_int_equal(parse(&o, 3, argv), OPTIONS_OK);
+	assert_int_equal(o.content.prepare_threads, 3);
+	options_release(&o);
+	unlink(path);
+	assert_int_equal(parse(&o, 5, auto_), OPTIONS_OK);
+	assert_int_equal(o.content.prepare_threads, 0);
+	assert_int_equal(o.content.rotation, 90);
+	options_release(&o);
+	for (int i = 0; i < 3; i++) {
+		assert_int_equal(parse(&o, 3, bad[i]), OPTIONS_USAGE);
+		options_release(&o);
+	}
+}
+
 /* Indented keys are keys, not continuations of the line above. */
 static void indented_lines(void **state)
 {
@@ -487,6 +520,7 @@ int main(void)
 	    cmocka_unit_test(reload_table),
 	    cmocka_unit_test(reload_reopens_what_changed),
 	    cmocka_unit_test(attract_settings),
+	    cmocka_unit_test(prepare_threads_setting),
 	    cmocka_unit_test(include_file),
 	    cmocka_unit_test(broken_include_is_ignored),
 	};

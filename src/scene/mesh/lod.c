@@ -1,4 +1,6 @@
 #include "scene/mesh/lod.h"
+#include "scene/mesh/lod_seams.h"
+#include "scene/mesh/lod_split.h"
 #include "util/log.h"
 #include "util/math3d.h"
 
@@ -84,7 +86,7 @@ static int remap_streams(struct mesh *m, const unsigned *remap, uint32_t unique)
  * apart at one position) are meshoptimizer 0.18's own business here: it
  * collapses a seam vertex only along the seam and both sides together,
  * and locks a position with more than two such vertices (a pole). Where
- * that keeps far more than wanted, simplify_welded takes over.
+ * that keeps far more than wanted, lod_simplify_welded takes over.
  * tests/unit/test_lod.c checks that a UV sphere stays closed and no
  * triangle spans its seam. */
 static size_t simplify(const struct mesh *m, double wanted, double target, unsigned options,
@@ -114,176 +116,6 @@ static size_t simplify(const struct mesh *m, double wanted, double target, unsig
  * position-only pass is tried. */
 #define SEAM_SLACK 1.25
 
-/* Vertices at one position, by representative: list[first[r]..first[r+1])
- * holds every vertex whose rep is r (a seam's or a crease's wedges). */
-struct wedges {
-	uint32_t *rep, *first, *list;
-};
-
-static void wedges_free(struct wedges *w)
-{
-	free(w->rep);
-	free(w->first);
-	free(w->list);
-}
-
-/* rep[v]: the first vertex equal to v in position, and in uv too when
- * by_uv (then a UV seam stays a seam for meshoptimizer). */
-static int weld(const struct mesh *m, bool by_uv, uint32_t *rep)
-{
-	struct meshopt_Stream streams[2] = {{m->positions, 12, 12}, {m->uvs, 8, 8}};
-	uint32_t *first;
-
-	if (!by_uv || !m->uvs)
-		return mesh_weld(m->positions, m->vertex_count, rep);
-	first = malloc((size_t)m->vertex_count * sizeof(uint32_t) + 1);
-	if (!first)
-		return -ENOMEM;
-	/* Over the indices: a vertex no triangle uses stays its own. */
-	meshopt_generateVertexRemapMulti(rep, m->indices, m->index_count, m->vertex_count, streams,
-					 2);
-	for (uint32_t v = m->vertex_count; v-- > 0;)
-		if (rep[v] != ~0u)
-			first[rep[v]] = v;
-	for (uint32_t v = 0; v < m->vertex_count; v++)
-		rep[v] = rep[v] == ~0u ? v : first[rep[v]];
-	free(first);
-	return 0;
-}
-
-static int wedges_build(const struct mesh *m, bool by_uv, struct wedges *w)
-{
-	uint32_t n = m->vertex_count;
-
-	w->rep = malloc((size_t)n * sizeof(uint32_t) + 1);
-	w->first = calloc((size_t)n + 2, sizeof(uint32_t));
-	w->list = malloc((size_t)n * sizeof(uint32_t) + 1);
-	if (!w->rep || !w->first || !w->list || weld(m, by_uv, w->rep))
-		return -ENOMEM;
-	for (uint32_t v = 0; v < n; v++)
-		w->first[w->rep[v] + 2]++;
-	for (uint32_t r = 0; r < n; r++)
-		w->first[r + 2] += w->first[r + 1];
-	for (uint32_t v = 0; v < n; v++)
-		w->list[w->first[w->rep[v] + 1]++] = v;
-	return 0;
-}
-
-static double dot3f(const float *a, const double *b)
-{
-	return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-/* Of the wedges at position r, the one that belongs to this side: its
- * normal nearest the face's (a crease), then its uv nearest the anchor's
- * (a UV seam). */
-static uint32_t pick_wedge(const struct mesh *m, const struct wedges *w, uint32_t r,
-			   const double face[3], const float *anchor_uv)
-{
-	uint32_t best = r;
-	double best_score = -INFINITY;
-
-	for (uint32_t i = w->first[r]; i < w->first[r + 1]; i++) {
-		uint32_t v = w->list[i];
-		double score = dot3f(m->normals + (size_t)v * 3, face);
-
-		if (anchor_uv && m->uvs) {
-			const float *uv = m->uvs + (size_t)v * 2;
-			/* A seam's sides lie a texture apart; a crease's share uvs. */
-			score -= 4.0 * (fabs(uv[0] - anchor_uv[0]) + fabs(uv[1] - anchor_uv[1]));
-		}
-		if (score > best_score)
-			best = v, best_score = score;
-	}
-	return best;
-}
-
-/* How far apart in uv the wedges at position r lie: 0 off a UV seam. */
-static double uv_spread(const struct mesh *m, const struct wedges *w, uint32_t r)
-{
-	const float *a = m->uvs + (size_t)w->list[w->first[r]] * 2;
-	double spread = 0.0;
-
-	for (uint32_t i = w->first[r] + 1; i < w->first[r + 1]; i++) {
-		const float *b = m->uvs + (size_t)w->list[i] * 2;
-		spread = fmax(spread, fabs(a[0] - b[0]) + fabs(a[1] - b[1]));
-	}
-	return spread;
-}
-
-/* A simplified triangle over representatives back onto wedges: the corner
- * off any UV seam anchors the uvs of the others. */
-static void unweld_triangle(const struct mesh *m, const struct wedges *w, unsigned *t)
-{
-	const float *a = m->positions + (size_t)t[0] * 3, *b = m->positions + (size_t)t[1] * 3,
-		    *c = m->positions + (size_t)t[2] * 3;
-	double e1[3], e2[3], face[3], len;
-	int anchor = 0;
-
-	for (int k = 0; k < 3; k++)
-		e1[k] = (double)b[k] - a[k], e2[k] = (double)c[k] - a[k];
-	face[0] = e1[1] * e2[2] - e1[2] * e2[1];
-	face[1] = e1[2] * e2[0] - e1[0] * e2[2];
-	face[2] = e1[0] * e2[1] - e1[1] * e2[0];
-	len = sqrt(face[0] * face[0] + face[1] * face[1] + face[2] * face[2]);
-	for (int k = 0; k < 3 && len > 0; k++)
-		face[k] /= len;
-	for (int k = 1; k < 3 && m->uvs; k++)
-		if (uv_spread(m, w, t[k]) < uv_spread(m, w, t[anchor]))
-			anchor = k;
-	t[anchor] = pick_wedge(m, w, t[anchor], face, NULL);
-	for (int k = 0; k < 3; k++)
-		if (k != anchor)
-			t[k] = pick_wedge(m, w, t[k], face,
-					  m->uvs ? m->uvs + (size_t)t[anchor] * 2 : NULL);
-}
-
-/* When seams stop meshoptimizer 0.18 short of the count (split normals
- * and UV islands lock most of a real model), simplify the surface over
- * its positions and uvs (creases welded, UV seams kept), or its
- * positions alone (UV islands welded too: a texture may then stretch
- * across a seam), then give each corner back the attributes of its side.
- * Returns the index count, 0 when it cannot do better. */
-static size_t simplify_welded(const struct mesh *m, bool by_uv, double wanted, double target,
-			      unsigned options, unsigned *out, float *error)
-{
-	float scale = meshopt_simplifyScale(m->positions, m->vertex_count, 3 * sizeof(float));
-	unsigned *welded = malloc((size_t)m->index_count * sizeof(unsigned) + 1);
-	/* Only the representatives, numbered apart: meshoptimizer would
-	 * still see the other wedges at a position and lock it. */
-	float *points = malloc((size_t)m->vertex_count * 3 * sizeof(float) + 1);
-	uint32_t *id = malloc((size_t)m->vertex_count * sizeof(uint32_t) + 1);
-	uint32_t *back = malloc((size_t)m->vertex_count * sizeof(uint32_t) + 1);
-	struct wedges w = {NULL, NULL, NULL};
-	uint32_t count = 0;
-	size_t n = 0;
-
-	if (scale > 0.0f && welded && points && id && back && !wedges_build(m, by_uv, &w)) {
-		for (uint32_t v = 0; v < m->vertex_count; v++)
-			if (w.rep[v] == v) {
-				memcpy(points + (size_t)count * 3, m->positions + (size_t)v * 3,
-				       3 * sizeof(float));
-				back[count] = v;
-				id[v] = count++;
-			}
-		for (uint32_t i = 0; i < m->index_count; i++)
-			welded[i] = id[w.rep[m->indices[i]]];
-		n = meshopt_simplify(out, welded, m->index_count, points, count, 3 * sizeof(float),
-				     3 * (size_t)wanted, (float)(target / scale), options, error);
-		*error *= scale;
-		for (size_t i = 0; i < n; i++)
-			out[i] = back[out[i]];
-		for (size_t t = 0; t + 2 < n; t += 3)
-			unweld_triangle(m, &w, out + t);
-	}
-	wedges_free(&w);
-	free(welded);
-	free(points);
-	free(id);
-	free(back);
-	return n;
-}
-
 /* The welded pass's result in idx when it has fewer triangles than the
  * n already there; returns the count kept. */
 static size_t simplify_seamless(const struct mesh *m, double wanted, double target,
@@ -293,7 +125,8 @@ static size_t simplify_seamless(const struct mesh *m, double wanted, double targ
 
 	for (int by_uv = 1; by_uv >= 0 && out && n / 3 > SEAM_SLACK * wanted; by_uv--) {
 		float welded_error = 0.0f;
-		size_t w = simplify_welded(m, by_uv, wanted, target, options, out, &welded_error);
+		size_t w =
+		    lod_simplify_welded(m, by_uv, wanted, target, options, out, &welded_error);
 
 		if (w > 0 && w < n) {
 			memcpy(idx, out, w * sizeof(unsigned));
@@ -305,27 +138,29 @@ static size_t simplify_seamless(const struct mesh *m, double wanted, double targ
 	return n;
 }
 
-/* One range as a mesh of its own: the vertices its triangles use
+/* Some of m's triangles as a mesh of its own: the vertices they use
  * (back[] maps them to m's), with what simplifying reads. */
-static int range_mesh(const struct mesh *m, const struct mesh_range *g, uint32_t *local,
-		      struct mesh *sub, uint32_t **back)
+static int part_mesh(const struct mesh *m, const unsigned *indices, uint32_t count, uint32_t *local,
+		     struct mesh *sub, uint32_t **back)
 {
 	uint32_t nv = 0;
 	int ret;
 
-	for (uint32_t i = g->first_index; i < g->first_index + g->index_count; i++)
-		local[m->indices[i]] = UINT32_MAX;
-	for (uint32_t i = g->first_index; i < g->first_index + g->index_count; i++)
-		if (local[m->indices[i]] == UINT32_MAX)
-			local[m->indices[i]] = nv++;
-	ret = mesh_alloc(sub, nv, g->index_count, m->uvs != NULL);
+	for (uint32_t i = 0; i < count; i++)
+		local[indices[i]] = UINT32_MAX;
+	for (uint32_t i = 0; i < count; i++)
+		if (local[indices[i]] == UINT32_MAX)
+			local[indices[i]] = nv++;
+	ret = mesh_alloc(sub, nv, count, m->uvs != NULL);
 	*back = malloc((size_t)nv * sizeof(uint32_t) + 1);
 	if (ret || !*back) {
 		mesh_release(sub);
+		free(*back);
+		*back = NULL;
 		return -ENOMEM;
 	}
-	for (uint32_t i = 0; i < g->index_count; i++) {
-		uint32_t v = m->indices[g->first_index + i], l = local[v];
+	for (uint32_t i = 0; i < count; i++) {
+		uint32_t v = indices[i], l = local[v];
 
 		sub->indices[i] = l;
 		(*back)[l] = v;
@@ -337,13 +172,161 @@ static int range_mesh(const struct mesh *m, const struct mesh_range *g, uint32_t
 	return 0;
 }
 
+/* Some of m's triangles (indices, count) simplified on their own to
+ * `share` triangles unless the error would pass target first, their
+ * border locked when options say so: into out (room for count), in m's
+ * vertex numbers; *n the count kept, *error the estimate. local: room
+ * for m's vertex count. */
+static int simplify_part(const struct mesh *m, const unsigned *indices, uint32_t count,
+			 double share, double target, unsigned options, uint32_t *local,
+			 unsigned *out, size_t *n, float *error)
+{
+	struct mesh sub;
+	uint32_t *back = NULL;
+	size_t k = count;
+	int ret = part_mesh(m, indices, count, local, &sub, &back);
+
+	*error = 0.0f;
+	if (ret)
+		return ret;
+	if (share < k / 3) {
+		k = simplify(&sub, share, target, options, out, error);
+		if (k / 3 > SEAM_SLACK * share)
+			k = simplify_seamless(&sub, share, target, options, out, k, error);
+	} else {
+		memcpy(out, sub.indices, k * sizeof(unsigned));
+	}
+	for (size_t i = 0; i < k; i++)
+		out[i] = back[out[i]];
+	*n = k;
+	free(back);
+	mesh_release(&sub);
+	return 0;
+}
+
+/* A cluster under this many triangles is not worth a thread: a smaller
+ * model (or range) is simplified as before, whatever the thread count. */
+#define CLUSTER_MIN_TRIANGLES 16384
+
+/* The clusters do the bulk, the pass over them joined the rest: a
+ * cluster is cut to 1.5 times its share of the count, but by at most 16
+ * times, and to half the error budget. A locked border keeps a strip of
+ * small triangles that a cluster cut to its exact share would pay for
+ * with the error elsewhere, and that the seams' fallback (simplify_seamless)
+ * would try to remove in vain; what is left of the budget and of the
+ * count is the joined pass's, where those borders are free. */
+#define CLUSTER_SLACK  1.5
+#define CLUSTER_CUT    16.0
+#define CLUSTER_BUDGET 0.5
+
+static unsigned cluster_count(int threads, uint32_t index_count)
+{
+	uint32_t most = index_count / 3 / CLUSTER_MIN_TRIANGLES;
+
+	if (threads > LOD_THREADS_MAX)
+		threads = LOD_THREADS_MAX;
+	return threads > 1 && most > 1 ? (unsigned)threads < most ? (unsigned)threads : most : 1;
+}
+
+/* One part's clusters, simplified side by side: cluster j is the j-th of
+ * `clusters` equal runs of the ordered triangles, and writes its result
+ * where its run begins in out. */
+struct cluster_job {
+	const struct mesh *m;
+	const unsigned *order;
+	uint32_t triangles;
+	unsigned clusters;
+	double share, target;
+	unsigned *out;
+	size_t n[LOD_THREADS_MAX];
+	float error[LOD_THREADS_MAX];
+	int ret[LOD_THREADS_MAX];
+};
+
+static uint32_t cluster_first(const struct cluster_job *c, unsigned j)
+{
+	return (uint32_t)((uint64_t)c->triangles * j / c->clusters);
+}
+
+static void cluster_run(void *arg, unsigned j)
+{
+	struct cluster_job *c = arg;
+	uint32_t first = cluster_first(c, j), count = cluster_first(c, j + 1) - first;
+	uint32_t *local = malloc((size_t)c->m->vertex_count * sizeof(uint32_t) + 1);
+
+	double goal = fmax(CLUSTER_SLACK * c->share * count / c->triangles, count / CLUSTER_CUT);
+
+	/* Its border locked: where two clusters meet both keep the edge. */
+	c->ret[j] = local ? simplify_part(c->m, c->order + (size_t)first * 3, count * 3, goal,
+					  CLUSTER_BUDGET * c->target, meshopt_SimplifyLockBorder,
+					  local, c->out + (size_t)first * 3, &c->n[j], &c->error[j])
+			  : -ENOMEM;
+	free(local);
+}
+
+/* simplify_part on `threads` threads: the part cut into spatial clusters
+ * (lod_split_order), each simplified towards its share with its border
+ * locked, then all of them together once more, the locked borders now
+ * free (as options say), with what is left of the error budget: the two
+ * passes' errors add up to at most target, as one pass's would. Deterministic for
+ * a thread count: the clusters depend on it, not on which thread ran
+ * which. */
+static int simplify_clustered(const struct mesh *m, const unsigned *indices, uint32_t count,
+			      double share, double target, unsigned options, int threads,
+			      unsigned *out, size_t *n, float *error, unsigned *clusters)
+{
+	struct cluster_job *c = calloc(1, sizeof(*c));
+	unsigned *order = malloc((size_t)count * sizeof(unsigned) + 1);
+	uint32_t *local = malloc((size_t)m->vertex_count * sizeof(uint32_t) + 1);
+	uint32_t joined = 0;
+	float first_error = 0.0f, second_error = 0.0f;
+	int ret = c && order && local
+		      ? lod_split_order(indices, count, m->positions, m->vertex_count, order)
+		      : -ENOMEM;
+
+	if (!ret) {
+		*c = (struct cluster_job){.m = m,
+					  .order = order,
+					  .triangles = count / 3,
+					  .clusters = cluster_count(threads, count),
+					  .share = share,
+					  .target = target,
+					  .out = out};
+		lod_pool_run(threads, c->clusters, cluster_run, c);
+		*clusters = *clusters > c->clusters ? *clusters : c->clusters;
+	}
+	for (unsigned j = 0; !ret && j < c->clusters; j++) {
+		ret = c->ret[j];
+		if (ret)
+			break;
+		memmove(out + joined, out + (size_t)cluster_first(c, j) * 3,
+			c->n[j] * sizeof(unsigned));
+		joined += (uint32_t)c->n[j];
+		first_error = fmaxf(first_error, c->error[j]);
+	}
+	/* The clusters' result is the input now: order takes it. */
+	if (!ret) {
+		log_debug("lod: %u triangles as %u clusters on %d threads, %u joined", count / 3,
+			  c->clusters, threads, joined / 3);
+		memcpy(order, out, (size_t)joined * sizeof(unsigned));
+		ret = simplify_part(m, order, joined, share, fmax(target - first_error, 0.0),
+				    options, local, out, n, &second_error);
+	}
+	*error = first_error + second_error;
+	free(c);
+	free(order);
+	free(local);
+	return ret;
+}
+
 /* A model of several materials: each range simplified on its own to its
  * share of the count wanted, its border locked (meshopt_SimplifyLockBorder).
  * Where two parts meet, both keep every vertex of the edge between them,
  * so no crack opens there, and every triangle keeps its range's material.
- * idx gets the ranges one after the other; m's ranges are moved to fit. */
-static int simplify_ranges(struct mesh *m, double wanted, double target, unsigned *idx, size_t *n,
-			   float *error)
+ * idx gets the ranges one after the other; m's ranges are moved to fit.
+ * A large range is cut further on threads (simplify_clustered). */
+static int simplify_ranges(struct mesh *m, double wanted, double target, int threads, unsigned *idx,
+			   size_t *n, float *error, unsigned *clusters)
 {
 	uint32_t *local = malloc((size_t)m->vertex_count * sizeof(uint32_t) + 1);
 	uint32_t at = 0;
@@ -353,30 +336,23 @@ static int simplify_ranges(struct mesh *m, double wanted, double target, unsigne
 	for (uint32_t r = 0; !ret && r < m->range_count; r++) {
 		struct mesh_range *g = &m->ranges[r];
 		double share = wanted * g->index_count / (double)m->index_count;
-		struct mesh sub;
-		uint32_t *back = NULL;
-		size_t k = g->index_count;
+		size_t k = 0;
 		float e = 0.0f;
 
-		ret = range_mesh(m, g, local, &sub, &back);
+		if (share < g->index_count / 3 && cluster_count(threads, g->index_count) > 1)
+			ret = simplify_clustered(m, m->indices + g->first_index, g->index_count,
+						 share, target, meshopt_SimplifyLockBorder, threads,
+						 idx + at, &k, &e, clusters);
+		else
+			ret = simplify_part(m, m->indices + g->first_index, g->index_count, share,
+					    target, meshopt_SimplifyLockBorder, local, idx + at, &k,
+					    &e);
 		if (ret)
 			break;
-		if (share < k / 3) {
-			k = simplify(&sub, share, target, meshopt_SimplifyLockBorder, idx + at, &e);
-			if (k / 3 > SEAM_SLACK * share)
-				k = simplify_seamless(&sub, share, target,
-						      meshopt_SimplifyLockBorder, idx + at, k, &e);
-		} else {
-			memcpy(idx + at, sub.indices, k * sizeof(unsigned));
-		}
-		for (size_t i = 0; i < k; i++)
-			idx[at + i] = back[idx[at + i]];
 		*error = fmaxf(*error, e);
 		g->first_index = at;
 		g->index_count = (uint32_t)k;
 		at += (uint32_t)k;
-		free(back);
-		mesh_release(&sub);
 	}
 	free(local);
 	*n = at;
@@ -537,10 +513,17 @@ static int keep_flat(struct mesh *m, unsigned *idx, size_t n, unsigned **remap)
 int lod_prepare_mesh(struct mesh *m, double pixels, int width, int height,
 		     struct lod_result *result)
 {
+	return lod_prepare_mesh_threads(m, pixels, width, height, 1, result);
+}
+
+int lod_prepare_mesh_threads(struct mesh *m, double pixels, int width, int height, int threads,
+			     struct lod_result *result)
+{
 	unsigned *idx = malloc((size_t)m->index_count * sizeof(unsigned) + 1);
 	unsigned *remap = malloc((size_t)m->vertex_count * sizeof(unsigned) + 1);
 	struct lod_result r = {.triangles_before = m->index_count / 3,
-			       .vertices_before = m->vertex_count};
+			       .vertices_before = m->vertex_count,
+			       .clusters = 1};
 	size_t n = m->index_count;
 	float error = 0.0f;
 	int ret = -ENOMEM;
@@ -550,15 +533,23 @@ int lod_prepare_mesh(struct mesh *m, double pixels, int width, int height,
 	n = m->index_count;
 	r.wanted = lod_triangles_wanted(m, pixels, width, height);
 	if (m->range_count > 1) {
-		ret = simplify_ranges(m, r.wanted, lod_model_error(pixels, width, height), idx, &n,
-				      &error);
+		ret = simplify_ranges(m, r.wanted, lod_model_error(pixels, width, height), threads,
+				      idx, &n, &error, &r.clusters);
 		if (ret)
 			goto out;
 	} else if (r.wanted < n / 3) {
 		double target = lod_model_error(pixels, width, height);
-		n = simplify(m, r.wanted, target, 0, idx, &error);
-		if (n / 3 > SEAM_SLACK * r.wanted)
-			n = simplify_seamless(m, r.wanted, target, 0, idx, n, &error);
+
+		if (cluster_count(threads, m->index_count) > 1) {
+			ret = simplify_clustered(m, m->indices, m->index_count, r.wanted, target, 0,
+						 threads, idx, &n, &error, &r.clusters);
+			if (ret)
+				goto out;
+		} else {
+			n = simplify(m, r.wanted, target, 0, idx, &error);
+			if (n / 3 > SEAM_SLACK * r.wanted)
+				n = simplify_seamless(m, r.wanted, target, 0, idx, n, &error);
+		}
 	} else
 		memcpy(idx, m->indices, n * sizeof(unsigned));
 	if (m->range_count == 1)

@@ -30,6 +30,7 @@ struct lod_result {
 	double wanted;	     /* lod_triangles_wanted */
 	double error;	     /* meshoptimizer's estimate, in model units */
 	double error_pixels; /* ... and in pixels at the front of the sphere */
+	unsigned clusters;   /* the most any part was cut into: 1 without threads */
 };
 
 /* Simplify m in place for a width x height display (pixels <= 0: keep
@@ -44,5 +45,14 @@ struct lod_result {
  * unchanged). */
 int lod_prepare_mesh(struct mesh *m, double pixels, int width, int height,
 		     struct lod_result *result);
+
+/* lod_prepare_mesh on up to `threads` threads (the caller's among them;
+ * [kiosk] prepare_threads): a part of 32768 triangles or more is cut into spatial clusters
+ * simplified side by side, their borders locked, then joined and simplified once more together
+ * (lod.c's simplify_clustered). The same error budget, no crack, every range its own; the triangle
+ * count within 10% of one thread's. The result depends on the thread count (the cache's key holds
+ * it), and 1 is exactly lod_prepare_mesh. */
+int lod_prepare_mesh_threads(struct mesh *m, double pixels, int width, int height, int threads,
+			     struct lod_result *result);
 
 #endif
