@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 
 void reload_failed(const char *what)
 {
@@ -17,8 +18,9 @@ void reload_failed(const char *what)
 		log_err("reload: %s; keeping the scene on screen", what);
 }
 
-/* A test hook (tests/e2e/live.sh): MK_TEST_PREPARE_DELAY_MS slows each
- * reload's preparation down, so that it outlasts the watchdog. Built into
+/* Test hooks: MK_TEST_PREPARE_DELAY_MS slows each reload's preparation
+ * down, so that it outlasts the watchdog (tests/e2e/live.sh);
+ * MK_TEST_PREPARE_GATE holds it until a file exists. Built into
  * the sanitizer builds of the tests alone (-DMK_TEST_HOOKS). */
 static void test_delay(void)
 {
@@ -27,8 +29,15 @@ static void test_delay(void)
 	long ms = env ? strtol(env, NULL, 10) : 0;
 	struct timespec t = {ms / 1000, (ms % 1000) * 1000000};
 
+	const char *gate = getenv("MK_TEST_PREPARE_GATE");
+	struct timespec tick = {0, 10 * 1000000};
+
 	if (ms > 0)
 		nanosleep(&t, NULL);
+	/* Or until a file exists (tests/unit/test_kiosk_reload.c): as long
+	 * as the test needs, however slow the machine, at most a minute. */
+	for (int i = 0; gate && i < 6000 && access(gate, F_OK); i++)
+		nanosleep(&tick, NULL);
 #endif
 }
 

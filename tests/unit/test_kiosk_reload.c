@@ -3,7 +3,7 @@
  * comes during the reload is applied at once (the app state changes and
  * a frame shows it while the reload still runs), frames go on being
  * drawn, and the new model is on screen after. The preparation is held
- * by the test hook MK_TEST_PREPARE_DELAY_MS (src/app/reload.c; this
+ * by the test hook MK_TEST_PREPARE_GATE (src/app/reload.c; this
  * test is built with MK_TEST_HOOKS, as every sanitizer build is). */
 #include "app/kiosk.h"
 #include "app/signals.h"
@@ -45,6 +45,11 @@ struct script {
 	long frames_seen_changed;  /* frames drawn with the new mode while reloading */
 	long frames_during_reload; /* from the press to the reload's end */
 	bool reload_ended;
+	/* The reload's preparation waits until this file exists (the test
+	 * hook MK_TEST_PREPARE_GATE): made once three frames showed the key,
+	 * so that no machine is too slow for the window, as a fixed delay was
+	 * for qemu-user on a loaded CI. */
+	const char *gate;
 };
 
 static int script_read(struct input_source *src, uint64_t now, struct app_event *out, int max)
@@ -78,6 +83,12 @@ static int script_read(struct input_source *src, uint64_t now, struct app_event 
 			if (st->mode != s->mode_before && f > s->pressed_frame)
 				s->frames_seen_changed = f - s->pressed_frame;
 			s->frames_during_reload = f - s->pressed_frame;
+			if (s->frames_seen_changed >= 3) {
+				FILE *g = fopen(s->gate, "w");
+
+				if (g)
+					fclose(g);
+			}
 			break;
 		}
 		s->reload_ended = true;
@@ -106,7 +117,7 @@ static void script_destroy(struct input_source *src)
 
 static void a_key_during_a_reload_is_applied_at_once(void **state)
 {
-	char dir[] = "/tmp/mk-reload-XXXXXX", ini[64], model[64];
+	char dir[] = "/tmp/mk-reload-XXXXXX", ini[64], model[64], gate[64];
 	char *argv[] = {"matcap-kiosk", "--backend", "osmesa",	 "--size", "32x32", "--config", ini,
 			"--keyboard",	"none",	     "--camera", "off",	   "-q",    NULL};
 	struct gltf_write_opts w = {.index_bytes = 2, .with_normals = 1, .bad_index = -1};
@@ -160,12 +171,15 @@ static void a_key_during_a_reload_is_applied_at_once(void **state)
 	assert_non_null(f);
 	fprintf(f, "[scene]\nmode = view\nmodel = %s\n", model);
 	fclose(f);
-	setenv("MK_TEST_PREPARE_DELAY_MS", "1500", 1);
+	snprintf(gate, sizeof(gate), "%s/gate", dir);
+	s.gate = gate;
+	setenv("MK_TEST_PREPARE_GATE", gate, 1);
 	assert_int_equal(kiosk_run(s.k), 0);
-	unsetenv("MK_TEST_PREPARE_DELAY_MS");
+	unsetenv("MK_TEST_PREPARE_GATE");
+	unlink(gate);
 	assert_true(s.reload_ended);
 	/* Drawn with the key's mode while the reload still ran. */
-	assert_true(s.frames_seen_changed > 0);
+	assert_true(s.frames_seen_changed >= 3);
 	assert_true(s.frames_during_reload >= s.frames_seen_changed);
 	/* And the new model on screen after. */
 	assert_non_null(content.model_path);
