@@ -21,7 +21,7 @@ scenes="$scenes background-color background-gradient background-image fit-long f
 scenes="$scenes parts-textures parts-mask parts-blend parts-leaf parts-normals parts-iridescence"
 scenes="$scenes parts-unlit parts-unlit-shade parts-emissive parts-emissive-sem-vertex parts-specgloss"
 scenes="$scenes parts-emissive-uv1"
-scenes="$scenes variant-blue"
+scenes="$scenes variant-blue first-coloured first-uncoloured"
 scenes="$scenes caption-latin caption-rtl caption-logo"
 scenes="$scenes frame-up frame-start-view frame-own-look"
 scenes="$scenes render-scale-half normals-flat normals-smooth"
@@ -154,6 +154,15 @@ render() {
 	# blue is a material only the variant uses).
 	variant-blue)
 		$k -c matcaps/pearl.png --model "$m/variants.gltf" --variant blue --output "$o"
+		;;
+	# The first picture with the defaults (no matcap named: the shipped
+	# folder, matcap_first = auto): a model with colours of its own on
+	# pearl, in its colours; one without on gold.
+	first-coloured)
+		$k --model "$m/sphere-base-map.glb" --output "$o"
+		;;
+	first-uncoloured)
+		$k --model "$m/sphere.glb" --output "$o"
 		;;
 	# [caption]: Latin with kerning (AV, Te) and a ligature (fi) in two
 	# lines; Hebrew (its brackets mirrored, a number left to right
