@@ -228,23 +228,30 @@ static int weld_compare(const void *a, const void *b)
 	return x->v < y->v ? -1 : x->v > y->v;
 }
 
+/* The triangle's (b - a) x (c - a) in double: its length is twice the
+ * area. One place for the smooth normals' weights and the flat ones. */
+static void face_cross(const float *a, const float *b, const float *c, double n[3])
+{
+	double e1[3], e2[3];
+
+	for (int k = 0; k < 3; k++) {
+		e1[k] = (double)b[k] - a[k];
+		e2[k] = (double)c[k] - a[k];
+	}
+	n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+	n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+	n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+}
+
 static void accumulate_faces(const float *pos, const uint32_t *idx, uint32_t index_count,
 			     const uint32_t *rep, uint32_t first, double *acc)
 {
 	for (uint32_t t = 0; t + 2 < index_count; t += 3) {
-		const float *a = pos + (size_t)idx[t] * 3;
-		const float *b = pos + (size_t)idx[t + 1] * 3;
-		const float *c = pos + (size_t)idx[t + 2] * 3;
-		double e1[3], e2[3], n[3];
+		double n[3];
 
-		for (int k = 0; k < 3; k++) {
-			e1[k] = (double)b[k] - a[k];
-			e2[k] = (double)c[k] - a[k];
-		}
 		/* The cross product's length is twice the area: the weight. */
-		n[0] = e1[1] * e2[2] - e1[2] * e2[1];
-		n[1] = e1[2] * e2[0] - e1[0] * e2[2];
-		n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+		face_cross(pos + (size_t)idx[t] * 3, pos + (size_t)idx[t + 1] * 3,
+			   pos + (size_t)idx[t + 2] * 3, n);
 		for (int j = 0; j < 3; j++)
 			for (int k = 0; k < 3; k++)
 				acc[(size_t)rep[idx[t + j] - first] * 3 + k] += n[k];
@@ -297,15 +304,9 @@ out:
 
 void mesh_face_normal(const float *a, const float *b, const float *c, float out[3])
 {
-	double e1[3], e2[3], n[3], len;
+	double n[3], len;
 
-	for (int k = 0; k < 3; k++) {
-		e1[k] = (double)b[k] - a[k];
-		e2[k] = (double)c[k] - a[k];
-	}
-	n[0] = e1[1] * e2[2] - e1[2] * e2[1];
-	n[1] = e1[2] * e2[0] - e1[0] * e2[2];
-	n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+	face_cross(a, b, c, n);
 	len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
 	for (int k = 0; k < 3; k++)
 		out[k] = len > 0.0 && isfinite(len) ? (float)(n[k] / len) : (k == 2);
