@@ -43,6 +43,24 @@ if [ ! -d "$src" ]; then
 	echo "layers.sh: $src: no such folder" >&2
 	exit 2
 fi
+# Depth-first search over adj[] for both graphs below (includes, calls);
+# an edge to a node still on the stack closes a ring, which each awk
+# program reports with its own ring(u, v).
+dfs='
+function visit(u,    list, n, i, v) {
+	color[u] = 1
+	stack[++depth] = u
+	n = split(adj[u], list, " ")
+	for (i = 1; i <= n; i++) {
+		v = list[i]
+		if (color[v] == 1)
+			ring(u, v)
+		else if (!color[v])
+			visit(v)
+	}
+	depth--
+	color[u] = 2
+}'
 files=$(find "$src" -type f \( -name '*.c' -o -name '*.h' -o -name '*.cc' \) | sort)
 if [ -z "$files" ]; then
 	echo "layers.sh: $src: no source file" >&2
@@ -51,7 +69,7 @@ fi
 
 includes_ok=0
 # shellcheck disable=SC2086 # one word per path; src/ has no blanks in names
-awk -v src="$src" -v max_lines="$max_lines" '
+awk -v src="$src" -v max_lines="$max_lines" "$dfs"'
 BEGIN {
 	rank["app"] = 0
 	rank["ops"] = 1
@@ -71,21 +89,6 @@ function offence(where, what) {
 function too_long(file, lines) {
 	if (lines > max_lines)
 		offence(file ":" lines, lines " lines, more than " max_lines)
-}
-# Depth-first search; an edge to a module still on the stack closes a ring.
-function visit(u,    list, n, i, v) {
-	color[u] = 1
-	stack[++depth] = u
-	n = split(adj[u], list, " ")
-	for (i = 1; i <= n; i++) {
-		v = list[i]
-		if (color[v] == 1)
-			ring(u, v)
-		else if (!color[v])
-			visit(v)
-	}
-	depth--
-	color[u] = 2
 }
 function ring(u, v,    i, path) {
 	for (i = depth; stack[i] != v; i--)
@@ -174,7 +177,7 @@ fi
 circles=$({
 	printf '%s\n' "$map"
 	nm -A -P $objects
-} | awk '
+} | awk "$dfs"'
 $1 == "MAP" { name[$2] = $3; order[++files] = $2; next }
 {
 	o = $1
@@ -187,20 +190,6 @@ $1 == "MAP" { name[$2] = $3; order[++files] = $2; next }
 			twice[$2] = 1
 		def[$2] = o
 	}
-}
-function visit(u,    list, n, i, v) {
-	color[u] = 1
-	stack[++depth] = u
-	n = split(adj[u], list, " ")
-	for (i = 1; i <= n; i++) {
-		v = list[i]
-		if (color[v] == 1)
-			ring(u, v)
-		else if (!color[v])
-			visit(v)
-	}
-	depth--
-	color[u] = 2
 }
 # Each edge is named by one symbol it uses: where to start cutting.
 function ring(u, v,    i, path) {
