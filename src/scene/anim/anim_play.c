@@ -15,30 +15,47 @@
 
 int anim_play_finish(struct anim_play *p)
 {
-	uint32_t joints = 1, verts = 1;
+	uint32_t joints = 0, verts = 1;
 
-	for (uint32_t s = 0; s < p->skin_count; s++)
-		joints = p->skins[s].joint_count > joints ? p->skins[s].joint_count : joints;
+	for (uint32_t s = 0; s < p->skin_count; s++) {
+		p->skins[s].first = joints;
+		joints += p->skins[s].joint_count;
+	}
 	for (uint32_t i = 0; i < p->part_count; i++)
 		verts = p->parts[i].vertex_count > verts ? p->parts[i].vertex_count : verts;
-	p->joint_max = joints;
+	p->joint_total = joints;
 	p->part_vertex_max = verts;
 	p->worlds = calloc(p->anim->node_count + 1, sizeof(*p->worlds));
-	p->joint_matrices = calloc(joints, sizeof(*p->joint_matrices));
+	p->joint_matrices = calloc(joints + 1, sizeof(*p->joint_matrices));
 	p->morphed = calloc((size_t)verts * 6, sizeof(float));
 	return p->worlds && p->joint_matrices && p->morphed ? 0 : -ENOMEM;
 }
 
-static void mat_mul(const float a[16], const float b[16], float out[16])
+/* out = a x b (b NULL: the identity), summed in double and kept so: the
+ * GPU's palette takes it as it is, the CPU's blend as the float the
+ * bake's product is (the same sums, rounded once). */
+static void mat_mul(const float *a, const float *b, double out[16])
 {
 	for (int c = 0; c < 4; c++)
 		for (int row = 0; row < 4; row++) {
 			double s = 0;
 
 			for (int k = 0; k < 4; k++)
-				s += (double)a[k * 4 + row] * b[c * 4 + k];
-			out[c * 4 + row] = (float)s;
+				s += (double)a[k * 4 + row] * (b ? b[c * 4 + k] : (k == c));
+			out[c * 4 + row] = s;
 		}
+}
+
+void anim_play_joints(struct anim_play *p, const struct anim_pose *pose)
+{
+	anim_pose_world(p->anim, pose, p->worlds);
+	for (uint32_t s = 0; s < p->skin_count; s++) {
+		const struct anim_play_skin *skin = &p->skins[s];
+
+		for (uint32_t j = 0; j < skin->joint_count; j++)
+			mat_mul(p->worlds[skin->joints[j]], skin->inverse_bind + (size_t)j * 16,
+				p->joint_matrices[skin->first + j]);
+	}
 }
 
 /* The part's positions and normals with its morph weights added, into
@@ -128,9 +145,11 @@ static void pose_rigid(struct anim_play *p, const struct anim_play_part *part, f
 	}
 }
 
-/* Vertex i's blend of its joints' matrices, every set of them (as the
- * bake's); false for a vertex of no weight (it stays where it was bound). */
-static bool blend(const struct anim_play *p, uint32_t count, uint32_t v, double b[16])
+/* Vertex v's blend of its skin's joint matrices, every set of them (as
+ * the bake's, from its float matrices); false for a vertex of no weight
+ * (it stays where it was bound). The one CPU blend. */
+static bool blend(const struct anim_play *p, const struct anim_play_skin *s, uint32_t v,
+		  double b[16])
 {
 	const size_t at = (size_t)v * p->influences;
 	double total = 0;
@@ -140,10 +159,10 @@ static bool blend(const struct anim_play *p, uint32_t count, uint32_t v, double 
 		float w = p->weights[at + k];
 		uint16_t j = p->joints[at + k];
 
-		if (w == 0.0f || j >= count)
+		if (w == 0.0f || j >= s->joint_count)
 			continue;
 		for (int c = 0; c < 16; c++)
-			b[c] += w * (double)p->joint_matrices[j][c];
+			b[c] += w * (double)(float)p->joint_matrices[s->first + j][c];
 		total += w;
 	}
 	if (total == 0.0)
@@ -159,15 +178,12 @@ static void pose_skinned(struct anim_play *p, const struct anim_play_part *part,
 	const struct anim_play_skin *s = &p->skins[part->skin];
 	const float *pos = p->morphed, *nrm = p->morphed + (size_t)part->vertex_count * 3;
 
-	for (uint32_t j = 0; j < s->joint_count; j++)
-		mat_mul(p->worlds[s->joints[j]], s->inverse_bind + (size_t)j * 16,
-			p->joint_matrices[j]);
 	for (uint32_t i = 0; i < part->vertex_count; i++) {
 		const float *v = pos + (size_t)i * 3, *n = nrm + (size_t)i * 3;
 		size_t o = (size_t)(part->first_vertex + i) * 3;
 		double b[16], w[3], d[3];
 
-		if (!blend(p, s->joint_count, part->first_vertex + i, b)) {
+		if (!blend(p, s, part->first_vertex + i, b)) {
 			for (int k = 0; k < 3; k++) {
 				w[k] = v[k];
 				d[k] = n[k];
@@ -188,7 +204,7 @@ static void pose_skinned(struct anim_play *p, const struct anim_play_part *part,
 void anim_play_pose(struct anim_play *p, const struct anim_pose *pose, float *positions,
 		    float *normals)
 {
-	anim_pose_world(p->anim, pose, p->worlds);
+	anim_play_joints(p, pose);
 	for (uint32_t i = 0; i < p->part_count; i++) {
 		const struct anim_play_part *part = &p->parts[i];
 
@@ -235,7 +251,7 @@ void anim_play_free(struct anim_play *p)
 	free(p->morphed);
 	free(p->gpu_joints);
 	free(p->gpu_weights);
-	free(p->skin_bone);
+	free(p->rows);
 	free(p->node_bone);
 	free(p->gpu_morph);
 	mesh_anim_free(p->anim);

@@ -25,6 +25,8 @@ struct anim_play_skin {
 	uint32_t joint_count;
 	int *joints;	     /* node of each joint */
 	float *inverse_bind; /* 16 a joint, column-major (identity when the file has none) */
+	/* Its joints' first matrix in anim_play.joint_matrices (anim_play_finish). */
+	uint32_t first;
 };
 
 struct anim_play_part {
@@ -65,21 +67,23 @@ struct anim_play {
 	uint32_t part_count, skin_count;
 	struct anim_play_part *parts;
 	struct anim_play_skin *skins;
-	/* Scratch of anim_play_pose: node worlds, joint matrices, a part's
-	 * morphed vertices (sized at load: no allocation a frame). */
+	/* Scratch of a pose (sized at load: no allocation a frame): node
+	 * worlds; every skin's joint matrices, world x inverse bind in double
+	 * (anim_play_joints: the one place they are made, for the CPU's
+	 * blend and the GPU's palette alike); a part's morphed vertices. */
 	float (*worlds)[16];
-	float (*joint_matrices)[16];
+	double (*joint_matrices)[16];
 	float *morphed;
-	uint32_t joint_max, part_vertex_max;
+	uint32_t joint_total, part_vertex_max;
 	/* The GPU path (anim_play_gpu_prepare): one palette of bones for the
 	 * whole model, bone 0 the fit alone, then every skin's joints, then
 	 * the nodes rigid parts follow; each vertex's four bones (as floats,
 	 * as the shader reads them) and weights. bones 0: the CPU path. */
 	uint32_t bones;
 	float *gpu_joints, *gpu_weights;
-	uint32_t *skin_bone; /* per skin, its first bone */
-	int *node_bone;	     /* per node, the bone of the rigid parts it shows; 0: none */
-	bool morphs;	     /* some part has targets: its own arrays change a frame */
+	int *node_bone; /* per node, the bone of the rigid parts it shows; 0: none */
+	float *rows;	/* bones x 12: the palette at the last pose (the GPU path's scratch) */
+	bool morphs;	/* some part has targets: its own arrays change a frame */
 	/* Morph targets on the GPU (anim_play_morph_prepare): morph_targets
 	 * deltas a vertex (0: none there; the CPU moves them when morphs),
 	 * the weights of morph_node's; gpu_morph: morph_targets arrays of
@@ -94,6 +98,9 @@ struct anim_play {
 /* The allocations of the scratch, once parts and skins are filled. 0 or
  * -ENOMEM. */
 int anim_play_finish(struct anim_play *p);
+/* The pose's node worlds (p->worlds) and every skin's joint matrices
+ * (p->joint_matrices): the one place a pose becomes joints. */
+void anim_play_joints(struct anim_play *p, const struct anim_pose *pose);
 /* positions and normals (xyz per vertex, p->vertex_count) at a pose. */
 void anim_play_pose(struct anim_play *p, const struct anim_pose *pose, float *positions,
 		    float *normals);
@@ -109,7 +116,8 @@ int anim_play_gpu_prepare(struct anim_play *p, uint32_t palette);
  * the model to the CPU, for the journal: a sentence, or NULL for 0. */
 const char *anim_play_gpu_why(int err);
 /* The palette at a pose: 3 rows of 4 floats a bone (a 3x4 matrix), the
- * node worlds and inverse binds with the clip's fit. */
+ * joint matrices of anim_play_joints (and the rigid parts' node worlds)
+ * with the clip's fit. */
 void anim_play_bones(struct anim_play *p, const struct anim_pose *pose, float *rows);
 /* The parts' own positions and normals with the pose's morph weights
  * (the GPU path's arrays; the CPU path's before its skin). */

@@ -14,12 +14,8 @@
 
 static uint32_t count_bones(struct anim_play *p)
 {
-	uint32_t bones = 1;
+	uint32_t bones = 1 + p->joint_total; /* bone 0, then every skin's joints */
 
-	for (uint32_t s = 0; s < p->skin_count; s++) {
-		p->skin_bone[s] = bones;
-		bones += p->skins[s].joint_count;
-	}
 	for (uint32_t i = 0; i < p->part_count; i++) {
 		const struct anim_play_part *part = &p->parts[i];
 
@@ -41,7 +37,7 @@ static void skinned_vertex(struct anim_play *p, const struct anim_play_part *par
 		float weight = p->weights[(size_t)v * p->influences + k];
 		bool used = weight != 0.0f && joint < s->joint_count;
 
-		j[k] = used ? (float)(p->skin_bone[part->skin] + joint) : 0.0f;
+		j[k] = used ? (float)(1 + s->first + joint) : 0.0f;
 		w[k] = used ? weight : 0.0f;
 		total += w[k];
 	}
@@ -51,13 +47,12 @@ static void skinned_vertex(struct anim_play *p, const struct anim_play_part *par
 
 static void drop_gpu(struct anim_play *p)
 {
-	free(p->skin_bone);
 	free(p->node_bone);
 	free(p->gpu_joints);
 	free(p->gpu_weights);
-	p->skin_bone = NULL;
+	free(p->rows);
 	p->node_bone = NULL;
-	p->gpu_joints = p->gpu_weights = NULL;
+	p->gpu_joints = p->gpu_weights = p->rows = NULL;
 	p->bones = 0;
 	p->morphs = false;
 }
@@ -76,14 +71,14 @@ int anim_play_gpu_prepare(struct anim_play *p, uint32_t palette)
 	 * program, for the rare model that has it; the CPU blends them all. */
 	if (p->joints && p->influences > 4)
 		return -ERANGE;
-	p->skin_bone = calloc(p->skin_count + 1, sizeof(*p->skin_bone));
 	p->node_bone = calloc(p->anim->node_count + 1, sizeof(*p->node_bone));
-	if (!p->skin_bone || !p->node_bone)
+	if (!p->node_bone)
 		return -ENOMEM;
 	p->bones = count_bones(p);
 	p->gpu_joints = calloc(n + 1, sizeof(float));
 	p->gpu_weights = calloc(n + 1, sizeof(float));
-	if (!p->gpu_joints || !p->gpu_weights) {
+	p->rows = calloc((size_t)p->bones * 12, sizeof(float));
+	if (!p->gpu_joints || !p->gpu_weights || !p->rows) {
 		p->bones = 0;
 		return -ENOMEM;
 	}
@@ -135,36 +130,20 @@ static void put_bone(const struct anim_play *p, const double m[16], float *rows)
 	}
 }
 
-static void to_double(const float *a, const float *b, double out[16])
-{
-	for (int c = 0; c < 4; c++)
-		for (int r = 0; r < 4; r++) {
-			double s = 0;
-
-			for (int k = 0; k < 4; k++)
-				s += (double)a[k * 4 + r] * (b ? b[c * 4 + k] : (k == c));
-			out[c * 4 + r] = s;
-		}
-}
-
 void anim_play_bones(struct anim_play *p, const struct anim_pose *pose, float *rows)
 {
-	static const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+	static const double identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
 	double m[16];
 
-	anim_pose_world(p->anim, pose, p->worlds);
-	to_double(identity, NULL, m);
-	put_bone(p, m, rows);
-	for (uint32_t s = 0; s < p->skin_count; s++)
-		for (uint32_t j = 0; j < p->skins[s].joint_count; j++) {
-			to_double(p->worlds[p->skins[s].joints[j]],
-				  p->skins[s].inverse_bind + (size_t)j * 16, m);
-			put_bone(p, m, rows + (size_t)(p->skin_bone[s] + j) * 12);
-		}
+	anim_play_joints(p, pose);
+	put_bone(p, identity, rows);
+	for (uint32_t j = 0; j < p->joint_total; j++)
+		put_bone(p, p->joint_matrices[j], rows + (size_t)(1 + j) * 12);
 	for (size_t n = 0; n < p->anim->node_count; n++) {
 		if (!p->node_bone[n])
 			continue;
-		to_double(p->worlds[n], NULL, m);
+		for (int k = 0; k < 16; k++)
+			m[k] = p->worlds[n][k];
 		put_bone(p, m, rows + (size_t)p->node_bone[n] * 12);
 	}
 }
