@@ -25,7 +25,6 @@ struct kiosk_anim {
 	bool held;			 /* the clock stood still: it goes on from the next step */
 	char stop_clip[FRAME_STOP_CLIP]; /* the stop's clip last seen; "": none */
 	bool stop_warned;		 /* a stop named a clip this model lacks: said */
-	float *rows;			 /* the bone palette's rows (skinned on the GPU) */
 	/* The file set up for and its shape (its playback may be freed by
 	 * now): a reload of it keeps its clocks or fades from its pose. */
 	char *model;
@@ -43,10 +42,8 @@ struct kiosk_anim *kiosk_anim_new(void)
 
 static void drop_poses(struct kiosk_anim *a)
 {
-	free(a->rows);
 	free(a->clocks);
 	free(a->model);
-	a->rows = NULL;
 	a->clocks = NULL;
 	a->model = NULL;
 	anim_pose_free(a->pose);
@@ -173,7 +170,7 @@ static void set_up(struct kiosk_anim *a, const struct content *c, const struct r
 	a->fade_ns = 0;
 	a->clip_step = in->clip_step;
 	a->stop_warned = false;
-	if (!a->play)
+	if (!a->play || !c->play_ops) /* not uploaded to play: shown still */
 		goto out;
 	a->clip_count = a->play->anim->clip_count;
 	a->node_count = a->play->anim->node_count;
@@ -187,9 +184,8 @@ static void set_up(struct kiosk_anim *a, const struct content *c, const struct r
 	a->mix = anim_pose_new(a->play->anim);
 	a->clocks = calloc(a->clip_count + 1, sizeof(*a->clocks));
 	a->model = c->model_path ? strdup(c->model_path) : NULL;
-	a->rows = c->play_gpu ? malloc((size_t)a->play->bones * 12 * sizeof(float)) : NULL;
 	if (clip < 0 || !a->pose || !a->from || !a->mix || !a->clocks ||
-	    (c->model_path && !a->model) || (c->play_gpu && !a->rows)) {
+	    (c->model_path && !a->model)) {
 		drop_poses(a);
 		goto out;
 	}
@@ -259,31 +255,7 @@ static void pose_now(struct kiosk_anim *a, struct content *c, struct renderer *r
 	} else {
 		a->fade_ns = 0;
 	}
-	if (!c->play_gpu) {
-		anim_play_pose(c->play, shown, c->mesh.positions, c->mesh.normals);
-		renderer_set_vertices(r, c->mesh.positions, c->mesh.normals);
-		return;
-	}
-	anim_play_bones(c->play, shown, a->rows);
-	renderer_set_bones(r, a->rows);
-	if (c->play->morph_targets) { /* the vertex shader adds them */
-		float w[ANIM_PLAY_MORPH_MAX];
-
-		anim_play_morph_weights(c->play, shown, w);
-		renderer_set_morph_weights(r, w);
-	}
-	/* Morph targets that did not fit the GPU move the parts' own arrays. */
-	if (c->play->morphs) {
-		const struct anim_play_split *sp = c->play_split;
-
-		anim_play_morph(c->play, shown, c->mesh.positions, c->mesh.normals);
-		if (sp) { /* in the split's order */
-			anim_play_split_gather(sp, c->mesh.positions, 3, sp->positions);
-			anim_play_split_gather(sp, c->mesh.normals, 3, sp->normals);
-		}
-		renderer_set_vertices(r, sp ? sp->positions : c->mesh.positions,
-				      sp ? sp->normals : c->mesh.normals);
-	}
+	c->play_ops->pose(c, r, shown);
 }
 
 /* Until the next frame: the cap's period, or longer while every clip

@@ -18,6 +18,30 @@
 
 #include <stdbool.h>
 
+struct content;
+
+/* How a content that plays is posed a frame (src/content/content_deform.c):
+ * chosen once a model, at upload (content_play_upload, which says which
+ * and why in the journal), so that the frame calls pose and nothing else
+ * asks which path it is on. */
+struct content_deform_ops {
+	const char *name;
+	/* The pose to the renderer: its vertices, or its bones and morph
+	 * weights, as the upload set the mesh up for. */
+	void (*pose)(struct content *s, struct renderer *r, const struct anim_pose *pose);
+};
+
+/* Every vertex posed on the CPU (anim_play_pose) and its arrays replaced. */
+extern const struct content_deform_ops content_deform_cpu;
+/* Bones (one palette, or one a draw once cut) and the morph targets'
+ * weights to the vertex shader: a few uniforms a frame. */
+extern const struct content_deform_ops content_deform_gpu;
+/* Bones in the vertex shader, the morph targets that do not fit it moved
+ * on the CPU (the arrays replaced a frame), in the mesh's order or a
+ * split's. */
+extern const struct content_deform_ops content_deform_gpu_cpu_morphs;
+extern const struct content_deform_ops content_deform_gpu_split_cpu_morphs;
+
 /* The settings' text a content's matcaps and background came from
  * ([scene] matcap, matcap_first, [display] background; NULL: the
  * default): another model's that differs is decoded with it. */
@@ -67,7 +91,9 @@ struct content {
 	struct anim_play *play;
 	void *play_bytes; /* the play's data for the cache entry, until stored */
 	size_t play_size;
-	bool play_gpu; /* uploaded skinned on the GPU (content_play_upload) */
+	/* How it is posed a frame, set by content_play_upload; NULL: not
+	 * uploaded to play. */
+	const struct content_deform_ops *play_ops;
 	/* Its palette cut into draws (more bones than one holds); NULL: one. */
 	struct anim_play_split *play_split;
 	struct content_look look; /* what matcaps and background came from */

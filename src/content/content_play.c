@@ -4,6 +4,7 @@
 #include "util/log.h"
 
 #include <errno.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 void content_play_check(struct content *s)
@@ -29,14 +30,20 @@ void content_play_check(struct content *s)
 	s->play = NULL;
 }
 
-void content_play_release(struct content *s)
+static void drop_split(struct content *s)
 {
 	if (s->play_split)
 		anim_play_split_release(s->play_split);
 	free(s->play_split);
-	anim_play_free(s->play);
 	s->play_split = NULL;
+}
+
+void content_play_release(struct content *s)
+{
+	drop_split(s);
+	anim_play_free(s->play);
 	s->play = NULL;
+	s->play_ops = NULL;
 }
 
 /* The morph targets on the GPU (none: NULL), their deltas gathered into
@@ -106,29 +113,44 @@ static int upload_split(struct content *s, struct renderer *r, struct anim_play_
 	return ret;
 }
 
-/* More bones than one palette: cut into draws whose bones fit. */
-static int split_palette(struct content *s, struct renderer *r, uint32_t palette)
+/* More bones than one palette: cut into draws whose bones fit. skin:
+ * the journal's words for it. */
+static int split_palette(struct content *s, struct renderer *r, uint32_t palette, char *skin,
+			 size_t size)
 {
 	int ret;
 
-	if (s->play_split)
-		anim_play_split_release(s->play_split);
-	else if (!(s->play_split = calloc(1, sizeof(*s->play_split))))
+	if (!(s->play_split = calloc(1, sizeof(*s->play_split))))
 		return -ENOMEM;
 	ret = anim_play_split(s->play, &s->mesh, palette, s->play_split);
 	if (!ret)
 		ret = upload_split(s, r, s->play_split);
 	if (!ret)
-		log_info("%s: skinned on the GPU in %u draws: %u bones, palettes of at most %u "
-			 "(the GPU's holds %u)",
-			 s->model_path, s->play_split->range_count, s->play->bones,
-			 s->play_split->palette_max, palette);
-	if (ret) {
-		anim_play_split_release(s->play_split);
-		free(s->play_split);
-		s->play_split = NULL;
-	}
+		snprintf(skin, size,
+			 "skinned on the GPU in %u draws: %u bones, palettes of at most %u (the "
+			 "GPU's holds %u)",
+			 s->play_split->range_count, s->play->bones, s->play_split->palette_max,
+			 palette);
+	if (ret)
+		drop_split(s);
 	return ret;
+}
+
+/* One palette: the parts' own arrays, which the bones pose. */
+static int one_palette(struct content *s, struct renderer *r, uint32_t palette, char *skin,
+		       size_t size)
+{
+	struct mesh own = s->mesh;
+	struct skin_morphs mo;
+	float *none;
+
+	snprintf(skin, size, "skinned on the GPU: %u bones of a palette of %u", s->play->bones,
+		 palette);
+	own.positions = s->play->positions;
+	own.normals = s->play->normals;
+	return renderer_set_mesh_skinned(r, &own, s->play->gpu_joints, s->play->gpu_weights,
+					 s->play->bones, NULL,
+					 gpu_morphs(s->play, NULL, &mo, &none));
 }
 
 /* On the GPU path: its morph targets there when the attributes the
@@ -145,57 +167,67 @@ static int place_morphs(struct content *s, struct renderer *r, struct morph_plac
 	return anim_play_morph_prepare(s->play, m->room, &m->why) == -ENOMEM ? -ENOMEM : 0;
 }
 
-/* Once a model: where its morph targets move, and why. */
-static void log_morphs(const struct content *s, const struct morph_place *m)
+/* Where its morph targets move, and why, for the journal ("": none). */
+static void say_morphs(const struct content *s, const struct morph_place *m, char *out, size_t size)
 {
+	*out = '\0';
 	if (s->play->morph_targets)
-		log_info("%s: morph targets on the GPU: %u of them%s in %u vertex attributes of "
-			 "the %u the program leaves",
-			 s->model_path, s->play->morph_targets,
-			 s->play->morph_normals ? " with normals" : "", m->need, m->room);
+		snprintf(out, size,
+			 "; morph targets on the GPU: %u of them%s in %u vertex attributes of the "
+			 "%u the program leaves",
+			 s->play->morph_targets, s->play->morph_normals ? " with normals" : "",
+			 m->need, m->room);
 	else if (m->why)
-		log_info("%s: morph targets moved on the CPU each frame: %s (%u attributes, the "
+		snprintf(out, size,
+			 "; morph targets moved on the CPU each frame: %s (%u attributes, the "
 			 "program leaves %u of the GPU's)",
-			 s->model_path, m->why, m->need, m->room);
+			 m->why, m->need, m->room);
 }
 
+/* The GPU path's backend: where the morph targets move decides it. */
+static const struct content_deform_ops *gpu_ops(const struct content *s)
+{
+	if (!s->play->morphs)
+		return &content_deform_gpu;
+	return s->play_split ? &content_deform_gpu_split_cpu_morphs
+			     : &content_deform_gpu_cpu_morphs;
+}
+
+/* Every vertex on the CPU: the mesh's own arrays, replaced a frame. */
+static int upload_cpu(struct content *s, struct renderer *r, int why)
+{
+	const char *none;
+
+	s->play_ops = &content_deform_cpu;
+	anim_play_morph_prepare(s->play, 0, &none); /* no arrays for the GPU */
+	log_info("%s: animation '%s': posed on the CPU each frame: %s", s->model_path,
+		 s->play_ops->name, anim_play_gpu_why(why));
+	return renderer_set_mesh_live(r, &s->mesh);
+}
+
+/* The backend chosen once here (content_deform.c), and the journal told
+ * which and why in one line. */
 int content_play_upload(struct content *s, struct renderer *r)
 {
 	uint32_t palette = renderer_bone_palette(r);
-	int why = anim_play_gpu_prepare(s->play, palette);
-	struct mesh own = s->mesh;
-	struct skin_morphs mo;
 	struct morph_place place = {0, 0, NULL};
-	float *none;
+	char skin[160], morphs[200];
+	int ret, why = anim_play_gpu_prepare(s->play, palette);
 
-	if (s->play_split) { /* uploaded again: decided again */
-		anim_play_split_release(s->play_split);
-		free(s->play_split);
-		s->play_split = NULL;
-	}
+	drop_split(s); /* uploaded again: decided again */
+	s->play_ops = NULL;
 	if ((why == 0 || why == -E2BIG) && place_morphs(s, r, &place))
 		return -ENOMEM;
-	if (why == -E2BIG && palette > 0 && (why = split_palette(s, r, palette)) == 0) {
-		s->play_gpu = true;
-		log_morphs(s, &place);
-		return 0;
-	}
-	s->play_gpu = why == 0;
+	if (why == -E2BIG && palette > 0)
+		why = split_palette(s, r, palette, skin, sizeof(skin));
+	else if (why == 0 && (ret = one_palette(s, r, palette, skin, sizeof(skin))))
+		return ret;
 	if (why == -ENOMEM)
 		return why;
-	if (!s->play_gpu) {
-		log_info("%s: posed on the CPU each frame: %s", s->model_path,
-			 anim_play_gpu_why(why));
-		anim_play_morph_prepare(s->play, 0, &place.why); /* no arrays for the GPU */
-		return renderer_set_mesh_live(r, &s->mesh);
-	}
-	log_morphs(s, &place);
-	log_info("%s: skinned on the GPU: %u bones of a palette of %u", s->model_path,
-		 s->play->bones, palette);
-	/* The parts' own arrays; the bones pose them. */
-	own.positions = s->play->positions;
-	own.normals = s->play->normals;
-	return renderer_set_mesh_skinned(r, &own, s->play->gpu_joints, s->play->gpu_weights,
-					 s->play->bones, NULL,
-					 gpu_morphs(s->play, NULL, &mo, &none));
+	if (why)
+		return upload_cpu(s, r, why);
+	s->play_ops = gpu_ops(s);
+	say_morphs(s, &place, morphs, sizeof(morphs));
+	log_info("%s: animation '%s': %s%s", s->model_path, s->play_ops->name, skin, morphs);
+	return 0;
 }

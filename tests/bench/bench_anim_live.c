@@ -121,10 +121,10 @@ int main(int argc, char **argv)
 	}
 	printf("| %s | %s | %s %dx%d | %u | %u | %.3f | %.3f | %u | %.3f |\n",
 	       strrchr(argv[3], '/') + 1,
-	       !live.s.play_gpu		    ? "CPU"
-	       : live.s.play->morphs	    ? "GPU, morphs on the CPU"
-	       : live.s.play->morph_targets ? "GPU, morphs too"
-					    : "GPU",
+	       live.s.play_ops == &content_deform_cpu ? "CPU"
+	       : live.s.play->morphs		      ? "GPU, morphs on the CPU"
+	       : live.s.play->morph_targets	      ? "GPU, morphs too"
+						      : "GPU",
 	       argv[1], cfg.width, cfg.height, live.s.mesh.vertex_count,
 	       live.s.mesh.index_count / 3, bench_median(pose, n), bench_median(drawn, n),
 	       still.s.mesh.index_count / 3, bench_median(plain, n));

@@ -57,7 +57,7 @@ static void live_frame_is_the_still(const char *path, char *animation, int sixte
 	if (cached >= 0)
 		assert_int_equal(live.cached != NULL, cached);
 	if (!bones)
-		assert_false(live.play_gpu);
+		assert_ptr_equal(live.play_ops, &content_deform_cpu);
 	t = live.play->anim->clips[0].duration * sixteenths / 16;
 	assert_true(kiosk_anim_step(a, &live, r, &in, T0, &next));
 	assert_true(kiosk_anim_step(a, &live, r, &in, T0 + (uint64_t)llround(t * 1e9), &next));
@@ -77,9 +77,9 @@ static void live_frame_is_the_still(const char *path, char *animation, int sixte
 		      "than 2\n",
 		      path, animation ? animation : "auto", live.cached ? ", from the cache" : "",
 		      t,
-		      !live.play_gpu	? "posed on the CPU"
-		      : live.play_split ? "skinned on the GPU, its palette split"
-					: "skinned on the GPU",
+		      live.play_ops == &content_deform_cpu ? "posed on the CPU"
+		      : live.play_split			   ? "skinned on the GPU, its palette split"
+							   : "skinned on the GPU",
 		      pixels, most, over);
 	if (live.play->morph_targets)
 		print_message("  its %u morph targets added in the vertex shader\n",
@@ -190,7 +190,7 @@ static void morph_targets_on_the_gpu_or_cpu(void **state)
 	attribute_limit = 9;
 	r = shown(&s, &c);
 	attribute_limit = 0;
-	assert_true(s.play_gpu);
+	assert_ptr_equal(s.play_ops, &content_deform_gpu);
 	assert_int_equal(s.play->morph_targets, 2);
 	assert_true(s.play->morph_normals);
 	/* Position, normal, base colour, bones, weights and the four. */
@@ -216,7 +216,7 @@ static void morph_targets_on_the_gpu_or_cpu(void **state)
 	assert_int_equal(content_load(&rigged, &rc, true), 0);
 	assert_int_equal(content_prepare(&rigged, &rc, SIZE, SIZE), 0);
 	assert_int_equal(content_upload(&rigged, r), 0);
-	assert_true(rigged.play_gpu);
+	assert_ptr_equal(rigged.play_ops, &content_deform_gpu);
 	program_reads(r, &attributes, &morphs);
 	assert_int_equal(attributes, 5);
 	assert_false(morphs);

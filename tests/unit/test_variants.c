@@ -294,7 +294,7 @@ static void skinned_switch(uint32_t bones, bool split)
 	assert_int_equal(content_prepare(&s, &o.content, W, W), 0);
 	assert_int_equal(content_upload(&s, r), 0);
 	assert_non_null(s.play);
-	assert_true(s.play_gpu);
+	assert_ptr_equal(s.play_ops, &content_deform_gpu);
 	assert_true(split ? s.play_split && s.play_split->range_count == 2 : !s.play_split);
 	assert_int_equal(renderer_set_mode(r, o.content.mode, false), 0);
 	struct kiosk_anim_input in = {.running = true, .config = &o.content};
