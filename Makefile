@@ -137,7 +137,9 @@ $(LIB_ARCHIVE): $(LIB_OBJS)
 $(BUILD):
 	mkdir -p $@
 
--include $(wildcard $(BUILD)/*.d $(BUILD)/*/*.d)
+# Three deep: scene/ has folders of its own (scene/gltf/*.d), whose
+# objects must rebuild when a header they include changes.
+-include $(wildcard $(BUILD)/*.d $(BUILD)/*/*.d $(BUILD)/*/*/*.d)
 
 # The matcap baker: regenerates matcaps/*.png byte for byte.
 $(BUILD)/bake: matcaps/bake.c $(BUILD)/render/bake.o $(BUILD)/util/image.o $(BUILD)/util/file.o $(BUILD)/util/log.o
