@@ -695,6 +695,87 @@ static void a_damaged_live_entry_is_rebuilt(void **state)
 	renderer_free(r);
 }
 
+/* Decoding bytes, what the journal says of them (log into log). */
+static int decode_logged(const void *blob, size_t n, uint32_t vc, char *log, size_t size)
+{
+	char path[] = "/tmp/mk-anim-log-XXXXXX";
+	int fd = mkstemp(path), saved = dup(2), ret;
+	struct anim_play *p = NULL;
+	ssize_t got;
+
+	assert_true(fd >= 0 && saved >= 0);
+	log_set_level(LOG_WARN);
+	fflush(stderr);
+	dup2(fd, 2);
+	ret = mesh_cache_anim_decode(blob, n, vc, &p);
+	fflush(stderr);
+	dup2(saved, 2);
+	close(saved);
+	log_set_level(LOG_ERR);
+	got = pread(fd, log, size - 1, 0);
+	log[got > 0 ? got : 0] = '\0';
+	close(fd);
+	unlink(path);
+	anim_play_free(p);
+	return ret;
+}
+
+/* A forged section (the checksums resealed over it) that names a node, a
+ * joint or a vertex count that is not there: refused (a part's node or a
+ * joint past the nodes would index the worlds out of bounds each frame),
+ * and the journal says at which struct, element and field. */
+static void a_forged_rig_is_refused_where_it_lies(void **state)
+{
+	struct fixture *f = *state;
+	struct content_config c = live_config(KHRONOS "RiggedSimple.gltf");
+	struct renderer *r = live_renderer();
+	struct content s;
+	char log[1024];
+	void *blob;
+	size_t n;
+	uint32_t vc, word = 0;
+	int node, joint;
+
+	setenv("XDG_CACHE_HOME", f->dir, 1);
+	show_live(&s, &c, r);
+	vc = s.play->vertex_count;
+	assert_int_equal(mesh_cache_anim_encode(s.play, &blob, &n), 0);
+	assert_int_equal(decode_logged(blob, n, vc + 1, log, sizeof(log)), -EBADMSG);
+	assert_non_null(strstr(log, "refused at the rig: its vertex count is not the mesh's"));
+	assert_int_equal(decode_logged(blob, n - 4, vc, log, sizeof(log)), -EBADMSG);
+	assert_non_null(strstr(log, "refused at parts: more elements than the bytes left hold"));
+	memcpy(blob, &word, 4);
+	assert_int_equal(decode_logged(blob, n, vc, log, sizeof(log)), -EBADMSG);
+	assert_non_null(strstr(log, "refused at its first word: not MKAN"));
+	free(blob);
+
+	node = s.play->parts[0].node;
+	s.play->parts[0].node = (int)s.play->anim->node_count;
+	assert_int_equal(mesh_cache_anim_encode(s.play, &blob, &n), 0);
+	s.play->parts[0].node = node;
+	assert_int_equal(decode_logged(blob, n, vc, log, sizeof(log)), -EBADMSG);
+	assert_non_null(strstr(log, "refused at parts[0]: its node is not a node"));
+	free(blob);
+
+	joint = s.play->skins[0].joints[1];
+	s.play->skins[0].joints[1] = -7;
+	assert_int_equal(mesh_cache_anim_encode(s.play, &blob, &n), 0);
+	s.play->skins[0].joints[1] = joint;
+	assert_int_equal(decode_logged(blob, n, vc, log, sizeof(log)), -EBADMSG);
+	assert_non_null(strstr(log, "refused at skins[0]: a joint that is not a node"));
+	free(blob);
+
+	s.play->anim->nodes[0].parent = 0; /* its own parent: a cycle */
+	assert_int_equal(mesh_cache_anim_encode(s.play, &blob, &n), 0);
+	s.play->anim->nodes[0].parent = -1;
+	assert_int_equal(decode_logged(blob, n, vc, log, sizeof(log)), -EBADMSG);
+	assert_non_null(strstr(log, "refused at anim: the parents make a cycle"));
+	free(blob);
+	content_release(&s);
+	unsetenv("XDG_CACHE_HOME");
+	renderer_free(r);
+}
+
 /* A cache file system with under 16 MiB free is full: the shader cache
  * and the mesh cache skip it; an unknown size (total 0) is not. */
 static void a_nearly_full_disk_is_full(void **state)
@@ -726,6 +807,7 @@ int main(void)
 	    cmocka_unit_test_setup_teardown(content_maps_a_model_prepared_before, setup, teardown),
 	    cmocka_unit_test_setup_teardown(a_live_model_starts_from_the_cache, setup, teardown),
 	    cmocka_unit_test_setup_teardown(a_damaged_live_entry_is_rebuilt, setup, teardown),
+	    cmocka_unit_test_setup_teardown(a_forged_rig_is_refused_where_it_lies, setup, teardown),
 	    cmocka_unit_test(the_directory_is_named_as_systemd_and_xdg_say),
 	    cmocka_unit_test(every_field_is_in_the_cache_table),
 	    cmocka_unit_test(a_nearly_full_disk_is_full),

@@ -1,280 +1,144 @@
 /* What live playback keeps (struct anim_play and its struct mesh_anim) as
  * the bytes of a prepared-mesh cache entry's last section, and read back
- * from them. The entry's checksum finds damage; the reading checks every
- * count, index and sampler as well (as the glTF loader does), so that
- * bytes that pass the checksum but not these (a forgery, a bug of the
- * writer) are refused, never trusted: the model is parsed again. */
+ * from them: every struct of the rig described once in a member table
+ * (scene/mesh/mesh_cache_nest.h), written and read by the one walker, as
+ * the material and range records are by mesh_cache_fields.c. The entry's
+ * checksum finds damage; the reading checks every word, count, index and
+ * sampler as well (as the glTF loader does), so that bytes that pass the
+ * checksum but not these (a forgery, a bug of the writer) are refused,
+ * never trusted: the journal says where, and the model is parsed again.
+ * The format is the entry's (mesh_cache.c CACHE_VERSION). */
 #include "scene/mesh/mesh_cache_anim.h"
+#include "scene/mesh/mesh_cache_nest.h"
+#include "util/log.h"
 
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#define ANIM_MAGIC   0x4e414b4du /* "MKAN" */
-#define ANIM_VERSION 2u		 /* 2: a part's flat normals (bit 1 of has_normals) */
-#define NO_NAME	     0xffffffffu
+#define ANIM_MAGIC 0x4e414b4du /* "MKAN" */
 /* Joints a vertex at most: the loader reads three joint sets (gltf_play.cc). */
 #define INFLUENCES_MAX 12u
+/* A sampler's floats a key at most (a weights sampler: a node's targets). */
+#define WIDTH_MAX 65536
 
-/* A growing buffer of 32-bit words (a double: two). */
-struct put {
-	char *data;
-	size_t size, cap;
-	bool failed;
+#define MEMBER(s, f, k, ...)                                                                       \
+	{                                                                                          \
+		.name = #f, .offset = offsetof(struct s, f), .kind = k, __VA_ARGS__                \
+	}
+#define TABLE(s, members, check)                                                                   \
+	{                                                                                          \
+#s, sizeof(struct s), members, sizeof(members) / sizeof(members[0]), check         \
+	}
+
+/* What the reader checks against: the play read so far, the mesh's size. */
+struct rig_ctx {
+	struct anim_play *play;
+	uint32_t vertex_count;
 };
 
-static void put_bytes(struct put *b, const void *data, size_t size)
+static uint64_t mul3(uint64_t a, uint64_t b, uint64_t c)
 {
-	size_t padded = (size + 3) & ~(size_t)3;
+	/* Each a 32-bit word at most: no product wraps in 64 bits but a
+	 * third factor's, saturated. */
+	uint64_t ab = a * b;
 
-	if (b->failed)
-		return;
-	if (b->size + padded > b->cap) {
-		size_t cap = b->cap ? b->cap : 4096;
-		char *grown;
-
-		while (cap < b->size + padded)
-			cap *= 2;
-		grown = realloc(b->data, cap);
-		if (!grown) {
-			b->failed = true;
-			return;
-		}
-		b->data = grown;
-		b->cap = cap;
-	}
-	if (size)
-		memcpy(b->data + b->size, data, size);
-	memset(b->data + b->size + size, 0, padded - size);
-	b->size += padded;
+	return c && ab > UINT64_MAX / c ? UINT64_MAX : ab * c;
 }
 
-static void put_u32(struct put *b, uint32_t v)
+/* Counts of the arrays, from the members before them. */
+static uint64_t sampler_inputs(const void *o)
 {
-	put_bytes(b, &v, 4);
+	return ((const struct anim_sampler *)o)->count;
 }
 
-static void put_f64(struct put *b, double v)
+static uint64_t sampler_outputs(const void *o)
 {
-	put_bytes(b, &v, 8);
+	const struct anim_sampler *s = o;
+
+	return mul3(s->count, (uint32_t)s->width, s->interp == ANIM_CUBICSPLINE ? 3 : 1);
 }
 
-/* The reader: every take checks the bytes left, and fails for good. */
-struct get {
-	const char *p;
-	size_t left;
-	bool ok;
-};
-
-static bool get_bytes(struct get *g, void *out, size_t count, size_t width)
+static uint64_t clip_samplers(const void *o)
 {
-	size_t size, padded;
-
-	if (!g->ok || (width && count > SIZE_MAX / 4 / width))
-		return g->ok = false;
-	size = count * width;
-	padded = (size + 3) & ~(size_t)3;
-	if (padded > g->left)
-		return g->ok = false;
-	if (size)
-		memcpy(out, g->p, size);
-	g->p += padded;
-	g->left -= padded;
-	return true;
+	return ((const struct anim_clip *)o)->sampler_count;
 }
 
-static uint32_t get_u32(struct get *g)
+static uint64_t clip_channels(const void *o)
 {
-	uint32_t v = 0;
-
-	get_bytes(g, &v, 1, 4);
-	return v;
+	return ((const struct anim_clip *)o)->channel_count;
 }
 
-static double get_f64(struct get *g)
+static uint64_t anim_nodes(const void *o)
 {
-	double v = 0;
-
-	get_bytes(g, &v, 1, 8);
-	return v;
+	return ((const struct mesh_anim *)o)->node_count;
 }
 
-/* count elements of width bytes, in an allocation of their own (NULL for
- * none, or on failure: g->ok says which). */
-static void *get_array(struct get *g, size_t count, size_t width)
+static uint64_t anim_weights(const void *o)
 {
-	void *a;
-
-	if (!g->ok || !count || count > g->left / width) {
-		g->ok = g->ok && !count;
-		return NULL;
-	}
-	a = malloc(count * width);
-	if (!a || !get_bytes(g, a, count, width)) {
-		free(a);
-		return g->ok = false, NULL;
-	}
-	return a;
+	return ((const struct mesh_anim *)o)->weight_total;
 }
 
-/* A count that cannot exceed what is left: each of its items takes at
- * least min bytes (so that a damaged count allocates nothing huge). */
-static uint32_t get_count(struct get *g, size_t min)
+static uint64_t anim_clips(const void *o)
 {
-	uint32_t n = get_u32(g);
-
-	if (g->ok && (size_t)n > g->left / min)
-		g->ok = false;
-	return g->ok ? n : 0;
+	return ((const struct mesh_anim *)o)->clip_count;
 }
 
-static bool finite_all(const float *v, size_t n)
+static uint64_t skin_joints(const void *o)
 {
-	for (size_t i = 0; i < n; i++)
-		if (!isfinite(v[i]))
-			return false;
-	return true;
+	return ((const struct anim_play_skin *)o)->joint_count;
 }
 
-static size_t sampler_values(const struct anim_sampler *s)
+static uint64_t skin_matrices(const void *o)
 {
-	return s->count * (size_t)s->width * (s->interp == ANIM_CUBICSPLINE ? 3 : 1);
+	return mul3(((const struct anim_play_skin *)o)->joint_count, 16, 1);
 }
 
-static void put_anim(struct put *b, const struct mesh_anim *a)
+static uint64_t part_indices(const void *o)
 {
-	put_u32(b, (uint32_t)a->node_count);
-	for (size_t i = 0; i < a->node_count; i++) {
-		const struct anim_node *n = &a->nodes[i];
-
-		put_u32(b, (uint32_t)n->parent);
-		put_bytes(b, &n->rest, sizeof(n->rest));
-		put_u32(b, n->has_matrix);
-		put_bytes(b, n->matrix, sizeof(n->matrix));
-		put_u32(b, (uint32_t)n->weight_offset);
-		put_u32(b, (uint32_t)n->weight_count);
-	}
-	put_u32(b, (uint32_t)a->weight_total);
-	put_bytes(b, a->rest_weights, a->weight_total * sizeof(float));
-	put_u32(b, (uint32_t)a->clip_count);
-	for (size_t c = 0; c < a->clip_count; c++) {
-		const struct anim_clip *clip = &a->clips[c];
-
-		put_u32(b, clip->name ? (uint32_t)strlen(clip->name) : NO_NAME);
-		if (clip->name)
-			put_bytes(b, clip->name, strlen(clip->name));
-		put_u32(b, (uint32_t)clip->sampler_count);
-		for (size_t s = 0; s < clip->sampler_count; s++) {
-			const struct anim_sampler *sm = &clip->samplers[s];
-
-			put_u32(b, (uint32_t)sm->count);
-			put_u32(b, (uint32_t)sm->width);
-			put_u32(b, (uint32_t)sm->interp);
-			put_bytes(b, sm->input, sm->count * sizeof(float));
-			put_bytes(b, sm->output, sampler_values(sm) * sizeof(float));
-		}
-		put_u32(b, (uint32_t)clip->channel_count);
-		for (size_t k = 0; k < clip->channel_count; k++) {
-			put_u32(b, (uint32_t)clip->channels[k].node);
-			put_u32(b, (uint32_t)clip->channels[k].path);
-			put_u32(b, (uint32_t)clip->channels[k].sampler);
-		}
-	}
+	return ((const struct anim_play_part *)o)->index_count;
 }
 
-static void put_play(struct put *b, const struct anim_play *p)
+static uint64_t part_deltas(const void *o)
 {
-	size_t vc = p->vertex_count;
+	const struct anim_play_part *p = o;
 
-	put_bytes(b, p->center, sizeof(p->center));
-	put_f64(b, p->scale);
-	put_u32(b, p->vertex_count);
-	put_bytes(b, p->positions, vc * 3 * sizeof(float));
-	put_bytes(b, p->normals, vc * 3 * sizeof(float));
-	put_u32(b, p->joints ? p->influences : 0);
-	if (p->joints) {
-		put_bytes(b, p->joints, vc * p->influences * sizeof(uint16_t));
-		put_bytes(b, p->weights, vc * p->influences * sizeof(float));
-	}
-	put_u32(b, p->skin_count);
-	for (uint32_t s = 0; s < p->skin_count; s++) {
-		const struct anim_play_skin *sk = &p->skins[s];
-
-		put_u32(b, sk->joint_count);
-		put_bytes(b, sk->joints, sk->joint_count * sizeof(int));
-		put_bytes(b, sk->inverse_bind, (size_t)sk->joint_count * 16 * sizeof(float));
-	}
-	put_u32(b, p->part_count);
-	for (uint32_t i = 0; i < p->part_count; i++) {
-		const struct anim_play_part *part = &p->parts[i];
-		size_t deltas = (size_t)part->target_count * part->vertex_count * 3;
-
-		put_u32(b, (uint32_t)part->node);
-		put_u32(b, (uint32_t)part->skin);
-		put_u32(b, part->at_root);
-		put_u32(b, part->first_vertex);
-		put_u32(b, part->vertex_count);
-		put_u32(b, (uint32_t)part->has_normals | (uint32_t)part->flat << 1);
-		put_u32(b, part->index_count);
-		put_bytes(b, part->indices, part->index_count * sizeof(uint32_t));
-		put_u32(b, part->target_count);
-		put_u32(b, part->target_normals != NULL);
-		put_bytes(b, part->target_positions, deltas * sizeof(float));
-		if (part->target_normals)
-			put_bytes(b, part->target_normals, deltas * sizeof(float));
-	}
+	return mul3(p->target_count, p->vertex_count, 3);
 }
 
-int mesh_cache_anim_encode(const struct anim_play *p, void **out, size_t *size)
+static uint64_t play_xyz(const void *o)
 {
-	struct put b = {NULL, 0, 0, false};
-
-	put_u32(&b, ANIM_MAGIC);
-	put_u32(&b, ANIM_VERSION);
-	put_anim(&b, p->anim);
-	put_play(&b, p);
-	if (b.failed) {
-		free(b.data);
-		return -ENOMEM;
-	}
-	*out = b.data;
-	*size = b.size;
-	return 0;
+	return mul3(((const struct anim_play *)o)->vertex_count, 3, 1);
 }
 
-static bool get_node(struct get *g, struct anim_node *n, size_t node_count)
+static uint64_t play_influences(const void *o)
 {
-	uint32_t parent = get_u32(g);
+	const struct anim_play *p = o;
 
-	n->parent = (int)parent;
-	get_bytes(g, &n->rest, 1, sizeof(n->rest));
-	n->has_matrix = get_u32(g);
-	get_bytes(g, n->matrix, 16, sizeof(float));
-	n->weight_offset = get_u32(g);
-	n->weight_count = get_u32(g);
-	return g->ok && (parent == 0xffffffffu || parent < node_count) &&
-	       finite_all((const float *)&n->rest, sizeof(n->rest) / sizeof(float)) &&
-	       finite_all(n->matrix, 16);
+	return mul3(p->vertex_count, p->influences, 1);
 }
 
-static bool get_sampler(struct get *g, struct anim_sampler *s)
+static uint64_t play_skins(const void *o)
 {
-	uint32_t interp;
+	return ((const struct anim_play *)o)->skin_count;
+}
 
-	s->count = get_count(g, 4);
-	s->width = (int)get_u32(g);
-	interp = get_u32(g);
-	if (!g->ok || interp > ANIM_CUBICSPLINE || s->width < 1 || s->width > 65536 || !s->count)
-		return g->ok = false;
-	s->interp = (enum anim_interp)interp;
-	s->input = get_array(g, s->count, sizeof(float));
-	/* Checked before the product is made (a 32-bit size_t). */
-	if (g->ok && (size_t)s->width * (s->interp == ANIM_CUBICSPLINE ? 3 : 1) >
-			 g->left / sizeof(float) / s->count)
-		return g->ok = false;
-	s->output = get_array(g, sampler_values(s), sizeof(float));
-	return g->ok && !anim_sampler_check(s);
+static uint64_t play_parts(const void *o)
+{
+	return ((const struct anim_play *)o)->part_count;
+}
+
+static const char *sampler_check(void *o, void *ctx)
+{
+	const struct anim_sampler *s = o;
+
+	(void)ctx;
+	if (!s->count)
+		return "a sampler of no keys";
+	if (s->width < 1 || s->width > WIDTH_MAX)
+		return "a sampler's width out of range";
+	return anim_sampler_check(s);
 }
 
 /* A channel as the loader lets it be (gltf_anim.cc read_channel). */
@@ -293,183 +157,237 @@ static bool channel_sane(const struct mesh_anim *a, const struct anim_clip *clip
 	       (c->path == ANIM_WEIGHTS || !a->nodes[c->node].has_matrix);
 }
 
-static bool get_clip(struct get *g, const struct mesh_anim *a, struct anim_clip *clip)
+/* Its channels against the nodes, and its length made again. */
+static const char *clip_check(void *o, void *ctx)
 {
-	uint32_t len = get_u32(g);
+	struct anim_clip *clip = o;
+	const struct rig_ctx *r = ctx;
 
-	if (g->ok && len != NO_NAME) {
-		if (len > g->left || !(clip->name = calloc(1, (size_t)len + 1)))
-			return g->ok = false;
-		get_bytes(g, clip->name, len, 1);
-		if (g->ok && strlen(clip->name) != len)
-			return g->ok = false;
-	}
-	clip->sampler_count = get_count(g, 16);
-	clip->samplers = calloc(clip->sampler_count + 1, sizeof(*clip->samplers));
-	if (!clip->samplers)
-		return clip->sampler_count = 0, g->ok = false;
-	for (size_t s = 0; g->ok && s < clip->sampler_count; s++)
-		if (get_sampler(g, &clip->samplers[s]))
-			clip->duration = fmax(clip->duration,
-					      clip->samplers[s].input[clip->samplers[s].count - 1]);
-	clip->channel_count = get_count(g, 12);
-	clip->channels = calloc(clip->channel_count + 1, sizeof(*clip->channels));
-	if (!clip->channels)
-		return clip->channel_count = 0, g->ok = false;
-	for (size_t k = 0; g->ok && k < clip->channel_count; k++) {
-		struct anim_channel *c = &clip->channels[k];
-		uint32_t path;
-
-		c->node = (int)get_u32(g);
-		path = get_u32(g);
-		c->sampler = (int)get_u32(g);
-		/* The path in range before it is an enum. */
-		c->path = path <= ANIM_WEIGHTS ? (enum anim_path)path : ANIM_TRANSLATION;
-		if (g->ok && (path > ANIM_WEIGHTS || !channel_sane(a, clip, c)))
-			g->ok = false;
-	}
-	return g->ok;
+	for (size_t k = 0; k < clip->channel_count; k++)
+		if (!channel_sane(r->play->anim, clip, &clip->channels[k]))
+			return "a channel's node, sampler or width is not one the loader allows";
+	for (size_t s = 0; s < clip->sampler_count; s++)
+		clip->duration =
+		    fmax(clip->duration, clip->samplers[s].input[clip->samplers[s].count - 1]);
+	return NULL;
 }
 
-static bool get_anim(struct get *g, struct mesh_anim *a)
+static const char *node_check(void *o, void *ctx)
 {
-	a->node_count = get_count(g, 120);
-	a->nodes = calloc(a->node_count + 1, sizeof(*a->nodes));
+	const struct anim_node *n = o;
+	const struct mesh_anim *a = ((const struct rig_ctx *)ctx)->play->anim;
+
+	if (n->parent < -1 || (n->parent >= 0 && (size_t)n->parent >= a->node_count))
+		return "a parent that is not a node";
+	if (n->weight_offset > a->weight_total ||
+	    n->weight_count > a->weight_total - n->weight_offset)
+		return "morph weights past the weights there are";
+	return NULL;
+}
+
+/* The nodes' order, made again (parents first). */
+static const char *anim_check(void *o, void *ctx)
+{
+	struct mesh_anim *a = o;
+
+	(void)ctx;
 	a->order = calloc(a->node_count + 1, sizeof(*a->order));
-	if (!a->nodes || !a->order)
-		return g->ok = false;
-	for (size_t i = 0; g->ok && i < a->node_count; i++)
-		if (!get_node(g, &a->nodes[i], a->node_count))
-			g->ok = false;
-	a->weight_total = get_count(g, 4);
-	for (size_t i = 0; g->ok && i < a->node_count; i++)
-		if (a->nodes[i].weight_offset > a->weight_total ||
-		    a->nodes[i].weight_count > a->weight_total - a->nodes[i].weight_offset)
-			g->ok = false;
-	a->rest_weights = get_array(g, a->weight_total, sizeof(float));
-	if (!g->ok || !anim_order(a->nodes, a->node_count, a->order))
-		return g->ok = false;
-	a->clip_count = get_count(g, 12);
-	a->clips = calloc(a->clip_count + 1, sizeof(*a->clips));
-	if (!a->clips)
-		return a->clip_count = 0, g->ok = false;
-	for (size_t c = 0; g->ok && c < a->clip_count; c++)
-		get_clip(g, a, &a->clips[c]);
-	return g->ok;
+	if (!a->order)
+		return "out of memory";
+	return anim_order(a->nodes, a->node_count, a->order) ? NULL : "the parents make a cycle";
 }
 
-static bool get_skin(struct get *g, struct anim_play_skin *s, size_t node_count)
+static const char *skin_check(void *o, void *ctx)
 {
-	s->joint_count = get_count(g, 68);
-	s->joints = get_array(g, s->joint_count, sizeof(int));
-	s->inverse_bind = get_array(g, (size_t)s->joint_count * 16, sizeof(float));
-	for (uint32_t j = 0; g->ok && j < s->joint_count; j++)
-		if (s->joints[j] < 0 || (size_t)s->joints[j] >= node_count)
-			g->ok = false;
-	if (g->ok && !finite_all(s->inverse_bind, (size_t)s->joint_count * 16))
-		g->ok = false;
-	return g->ok;
+	const struct anim_play_skin *s = o;
+	const struct mesh_anim *a = ((const struct rig_ctx *)ctx)->play->anim;
+
+	for (uint32_t j = 0; j < s->joint_count; j++)
+		if (s->joints[j] < 0 || (size_t)s->joints[j] >= a->node_count)
+			return "a joint that is not a node";
+	return NULL;
 }
 
-/* A part's fields, each in range: its vertices in the mesh, its
- * triangles among its own vertices (the normals generated from them),
- * its node and skin among those that exist. */
-static bool get_part(struct get *g, const struct anim_play *p, struct anim_play_part *part)
+/* Its vertices in the mesh, its triangles among its own vertices (the
+ * normals generated from them), its node and skin among those there are. */
+static const char *part_check(void *o, void *ctx)
 {
-	size_t deltas;
-	bool has_normals;
-	uint32_t flags;
+	const struct anim_play_part *part = o;
+	const struct anim_play *p = ((const struct rig_ctx *)ctx)->play;
 
-	part->node = (int)get_u32(g);
-	part->skin = (int)get_u32(g);
-	part->at_root = get_u32(g);
-	part->first_vertex = get_u32(g);
-	part->vertex_count = get_u32(g);
-	flags = get_u32(g);
-	part->has_normals = flags & 1;
-	part->flat = (flags >> 1) & 1;
-	part->index_count = get_count(g, 4);
-	if (!g->ok || part->node < 0 || (size_t)part->node >= p->anim->node_count ||
-	    part->skin < -1 || (part->skin >= 0 && (uint32_t)part->skin >= p->skin_count) ||
-	    (part->skin >= 0 && !p->joints) || part->first_vertex > p->vertex_count ||
-	    part->vertex_count > p->vertex_count - part->first_vertex || part->index_count % 3)
-		return g->ok = false;
-	part->indices = get_array(g, part->index_count, sizeof(uint32_t));
-	for (uint32_t i = 0; g->ok && i < part->index_count; i++)
+	if (part->node < 0 || (size_t)part->node >= p->anim->node_count)
+		return "its node is not a node";
+	if (part->skin < -1 || (part->skin >= 0 && (uint32_t)part->skin >= p->skin_count) ||
+	    (part->skin >= 0 && !p->joints))
+		return "its skin is not a skin";
+	if (part->first_vertex > p->vertex_count ||
+	    part->vertex_count > p->vertex_count - part->first_vertex)
+		return "its vertices past the mesh's";
+	if (part->index_count % 3)
+		return "its indices are not triangles";
+	for (uint32_t i = 0; i < part->index_count; i++)
 		if (part->indices[i] < part->first_vertex ||
 		    part->indices[i] - part->first_vertex >= part->vertex_count)
-			g->ok = false;
-	part->target_count = get_u32(g);
-	deltas = (size_t)part->target_count * part->vertex_count * 3;
-	if (!g->ok || (part->vertex_count && part->target_count > g->left / 4 / part->vertex_count))
-		return g->ok = false;
-	has_normals = get_u32(g);
-	part->target_positions = get_array(g, deltas, sizeof(float));
-	if (has_normals)
-		part->target_normals = get_array(g, deltas, sizeof(float));
-	return g->ok && finite_all(part->target_positions, part->target_positions ? deltas : 0) &&
-	       finite_all(part->target_normals, part->target_normals ? deltas : 0);
+			return "an index past its vertices";
+	return NULL;
 }
 
-static bool get_play(struct get *g, struct anim_play *p, uint32_t vertex_count)
+static const char *play_check(void *o, void *ctx)
 {
-	size_t vc;
+	const struct anim_play *p = o;
 
-	get_bytes(g, p->center, 3, sizeof(double));
-	p->scale = get_f64(g);
-	p->vertex_count = get_u32(g);
-	vc = p->vertex_count;
-	if (!g->ok || p->vertex_count != vertex_count || !vc || vc > g->left / 24 ||
-	    !isfinite(p->scale) || !(p->scale > 0) || !isfinite(p->center[0]) ||
-	    !isfinite(p->center[1]) || !isfinite(p->center[2]))
-		return g->ok = false;
-	p->positions = get_array(g, vc * 3, sizeof(float));
-	p->normals = get_array(g, vc * 3, sizeof(float));
-	/* Joints a vertex: 4 a joint set (JOINTS_0, _1, ...), 4 without. */
-	p->influences = get_u32(g);
-	if (g->ok && p->influences) {
-		if (p->influences % 4 || p->influences > INFLUENCES_MAX ||
-		    p->influences > g->left / 6 / vc)
-			return g->ok = false;
-		p->joints = get_array(g, vc * p->influences, sizeof(uint16_t));
-		p->weights = get_array(g, vc * p->influences, sizeof(float));
+	if (!p->vertex_count || p->vertex_count != ((const struct rig_ctx *)ctx)->vertex_count)
+		return "its vertex count is not the mesh's";
+	if (!(p->scale > 0))
+		return "a fit of no scale";
+	if (p->influences < 4 || p->influences % 4 || !p->joints != !p->weights)
+		return "its joints a vertex are not whole sets of four";
+	return NULL;
+}
+
+static const struct mesh_nest_member sampler_members[] = {
+    MEMBER(anim_sampler, count, MESH_NEST_SIZE),
+    MEMBER(anim_sampler, width, MESH_NEST_INT),
+    MEMBER(anim_sampler, interp, MESH_NEST_ENUM, .n = ANIM_CUBICSPLINE),
+    MEMBER(anim_sampler, input, MESH_NEST_F32S, .count = sampler_inputs),
+    MEMBER(anim_sampler, output, MESH_NEST_F32S, .count = sampler_outputs),
+};
+static const struct mesh_nest sampler_table = TABLE(anim_sampler, sampler_members, sampler_check);
+
+static const struct mesh_nest_member channel_members[] = {
+    MEMBER(anim_channel, node, MESH_NEST_INT),
+    MEMBER(anim_channel, path, MESH_NEST_ENUM, .n = ANIM_WEIGHTS),
+    MEMBER(anim_channel, sampler, MESH_NEST_INT),
+};
+static const struct mesh_nest channel_table = TABLE(anim_channel, channel_members, NULL);
+
+static const struct mesh_nest_member clip_members[] = {
+    MEMBER(anim_clip, name, MESH_NEST_STRING),
+    MEMBER(anim_clip, sampler_count, MESH_NEST_SIZE),
+    MEMBER(anim_clip, samplers, MESH_NEST_STRUCTS, .count = clip_samplers, .sub = &sampler_table,
+	   .count_at = offsetof(struct anim_clip, sampler_count)),
+    MEMBER(anim_clip, channel_count, MESH_NEST_SIZE),
+    MEMBER(anim_clip, channels, MESH_NEST_STRUCTS, .count = clip_channels, .sub = &channel_table,
+	   .count_at = offsetof(struct anim_clip, channel_count)),
+    /* The last key of its samplers: made again (clip_check). */
+    MEMBER(anim_clip, duration, MESH_NEST_NONE),
+};
+static const struct mesh_nest clip_table = TABLE(anim_clip, clip_members, clip_check);
+
+static const struct mesh_nest_member node_members[] = {
+    MEMBER(anim_node, parent, MESH_NEST_INT),
+    MEMBER(anim_node, rest, MESH_NEST_FLOATS, .n = sizeof(struct anim_trs) / sizeof(float)),
+    MEMBER(anim_node, has_matrix, MESH_NEST_BOOL),
+    MEMBER(anim_node, matrix, MESH_NEST_FLOATS, .n = 16),
+    MEMBER(anim_node, weight_offset, MESH_NEST_SIZE),
+    MEMBER(anim_node, weight_count, MESH_NEST_SIZE),
+};
+static const struct mesh_nest node_table = TABLE(anim_node, node_members, node_check);
+
+static const struct mesh_nest_member anim_members[] = {
+    MEMBER(mesh_anim, node_count, MESH_NEST_SIZE),
+    MEMBER(mesh_anim, weight_total, MESH_NEST_SIZE),
+    MEMBER(mesh_anim, nodes, MESH_NEST_STRUCTS, .count = anim_nodes, .sub = &node_table,
+	   .count_at = offsetof(struct mesh_anim, node_count)),
+    /* Parents first: made again (anim_check). */
+    MEMBER(mesh_anim, order, MESH_NEST_NONE),
+    MEMBER(mesh_anim, rest_weights, MESH_NEST_F32S, .count = anim_weights),
+    MEMBER(mesh_anim, clip_count, MESH_NEST_SIZE),
+    MEMBER(mesh_anim, clips, MESH_NEST_STRUCTS, .count = anim_clips, .sub = &clip_table,
+	   .count_at = offsetof(struct mesh_anim, clip_count)),
+};
+static const struct mesh_nest anim_table = TABLE(mesh_anim, anim_members, anim_check);
+
+static const struct mesh_nest_member skin_members[] = {
+    MEMBER(anim_play_skin, joint_count, MESH_NEST_U32),
+    MEMBER(anim_play_skin, joints, MESH_NEST_INTS, .count = skin_joints),
+    MEMBER(anim_play_skin, inverse_bind, MESH_NEST_F32S, .count = skin_matrices),
+    /* Its place among every skin's matrices: anim_play_finish's. */
+    MEMBER(anim_play_skin, first, MESH_NEST_NONE),
+};
+static const struct mesh_nest skin_table = TABLE(anim_play_skin, skin_members, skin_check);
+
+static const struct mesh_nest_member part_members[] = {
+    MEMBER(anim_play_part, node, MESH_NEST_INT),
+    MEMBER(anim_play_part, skin, MESH_NEST_INT),
+    MEMBER(anim_play_part, at_root, MESH_NEST_BOOL),
+    MEMBER(anim_play_part, first_vertex, MESH_NEST_U32),
+    MEMBER(anim_play_part, vertex_count, MESH_NEST_U32),
+    MEMBER(anim_play_part, has_normals, MESH_NEST_BOOL),
+    MEMBER(anim_play_part, flat, MESH_NEST_BOOL),
+    MEMBER(anim_play_part, index_count, MESH_NEST_U32),
+    MEMBER(anim_play_part, indices, MESH_NEST_U32S, .count = part_indices),
+    MEMBER(anim_play_part, target_count, MESH_NEST_U32),
+    MEMBER(anim_play_part, target_positions, MESH_NEST_F32S, .count = part_deltas),
+    MEMBER(anim_play_part, target_normals, MESH_NEST_F32S, .count = part_deltas, .optional = true),
+};
+static const struct mesh_nest part_table = TABLE(anim_play_part, part_members, part_check);
+
+/* The play's scratch and GPU arrays are not stored: anim_play_finish and
+ * the upload (anim_play_gpu_prepare, anim_play_morph_prepare) make them. */
+static const struct mesh_nest_member play_members[] = {
+    MEMBER(anim_play, anim, MESH_NEST_STRUCT, .sub = &anim_table),
+    MEMBER(anim_play, center, MESH_NEST_DOUBLES, .n = 3),
+    MEMBER(anim_play, scale, MESH_NEST_DOUBLES, .n = 1),
+    MEMBER(anim_play, vertex_count, MESH_NEST_U32),
+    MEMBER(anim_play, positions, MESH_NEST_F32S, .count = play_xyz),
+    MEMBER(anim_play, normals, MESH_NEST_F32S, .count = play_xyz),
+    MEMBER(anim_play, influences, MESH_NEST_U32, .n = INFLUENCES_MAX),
+    MEMBER(anim_play, joints, MESH_NEST_U16S, .count = play_influences, .optional = true),
+    MEMBER(anim_play, weights, MESH_NEST_F32S, .count = play_influences, .optional = true),
+    MEMBER(anim_play, skin_count, MESH_NEST_U32),
+    MEMBER(anim_play, skins, MESH_NEST_STRUCTS, .count = play_skins, .sub = &skin_table,
+	   .count_at = offsetof(struct anim_play, skin_count), .count_u32 = true),
+    MEMBER(anim_play, part_count, MESH_NEST_U32),
+    MEMBER(anim_play, parts, MESH_NEST_STRUCTS, .count = play_parts, .sub = &part_table,
+	   .count_at = offsetof(struct anim_play, part_count), .count_u32 = true),
+};
+static const struct mesh_nest play_table = TABLE(anim_play, play_members, play_check);
+
+int mesh_cache_anim_encode(const struct anim_play *p, void **out, size_t *size)
+{
+	struct mesh_nest_out b = {NULL, 0, 0, false};
+
+	mesh_nest_put_u32(&b, ANIM_MAGIC);
+	mesh_nest_write(&b, &play_table, p);
+	if (b.failed) {
+		free(b.data);
+		return -ENOMEM;
 	}
-	p->influences = p->influences ? p->influences : 4;
-	p->skin_count = get_count(g, 4);
-	p->skins = calloc(p->skin_count + 1, sizeof(*p->skins));
-	if (!p->skins)
-		return g->ok = false;
-	for (uint32_t s = 0; g->ok && s < p->skin_count; s++)
-		get_skin(g, &p->skins[s], p->anim->node_count);
-	p->part_count = get_count(g, 36);
-	p->parts = calloc(p->part_count + 1, sizeof(*p->parts));
-	if (!p->parts)
-		return g->ok = false;
-	for (uint32_t i = 0; g->ok && i < p->part_count; i++)
-		get_part(g, p, &p->parts[i]);
-	return g->ok;
+	*out = b.data;
+	*size = b.size;
+	return 0;
 }
 
 int mesh_cache_anim_decode(const void *data, size_t size, uint32_t vertex_count,
 			   struct anim_play **out)
 {
-	struct get g = {data, size, true};
 	struct anim_play *p = calloc(1, sizeof(*p));
+	struct rig_ctx ctx = {p, vertex_count};
+	struct mesh_nest_in g = {data, size, true, &ctx, ""};
 	int ret = -ENOMEM;
 
 	*out = NULL;
-	if (!p || !(p->anim = calloc(1, sizeof(*p->anim))))
+	if (!p)
 		goto fail;
 	ret = -EBADMSG;
-	if (get_u32(&g) != ANIM_MAGIC || get_u32(&g) != ANIM_VERSION || !get_anim(&g, p->anim) ||
-	    !get_play(&g, p, vertex_count) || g.left)
+	if (mesh_nest_get_u32(&g) != ANIM_MAGIC && g.ok)
+		mesh_nest_fail(&g, "its first word", "not MKAN");
+	if (!g.ok || !mesh_nest_read(&g, &play_table, p))
 		goto fail;
+	if (g.left) {
+		mesh_nest_fail(&g, "its end", "bytes left over");
+		goto fail;
+	}
 	ret = anim_play_finish(p);
 	if (ret)
 		goto fail;
 	*out = p;
 	return 0;
 fail:
+	if (ret == -EBADMSG)
+		log_warn("a cache entry's live playback section is refused at %s%s",
+			 g.why[0] == ':' ? "the rig" : "", g.why);
 	anim_play_free(p);
 	return ret;
 }
@@ -517,8 +435,8 @@ static void *copy_of(const void *from, size_t size)
 
 int mesh_cache_unpack_live(const struct mesh_packed *p, struct mesh *out)
 {
-	float **to[MESH_ARRAYS] = {&out->positions, &out->normals, &out->uvs, &out->tangents,
-				   &out->colors,    &out->uv1};
+	float **to[MESH_ARRAYS] = {&out->positions, &out->normals, &out->uvs,
+				   &out->tangents,  &out->colors,  &out->uv1};
 	bool ok = true;
 
 	if (p->format != VERTEX_FLOAT32)
