@@ -21,9 +21,10 @@ static void reload_ready(void *ctx)
 	if (ret) {
 		k->counts.reload_failures++;
 		/* Loaded but not uploaded: the matcap's texture may be the new
-		 * one's, or none; the one shown is decoded again. */
+		 * one's, or none; a new set id makes the record stale, so the
+		 * image asked for is decoded again. */
 		if (k->reload.ret == 0)
-			k->shown_matcap = -1;
+			k->matcap_set_id++;
 		reload_job_release(&k->reload);
 		service_reloading(true);
 	} else {
@@ -34,6 +35,12 @@ static void reload_ready(void *ctx)
 		k->matcap_set_id++;
 		k->reload_applied = true;
 	}
+}
+
+void kiosk_matcap_settled(struct kiosk *k, int index)
+{
+	k->shown_matcap.set_id = k->matcap_set_id;
+	k->shown_matcap.index = index;
 }
 
 /* A file that fails keeps the previous texture and says so; the image is
@@ -50,7 +57,7 @@ static void matcap_ready(void *ctx)
 	}
 	if (j->ret == 0 && renderer_set_matcap(k->renderer, &j->image) == 0)
 		log_info("matcap %s", j->path);
-	k->shown_matcap = j->index;
+	kiosk_matcap_settled(k, j->index);
 	matcap_job_release(j);
 	kiosk_tell_app(k, APP_DISPLAY_BACK);
 }
@@ -100,12 +107,12 @@ static bool start_matcap(struct kiosk *k)
 	int want = app_state(k->app)->matcap;
 	const struct matcap_set *set = k->content->set;
 
-	if (!set || want == k->shown_matcap)
-		return false;
+	if (!set || (k->shown_matcap.set_id == k->matcap_set_id && k->shown_matcap.index == want))
+		return false; /* asked for and shown are one */
 	if (matcap_job_start(&k->matcap, k->worker, matcap_set_path(set, want), want,
 			     k->matcap_set_id) == 0)
 		return true;
-	k->shown_matcap = want; /* no memory: the previous texture stays */
+	kiosk_matcap_settled(k, want); /* no memory: the previous texture stays */
 	return false;
 }
 
@@ -159,7 +166,6 @@ static void rescan_matcaps(struct kiosk *k)
 		m.matcaps.count = matcap_set_count(k->content->set);
 		m.matcaps.shown = find_matcap(k->content->set, shown);
 		app_apply(k->app, &m);
-		k->shown_matcap = -1;
 		k->matcap_set_id++;
 	}
 	free(shown);
@@ -185,8 +191,8 @@ void kiosk_look_changed(void *ctx, unsigned what)
 		m.matcaps.count = k->content->set ? matcap_set_count(k->content->set) : 1;
 		m.matcaps.shown = 0;
 		app_apply(k->app, &m);
-		k->shown_matcap = 0;
 		k->matcap_set_id++;
+		kiosk_matcap_settled(k, 0);
 		kiosk_watch_matcaps(k);
 	}
 	if (what & CONTENT_OWN_BACKGROUND) {
