@@ -12,7 +12,7 @@
 UNIT_TESTS  := options mesh image gltf gltf_ext shading app button content service
 UNIT_TESTS  += tangent subdivide material mesh_cache
 UNIT_TESTS  += camera_math camera_proto camera_texture
-UNIT_TESTS  += stability fp16 lod
+UNIT_TESTS  += stability fp16 lod lod_threads
 UNIT_TESTS  += base_color draw_list material_light
 UNIT_TESTS  += drm gesture touch_decode schedule power cec backlight
 UNIT_TESTS  += touch_device app_touch
