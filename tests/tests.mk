@@ -10,7 +10,7 @@
 #   make bench         speed figures (printed, never asserted); make report
 
 UNIT_TESTS  := options mesh image gltf gltf_ext shading app button content service
-UNIT_TESTS  += tangent subdivide material mesh_cache
+UNIT_TESTS  += tangent subdivide material mesh_cache mesh_cache_content
 UNIT_TESTS  += camera_math camera_proto camera_texture
 UNIT_TESTS  += stability fp16 lod lod_threads
 UNIT_TESTS  += base_color draw_list material_light
