@@ -1,5 +1,6 @@
 /* The kiosk's content through the prepared-mesh cache: a model prepared
- * before is mapped, not parsed; a model that plays live starts from its
+ * before is mapped, not parsed, and one that is not is read once (keyed and
+ * parsed from the same bytes); a model that plays live starts from its
  * entry (its playback data read back), and a damaged playback section is
  * refused and written again. */
 #include "config/settings.h"
@@ -23,6 +24,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/inotify.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <cmocka.h>
@@ -93,6 +95,71 @@ static void content_maps_a_model_prepared_before(void **state)
 	assert_int_equal(s.cache_key.width, 640);
 	content_release(&s);
 	unsetenv("XDG_CACHE_HOME");
+	renderer_free(r);
+	/* The display is left open: see __lsan_default_suppressions. */
+}
+
+/* The opens of the file watched by fd (inotify) since the last call. */
+static int opens(int fd)
+{
+	char buf[4096] __attribute__((aligned(__alignof__(struct inotify_event))));
+	int count = 0;
+	ssize_t n;
+
+	while ((n = read(fd, buf, sizeof(buf))) > 0)
+		for (char *p = buf; p < buf + n;) {
+			const struct inotify_event *e = (const struct inotify_event *)(void *)p;
+
+			count += (e->mask & IN_OPEN) != 0;
+			p += sizeof(*e) + e->len;
+		}
+	return count;
+}
+
+/* A cache miss opens the model once: its key is of the bytes the parser
+ * then reads (it was opened twice, once to hash it for the key, once to
+ * parse it, and a file replaced in between was stored under the other's
+ * key). A hit opens it once too, to hash it, as before. The kernel counts
+ * the opens (inotify), not the code under test. */
+static void a_miss_reads_the_model_once(void **state)
+{
+	struct fixture *f = *state;
+	struct gltf_write_opts o = {.index_bytes = 4, .with_normals = 1, .bad_index = -1};
+	struct content_config c = {.lod_pixels = 4.0};
+	struct display_config dc = {.width = 16, .height = 16};
+	struct display *d = display_osmesa_new(&dc);
+	struct renderer *r;
+	struct content s;
+	char model[128];
+	int fd = inotify_init1(IN_NONBLOCK);
+
+	assert_non_null(d);
+	d->begin_frame(d);
+	r = renderer_new(&d->gl, NULL);
+	assert_non_null(r);
+	assert_true(fd >= 0);
+	snprintf(model, sizeof(model), "%s/sphere.glb", f->dir);
+	assert_int_equal(gltf_write(model, &f->mesh, &o), 0);
+	/* The closes too: inotify folds an event into the same one unread
+	 * before it, two opens in a row would read as one. */
+	assert_true(inotify_add_watch(fd, model, IN_OPEN | IN_CLOSE_NOWRITE) >= 0);
+	setenv("XDG_CACHE_HOME", f->dir, 1);
+	material_config_defaults(&c.material);
+	c.model = model;
+	assert_int_equal(content_load(&s, &c, true), 0);
+	assert_null(s.cached); /* a miss: parsed */
+	assert_non_null(s.mesh.positions);
+	assert_int_equal(opens(fd), 1);
+	assert_int_equal(content_prepare(&s, &c, 64, 64), 0);
+	assert_int_equal(content_upload(&s, r), 0);
+	content_release(&s); /* the entry written */
+	assert_int_equal(opens(fd), 0);
+	assert_int_equal(content_load(&s, &c, true), 0);
+	assert_non_null(s.cached); /* a hit: mapped */
+	assert_int_equal(opens(fd), 1);
+	content_release(&s);
+	unsetenv("XDG_CACHE_HOME");
+	close(fd);
 	renderer_free(r);
 	/* The display is left open: see __lsan_default_suppressions. */
 }
@@ -318,6 +385,7 @@ int main(void)
 {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test_setup_teardown(content_maps_a_model_prepared_before, setup, teardown),
+	    cmocka_unit_test_setup_teardown(a_miss_reads_the_model_once, setup, teardown),
 	    cmocka_unit_test_setup_teardown(a_live_model_starts_from_the_cache, setup, teardown),
 	    cmocka_unit_test_setup_teardown(a_damaged_live_entry_is_rebuilt, setup, teardown),
 	};
