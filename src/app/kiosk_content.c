@@ -2,8 +2,9 @@
  * asked (a reload, the matcap the app state wants, a matcap folder that
  * changed) becomes a job when the worker is idle, and a job done is
  * uploaded here, on the loop thread, where GL is. Model switches are the
- * worker's jobs too (kiosk_models.c). One job at a time: a reload first,
- * then a matcap, then a model, then the release of what was swapped out. */
+ * worker's jobs too (kiosk_models.c, started after the inputs). One job
+ * at a time: here, before the loop sleeps, a reload first, then a matcap,
+ * then the release of what was swapped out (content/worker.h). */
 #include "app/kiosk_state.h"
 #include "util/clock.h"
 #include "util/log.h"
