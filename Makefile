@@ -137,9 +137,12 @@ $(LIB_ARCHIVE): $(LIB_OBJS)
 $(BUILD):
 	mkdir -p $@
 
-# Three deep: scene/ has folders of its own (scene/gltf/*.d), whose
-# objects must rebuild when a header they include changes.
--include $(wildcard $(BUILD)/*.d $(BUILD)/*/*.d $(BUILD)/*/*/*.d)
+# Every tree's dependency files (the plain build, the sanitizers', make
+# quick's, the cross builds': each a folder with app/ in it), to the depth
+# of scene/gltf/*.d, so that an object rebuilds when a header it includes
+# changes. The cross sysroots beside them hold folders named *.d: left out.
+DEP_TREES := $(patsubst %/app,%,$(wildcard $(BUILD)/app $(BUILD)/*/app))
+-include $(filter-out $(BUILD)/sysroot-%,$(foreach t,$(DEP_TREES),$(wildcard $(t)/*.d $(t)/*/*.d $(t)/*/*/*.d)))
 
 # The matcap baker: regenerates matcaps/*.png byte for byte.
 $(BUILD)/bake: matcaps/bake.c $(BUILD)/render/bake.o $(BUILD)/util/image.o $(BUILD)/util/file.o $(BUILD)/util/log.o

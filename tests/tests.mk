@@ -10,15 +10,15 @@
 #   make bench         speed figures (printed, never asserted); make report
 
 UNIT_TESTS  := options mesh image gltf gltf_ext shading app button content service
-UNIT_TESTS  += tangent subdivide material mesh_cache
+UNIT_TESTS  += tangent subdivide material mesh_cache mesh_cache_content
 UNIT_TESTS  += camera_math camera_proto camera_texture
-UNIT_TESTS  += stability fp16 lod
+UNIT_TESTS  += stability fp16 lod lod_threads
 UNIT_TESTS  += base_color draw_list material_light
 UNIT_TESTS  += drm gesture touch_decode schedule power cec backlight
 UNIT_TESTS  += touch_device app_touch
 UNIT_TESTS  += model_list gltf_words settings_files
 UNIT_TESTS  += status poster file metrics background framing
-UNIT_TESTS  += kiosk_reload app_frame model_settings render_scale
+UNIT_TESTS  += kiosk_reload kiosk_matcap app_frame model_settings render_scale
 UNIT_TESTS  += anim anim_palette anim_play kiosk_anim anim_frames
 UNIT_TESTS  += caption import gltf_depth load_guard
 UNIT_TESTS  += ini stranger_settings normals

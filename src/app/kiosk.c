@@ -310,7 +310,7 @@ static int configure(struct kiosk *k, uint64_t now_ns)
 	else
 		k->app = app_new(&cfg, count, now_ns);
 	/* content_upload gave the renderer the set's first image. */
-	k->shown_matcap = 0;
+	kiosk_matcap_settled(k, 0);
 	kiosk_watch_matcaps(k);
 	if (!k->app)
 		return -ENOMEM;

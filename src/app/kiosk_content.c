@@ -2,8 +2,9 @@
  * asked (a reload, the matcap the app state wants, a matcap folder that
  * changed) becomes a job when the worker is idle, and a job done is
  * uploaded here, on the loop thread, where GL is. Model switches are the
- * worker's jobs too (kiosk_models.c). One job at a time: a reload first,
- * then a matcap, then a model, then the release of what was swapped out. */
+ * worker's jobs too (kiosk_models.c, started after the inputs). One job
+ * at a time: here, before the loop sleeps, a reload first, then a matcap,
+ * then the release of what was swapped out (content/worker.h). */
 #include "app/kiosk_state.h"
 #include "util/clock.h"
 #include "util/log.h"
@@ -21,9 +22,10 @@ static void reload_ready(void *ctx)
 	if (ret) {
 		k->counts.reload_failures++;
 		/* Loaded but not uploaded: the matcap's texture may be the new
-		 * one's, or none; the one shown is decoded again. */
+		 * one's, or none; a new set id makes the record stale, so the
+		 * image asked for is decoded again. */
 		if (k->reload.ret == 0)
-			k->shown_matcap = -1;
+			k->matcap_set_id++;
 		reload_job_release(&k->reload);
 		service_reloading(true);
 	} else {
@@ -34,6 +36,12 @@ static void reload_ready(void *ctx)
 		k->matcap_set_id++;
 		k->reload_applied = true;
 	}
+}
+
+void kiosk_matcap_settled(struct kiosk *k, int index)
+{
+	k->shown_matcap.set_id = k->matcap_set_id;
+	k->shown_matcap.index = index;
 }
 
 /* A file that fails keeps the previous texture and says so; the image is
@@ -50,7 +58,7 @@ static void matcap_ready(void *ctx)
 	}
 	if (j->ret == 0 && renderer_set_matcap(k->renderer, &j->image) == 0)
 		log_info("matcap %s", j->path);
-	k->shown_matcap = j->index;
+	kiosk_matcap_settled(k, j->index);
 	matcap_job_release(j);
 	kiosk_tell_app(k, APP_DISPLAY_BACK);
 }
@@ -100,12 +108,12 @@ static bool start_matcap(struct kiosk *k)
 	int want = app_state(k->app)->matcap;
 	const struct matcap_set *set = k->content->set;
 
-	if (!set || want == k->shown_matcap)
-		return false;
+	if (!set || (k->shown_matcap.set_id == k->matcap_set_id && k->shown_matcap.index == want))
+		return false; /* asked for and shown are one */
 	if (matcap_job_start(&k->matcap, k->worker, matcap_set_path(set, want), want,
 			     k->matcap_set_id) == 0)
 		return true;
-	k->shown_matcap = want; /* no memory: the previous texture stays */
+	kiosk_matcap_settled(k, want); /* no memory: the previous texture stays */
 	return false;
 }
 
@@ -159,7 +167,6 @@ static void rescan_matcaps(struct kiosk *k)
 		m.matcaps.count = matcap_set_count(k->content->set);
 		m.matcaps.shown = find_matcap(k->content->set, shown);
 		app_apply(k->app, &m);
-		k->shown_matcap = -1;
 		k->matcap_set_id++;
 	}
 	free(shown);
@@ -185,8 +192,8 @@ void kiosk_look_changed(void *ctx, unsigned what)
 		m.matcaps.count = k->content->set ? matcap_set_count(k->content->set) : 1;
 		m.matcaps.shown = 0;
 		app_apply(k->app, &m);
-		k->shown_matcap = 0;
 		k->matcap_set_id++;
+		kiosk_matcap_settled(k, 0);
 		kiosk_watch_matcaps(k);
 	}
 	if (what & CONTENT_OWN_BACKGROUND) {

@@ -82,8 +82,16 @@ struct kiosk {
 	struct input_source *inputs[KIOSK_MAX_INPUTS];
 	enum input_origin origins[KIOSK_MAX_INPUTS];
 	int input_count;
-	/* What the renderer holds now. */
-	int shown_matcap; /* the image in the texture, -1 for none */
+	/* What the renderer holds now. The matcap asked for is the app
+	 * state's (app_state()->matcap); the image in the texture is recorded
+	 * here only by kiosk_matcap_settled, where one was uploaded (or was
+	 * refused, and the previous stays: asked once, said once). A job runs
+	 * while the two differ. A set read again bumps matcap_set_id: what
+	 * was recorded of the old set no longer matches. */
+	struct {
+		unsigned set_id; /* matcap_set_id when it was recorded */
+		int index;	 /* into that set */
+	} shown_matcap;
 	bool shown_ortho;
 	enum shading_mode shown_mode;
 	long frames_drawn;
@@ -109,7 +117,7 @@ struct kiosk {
 	bool reload_applied;	  /* in this pass: the devices may be new */
 	long reload_frames;	  /* frames_drawn when the reload started */
 	struct matcap_job matcap; /* decoding the image asked for */
-	unsigned matcap_set_id;	  /* bumped when the set changes */
+	unsigned matcap_set_id;	  /* bumped when the set or the texture changes under it */
 	/* The loop thread's longest step, from a wake-up to the next sleep:
 	 * what a page flip or an input may wait for (the bench reads it). */
 	uint64_t woke_ns;
@@ -156,6 +164,9 @@ void kiosk_content_start_jobs(struct kiosk *k);
  * and tells systemd the reload is over (service_reloading). */
 bool kiosk_content_service(struct kiosk *k, const struct pollfd *fds);
 void kiosk_watch_matcaps(struct kiosk *k);
+/* The set's image `index` is in the texture (or refused: the previous
+ * stays): the one writer of k->shown_matcap. */
+void kiosk_matcap_settled(struct kiosk *k, int index);
 /* kiosk_models_parts.look_changed: a model's own matcaps or background
  * (or kiosk.ini's again) are on the GPU: the cycle, the watch and the
  * clear colour follow. */

@@ -21,10 +21,19 @@
 #define KNOT_TUBULAR 256
 #define KNOT_RADIAL  32
 
+/* The bytes of path, as gltf_read gives them; path NULL (the built-in
+ * knot) or none read: data NULL. */
+struct model_bytes {
+	uint8_t *data;
+	size_t size;
+};
+
 /* path NULL: the built-in knot. The live kiosk keeps what playback needs
- * in *play (posed at 0 s, fitted over its clip); NULL: a still. */
-static int load_model(const char *path, const struct content_config *o, struct mesh *mesh,
-		      struct anim_play **play)
+ * in *play (posed at 0 s, fitted over its clip); NULL: a still. b: the
+ * file's bytes, read by the caller to key the cache with them; the parse
+ * reads them, not the file again. */
+static int load_model(const char *path, const struct model_bytes *b, const struct content_config *o,
+		      struct mesh *mesh, struct anim_play **play)
 {
 	if (path) {
 		struct gltf_options g = {.textures = material_gltf_textures(&o->material),
@@ -41,7 +50,8 @@ static int load_model(const char *path, const struct content_config *o, struct m
 					 .loop = o->anim_loop,
 					 .normals = o->normals};
 
-		return gltf_load_options(path, &g, mesh);
+		return b->data ? gltf_load_bytes(path, b->data, b->size, &g, mesh)
+			       : gltf_load_options(path, &g, mesh);
 	}
 	return mesh_torus_knot(mesh, KNOT_TUBULAR, KNOT_RADIAL);
 }
@@ -81,21 +91,27 @@ const struct content_config *content_settings(const struct content *s,
 	return s->own ? s->own : c;
 }
 
-/* The model of one file, from the cache or parsed; strict: no knot. */
+/* The model of one file, from the cache or parsed; strict: no knot. The
+ * file is read once: the cache's key is of the bytes a miss then parses
+ * (a file replaced meanwhile cannot be stored under the old one's key). */
 static int load_mesh_file(struct content *s, const struct content_config *o, const char *path)
 {
+	struct model_bytes b = {NULL, 0};
 	int ret = own_settings(s, o, path);
 	unsigned warned;
 
 	if (ret)
 		return ret;
 	o = s->own;
-	if (o->anim_strict)
-		return load_model(path, o, &s->mesh, &s->play);
-	if (!content_cache_lookup(s, o, path))
-		return 0;
+	if (!path || o->anim_strict) /* the knot, or never cached */
+		return load_model(path, &b, o, &s->mesh, &s->play);
+	ret = gltf_read(path, &b.data, &b.size);
+	if (ret)
+		return ret;
+	if (!content_cache_lookup(s, o, path, b.data, b.size))
+		goto out;
 	warned = log_warnings(); /* the parse's (a damaged entry is one) */
-	ret = load_model(path, o, &s->mesh, &s->play);
+	ret = load_model(path, &b, o, &s->mesh, &s->play);
 	/* A model that warned (a clip it lacks, animations it cannot read) is
 	 * not cached: a start from the cache would show it as it falls back
 	 * and no longer say why. */
@@ -109,6 +125,8 @@ static int load_mesh_file(struct content *s, const struct content_config *o, con
 		log_info("%s: not cached: it has material variants", path);
 		s->cacheable = false;
 	}
+out:
+	free(b.data);
 	return ret;
 }
 
@@ -382,6 +400,22 @@ static void content_frame(struct content *s, const struct content_config *o, int
 		  s->zoom, f.start_x, f.start_y, f.turn_x, f.turn_y);
 }
 
+/* The model of an entry prepared for another display, parsed again: its
+ * key's content follows the bytes parsed now, so the entry written after
+ * is of what was parsed, whatever the file became since the lookup. */
+static int reload_model(struct content *s, const struct content_config *o)
+{
+	struct model_bytes b = {NULL, 0};
+	int ret = gltf_read(s->model_path, &b.data, &b.size);
+
+	if (!ret) {
+		s->cache_key.content = mesh_cache_hash_model_bytes(s->model_path, b.data, b.size);
+		ret = load_model(s->model_path, &b, o, &s->mesh, &s->play);
+	}
+	free(b.data);
+	return ret;
+}
+
 static int prepare_mesh(struct content *s, const struct content_config *o, int width, int height)
 {
 	bool displaced = s->material.features & MATERIAL_DISPLACEMENT;
@@ -402,7 +436,7 @@ static int prepare_mesh(struct content *s, const struct content_config *o, int w
 		s->cached = NULL;
 		mesh_release(&s->mesh);
 		content_play_release(s);
-		ret = load_model(s->model_path, o, &s->mesh, &s->play);
+		ret = reload_model(s, o);
 	}
 	if (!ret)
 		ret = material_prepare_mesh(&s->material, &s->mesh, width, height);

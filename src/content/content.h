@@ -150,7 +150,8 @@ int content_load_matcap(const struct content_config *c, bool strict, struct cont
  * written); whether it was prepared for this display; the prepared mesh
  * packed for the cache; stored once uploaded; read back when a shell is
  * uploaded again. */
-int content_cache_lookup(struct content *s, const struct content_config *c, const char *path);
+int content_cache_lookup(struct content *s, const struct content_config *c, const char *path,
+			 const void *data, size_t size);
 bool content_cache_fits(const struct content *s, int width, int height);
 void content_cache_pack(struct content *s, int width, int height);
 void content_cache_store(struct content *s);

@@ -38,11 +38,12 @@ static int content_cache_live(struct content *s, const char *path)
 	return ret;
 }
 
-int content_cache_lookup(struct content *s, const struct content_config *c, const char *path)
+int content_cache_lookup(struct content *s, const struct content_config *c, const char *path,
+			 const void *data, size_t size)
 {
 	char dir[PATH_MAX];
-	int ret =
-	    mesh_cache_scene_key(path, c->lod_pixels, c->normals, &c->material, &s->cache_key);
+	int ret = mesh_cache_scene_key(path, data, size, c->lod_pixels, c->normals, &c->material,
+				       &s->cache_key);
 
 	/* Another of the file's scenes is another mesh. */
 	if (!ret && c->model_scene)

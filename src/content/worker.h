@@ -1,12 +1,24 @@
-/* The one content worker: every slow step between a file on disk and a
- * draw (parse, decode, simplify, prepare, the cache write and its fsync)
- * runs here, one job at a time, so the loop thread only uploads a finished
- * result, draws and flips. A reload, a model switch, a model that arrived
- * in the watched folder and a matcap change are all jobs of this worker:
- * one load path. The thread makes no GL call. It says a job is done
- * through an eventfd the live loop polls; the loop then calls
- * worker_finish, which joins the thread (everything the job wrote is then
- * the loop's) and calls the job's done() on the loop thread. */
+/* The content worker: every slow step between a file on disk and a draw
+ * (parse, decode, simplify, prepare, the cache write and its fsync) runs
+ * here, so the loop thread only uploads a finished result, draws and
+ * flips. A reload, a model switch, a model that arrived in the watched
+ * folder and a matcap change are all jobs of this worker: one load path.
+ *
+ * What it is, exactly: one job at a time, each on a thread of its own.
+ * worker_start creates a thread (pthread_create, WORKER_STACK_SIZE) that
+ * releases what was retired, runs the job and writes the eventfd the live
+ * loop polls; worker_finish joins it (everything the job wrote is then the
+ * loop's: the join orders it, with no lock) and calls the job's done() on
+ * the loop thread. There is no queue and no long-lived thread: a job that
+ * cannot start (-EBUSY) is asked again by its owner on a later pass. Nor
+ * is there a priority here: the order is the live loop's calls
+ * (src/app/kiosk.c, loop_once). After poll() a job done is finished, then
+ * a model switch or arrival starts at once if the worker is idle
+ * (kiosk_models_service, after the inputs); before the next sleep, if it
+ * is still idle, a reload, else the matcap asked for, else an empty job
+ * that only releases what was retired (kiosk_content_start_jobs). So a
+ * model asked for while a job runs goes before a reload or a matcap asked
+ * meanwhile. The thread makes no GL call. */
 #ifndef MK_WORKER_H
 #define MK_WORKER_H
 

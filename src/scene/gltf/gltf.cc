@@ -149,23 +149,35 @@ extern "C" int gltf_load_memory(const char *name, const uint8_t *data, size_t si
 }
 
 // Read, not mapped (util/file.h), and not zero-filled first.
-extern "C" int gltf_load_options(const char *path, const struct gltf_options *o, struct mesh *out)
+extern "C" int gltf_read(const char *path, uint8_t **data, size_t *size)
 {
-	std::string dir = path;
-	size_t slash = dir.rfind('/');
-	dir = slash == std::string::npos ? "" : dir.substr(0, slash);
-	uint8_t *data;
-	size_t size;
-	std::memset(out, 0, sizeof(*out));
-	int ret = file_read_all(path, GLTF_MAX_FILE, &data, &size);
+	int ret = file_read_all(path, GLTF_MAX_FILE, data, size);
 	if (ret)
 		log_err("%s: %s", gltf_ext::escape(path).c_str(),
 			ret == -EFBIG ? "larger than the limit (512 MiB)"
 			: file_refusal(ret)
 			    ? file_refusal(ret)
 			    : ("cannot open: " + std::string(std::strerror(-ret))).c_str());
-	else
-		ret = gltf_load_memory_options(path, data, size, dir.c_str(), o, out);
+	return ret;
+}
+
+extern "C" int gltf_load_bytes(const char *path, const uint8_t *data, size_t size,
+			       const struct gltf_options *o, struct mesh *out)
+{
+	std::string dir = path;
+	size_t slash = dir.rfind('/');
+	dir = slash == std::string::npos ? "" : dir.substr(0, slash);
+	return gltf_load_memory_options(path, data, size, dir.c_str(), o, out);
+}
+
+extern "C" int gltf_load_options(const char *path, const struct gltf_options *o, struct mesh *out)
+{
+	uint8_t *data = nullptr;
+	size_t size;
+	std::memset(out, 0, sizeof(*out));
+	int ret = gltf_read(path, &data, &size);
+	if (!ret)
+		ret = gltf_load_bytes(path, data, size, o, out);
 	std::free(data);
 	return ret;
 }

@@ -33,6 +33,15 @@ int gltf_load_textures(const char *path, unsigned textures, struct mesh *out);
 /* The same with every option. */
 int gltf_load_options(const char *path, const struct gltf_options *o, struct mesh *out);
 
+/* The model file's bytes (at most GLTF_MAX_FILE, read as gltf_load does;
+ * *data malloc'd, the caller frees it), or a negative errno code after one
+ * line naming the file and the fault. */
+int gltf_read(const char *path, uint8_t **data, size_t *size);
+/* gltf_load_options of the bytes gltf_read gave: the caller that keys the
+ * cache with them parses what it keyed, with the file read once. */
+int gltf_load_bytes(const char *path, const uint8_t *data, size_t size,
+		    const struct gltf_options *o, struct mesh *out);
+
 /* The same from memory (for the fuzzer); external buffers resolve in dir. */
 int gltf_load_memory(const char *name, const uint8_t *data, size_t size, const char *dir,
 		     struct mesh *out);

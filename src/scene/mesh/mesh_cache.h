@@ -35,14 +35,19 @@ uint64_t mesh_cache_hash(const void *data, size_t size, uint64_t seed);
 /* The model file's bytes and, for a .gltf, those of every file its "uri"s
  * name beside it (buffers, images). Returns 0 or a negative errno code. */
 int mesh_cache_hash_model(const char *path, uint64_t *out);
+/* The same of the model's bytes, read by the caller (the parser reads the
+ * same bytes: the model is read once, and what is parsed is what was
+ * keyed); path names it and the folder its "uri"s are in. */
+uint64_t mesh_cache_hash_model_bytes(const char *path, const void *data, size_t size);
 
-/* The key of a scene showing model with these settings, for any display
- * (width, height 0). Returns 0, -ENOENT for a scene the cache does not
- * keep (one its settings reshape beyond the model: src/scene/mesh/mesh_cache_key.c),
- * or another negative errno code when the model cannot be read. normals:
- * [scene] normals (enum mesh_normals). */
-int mesh_cache_scene_key(const char *model, double lod_pixels, int normals,
-			 const struct material_config *m, struct mesh_cache_key *out);
+/* The key of a scene showing model (its size bytes at data, as read) with
+ * these settings, for any display (width, height 0). Returns 0, -ENOENT
+ * for a scene the cache does not keep (one its settings reshape beyond the
+ * model: src/scene/mesh/mesh_cache_key.c), or another negative errno code
+ * when the program cannot be read. normals: [scene] normals (enum
+ * mesh_normals). */
+int mesh_cache_scene_key(const char *model, const void *data, size_t size, double lod_pixels,
+			 int normals, const struct material_config *m, struct mesh_cache_key *out);
 
 /* $CACHE_DIRECTORY (systemd's CacheDirectory=, the first when it lists
  * several), else $XDG_CACHE_HOME/matcap-kiosk, else ~/.cache/matcap-kiosk.

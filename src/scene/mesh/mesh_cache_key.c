@@ -209,6 +209,24 @@ int mesh_cache_hash_model(const char *path, uint64_t *out)
 	return ret;
 }
 
+/* The same key as mesh_cache_hash_model's, from bytes already read: the
+ * whole file hashed at once is what its pieces give (PIECE is a multiple
+ * of the stripe), and the JSON is a slice of it, as read_json reads it. */
+uint64_t mesh_cache_hash_model_bytes(const char *path, const void *data, size_t size)
+{
+	const unsigned char *b = data;
+	const char *json = data;
+	size_t len = size;
+	uint32_t n;
+
+	if (size >= 20 && !memcmp(b, "glTF", 4)) {
+		memcpy(&n, b + 12, 4);
+		json = (const char *)b + 20;
+		len = n <= size - 20 ? n : size - 20;
+	}
+	return hash_references(path, json, len, mesh_cache_hash(data, size, KEY_VERSION));
+}
+
 int mesh_cache_dir(char *buf, size_t size)
 {
 	const char *systemd = getenv("CACHE_DIRECTORY"), *xdg = getenv("XDG_CACHE_HOME");
@@ -291,8 +309,8 @@ static int build_id_note(struct dl_phdr_info *info, size_t size, void *data)
  * is part of the key: a rebuilt kiosk (another loader, another
  * simplifier) prepares again rather than trust what an older one wrote;
  * without a build ID, the program's bytes are. */
-int mesh_cache_scene_key(const char *model, double lod_pixels, int normals,
-			 const struct material_config *m, struct mesh_cache_key *out)
+int mesh_cache_scene_key(const char *model, const void *data, size_t size, double lod_pixels,
+			 int normals, const struct material_config *m, struct mesh_cache_key *out)
 {
 	/* normals: [scene] normals splits (flat) or averages (smooth) a
 	 * primitive's vertices, another mesh. */
@@ -308,7 +326,7 @@ int mesh_cache_scene_key(const char *model, double lod_pixels, int normals,
 	if (!program)
 		ret = mesh_cache_hash_model("/proc/self/exe", &program);
 	if (!ret)
-		ret = mesh_cache_hash_model(model, &out->content);
+		out->content = mesh_cache_hash_model_bytes(model, data, size);
 	out->settings = mesh_cache_hash(values, sizeof(values), program);
 	return ret;
 }
