@@ -263,6 +263,25 @@ bool gltf_read_anim(const tinygltf::Model &m, struct mesh_anim **out, std::strin
 	return true;
 }
 
+bool gltf_read_rig(const tinygltf::Model &m, struct mesh_anim **out, std::string *err)
+{
+	struct mesh_anim *a = (struct mesh_anim *)std::calloc(1, sizeof(*a));
+	*out = nullptr;
+	if (!a)
+		throw std::bad_alloc();
+	try {
+		if (!read_nodes(m, a, err)) {
+			mesh_anim_free(a);
+			return false;
+		}
+	} catch (const std::bad_alloc &) {
+		mesh_anim_free(a);
+		throw;
+	}
+	*out = a;
+	return true;
+}
+
 namespace
 {
 

@@ -14,6 +14,12 @@
 // what was expected when an animation is malformed.
 bool gltf_read_anim(const tinygltf::Model &m, struct mesh_anim **out, std::string *err);
 
+// The nodes alone, as they stand in m (their rest pose: a still's, once
+// gltf_pose_nodes wrote its clip's pose into them), without any clip: the
+// rig that poses a still (gltf_play_still). false and err for a cycle
+// of children or a node with two parents.
+bool gltf_read_rig(const tinygltf::Model &m, struct mesh_anim **out, std::string *err);
+
 // With o->pose, the clips o->animation names, at o->time, written into the
 // nodes' translation, rotation, scale and weights (a is the model's, read
 // by gltf_read_anim; NULL: nothing to pose). false, err naming the setting,

@@ -8,6 +8,7 @@
 #include "scene/gltf/gltf_mesh.h"
 #include "scene/gltf/gltf_anim.h"
 #include "scene/gltf/gltf_fit.h"
+#include "scene/gltf/gltf_play.h"
 #include "scene/gltf/gltf_flat.h"
 #include "util/log.h"
 #include "util/math3d.h"
@@ -480,17 +481,14 @@ bool add_primitive(Builder &b, const tinygltf::Model &m, const tinygltf::Primiti
 
 typedef gltf_ext::Pose Pose;
 
-bool add_mesh(Builder &b, const tinygltf::Model &m, size_t node, const Mat4 world, const Pose &pose)
+bool add_mesh(Builder &b, const tinygltf::Model &m, size_t node, const Mat4 world)
 {
 	const tinygltf::Node &n = m.nodes[node];
 	if ((size_t)n.mesh >= m.meshes.size())
 		return fail(b, "nodes[" + std::to_string(node) + "].mesh",
 			    "mesh " + std::to_string(n.mesh) + " does not exist");
 	const tinygltf::Mesh &mesh = m.meshes[(size_t)n.mesh];
-	// A skinned mesh's copy holds world positions already (the node's
-	// own transform does not apply to it, as the spec says); name the
-	// mesh as the file does.
-	int shown = pose.mesh_source[(size_t)n.mesh];
+	int shown = n.mesh;
 	for (size_t i = 0; i < mesh.primitives.size(); i++) {
 		size_t before = b.ranges.size();
 		if (!add_primitive(b, m, mesh.primitives[i], world,
@@ -527,8 +525,10 @@ bool add_scene(Builder &b, const tinygltf::Model &m, const std::vector<int> &roo
 		size_t i = stack.back();
 		stack.pop_back();
 		const tinygltf::Node &n = m.nodes[i];
-		if (n.mesh >= 0 &&
-		    !add_mesh(b, m, i, n.skin >= 0 ? identity : pose.worlds[i].m, pose))
+		// A skinned node's mesh is placed as bound: the node's own
+		// transform does not apply to it, as the spec says, and
+		// gltf_play_still poses it.
+		if (n.mesh >= 0 && !add_mesh(b, m, i, n.skin >= 0 ? identity : pose.worlds[i].m))
 			return false;
 		for (size_t k = n.children.size(); k-- > 0;)
 			stack.push_back((size_t)n.children[k]);
@@ -663,9 +663,11 @@ int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_opti
 					roots.push_back((int)i);
 		add_scene(b, m, roots, "scenes[" + std::to_string(scene) + "]", pose);
 	}
+	std::vector<GltfPlayPart> parts = play_parts(b);
+	if (b.error.empty()) // skins and morphs, by live playback's engine
+		gltf_play_still(m, parts, b.indices, &b.positions, &b.normals, &b.error);
 	if (b.error.empty() && orig && posed && !b.ranges.empty())
-		play.reset(
-		    gltf_fit_clip(name, *orig, play_parts(b), b.indices, o, b.positions, &fit));
+		play.reset(gltf_fit_clip(name, *orig, parts, b.indices, o, b.positions, &fit));
 	ret = b.error.empty() ? finish_mesh(b, m, out, fit) : -EINVAL;
 	std::string shown = gltf_ext::escape(name);
 	if (ret == -EINVAL && !b.error.empty())

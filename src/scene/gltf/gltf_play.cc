@@ -218,17 +218,12 @@ bool fill_part(const tinygltf::Model &m, const GltfPlayPart &g,
 	return targets(m, pr, g, part, err);
 }
 
-} // namespace
-
-bool gltf_play_build(tinygltf::Model &m, const std::vector<GltfPlayPart> &parts,
-		     const std::vector<uint32_t> &indices, const double center[3], double scale,
-		     struct anim_play **out, std::string *err)
+// p (its anim read) filled for the builder's parts from m, decoded and
+// dense: each part's own vertices, skins and targets, and the scratch.
+bool fill(const tinygltf::Model &m, const std::vector<GltfPlayPart> &parts,
+	  const std::vector<uint32_t> &indices, const double center[3], double scale,
+	  struct anim_play *p, std::string *err)
 {
-	Play p(alloc<struct anim_play>(1));
-	*out = nullptr;
-	if (!gltf_ext::decode_meshopt(m, err) || !gltf_ext::decode_draco(m, err) ||
-	    !gltf_ext::make_dense(m, err) || !gltf_read_anim(m, &p->anim, err) || !p->anim)
-		return false;
 	for (const GltfPlayPart &g : parts)
 		p->vertex_count = std::max(p->vertex_count, g.first_vertex + g.vertex_count);
 	std::memcpy(p->center, center, sizeof(p->center));
@@ -246,13 +241,75 @@ bool gltf_play_build(tinygltf::Model &m, const std::vector<GltfPlayPart> &parts,
 		    p->influences,
 		    4 * joint_sets(m.meshes[(size_t)g.mesh].primitives[(size_t)g.primitive]));
 	for (const GltfPlayPart &g : parts)
-		if (!fill_part(m, g, indices, p.get(), &slots, err)) {
+		if (!fill_part(m, g, indices, p, &slots, err)) {
 			*err = "meshes[" + std::to_string(g.mesh) + "].primitives[" +
 			       std::to_string(g.primitive) + "]: " + *err;
 			return false;
 		}
-	if (anim_play_finish(p.get()))
+	if (anim_play_finish(p))
 		throw std::bad_alloc();
+	return true;
+}
+
+// Whether the still takes a part's vertices from the engine: a skinned
+// part, or one whose targets the pose weighs; any other stays as the
+// builder placed it (its node's world in doubles).
+bool moved(const struct anim_play *p, const struct anim_play_part &part)
+{
+	const struct anim_node &n = p->anim->nodes[part.node];
+	bool weighed = false;
+	for (size_t t = 0; t < part.target_count && t < n.weight_count; t++)
+		weighed |= p->anim->rest_weights[n.weight_offset + t] != 0.0f;
+	return part.skin >= 0 || weighed;
+}
+
+} // namespace
+
+bool gltf_play_build(tinygltf::Model &m, const std::vector<GltfPlayPart> &parts,
+		     const std::vector<uint32_t> &indices, const double center[3], double scale,
+		     struct anim_play **out, std::string *err)
+{
+	Play p(alloc<struct anim_play>(1));
+	*out = nullptr;
+	if (!gltf_ext::decode_meshopt(m, err) || !gltf_ext::decode_draco(m, err) ||
+	    !gltf_ext::make_dense(m, err) || !gltf_read_anim(m, &p->anim, err) || !p->anim ||
+	    !fill(m, parts, indices, center, scale, p.get(), err))
+		return false;
 	*out = p.release();
+	return true;
+}
+
+bool gltf_play_still(const tinygltf::Model &m, const std::vector<GltfPlayPart> &parts,
+		     const std::vector<uint32_t> &indices, std::vector<double> *positions,
+		     std::vector<float> *normals, std::string *err)
+{
+	static const double origin[3] = {0, 0, 0};
+	bool any = false;
+	for (const GltfPlayPart &g : parts)
+		any |= m.nodes[(size_t)g.node].skin >= 0 ||
+		       !m.meshes[(size_t)g.mesh].primitives[(size_t)g.primitive].targets.empty();
+	if (!any)
+		return true; // nothing the engine would move: no cost
+	Play p(alloc<struct anim_play>(1));
+	if (!gltf_read_rig(m, &p->anim, err) || !fill(m, parts, indices, origin, 1, p.get(), err))
+		return false;
+	std::unique_ptr<struct anim_pose, void (*)(struct anim_pose *)> pose(anim_pose_new(p->anim),
+									     anim_pose_free);
+	std::vector<float> pos((size_t)p->vertex_count * 3), nrm(pos.size());
+	if (!pose)
+		throw std::bad_alloc();
+	anim_play_pose(p.get(), pose.get(), pos.data(), nrm.data());
+	for (uint32_t i = 0; i < p->part_count; i++) {
+		const struct anim_play_part &part = p->parts[i];
+		size_t at = (size_t)part.first_vertex * 3, n = (size_t)part.vertex_count * 3;
+		if (!moved(p.get(), part))
+			continue;
+		std::copy(pos.begin() + (std::ptrdiff_t)at, pos.begin() + (std::ptrdiff_t)(at + n),
+			  positions->begin() + (std::ptrdiff_t)at);
+		if (part.has_normals)
+			std::copy(nrm.begin() + (std::ptrdiff_t)at,
+				  nrm.begin() + (std::ptrdiff_t)(at + n),
+				  normals->begin() + (std::ptrdiff_t)at);
+	}
 	return true;
 }
