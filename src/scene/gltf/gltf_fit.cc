@@ -147,7 +147,7 @@ using Play = std::unique_ptr<struct anim_play, PlayFree>;
 
 } // namespace
 
-struct anim_play *gltf_fit_clip(const char *name, tinygltf::Model &orig,
+struct anim_play *gltf_fit_clip(const char *name, const tinygltf::Model &m, struct mesh_anim *anim,
 				const std::vector<GltfPlayPart> &parts,
 				const std::vector<uint32_t> &indices, const struct gltf_options *o,
 				const std::vector<double> &still, GltfFit *fit)
@@ -155,7 +155,7 @@ struct anim_play *gltf_fit_clip(const char *name, tinygltf::Model &orig,
 	static const double origin[3] = {0, 0, 0};
 	std::string err;
 	struct anim_play *built = nullptr;
-	gltf_play_build(orig, parts, indices, origin, 1, &built, &err);
+	gltf_play_build(m, anim, parts, indices, origin, 1, &built, &err);
 	Play p(built);
 	if (!p) {
 		log_warn("%s: %s; %s", gltf_ext::escape(name).c_str(),

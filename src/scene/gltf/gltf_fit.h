@@ -26,12 +26,13 @@ struct GltfFit {
 bool gltf_clip_fit(struct anim_play *play, const struct gltf_options *o,
 		   const std::vector<double> &still, GltfFit *fit);
 
-// The fit above with live playback's engine built once from the file as
-// parsed (orig: no pose baked in) for the builder's parts and indices;
-// the engine returned, fitted alike, when o->play asks for it (else
-// NULL). An engine that cannot be built is a warning naming the file
-// (name) and why: the still is fitted to its own pose, and shows still.
-struct anim_play *gltf_fit_clip(const char *name, tinygltf::Model &orig,
+// The fit above with live playback's engine built once (gltf_play_build:
+// m prepared, anim read before the still's pose was written into it,
+// taken) for the builder's parts and indices; the engine returned, fitted
+// alike, when o->play asks for it (else NULL). An engine that cannot be
+// built is a warning naming the file (name) and why: the still is fitted
+// to its own pose, and shows still.
+struct anim_play *gltf_fit_clip(const char *name, const tinygltf::Model &m, struct mesh_anim *anim,
 				const std::vector<GltfPlayPart> &parts,
 				const std::vector<uint32_t> &indices, const struct gltf_options *o,
 				const std::vector<double> &still, GltfFit *fit);

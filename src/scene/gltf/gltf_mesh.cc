@@ -646,11 +646,17 @@ int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_opti
 	b.want_colors = (o->textures & GLTF_TEXTURE_BASE_COLOR) != 0;
 	b.textures = o->textures;
 	b.normals_mode = o->normals;
-	std::unique_ptr<tinygltf::Model> orig; // before a pose is baked into it
+	// The clips as the file has them, before a still's pose is written
+	// into its nodes: the fit's and live playback's (a malformed one:
+	// gltf_anim_load says so).
+	std::unique_ptr<struct mesh_anim, void (*)(struct mesh_anim *)> clips(nullptr,
+									      mesh_anim_free);
+	std::string unused;
+	struct mesh_anim *read = nullptr;
 	if (o->play)
 		*o->play = nullptr;
-	if (o->pose && !m.animations.empty())
-		orig.reset(new tinygltf::Model(m));
+	if (o->pose && gltf_read_anim(m, &read, &unused))
+		clips.reset(read);
 	if (gltf_anim_load(name, m, o, &b.error, &posed) &&
 	    gltf_ext::prepare(m, name, &pose, &b.error) &&
 	    gltf_ext::choose_scene(m, o->scene, o->scene_setting, &scene, &b.error)) {
@@ -666,8 +672,9 @@ int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_opti
 	std::vector<GltfPlayPart> parts = play_parts(b);
 	if (b.error.empty()) // skins and morphs, by live playback's engine
 		gltf_play_still(m, parts, b.indices, &b.positions, &b.normals, &b.error);
-	if (b.error.empty() && orig && posed && !b.ranges.empty())
-		play.reset(gltf_fit_clip(name, *orig, parts, b.indices, o, b.positions, &fit));
+	if (b.error.empty() && clips && posed && !b.ranges.empty())
+		play.reset(gltf_fit_clip(name, m, clips.release(), parts, b.indices, o, b.positions,
+					 &fit));
 	ret = b.error.empty() ? finish_mesh(b, m, out, fit) : -EINVAL;
 	std::string shown = gltf_ext::escape(name);
 	if (ret == -EINVAL && !b.error.empty())

@@ -265,15 +265,20 @@ bool moved(const struct anim_play *p, const struct anim_play_part &part)
 
 } // namespace
 
-bool gltf_play_build(tinygltf::Model &m, const std::vector<GltfPlayPart> &parts,
-		     const std::vector<uint32_t> &indices, const double center[3], double scale,
-		     struct anim_play **out, std::string *err)
+bool gltf_play_build(const tinygltf::Model &m, struct mesh_anim *anim,
+		     const std::vector<GltfPlayPart> &parts, const std::vector<uint32_t> &indices,
+		     const double center[3], double scale, struct anim_play **out, std::string *err)
 {
-	Play p(alloc<struct anim_play>(1));
+	Play p(nullptr);
 	*out = nullptr;
-	if (!gltf_ext::decode_meshopt(m, err) || !gltf_ext::decode_draco(m, err) ||
-	    !gltf_ext::make_dense(m, err) || !gltf_read_anim(m, &p->anim, err) || !p->anim ||
-	    !fill(m, parts, indices, center, scale, p.get(), err))
+	try {
+		p.reset(alloc<struct anim_play>(1));
+	} catch (const std::bad_alloc &) {
+		mesh_anim_free(anim);
+		throw;
+	}
+	p->anim = anim;
+	if (!fill(m, parts, indices, center, scale, p.get(), err))
 		return false;
 	*out = p.release();
 	return true;
