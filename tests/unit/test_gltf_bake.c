@@ -8,11 +8,13 @@
  * every still of the clip: the engine is fitted as the still is. */
 #include "scene/anim/anim_play.h"
 #include "scene/gltf/gltf.h"
+#include "util/log.h"
 #include "gltf_morph.h"
 
 #include <float.h>
 #include <math.h>
 #include <setjmp.h>
+#include <stdbool.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdio.h>
@@ -105,7 +107,7 @@ static const char *const accessors[] = {
  * 0's target. */
 static const char head[] =
     "{\"asset\":{\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{\"nodes\":[0,1]}],"
-    "\"nodes\":[{\"mesh\":0,\"skin\":0},{\"children\":[2],\"rotation\":[0.1305262,0,0,"
+    "\"nodes\":[{\"mesh\":0,\"skin\":%d},{\"children\":[2],\"rotation\":[0.1305262,0,0,"
     "0.9914449],\"translation\":[0.5,0,0]},{\"translation\":[0,0.1,0]}],"
     "\"skins\":[{\"joints\":[1,2]}],"
     "\"meshes\":[{\"weights\":[0.5],\"primitives\":[{\"attributes\":{\"POSITION\":0,"
@@ -115,8 +117,10 @@ static const char head[] =
     "\"output\":9}],\"channels\":[{\"sampler\":0,\"target\":{\"node\":2,\"path\":"
     "\"rotation\"}},{\"sampler\":1,\"target\":{\"node\":0,\"path\":\"weights\"}}]}],";
 
-/* The tube as a GLB at path: 0 or -1. */
-static int tube_write(const char *path)
+/* The tube as a GLB at path, node 0 showing it with skin `skin` (0: the
+ * file's one); bad: vertex AROUND + 3 weighs joint 5 of the skin's two.
+ * 0 or -1. */
+static int tube_write(const char *path, int skin, bool bad)
 {
 	static const size_t views[][2] = {VIEW(pos), VIEW(nrm),	 VIEW(joints), VIEW(weights),
 					  VIEW(idx), VIEW(dpos), VIEW(dnrm),   VIEW(times),
@@ -128,10 +132,11 @@ static int tube_write(const char *path)
 	size_t n;
 
 	tube_fill(&t);
-	n = (size_t)snprintf(json, sizeof(json),
-			     "%s\"buffers\":[{\"byteLength\":%zu}],"
-			     "\"bufferViews\":[",
-			     head, sizeof(t));
+	if (bad)
+		t.joints[AROUND + 3][1] = 5;
+	n = (size_t)snprintf(json, sizeof(json), head, skin);
+	n += (size_t)snprintf(json + n, sizeof(json) - n,
+			      "\"buffers\":[{\"byteLength\":%zu}],\"bufferViews\":[", sizeof(t));
 	for (int v = 0; v < 10 && n < sizeof(json); v++)
 		n += (size_t)snprintf(json + n, sizeof(json) - n,
 				      "%s{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu}",
@@ -202,7 +207,7 @@ static void still_equals_live_pose(void **state)
 	(void)state;
 	assert_non_null(mkdtemp(dir));
 	snprintf(path, sizeof(path), "%s/tube.glb", dir);
-	assert_int_equal(tube_write(path), 0);
+	assert_int_equal(tube_write(path, 0, false), 0);
 	assert_int_equal(gltf_load_options(path, &o, &rest), 0);
 	still_is_live(path, 0.0, rest.positions, NULL);
 	for (size_t i = 0; i < sizeof(times) / sizeof(*times); i++) {
@@ -218,10 +223,44 @@ static void still_equals_live_pose(void **state)
 	rmdir(dir);
 }
 
+/* A skin the engine cannot pose refuses the model with one error that
+ * names the file, the field and what was expected (the bake's doubles
+ * refused these; the engine must, not read past its arrays). */
+static void bad_skin_refused(void **state)
+{
+	static const struct {
+		int skin;
+		bool bad;
+		const char *words;
+	} cases[] = {
+	    {7, false, "nodes[0].skin: skin 7 does not exist, expected below 1"},
+	    {0, true, "JOINTS_0: vertex 11 names joint 5, expected one of the skin's 2"},
+	};
+	char dir[] = "/tmp/mk-bake-XXXXXX", path[64], err[512];
+
+	(void)state;
+	assert_non_null(mkdtemp(dir));
+	snprintf(path, sizeof(path), "%s/tube.glb", dir);
+	for (size_t i = 0; i < sizeof(cases) / sizeof(*cases); i++) {
+		struct gltf_options o = {.speed = 1};
+		struct mesh m;
+
+		assert_int_equal(tube_write(path, cases[i].skin, cases[i].bad), 0);
+		log_clear_last_error();
+		assert_int_not_equal(gltf_load_options(path, &o, &m), 0);
+		log_last_error(err, sizeof(err));
+		assert_non_null(strstr(err, path));
+		assert_non_null(strstr(err, cases[i].words));
+	}
+	unlink(path);
+	rmdir(dir);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(still_equals_live_pose),
+	    cmocka_unit_test(bad_skin_refused),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -87,10 +87,11 @@ bool skin_slot(const tinygltf::Model &m, int skin, struct anim_play *p, std::vec
 	struct anim_play_skin *out = &p->skins[p->skin_count];
 	std::vector<double> ibm;
 	int n = 16;
+	std::string sw = "skins[" + std::to_string(skin) + "]";
 	if (s.inverseBindMatrices >= 0 &&
-	    (!gltf_ext::read_accessor(m, s.inverseBindMatrices, &ibm, &n, err) ||
+	    (!gltf_ext::read_accessor(m, s.inverseBindMatrices, &ibm, &n, err) || n != 16 ||
 	     ibm.size() < s.joints.size() * 16)) {
-		*err = "skins[" + std::to_string(skin) + "].inverseBindMatrices";
+		*err = sw + ".inverseBindMatrices: expected a MAT4 per joint";
 		return false;
 	}
 	out->joint_count = (uint32_t)s.joints.size();
@@ -98,7 +99,8 @@ bool skin_slot(const tinygltf::Model &m, int skin, struct anim_play *p, std::vec
 	out->inverse_bind = alloc<float>(s.joints.size() * 16);
 	for (size_t k = 0; k < s.joints.size(); k++) {
 		if (s.joints[k] < 0 || (size_t)s.joints[k] >= m.nodes.size()) {
-			*err = "skins[" + std::to_string(skin) + "].joints";
+			*err = sw + ".joints[" + std::to_string(k) + "]: node " +
+			       std::to_string(s.joints[k]) + " does not exist";
 			return false;
 		}
 		out->joints[k] = s.joints[k];
@@ -122,8 +124,9 @@ uint32_t joint_sets(const tinygltf::Primitive &pr)
 
 // Each joint set of a skinned part, JOINTS_n and WEIGHTS_n, into its
 // place of the vertex's p->influences (those past its sets keep weight 0).
+// A weighed joint the skin lacks is refused, as the bake always did.
 bool skin_attributes(const tinygltf::Model &m, const tinygltf::Primitive &pr, const GltfPlayPart &g,
-		     struct anim_play *p, std::string *err)
+		     uint32_t joints, struct anim_play *p, std::string *err)
 {
 	const size_t stride = p->influences;
 	if (!p->joints) {
@@ -144,6 +147,12 @@ bool skin_attributes(const tinygltf::Model &m, const tinygltf::Primitive &pr, co
 		}
 		for (size_t i = 0; i < j.size(); i++) {
 			size_t at = (g.first_vertex + i / 4) * stride + set * 4 + i % 4;
+			if (w[i] != 0.0 && !(j[i] >= 0 && j[i] < joints)) {
+				*err = jn + ": vertex " + std::to_string(i / 4) + " names joint " +
+				       std::to_string((long long)j[i]) +
+				       ", expected one of the skin's " + std::to_string(joints);
+				return false;
+			}
 			p->joints[at] = j[i] >= 0 && j[i] < 65535 ? (uint16_t)j[i] : 65535;
 			p->weights[at] = (float)w[i];
 		}
@@ -212,8 +221,14 @@ bool fill_part(const tinygltf::Model &m, const GltfPlayPart &g,
 		std::memcpy(part->indices, indices.data() + g.first_index,
 			    (size_t)g.index_count * sizeof(uint32_t));
 	}
+	if (skin >= 0 && !part->at_root && (size_t)skin >= m.skins.size()) {
+		*err = "nodes[" + std::to_string(g.node) + "].skin: skin " + std::to_string(skin) +
+		       " does not exist, expected below " + std::to_string(m.skins.size());
+		return false;
+	}
 	if (skin >= 0 && !part->at_root &&
-	    (!skin_slot(m, skin, p, slots, &part->skin, err) || !skin_attributes(m, pr, g, p, err)))
+	    (!skin_slot(m, skin, p, slots, &part->skin, err) ||
+	     !skin_attributes(m, pr, g, p->skins[part->skin].joint_count, p, err)))
 		return false;
 	return targets(m, pr, g, part, err);
 }
@@ -249,6 +264,19 @@ bool fill(const tinygltf::Model &m, const std::vector<GltfPlayPart> &parts,
 	if (anim_play_finish(p))
 		throw std::bad_alloc();
 	return true;
+}
+
+// Whether a part has targets and its node's weights (else its mesh's)
+// weigh one of them.
+bool weighed(const tinygltf::Model &m, const GltfPlayPart &g)
+{
+	const tinygltf::Node &n = m.nodes[(size_t)g.node];
+	const std::vector<double> &w =
+	    n.weights.empty() ? m.meshes[(size_t)g.mesh].weights : n.weights;
+	bool any = false;
+	for (double v : w)
+		any |= v != 0.0;
+	return any && !m.meshes[(size_t)g.mesh].primitives[(size_t)g.primitive].targets.empty();
 }
 
 // Whether the still takes a part's vertices from the engine: a skinned
@@ -291,8 +319,7 @@ bool gltf_play_still(const tinygltf::Model &m, const std::vector<GltfPlayPart> &
 	static const double origin[3] = {0, 0, 0};
 	bool any = false;
 	for (const GltfPlayPart &g : parts)
-		any |= m.nodes[(size_t)g.node].skin >= 0 ||
-		       !m.meshes[(size_t)g.mesh].primitives[(size_t)g.primitive].targets.empty();
+		any |= m.nodes[(size_t)g.node].skin >= 0 || weighed(m, g);
 	if (!any)
 		return true; // nothing the engine would move: no cost
 	Play p(alloc<struct anim_play>(1));
