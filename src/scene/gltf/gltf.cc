@@ -2,7 +2,6 @@
 // JSON and the GLB container), then handed to the mesh builder
 // (gltf_mesh.cc), which trusts nothing tinygltf hands back.
 #include "scene/gltf/gltf.h"
-#include "scene/gltf/gltf_fit.h"
 #include "scene/gltf/gltf_ext.h"
 #include "scene/gltf/gltf_fs.h"
 #include "scene/gltf/gltf_json_depth.h"
@@ -110,9 +109,7 @@ int load_memory(const char *name, const uint8_t *data, size_t size, const char *
 		log_err("%s: %s", gltf_ext::escape(name).c_str(), gltf_ext::escape(err).c_str());
 		return -EINVAL;
 	}
-	GltfFit fit;
-	gltf_clip_fit(name, model, o, images, &fit);
-	return gltf_build_mesh(name, model, o, images, out, &fit);
+	return gltf_build_mesh(name, model, o, images, out);
 }
 
 } // namespace

@@ -263,6 +263,25 @@ bool gltf_read_anim(const tinygltf::Model &m, struct mesh_anim **out, std::strin
 	return true;
 }
 
+bool gltf_read_rig(const tinygltf::Model &m, struct mesh_anim **out, std::string *err)
+{
+	struct mesh_anim *a = (struct mesh_anim *)std::calloc(1, sizeof(*a));
+	*out = nullptr;
+	if (!a)
+		throw std::bad_alloc();
+	try {
+		if (!read_nodes(m, a, err)) {
+			mesh_anim_free(a);
+			return false;
+		}
+	} catch (const std::bad_alloc &) {
+		mesh_anim_free(a);
+		throw;
+	}
+	*out = a;
+	return true;
+}
+
 namespace
 {
 
@@ -299,10 +318,21 @@ bool gltf_anim_clips(const struct mesh_anim *a, const struct gltf_options *o, in
 	return o->animation_optional;
 }
 
+void gltf_anim_pose(const struct mesh_anim *a, const struct gltf_options *o, int clip,
+		    struct anim_pose *p)
+{
+	bool all = o->animation && !std::strcmp(o->animation, "all");
+	anim_pose_rest(a, p);
+	for (size_t k = 0; k < a->clip_count; k++)
+		if (all || (int)k == clip)
+			apply_clip(a, &a->clips[k], o, p);
+}
+
 bool gltf_pose_nodes(tinygltf::Model &m, const struct mesh_anim *a, const struct gltf_options *o,
-		     std::string *err)
+		     std::string *err, bool *posed)
 {
 	int clip;
+	*posed = false;
 	if (!o->pose || !a)
 		return true;
 	if (!gltf_anim_clips(a, o, &clip, err))
@@ -313,9 +343,8 @@ bool gltf_pose_nodes(tinygltf::Model &m, const struct mesh_anim *a, const struct
 	struct anim_pose *p = anim_pose_new(a);
 	if (!p)
 		throw std::bad_alloc();
-	for (size_t k = 0; k < a->clip_count; k++)
-		if (all || (int)k == clip)
-			apply_clip(a, &a->clips[k], o, p);
+	gltf_anim_pose(a, o, clip, p);
+	*posed = true;
 	// Written back into the file's nodes, so that the passes that pose a
 	// still (node worlds, morphs, skins) pose it at this time.
 	for (size_t i = 0; i < a->node_count; i++) {
@@ -335,9 +364,10 @@ bool gltf_pose_nodes(tinygltf::Model &m, const struct mesh_anim *a, const struct
 }
 
 bool gltf_anim_load(const char *name, tinygltf::Model &m, const struct gltf_options *o,
-		    std::string *err)
+		    std::string *err, bool *posed)
 {
 	struct mesh_anim *a = nullptr;
+	*posed = false;
 	if (!o->anim && !o->pose)
 		return true;
 	if (!gltf_read_anim(m, &a, err)) {
@@ -345,7 +375,7 @@ bool gltf_anim_load(const char *name, tinygltf::Model &m, const struct gltf_opti
 			 gltf_ext::escape(*err).c_str());
 		err->clear();
 	}
-	bool ok = gltf_pose_nodes(m, a, o, err);
+	bool ok = gltf_pose_nodes(m, a, o, err, posed);
 	if (ok && !err->empty()) { // a clip the file lacks, optional
 		log_warn("%s: %s; it shows its rest pose", gltf_ext::escape(name).c_str(),
 			 gltf_ext::escape(*err).c_str());

@@ -151,19 +151,12 @@ bool node_worlds(const tinygltf::Model &m, std::vector<Mat4> *worlds, std::vecto
 // file's default, else the first; -1 when the file has none.
 bool choose_scene(const tinygltf::Model &m, const char *want, const char *setting, int *scene,
 		  std::string *err);
-bool apply_morphs(tinygltf::Model &m, std::string *err);
-// Each skinned node gets a posed copy of its mesh; mesh_source[i] is the
-// file's index of mesh i.
-bool apply_skins(tinygltf::Model &m, const std::vector<Mat4> &worlds, std::vector<int> *mesh_source,
-		 std::string *err);
 
 // What the passes before the builder found: every node's world matrix
-// and parent, and for each mesh the file's index it came from (a skinned
-// node shows a posed copy).
+// and parent.
 struct Pose {
 	std::vector<Mat4> worlds;
 	std::vector<int> parent;
-	std::vector<int> mesh_source;
 };
 
 // Every pass above but the scene's choice, in order, on m (name for the

@@ -1,13 +1,19 @@
 // A posed still fitted for its whole clip: the centre of the model's box
 // at the pose asked for and at the clip's key times, and its farthest
-// vertex from it over them, two loads of the geometry a pose, so that
-// every still of one clip shares one framing.
+// vertex from it over them, so that every still of one clip shares one
+// framing. Each sample is posed by live playback's engine (anim_play_pose,
+// built once) over the positions alone: the mesh is built once, not
+// once a sample.
 #include "scene/gltf/gltf_fit.h"
 #include "scene/gltf/gltf_anim.h"
+#include "scene/gltf/gltf_ext.h"
+#include "util/log.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <memory>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -42,84 +48,124 @@ std::vector<double> sample_times(const struct mesh_anim *a, int clip, bool all)
 	return t;
 }
 
-// One pose's box (fit->measured), and with fit->has_center the squared
-// distance of its farthest vertex from that centre (fit->radius2).
-bool measure(const char *name, const tinygltf::Model &m, const struct gltf_options *o,
-	     const GltfImages &images, GltfFit *fit)
+struct PoseFree {
+	void operator()(struct anim_pose *p) const
+	{
+		anim_pose_free(p);
+	}
+};
+
+// The engine at the fit's samples, and room for one pose's vertices.
+struct Poser {
+	struct anim_play *play;
+	std::unique_ptr<struct anim_pose, PoseFree> pose;
+	std::vector<float> positions, normals;
+	std::vector<double> world; // mesh_box reads doubles
+};
+
+// The box of world (box), and with a centre its farthest vertex's squared
+// distance from it (r2), taken into all's.
+void take(const std::vector<double> &world, const double *center, double all[6], double *r2)
 {
-	tinygltf::Model copy = m;
-	struct mesh mesh;
-	struct gltf_options geometry = *o; // the pose alone: no clips kept, no maps
-	geometry.anim = nullptr;
-	geometry.play = nullptr;
-	geometry.textures = 0;
-	fit->measure = true;
-	if (gltf_build_mesh(name, copy, &geometry, images, &mesh, fit))
-		return false;
-	mesh_release(&mesh);
-	return true;
+	double box[6], d2;
+	mesh_box(world.data(), (uint32_t)(world.size() / 3), center, box, &d2);
+	for (int k = 0; k < 3; k++) {
+		all[k] = std::fmin(all[k], box[k]);
+		all[3 + k] = std::fmax(all[3 + k], box[3 + k]);
+	}
+	*r2 = std::fmax(*r2, d2);
 }
 
-// Every pose of the clip: the pose asked for, then each sample as clip
+// Every pose of the clip: the still as baked, then each sample as clip
 // time (once, speed 1: the clock leaves a time within the clip as it is).
 // Without a centre, their box; with one, their farthest vertex from it.
-bool each_pose(const char *name, const tinygltf::Model &m, const struct gltf_options *o,
-	       const GltfImages &images, const std::vector<double> &times, GltfFit *all)
+void each_pose(Poser *s, const struct gltf_options *o, int clip, const std::vector<double> &still,
+	       const std::vector<double> &times, const double *center, double box[6], double *r2)
 {
 	struct gltf_options at = *o;
 	at.loop = ANIM_ONCE;
 	at.speed = 1;
-	for (size_t i = 0; i <= times.size(); i++) {
-		GltfFit one = {};
-		one.has_center = all->has_center;
-		std::memcpy(one.center, all->center, sizeof(one.center));
-		if (i > 0)
-			at.time = times[i - 1];
-		if (!measure(name, m, i ? &at : o, images, &one))
-			return false;
-		for (int k = 0; k < 3; k++) {
-			all->measured[k] = std::fmin(all->measured[k], one.measured[k]);
-			all->measured[3 + k] = std::fmax(all->measured[3 + k], one.measured[3 + k]);
-		}
-		all->radius2 = std::fmax(all->radius2, one.radius2);
+	*r2 = 0;
+	for (int k = 0; k < 3; k++) {
+		box[k] = INFINITY;
+		box[3 + k] = -INFINITY;
 	}
-	return true;
+	take(still, center, box, r2);
+	for (double t : times) {
+		at.time = t;
+		gltf_anim_pose(s->play->anim, &at, clip, s->pose.get());
+		anim_play_pose(s->play, s->pose.get(), s->positions.data(), s->normals.data());
+		s->world.assign(s->positions.begin(), s->positions.end());
+		take(s->world, center, box, r2);
+	}
 }
 
 } // namespace
 
-void gltf_clip_fit(const char *name, const tinygltf::Model &m, const struct gltf_options *o,
-		   const GltfImages &images, GltfFit *fit)
+bool gltf_clip_fit(struct anim_play *play, const struct gltf_options *o,
+		   const std::vector<double> &still, GltfFit *fit)
 {
-	struct mesh_anim *a = nullptr;
+	const struct mesh_anim *a = play->anim;
 	std::string err;
 	int clip;
 	*fit = GltfFit();
-	if (!o->pose || !gltf_read_anim(m, &a, &err) || !a || !gltf_anim_clips(a, o, &clip, &err)) {
-		mesh_anim_free(a);
-		return; // the build says what is wrong, once
-	}
+	if (!o->pose || !gltf_anim_clips(a, o, &clip, &err))
+		return false; // the build says what is wrong, once
 	bool all = o->animation && !std::strcmp(o->animation, "all");
-	std::vector<double> times = sample_times(a, clip, all);
-	mesh_anim_free(a);
 	if (clip < 0 && !all)
-		return;
+		return false;
+	std::vector<double> times = sample_times(a, clip, all);
+	Poser s = {play, {anim_pose_new(a), PoseFree()}, {}, {}, {}};
+	if (!s.pose)
+		throw std::bad_alloc();
+	s.positions.resize((size_t)play->vertex_count * 3);
+	s.normals.resize(s.positions.size());
 	// As mesh_fit_positions fits one pose: the centre of the poses' box,
 	// and their farthest vertex from it on the unit sphere (two passes).
-	GltfFit over = {};
-	for (int k = 0; k < 3; k++) {
-		over.measured[k] = INFINITY;
-		over.measured[3 + k] = -INFINITY;
-	}
-	if (!each_pose(name, m, o, images, times, &over) || !(over.measured[0] <= over.measured[3]))
-		return;
+	double box[6], r2;
+	each_pose(&s, o, clip, still, times, nullptr, box, &r2);
+	if (!(box[0] <= box[3]))
+		return false;
 	for (int k = 0; k < 3; k++)
-		over.center[k] = over.measured[k] + (over.measured[3 + k] - over.measured[k]) / 2;
-	over.has_center = true;
-	if (!each_pose(name, m, o, images, times, &over))
-		return;
+		fit->center[k] = box[k] + (box[3 + k] - box[k]) / 2;
+	each_pose(&s, o, clip, still, times, fit->center, box, &r2);
 	fit->use_fit = true;
-	std::memcpy(fit->center, over.center, sizeof(fit->center));
-	fit->scale =
-	    over.radius2 > 0 && std::isfinite(over.radius2) ? 1 / std::sqrt(over.radius2) : 1;
+	fit->scale = r2 > 0 && std::isfinite(r2) ? 1 / std::sqrt(r2) : 1;
+	return true;
+}
+
+namespace
+{
+
+struct PlayFree {
+	void operator()(struct anim_play *p) const
+	{
+		anim_play_free(p);
+	}
+};
+using Play = std::unique_ptr<struct anim_play, PlayFree>;
+
+} // namespace
+
+struct anim_play *gltf_fit_clip(const char *name, const tinygltf::Model &m, struct mesh_anim *anim,
+				const std::vector<GltfPlayPart> &parts,
+				const std::vector<uint32_t> &indices, const struct gltf_options *o,
+				const std::vector<double> &still, GltfFit *fit)
+{
+	static const double origin[3] = {0, 0, 0};
+	std::string err;
+	struct anim_play *built = nullptr;
+	gltf_play_build(m, anim, parts, indices, origin, 1, &built, &err);
+	Play p(built);
+	if (!p) {
+		log_warn("%s: %s; %s", gltf_ext::escape(name).c_str(),
+			 gltf_ext::escape(err.empty() ? "no animation to play" : err).c_str(),
+			 o->play ? "it shows still" : "the still is fitted to its own pose");
+		return nullptr;
+	}
+	if (!gltf_clip_fit(p.get(), o, still, fit) || !o->play)
+		return nullptr;
+	std::memcpy(p->center, fit->center, sizeof(p->center));
+	p->scale = fit->scale;
+	return p.release();
 }

@@ -7,8 +7,9 @@
 #include "scene/gltf/gltf_variants.h"
 #include "scene/gltf/gltf_mesh.h"
 #include "scene/gltf/gltf_anim.h"
-#include "scene/gltf/gltf_flat.h"
+#include "scene/gltf/gltf_fit.h"
 #include "scene/gltf/gltf_play.h"
+#include "scene/gltf/gltf_flat.h"
 #include "util/log.h"
 #include "util/math3d.h"
 
@@ -480,17 +481,14 @@ bool add_primitive(Builder &b, const tinygltf::Model &m, const tinygltf::Primiti
 
 typedef gltf_ext::Pose Pose;
 
-bool add_mesh(Builder &b, const tinygltf::Model &m, size_t node, const Mat4 world, const Pose &pose)
+bool add_mesh(Builder &b, const tinygltf::Model &m, size_t node, const Mat4 world)
 {
 	const tinygltf::Node &n = m.nodes[node];
 	if ((size_t)n.mesh >= m.meshes.size())
 		return fail(b, "nodes[" + std::to_string(node) + "].mesh",
 			    "mesh " + std::to_string(n.mesh) + " does not exist");
 	const tinygltf::Mesh &mesh = m.meshes[(size_t)n.mesh];
-	// A skinned mesh's copy holds world positions already (the node's
-	// own transform does not apply to it, as the spec says); name the
-	// mesh as the file does.
-	int shown = pose.mesh_source[(size_t)n.mesh];
+	int shown = n.mesh;
 	for (size_t i = 0; i < mesh.primitives.size(); i++) {
 		size_t before = b.ranges.size();
 		if (!add_primitive(b, m, mesh.primitives[i], world,
@@ -527,8 +525,10 @@ bool add_scene(Builder &b, const tinygltf::Model &m, const std::vector<int> &roo
 		size_t i = stack.back();
 		stack.pop_back();
 		const tinygltf::Node &n = m.nodes[i];
-		if (n.mesh >= 0 &&
-		    !add_mesh(b, m, i, n.skin >= 0 ? identity : pose.worlds[i].m, pose))
+		// A skinned node's mesh is placed as bound: the node's own
+		// transform does not apply to it, as the spec says, and
+		// gltf_play_still poses it.
+		if (n.mesh >= 0 && !add_mesh(b, m, i, n.skin >= 0 ? identity : pose.worlds[i].m))
 			return false;
 		for (size_t k = n.children.size(); k-- > 0;)
 			stack.push_back((size_t)n.children[k]);
@@ -544,7 +544,7 @@ bool has_extent(const std::vector<double> &p)
 	return false;
 }
 
-int finish_mesh(Builder &b, const tinygltf::Model &m, struct mesh *out, GltfFit *fit)
+int finish_mesh(Builder &b, const tinygltf::Model &m, struct mesh *out, const GltfFit &fit)
 {
 	uint32_t nv = (uint32_t)(b.positions.size() / 3);
 	if (b.indices.empty()) {
@@ -559,11 +559,8 @@ int finish_mesh(Builder &b, const tinygltf::Model &m, struct mesh *out, GltfFit 
 	}
 	if (mesh_alloc(out, nv, (uint32_t)b.indices.size(), b.any_uvs))
 		return -ENOMEM;
-	if (fit && fit->measure)
-		mesh_box(b.positions.data(), nv, fit->has_center ? fit->center : nullptr,
-			 fit->measured, &fit->radius2);
-	if (fit && fit->use_fit)
-		mesh_fit_to(b.positions.data(), nv, fit->center, fit->scale, out->positions);
+	if (fit.use_fit)
+		mesh_fit_to(b.positions.data(), nv, fit.center, fit.scale, out->positions);
 	else
 		mesh_fit_positions(b.positions.data(), nv, out->positions);
 	std::memcpy(out->normals, b.normals.data(), b.normals.size() * sizeof(float));
@@ -608,37 +605,60 @@ int finish_mesh(Builder &b, const tinygltf::Model &m, struct mesh *out, GltfFit 
 	return 0;
 }
 
-// Live playback's data from the file as parsed; else it shows its still.
-void keep_play(const Builder &b, tinygltf::Model &orig, const GltfFit &fit,
-	       const struct gltf_options *o)
+// Live playback's parts: the primitives as the builder appended them.
+std::vector<GltfPlayPart> play_parts(const Builder &b)
 {
 	std::vector<GltfPlayPart> parts;
-	std::string err;
 	for (const Range &r : b.ranges)
 		parts.push_back({r.node, r.mesh, r.primitive, r.first_vertex, r.vertex_count,
 				 r.first_index, r.index_count, r.has_normals, r.flat,
 				 r.flat ? b.source.data() + r.source_at : nullptr});
-	if (!gltf_play_build(orig, parts, b.indices, fit.center, fit.scale, o->play, &err))
-		log_warn("%s: %s; it shows still", gltf_ext::escape(b.name).c_str(),
-			 gltf_ext::escape(err.empty() ? "no animation to play" : err).c_str());
+	return parts;
+}
+
+// What the build says of the model it kept, and its materials.
+void finish_materials(const Builder &b, tinygltf::Model &m, const struct gltf_options *o,
+		      const GltfImages &images, struct mesh *out)
+{
+	std::string shown = gltf_ext::escape(b.name);
+	log_info("%s: %u vertices, %u triangles", shown.c_str(), out->vertex_count,
+		 out->index_count / 3);
+	if (b.not_triangles)
+		log_info("%s: %zu primitives of points or lines left out (only triangles show)",
+			 shown.c_str(), b.not_triangles);
+	gltf_read_materials(m, b.slots, b.material, b.name, b.any_uvs ? o->textures : 0,
+			    o->texture_memory, images, out);
 }
 
 } // namespace
 
 int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_options *o,
-		    const GltfImages &images, struct mesh *out, GltfFit *fit)
+		    const GltfImages &images, struct mesh *out)
 {
 	Builder b;
 	Pose pose;
+	GltfFit fit = {};
+	std::unique_ptr<struct anim_play, void (*)(struct anim_play *)> play(nullptr,
+									     anim_play_free);
+	bool posed; // a clip posed it: fitted over that clip
 	int scene, ret;
 	b.name = name;
 	b.want_colors = (o->textures & GLTF_TEXTURE_BASE_COLOR) != 0;
 	b.textures = o->textures;
 	b.normals_mode = o->normals;
-	std::unique_ptr<tinygltf::Model> orig; // before a pose is baked into it
-	if (o->play && !(*o->play = nullptr) && !m.animations.empty() && fit && fit->use_fit)
-		orig.reset(new tinygltf::Model(m));
-	if (gltf_anim_load(name, m, o, &b.error) && gltf_ext::prepare(m, name, &pose, &b.error) &&
+	// The clips as the file has them, before a still's pose is written
+	// into its nodes: the fit's and live playback's (a malformed one:
+	// gltf_anim_load says so).
+	std::unique_ptr<struct mesh_anim, void (*)(struct mesh_anim *)> clips(nullptr,
+									      mesh_anim_free);
+	std::string unused;
+	struct mesh_anim *read = nullptr;
+	if (o->play)
+		*o->play = nullptr;
+	if (o->pose && gltf_read_anim(m, &read, &unused))
+		clips.reset(read);
+	if (gltf_anim_load(name, m, o, &b.error, &posed) &&
+	    gltf_ext::prepare(m, name, &pose, &b.error) &&
 	    gltf_ext::choose_scene(m, o->scene, o->scene_setting, &scene, &b.error)) {
 		std::vector<int> roots;
 		if (scene >= 0)
@@ -649,25 +669,20 @@ int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_opti
 					roots.push_back((int)i);
 		add_scene(b, m, roots, "scenes[" + std::to_string(scene) + "]", pose);
 	}
+	std::vector<GltfPlayPart> parts = play_parts(b);
+	if (b.error.empty()) // skins and morphs, by live playback's engine
+		gltf_play_still(m, parts, b.indices, &b.positions, &b.normals, &b.error);
+	if (b.error.empty() && clips && posed && !b.ranges.empty())
+		play.reset(gltf_fit_clip(name, m, clips.release(), parts, b.indices, o, b.positions,
+					 &fit));
 	ret = b.error.empty() ? finish_mesh(b, m, out, fit) : -EINVAL;
 	std::string shown = gltf_ext::escape(name);
-	// A clip's fit builds the model at each of its samples (gltf_fit.cc)
-	// for its box alone: no materials, and what the model is is said for
-	// the build that is kept (the journal had it some 40 times).
-	bool say = !(fit && fit->measure);
 	if (ret == -EINVAL && !b.error.empty())
 		log_err("%s: %s", shown.c_str(), gltf_ext::escape(b.error).c_str());
-	else if (ret == 0 && say)
-		log_info("%s: %u vertices, %u triangles", shown.c_str(), out->vertex_count,
-			 out->index_count / 3);
-	if (ret == 0 && say && b.not_triangles)
-		log_info("%s: %zu primitives of points or lines left out (only triangles show)",
-			 shown.c_str(), b.not_triangles);
-	if (ret == 0 && say)
-		gltf_read_materials(m, b.slots, b.material, b.name, b.any_uvs ? o->textures : 0,
-				    o->texture_memory, images, out);
-	if (ret == 0 && orig)
-		keep_play(b, *orig, *fit, o);
+	if (ret == 0)
+		finish_materials(b, m, o, images, out);
+	if (ret == 0 && o->play)
+		*o->play = play.release();
 	gltf_keep_colors(out,
 			 b.uniform_set && b.any_colors && b.colors.empty() ? b.uniform : nullptr);
 	if (ret == 0)

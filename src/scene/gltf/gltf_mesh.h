@@ -13,19 +13,9 @@
 // primitive of it, into out, with the material's textures o asks for
 // from images. Logs what it leaves out; an error names the file (name),
 // the field and what was expected. Returns 0, -EINVAL or -ENOMEM.
-// A posed still is fitted for its whole clip (so stills of one clip share
-// one framing): use_fit places positions at (world - center) * scale
-// instead of the pose's own fit; measure puts the pose's world box in
-// measured, and with has_center its farthest vertex's squared distance
-// from center in radius2 (and says nothing at info level). NULL: the
-// pose's own fit.
-struct GltfFit {
-	bool use_fit, measure, has_center;
-	double center[3], scale;
-	double measured[6], radius2;
-};
-
+// A posed still is fitted for its whole clip (gltf_fit.h); o->play, when
+// set, takes live playback's engine, built once here for that fit too.
 int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_options *o,
-		    const GltfImages &images, struct mesh *out, GltfFit *fit = nullptr);
+		    const GltfImages &images, struct mesh *out);
 
 #endif

@@ -87,10 +87,11 @@ bool skin_slot(const tinygltf::Model &m, int skin, struct anim_play *p, std::vec
 	struct anim_play_skin *out = &p->skins[p->skin_count];
 	std::vector<double> ibm;
 	int n = 16;
+	std::string sw = "skins[" + std::to_string(skin) + "]";
 	if (s.inverseBindMatrices >= 0 &&
-	    (!gltf_ext::read_accessor(m, s.inverseBindMatrices, &ibm, &n, err) ||
+	    (!gltf_ext::read_accessor(m, s.inverseBindMatrices, &ibm, &n, err) || n != 16 ||
 	     ibm.size() < s.joints.size() * 16)) {
-		*err = "skins[" + std::to_string(skin) + "].inverseBindMatrices";
+		*err = sw + ".inverseBindMatrices: expected a MAT4 per joint";
 		return false;
 	}
 	out->joint_count = (uint32_t)s.joints.size();
@@ -98,7 +99,8 @@ bool skin_slot(const tinygltf::Model &m, int skin, struct anim_play *p, std::vec
 	out->inverse_bind = alloc<float>(s.joints.size() * 16);
 	for (size_t k = 0; k < s.joints.size(); k++) {
 		if (s.joints[k] < 0 || (size_t)s.joints[k] >= m.nodes.size()) {
-			*err = "skins[" + std::to_string(skin) + "].joints";
+			*err = sw + ".joints[" + std::to_string(k) + "]: node " +
+			       std::to_string(s.joints[k]) + " does not exist";
 			return false;
 		}
 		out->joints[k] = s.joints[k];
@@ -122,8 +124,9 @@ uint32_t joint_sets(const tinygltf::Primitive &pr)
 
 // Each joint set of a skinned part, JOINTS_n and WEIGHTS_n, into its
 // place of the vertex's p->influences (those past its sets keep weight 0).
+// A weighed joint the skin lacks is refused, as the bake always did.
 bool skin_attributes(const tinygltf::Model &m, const tinygltf::Primitive &pr, const GltfPlayPart &g,
-		     struct anim_play *p, std::string *err)
+		     uint32_t joints, struct anim_play *p, std::string *err)
 {
 	const size_t stride = p->influences;
 	if (!p->joints) {
@@ -144,6 +147,12 @@ bool skin_attributes(const tinygltf::Model &m, const tinygltf::Primitive &pr, co
 		}
 		for (size_t i = 0; i < j.size(); i++) {
 			size_t at = (g.first_vertex + i / 4) * stride + set * 4 + i % 4;
+			if (w[i] != 0.0 && !(j[i] >= 0 && j[i] < joints)) {
+				*err = jn + ": vertex " + std::to_string(i / 4) + " names joint " +
+				       std::to_string((long long)j[i]) +
+				       ", expected one of the skin's " + std::to_string(joints);
+				return false;
+			}
 			p->joints[at] = j[i] >= 0 && j[i] < 65535 ? (uint16_t)j[i] : 65535;
 			p->weights[at] = (float)w[i];
 		}
@@ -212,23 +221,24 @@ bool fill_part(const tinygltf::Model &m, const GltfPlayPart &g,
 		std::memcpy(part->indices, indices.data() + g.first_index,
 			    (size_t)g.index_count * sizeof(uint32_t));
 	}
+	if (skin >= 0 && !part->at_root && (size_t)skin >= m.skins.size()) {
+		*err = "nodes[" + std::to_string(g.node) + "].skin: skin " + std::to_string(skin) +
+		       " does not exist, expected below " + std::to_string(m.skins.size());
+		return false;
+	}
 	if (skin >= 0 && !part->at_root &&
-	    (!skin_slot(m, skin, p, slots, &part->skin, err) || !skin_attributes(m, pr, g, p, err)))
+	    (!skin_slot(m, skin, p, slots, &part->skin, err) ||
+	     !skin_attributes(m, pr, g, p->skins[part->skin].joint_count, p, err)))
 		return false;
 	return targets(m, pr, g, part, err);
 }
 
-} // namespace
-
-bool gltf_play_build(tinygltf::Model &m, const std::vector<GltfPlayPart> &parts,
-		     const std::vector<uint32_t> &indices, const double center[3], double scale,
-		     struct anim_play **out, std::string *err)
+// p (its anim read) filled for the builder's parts from m, decoded and
+// dense: each part's own vertices, skins and targets, and the scratch.
+bool fill(const tinygltf::Model &m, const std::vector<GltfPlayPart> &parts,
+	  const std::vector<uint32_t> &indices, const double center[3], double scale,
+	  struct anim_play *p, std::string *err)
 {
-	Play p(alloc<struct anim_play>(1));
-	*out = nullptr;
-	if (!gltf_ext::decode_meshopt(m, err) || !gltf_ext::decode_draco(m, err) ||
-	    !gltf_ext::make_dense(m, err) || !gltf_read_anim(m, &p->anim, err) || !p->anim)
-		return false;
 	for (const GltfPlayPart &g : parts)
 		p->vertex_count = std::max(p->vertex_count, g.first_vertex + g.vertex_count);
 	std::memcpy(p->center, center, sizeof(p->center));
@@ -246,13 +256,92 @@ bool gltf_play_build(tinygltf::Model &m, const std::vector<GltfPlayPart> &parts,
 		    p->influences,
 		    4 * joint_sets(m.meshes[(size_t)g.mesh].primitives[(size_t)g.primitive]));
 	for (const GltfPlayPart &g : parts)
-		if (!fill_part(m, g, indices, p.get(), &slots, err)) {
+		if (!fill_part(m, g, indices, p, &slots, err)) {
 			*err = "meshes[" + std::to_string(g.mesh) + "].primitives[" +
 			       std::to_string(g.primitive) + "]: " + *err;
 			return false;
 		}
-	if (anim_play_finish(p.get()))
+	if (anim_play_finish(p))
 		throw std::bad_alloc();
+	return true;
+}
+
+// Whether a part has targets and its node's weights (else its mesh's)
+// weigh one of them.
+bool weighed(const tinygltf::Model &m, const GltfPlayPart &g)
+{
+	const tinygltf::Node &n = m.nodes[(size_t)g.node];
+	const std::vector<double> &w =
+	    n.weights.empty() ? m.meshes[(size_t)g.mesh].weights : n.weights;
+	bool any = false;
+	for (double v : w)
+		any |= v != 0.0;
+	return any && !m.meshes[(size_t)g.mesh].primitives[(size_t)g.primitive].targets.empty();
+}
+
+// Whether the still takes a part's vertices from the engine: a skinned
+// part, or one whose targets the pose weighs; any other stays as the
+// builder placed it (its node's world in doubles).
+bool moved(const struct anim_play *p, const struct anim_play_part &part)
+{
+	const struct anim_node &n = p->anim->nodes[part.node];
+	bool weighed = false;
+	for (size_t t = 0; t < part.target_count && t < n.weight_count; t++)
+		weighed |= p->anim->rest_weights[n.weight_offset + t] != 0.0f;
+	return part.skin >= 0 || weighed;
+}
+
+} // namespace
+
+bool gltf_play_build(const tinygltf::Model &m, struct mesh_anim *anim,
+		     const std::vector<GltfPlayPart> &parts, const std::vector<uint32_t> &indices,
+		     const double center[3], double scale, struct anim_play **out, std::string *err)
+{
+	Play p(nullptr);
+	*out = nullptr;
+	try {
+		p.reset(alloc<struct anim_play>(1));
+	} catch (const std::bad_alloc &) {
+		mesh_anim_free(anim);
+		throw;
+	}
+	p->anim = anim;
+	if (!fill(m, parts, indices, center, scale, p.get(), err))
+		return false;
 	*out = p.release();
+	return true;
+}
+
+bool gltf_play_still(const tinygltf::Model &m, const std::vector<GltfPlayPart> &parts,
+		     const std::vector<uint32_t> &indices, std::vector<double> *positions,
+		     std::vector<float> *normals, std::string *err)
+{
+	static const double origin[3] = {0, 0, 0};
+	bool any = false;
+	for (const GltfPlayPart &g : parts)
+		any |= m.nodes[(size_t)g.node].skin >= 0 || weighed(m, g);
+	if (!any)
+		return true; // nothing the engine would move: no cost
+	Play p(alloc<struct anim_play>(1));
+	if (!gltf_read_rig(m, &p->anim, err) || !fill(m, parts, indices, origin, 1, p.get(), err))
+		return false;
+	std::unique_ptr<struct anim_pose, void (*)(struct anim_pose *)> pose(anim_pose_new(p->anim),
+									     anim_pose_free);
+	std::vector<float> pos((size_t)p->vertex_count * 3), nrm(pos.size());
+	if (!pose)
+		throw std::bad_alloc();
+	anim_play_pose(p.get(), pose.get(), pos.data(), nrm.data());
+	for (uint32_t i = 0; i < p->part_count; i++) {
+		const struct anim_play_part &part = p->parts[i];
+		size_t at = (size_t)part.first_vertex * 3, n = (size_t)part.vertex_count * 3;
+		if (!moved(p.get(), part))
+			continue;
+		std::copy(pos.begin() + (std::ptrdiff_t)at, pos.begin() + (std::ptrdiff_t)(at + n),
+			  positions->begin() + (std::ptrdiff_t)at);
+		if (part.has_normals)
+			std::copy(nrm.begin() + (std::ptrdiff_t)at,
+				  nrm.begin() + (std::ptrdiff_t)(at + n),
+				  normals->begin() + (std::ptrdiff_t)at);
+	}
 	return true;
 }
