@@ -88,7 +88,8 @@ needs() {
 	ortho) echo "all $TOOLS/mkmodels $TOOLS/imgdiff" ;;
 	loaders) echo "all $TOOLS/mkmodels" ;;
 	cli) echo "all asan-kiosk $TOOLS/mkmodels" ;;
-	config_doc | install | systemd | no-camera | man | doc_claims) echo all ;;
+	config_doc | install | systemd | no-camera) echo all ;;
+	man | doc_claims) echo "all $MKMAN" ;;
 	bad-input | not-a-file) echo "asan-kiosk $TOOLS/mkmodels" ;;
 	limits) echo "all $TOOLS/mkmodels" ;;
 	corpus) echo "asan-kiosk fuzzers $TOOLS/mkmodels $TOOLS/silhouette $TOOLS/imgdiff" ;;
