@@ -44,6 +44,9 @@ varying highp vec2 v_base_uv;
 varying vec2 v_base_uv;
 #endif
 uniform sampler2D u_base_map;
+// 1 where this draw's material has a base map, 0 where it has none: a
+// program is shared by ranges with and without one (set per draw).
+uniform float u_reads_base_map;
 #endif
 #ifdef EMISSIVE
 uniform SHADE_P vec3 u_emissive; // emissiveFactor x strength, linear
@@ -77,13 +80,15 @@ void main()
 {
 #ifdef BASE_MAP
 	vec4 base_map = texture2D(u_base_map, v_base_uv);
+	float reads_map = u_reads_base_map;
 #else
 	vec4 base_map = vec4(1.0);
+	float reads_map = 0.0;
 #endif
 #ifdef UNLIT
 	// KHR_materials_unlit: the base colour as it is, no matcap, no light.
 #ifdef BASE_COLOR
-	vec3 color = linear_to_srgb(base_linear(v_color, base_map.rgb));
+	vec3 color = linear_to_srgb(base_linear(v_color.rgb, base_map.rgb, reads_map));
 #else
 	vec3 color = vec3(1.0);
 #endif
@@ -133,7 +138,7 @@ void main()
 #endif
 #endif
 #ifdef BASE_COLOR
-	color = base_color(color, v_color, base_map.rgb);
+	color = base_color(color, v_color.rgb, base_map.rgb, reads_map);
 #endif
 #ifdef DETAIL_MAP
 	color *= detail.b; // ambient occlusion
@@ -148,9 +153,10 @@ void main()
 	color = add_emission(color, glow);
 #endif
 #if defined(ALPHA_MASK) || defined(ALPHA_BLEND)
-	// glTF's alpha: baseColorFactor's times the map's, where the vertex
-	// reads its material's map (v_color.a, src/scene/mesh.h).
-	float alpha = u_alpha.x * mix(1.0, base_map.a, v_color.a);
+	// glTF's alpha: baseColorFactor's times the map's, where the draw
+	// reads its material's map, times COLOR_0's (v_color.a,
+	// src/scene/mesh/mesh.h).
+	float alpha = u_alpha.x * mix(1.0, base_map.a, reads_map) * v_color.a;
 #endif
 #ifdef ALPHA_MASK
 	if (alpha < u_alpha.y)

@@ -73,22 +73,23 @@ vec3 linear_to_srgb(vec3 c)
 #endif
 
 #ifdef BASE_COLOR
-// The base colour, linear: rgba: baseColorFactor x COLOR_0, linear, a = 1
-// where the base map applies; map: its texel, sRGB. The map is filtered
-// as stored, before decoding: GLES2 has no sRGB textures (three.js on
-// WebGL 1 without EXT_sRGB does the same).
-vec3 base_linear(vec4 rgba, vec3 map)
+// The base colour, linear: rgb: baseColorFactor x COLOR_0, linear; map:
+// the base map's texel, sRGB, applied where reads_map is 1 (the range's
+// material has a map: u_reads_base_map). The map is filtered as stored,
+// before decoding: GLES2 has no sRGB textures (three.js on WebGL 1
+// without EXT_sRGB does the same).
+vec3 base_linear(vec3 rgb, vec3 map, float reads_map)
 {
-	return rgba.rgb * mix(vec3(1.0), srgb_to_linear(map), rgba.a);
+	return rgb * mix(vec3(1.0), srgb_to_linear(map), reads_map);
 }
 
 // three.js's MeshMatcapMaterial: the matcap (sRGB) times the base colour,
 // multiplied in linear light and encoded again. Not in the mirror:
 // tests/oracle/base_color_check.c is its reference (and of unlit and
 // emission below).
-vec3 base_color(vec3 matcap, vec4 rgba, vec3 map)
+vec3 base_color(vec3 matcap, vec3 rgb, vec3 map, float reads_map)
 {
-	return linear_to_srgb(srgb_to_linear(matcap) * base_linear(rgba, map));
+	return linear_to_srgb(srgb_to_linear(matcap) * base_linear(rgb, map, reads_map));
 }
 #endif
 

@@ -476,15 +476,8 @@ int content_prepare(struct content *s, const struct content_config *o, int width
  * these CPU copies serve nothing (a reload decodes the file again). */
 static void release_decoded_maps(struct mesh *mesh)
 {
-	struct mesh_material *m = &mesh->material;
-
-	image_release(&m->normal_map);
-	image_release(&m->occlusion_map);
-	image_release(&m->thickness_map);
-	image_release(&m->base_map);
-	/* Each primitive's base map was copied into the material's too. */
 	for (uint32_t k = 0; k < mesh->material_count; k++)
-		image_release(&mesh->materials[k].base_map);
+		mesh_material_release(&mesh->materials[k]);
 }
 
 int content_upload_model(struct content *s, struct renderer *r)

@@ -169,7 +169,7 @@ void content_play_check(struct content *s);
 void content_play_release(struct content *s);
 int content_play_upload(struct content *s, struct renderer *r);
 /* Hand the mesh alone (and its material) to the renderer. The glTF's
- * decoded maps (mesh.material's images, copied into material) are given
+ * decoded maps (mesh.materials' images, copied into material) are given
  * back once on the GPU; the material's own images and the mesh stay, so
  * a failed swap can put this content back. */
 int content_upload_model(struct content *s, struct renderer *r);

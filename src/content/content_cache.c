@@ -109,11 +109,7 @@ bool content_cache_fits(const struct content *s, int width, int height)
 /* An entry holds no image: a model with one is prepared at each start. */
 static bool decoded_images(const struct mesh *mesh)
 {
-	bool any = mesh_material_decoded(&mesh->material);
-
-	for (uint32_t k = 0; k < mesh->material_count; k++)
-		any |= mesh_material_decoded(&mesh->materials[k]);
-	return any;
+	return mesh_materials_any(mesh, mesh_material_decoded);
 }
 
 /* A model that plays keeps its arrays: its entry gets a copy, and the
@@ -132,13 +128,12 @@ static void content_cache_pack_live(struct content *s, int width, int height)
 }
 
 /* The prepared mesh packed as the GPU and the cache take it; the mesh's
- * own arrays are given back (the material stays: material_load and a
- * reload read it; it holds no image here). */
+ * own arrays are given back (its materials and colour facts stay:
+ * material_load and a reload read them; they hold no image here). */
 void content_cache_pack(struct content *s, int width, int height)
 {
-	struct mesh_material material = s->mesh.material;
-	struct mesh_material *materials = s->mesh.materials;
-	uint32_t material_count = s->mesh.material_count;
+	/* What stays: the materials and the colour facts, no array. */
+	struct mesh shell = {0};
 
 	if (!s->cacheable || decoded_images(&s->mesh))
 		return;
@@ -150,13 +145,12 @@ void content_cache_pack(struct content *s, int width, int height)
 		return;
 	s->cache_key.width = (uint32_t)width;
 	s->cache_key.height = (uint32_t)height;
-	mesh_material_default(&s->mesh.material);
-	s->mesh.materials = NULL;
-	s->mesh.material_count = 0;
+	shell.materials = s->mesh.materials, shell.material_count = s->mesh.material_count;
+	shell.has_colors = s->mesh.has_colors;
+	memcpy(shell.vertex_color, s->mesh.vertex_color, sizeof(shell.vertex_color));
+	s->mesh.materials = NULL, s->mesh.material_count = 0;
 	mesh_release(&s->mesh);
-	s->mesh.material = material;
-	s->mesh.materials = materials;
-	s->mesh.material_count = material_count;
+	s->mesh = shell;
 	shell_counts(s, &s->packed);
 }
 

@@ -45,7 +45,7 @@ static bool first_is_auto(const struct content_config *o)
  * multiplies them, and gold's would turn a blue box olive. */
 static bool model_coloured(const struct content_config *o, const struct mesh *m)
 {
-	return o->material.base_color != MATERIAL_OFF && (m->colors || m->material.has_colors);
+	return o->material.base_color != MATERIAL_OFF && (m->colors || m->has_colors);
 }
 
 /* Where [scene] matcap_first = auto starts the set of path, into buf (""

@@ -463,6 +463,7 @@ static void find_uniforms(const struct gl *gl, struct program *p)
 	p->ramp = gl->GetUniformLocation(p->id, "u_ramp");
 	p->base_map = gl->GetUniformLocation(p->id, "u_base_map");
 	p->base_transform = gl->GetUniformLocation(p->id, "u_base_transform");
+	p->reads_base_map = gl->GetUniformLocation(p->id, "u_reads_base_map");
 	p->iridescence = gl->GetUniformLocation(p->id, "u_iridescence");
 	p->hsv = gl->GetUniformLocation(p->id, "u_hsv");
 	p->light = gl->GetUniformLocation(p->id, "u_light");

@@ -50,7 +50,7 @@ static void set_transform(const struct gl *gl, GLint uniform, const float t[6])
 /* What one material changes: its base map, its transform and its alpha,
  * its detail map (else the model's) and its iridescence (where its
  * program has them). A material without a base map leaves the last one
- * bound: its vertices' alpha (mesh colors) reads none of it. */
+ * bound and says so (u_reads_base_map 0): its draw reads none of it. */
 static void set_surface(const struct renderer *r, const struct program *p, uint32_t k)
 {
 	const struct gl *gl = r->gl;
@@ -66,6 +66,8 @@ static void set_surface(const struct renderer *r, const struct program *p, uint3
 		gl->Uniform4f(p->iridescence, r->mat.hue_range, r->mat.hue_average,
 			      r->mat.hue_shift, r->mat.opacity);
 	set_transform(gl, p->base_transform, s->base_transform);
+	if (p->reads_base_map >= 0)
+		gl->Uniform1f(p->reads_base_map, r->base_maps[k] ? 1.0f : 0.0f);
 	if (p->alpha >= 0)
 		gl->Uniform2f(p->alpha, s->alpha, s->alpha_cutoff);
 	if (p->emissive >= 0)

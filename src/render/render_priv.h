@@ -27,6 +27,7 @@ struct program {
 	GLuint id;
 	unsigned features; /* enum material_feature and material_variant bits */
 	GLint modelview, projection, normal_matrix, matcap, detail, ramp, base_map, base_transform;
+	GLint reads_base_map; /* u_reads_base_map: this draw's material has a base map */
 	GLint iridescence, hsv, light, base_color, shininess, alpha;
 	GLint emissive, emissive_map, emissive_transform; /* a range that emits */
 	GLint bones;	     /* u_bones: a skinning program's palette; else -1 */

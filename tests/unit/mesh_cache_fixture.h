@@ -33,8 +33,10 @@ static inline int setup(void **state)
 	snprintf(f->dir, sizeof(f->dir), "/tmp/mk-cache-XXXXXX");
 	assert_non_null(mkdtemp(f->dir));
 	assert_int_equal(mesh_uv_sphere(&f->mesh, 24, 12), 0);
-	f->mesh.material.present = true;
-	f->mesh.material.base_color[1] = 0.25f;
+	/* A model of one colour: no array, the colour kept as a fact. */
+	f->mesh.has_colors = true;
+	f->mesh.vertex_color[1] = 0.75f;
+	f->mesh.vertex_color[3] = 0.5f;
 	/* Two parts: the upper half opaque, the lower blended, double sided. */
 	assert_int_equal(mesh_alloc_ranges(&f->mesh, 2, 2), 0);
 	f->mesh.ranges[0] = (struct mesh_range){0, f->mesh.index_count / 6 * 3, 0, {0, 0, 0}};
@@ -43,6 +45,8 @@ static inline int setup(void **state)
 						1,
 						{0, 0, 0}};
 	mesh_range_centers(&f->mesh);
+	f->mesh.materials[0].present = true;
+	f->mesh.materials[0].base_color[1] = 0.25f;
 	f->mesh.materials[1].alpha_mode = MESH_ALPHA_BLEND;
 	f->mesh.materials[1].base_alpha = 0.5f;
 	f->mesh.materials[1].double_sided = true;

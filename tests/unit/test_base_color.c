@@ -101,12 +101,12 @@ static void factor_colour_map_and_transform(void **state)
 	material_config_defaults(&cfg);
 	assert_int_equal(gltf_load_textures(path, material_gltf_textures(&cfg), &m), 0);
 	assert_non_null(m.colors);
-	assert_true(m.material.has_colors && m.material.has_base_map);
+	assert_true(m.has_colors && m.materials[0].has_base_map);
 	for (uint32_t v = 0; v < m.vertex_count; v++) {
 		for (int k = 0; k < 3; k++)
 			assert_true(fabs(m.colors[v * 4 + k] -
 					 factor[k] * f->sphere.colors[v * 4 + k]) < 1e-6);
-		assert_true(m.colors[v * 4 + 3] == 1.0f); /* the map applies */
+		assert_true(m.colors[v * 4 + 3] == 1.0f); /* COLOR_0 of three has no alpha */
 	}
 	/* The map is its range's material's (one here). */
 	assert_int_equal(m.range_count, 1);
@@ -128,15 +128,15 @@ static void factor_colour_map_and_transform(void **state)
 	assert_int_equal(material_gltf_textures(&cfg) & GLTF_TEXTURE_BASE_COLOR, 0);
 	assert_int_equal(gltf_load_textures(path, material_gltf_textures(&cfg), &m), 0);
 	assert_null(m.colors);
-	assert_true(m.material.has_base_map && !m.materials[0].base_map.width);
+	assert_true(m.materials[0].has_base_map && !m.materials[0].base_map.width);
 	assert_int_equal(material_load(&mat, &cfg, &m, true), 0);
 	assert_int_equal(mat.features, 0);
 	material_release(&mat);
 	mesh_release(&m);
 }
 
-/* COLOR_0 as normalized bytes (vec4) and shorts (vec3); without a map the
- * alpha says so, and without a material the factor is 1. */
+/* COLOR_0 as normalized bytes (vec4) and shorts (vec3), its alpha kept
+ * (1 for a vec3), and without a material the factor is 1. */
 static void colour_types(void **state)
 {
 	static const int types[2] = {5121, 5123};
@@ -156,7 +156,9 @@ static void colour_types(void **state)
 			for (int k = 0; k < 3; k++)
 				assert_true(fabs(m.colors[v * 4 + k] -
 						 f->sphere.colors[v * 4 + k]) <= step[t]);
-			assert_true(m.colors[v * 4 + 3] == 0.0f);
+			/* COLOR_0's own alpha (0.5 in the VEC4 one), else 1:
+			 * no flag of whether the vertex reads a base map. */
+			assert_true(fabs(m.colors[v * 4 + 3] - (t ? 1.0f : 0.5f)) <= step[t]);
 		}
 		mesh_release(&m);
 	}
@@ -200,7 +202,7 @@ static void no_colour_no_cost(void **state)
 	write_model(f, "white-nouv.glb", o, path, sizeof(path));
 	assert_int_equal(gltf_load_textures(path, GLTF_TEXTURE_BASE_COLOR, &m), 0);
 	assert_null(m.colors);
-	assert_false(m.material.has_colors);
+	assert_false(m.has_colors);
 	mesh_release(&m);
 }
 
@@ -231,8 +233,8 @@ static void tex_coord_picks_the_uv_set(void **state)
 	write_model(f, "uv1-missing.glb", o, path, sizeof(path));
 	assert_int_equal(gltf_load_textures(path, GLTF_TEXTURE_BASE_COLOR, &m), 0);
 	assert_null(m.colors); /* one colour, the default factor 0.8 0.7 0.6: a constant */
-	assert_true(m.material.has_colors);
-	assert_true(fabsf(m.material.color[0] - 0.8f) < 1e-6f);
+	assert_true(m.has_colors);
+	assert_true(fabsf(m.vertex_color[0] - 0.8f) < 1e-6f);
 	assert_null(m.uvs);
 	assert_int_equal(m.materials[0].base_map.width, 0);
 	mesh_release(&m);
@@ -303,15 +305,15 @@ static void decodes_only_what_is_used(void **state)
 	write_model(f, "maps.glb", o, path, sizeof(path));
 	for (size_t i = 0; i < sizeof(cases) / sizeof(cases[0]); i++) {
 		assert_int_equal(gltf_load_textures(path, cases[i].textures, &m), 0);
-		assert_int_equal(m.material.images_decoded, cases[i].decoded);
-		assert_true(m.material.has_normal_map && m.material.has_base_map);
+		assert_int_equal(mesh_images_decoded(&m), cases[i].decoded);
+		assert_true(m.materials[0].has_normal_map && m.materials[0].has_base_map);
 		mesh_release(&m);
 	}
 	/* No TEXCOORD_0: no texture can be placed, none is decoded. */
 	o.with_uvs = 0;
 	write_model(f, "maps-nouv.glb", o, path, sizeof(path));
 	assert_int_equal(gltf_load_textures(path, cases[3].textures, &m), 0);
-	assert_int_equal(m.material.images_decoded, 0);
+	assert_int_equal(mesh_images_decoded(&m), 0);
 	mesh_release(&m);
 }
 
@@ -376,7 +378,7 @@ static void assert_colour(const float *c, float r, float g, float b, float a)
 	assert_true(c[0] == r && c[1] == g && c[2] == b && c[3] == a);
 }
 
-/* A model of one colour keeps it as a constant (mesh_material.color, a
+/* A model of one colour keeps it as a constant (mesh.vertex_color, a
  * constant vertex attribute): no colour per vertex to build, store or
  * upload. Colours that differ between primitives, or COLOR_0, are per
  * vertex, and the constant so far becomes the first vertices' colours. */
@@ -436,28 +438,28 @@ static void one_colour_is_a_constant(void **state)
 	material_config_defaults(&cfg);
 	load_three(one, (const int[3]){0, 0, 0}, false, &m);
 	assert_null(m.colors);
-	assert_true(m.material.has_colors);
-	assert_colour(m.material.color, 1, 0, 0, 0);
+	assert_true(m.has_colors);
+	assert_colour(m.vertex_color, 1, 0, 0, 1);
 	assert_int_equal(material_load(&mat, &cfg, &m, true), 0);
 	assert_int_equal(mat.features, MATERIAL_BASE_COLOR);
-	assert_colour(mat.vertex_color, 1, 0, 0, 0);
+	assert_colour(mat.vertex_color, 1, 0, 0, 1);
 	material_release(&mat);
 	mesh_release(&m);
 	load_three(two, (const int[3]){0, 1, 0}, false, &m);
 	assert_non_null(m.colors);
 	for (int v = 0; v < 9; v++)
-		assert_colour(m.colors + v * 4, v / 3 != 1, v / 3 == 1, 0, 0);
+		assert_colour(m.colors + v * 4, v / 3 != 1, v / 3 == 1, 0, 1);
 	mesh_release(&m);
 	load_three(one, (const int[3]){0, 0, 0}, true, &m);
 	assert_non_null(m.colors);
 	for (int v = 0; v < 9; v++)
-		assert_colour(m.colors + v * 4, v < 6 ? 1.0f : 0.5f, 0, 0, 0);
+		assert_colour(m.colors + v * 4, v < 6 ? 1.0f : 0.5f, 0, 0, 1);
 	mesh_release(&m);
 	/* A primitive without a material is white. */
 	load_three(one, (const int[3]){-1, 0, -1}, false, &m);
 	assert_non_null(m.colors);
 	for (int v = 0; v < 9; v++)
-		assert_colour(m.colors + v * 4, 1, v / 3 != 1, v / 3 != 1, 0);
+		assert_colour(m.colors + v * 4, 1, v / 3 != 1, v / 3 != 1, 1);
 	mesh_release(&m);
 }
 
@@ -520,10 +522,13 @@ static void each_primitive_keeps_its_material(void **state)
 		assert_int_equal(m.ranges[r].first_index, r * tris);
 		assert_int_equal(m.ranges[r].index_count, tris);
 	}
-	/* The vertices of a part without a map read none (alpha 0). */
+	/* Whether a part reads a map is its range's material's; the
+	 * colours' alpha is COLOR_0's (none here: 1). */
 	assert_non_null(m.colors);
+	assert_true(m.materials[m.ranges[0].material].has_base_map);
+	assert_false(m.materials[m.ranges[1].material].has_base_map);
 	assert_true(m.colors[m.indices[0] * 4 + 3] == 1.0f);
-	assert_true(m.colors[m.indices[tris] * 4 + 3] == 0.0f);
+	assert_true(m.colors[m.indices[tris] * 4 + 3] == 1.0f);
 	/* Resolved: one surface per material, its map and alpha. */
 	assert_int_equal(material_load(&mat, &cfg, &m, true), 0);
 	assert_int_equal(mat.surface_count, 3);
@@ -594,8 +599,6 @@ static void each_material_keeps_its_maps(void **state)
 	assert_int_equal(m.materials[0].normal_map.width, 4);
 	assert_int_equal(m.materials[1].normal_map.width, 0);
 	assert_int_equal(m.materials[2].normal_map.width, 2);
-	/* The model's material holds factors only: nothing decoded twice. */
-	assert_int_equal(m.material.normal_map.width, 0);
 	assert_int_equal(material_load(&mat, &cfg, &m, true), 0);
 	assert_int_equal(mat.features &
 			     (MATERIAL_DETAIL | MATERIAL_DETAIL_NORMAL | MATERIAL_IRIDESCENCE),

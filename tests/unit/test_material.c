@@ -150,15 +150,16 @@ static void textures_decoded_only_when_asked(void **state)
 
 	write_model(f, "all.glb", material_opts(f), path, sizeof(path));
 	assert_int_equal(gltf_load_textures(path, 0, &m), 0);
-	assert_true(m.material.present && m.material.iridescence);
-	assert_true(m.material.has_normal_map && m.material.has_occlusion_map &&
-		    m.material.has_thickness_map);
+	assert_true(m.materials[0].present && m.materials[0].iridescence);
+	assert_true(m.materials[0].has_normal_map && m.materials[0].has_occlusion_map &&
+		    m.materials[0].has_thickness_map);
 	assert_int_equal(m.materials[0].normal_map.width + m.materials[0].occlusion_map.width +
 			     m.materials[0].thickness_map.width,
 			 0);
-	assert_true(fabs(m.material.iridescence_factor - 0.5) < 1e-6);
-	assert_true(m.material.thickness_min == 200.0f && m.material.thickness_max == 400.0f);
-	assert_true(fabs(m.material.base_color[0] - 0.8) < 1e-6);
+	assert_true(fabs(m.materials[0].iridescence_factor - 0.5) < 1e-6);
+	assert_true(m.materials[0].thickness_min == 200.0f &&
+		    m.materials[0].thickness_max == 400.0f);
+	assert_true(fabs(m.materials[0].base_color[0] - 0.8) < 1e-6);
 	mesh_release(&m);
 	assert_int_equal(gltf_load_textures(path, GLTF_TEXTURE_OCCLUSION, &m), 0);
 	assert_int_equal(m.materials[0].normal_map.width, 0);

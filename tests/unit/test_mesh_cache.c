@@ -71,7 +71,12 @@ static void an_entry_reads_back_as_written(void **state)
 	assert_memory_equal(m->arrays[MESH_POSITIONS], f->packed.arrays[MESH_POSITIONS], bytes);
 	assert_memory_equal(m->indices, f->packed.indices, f->packed.index_count * 4);
 	assert_null(m->arrays[MESH_TANGENTS]);
-	assert_true(mesh_cache_entry_materials(e)->material.base_color[1] == 0.25f);
+	assert_true(mesh_cache_entry_materials(e)->materials[0].present);
+	assert_true(mesh_cache_entry_materials(e)->materials[0].base_color[1] == 0.25f);
+	/* The model's colour facts, which no material and no array hold. */
+	assert_true(mesh_cache_entry_materials(e)->has_colors);
+	assert_memory_equal(mesh_cache_entry_materials(e)->vertex_color, f->mesh.vertex_color,
+			    sizeof(f->mesh.vertex_color));
 	/* The ranges and their materials, as written. */
 	assert_int_equal(m->range_count, 2);
 	assert_memory_equal(m->ranges, f->mesh.ranges, 2 * sizeof(struct mesh_range));
@@ -97,13 +102,15 @@ static void a_second_uv_set_reads_back(void **state)
 	assert_int_equal(mesh_uv_sphere(&m, 12, 8), 0);
 	assert_int_equal(mesh_alloc_uv1(&m, m.uvs), 0);
 	m.uv1[3] = 7.5f; /* a repeated map's UVs leave [0, 1]: stored as float */
-	m.material.emissive_uv1 = true;
+	assert_int_equal(mesh_alloc_ranges(&m, 1, 1), 0);
+	m.ranges[0] = (struct mesh_range){0, m.index_count, 0, {0, 0, 0}};
+	m.materials[0].emissive_uv1 = true;
 	assert_int_equal(mesh_pack(&m, VERTEX_COMPACT, &p), 0);
 	assert_int_equal(mesh_cache_write(f->dir, &f->key, &p, &m, MESH_CACHE_MAX_BYTES), 0);
 	assert_int_equal(mesh_cache_open(f->dir, &f->key, &e), 0);
 	assert_non_null(mesh_cache_entry_mesh(e)->arrays[MESH_UV1]);
 	assert_memory_equal(mesh_cache_entry_mesh(e)->arrays[MESH_UV1], m.uv1, m.vertex_count * 8);
-	assert_true(mesh_cache_entry_materials(e)->material.emissive_uv1);
+	assert_true(mesh_cache_entry_materials(e)->materials[0].emissive_uv1);
 	mesh_cache_entry_free(e);
 	mesh_packed_release(&p);
 	mesh_release(&m);
@@ -149,9 +156,10 @@ static void a_resealed_entry_is_still_checked(void **state)
 	assert_int_equal(
 	    mesh_cache_write(f->dir, &f->key, &f->packed, &f->mesh, MESH_CACHE_MAX_BYTES), 0);
 	data = read_entry(f, &size);
-	/* The records (materials, then ranges) end the payload, 8-aligned;
-	 * the last index is before them. */
-	size_t records = (3 * mesh_cache_record_words(MESH_CACHE_MATERIAL) +
+	/* The records (colours, materials, then ranges) end the payload,
+	 * 8-aligned; the last index is before them. */
+	size_t records = (mesh_cache_record_words(MESH_CACHE_COLORS) +
+			  2 * mesh_cache_record_words(MESH_CACHE_MATERIAL) +
 			  2 * mesh_cache_record_words(MESH_CACHE_RANGE)) *
 			 4;
 	size_t last_index =
@@ -341,10 +349,11 @@ static void every_field_is_in_the_cache_table(void **state)
 	check_table(MESH_CACHE_MATERIAL, sizeof(struct mesh_material),
 		    _Alignof(struct mesh_material));
 	check_table(MESH_CACHE_RANGE, sizeof(struct mesh_range), _Alignof(struct mesh_range));
-	/* Stored: every field but the five images (34 words, and 14 for
-	 * unlit and emission). */
+	/* Stored: every field but the five images (29 words, and 14 for
+	 * unlit and emission); the model's colour facts, 5 words. */
 	assert_int_equal(mesh_cache_record_words(MESH_CACHE_RANGE), 6);
-	assert_int_equal(mesh_cache_record_words(MESH_CACHE_MATERIAL), 49);
+	assert_int_equal(mesh_cache_record_words(MESH_CACHE_MATERIAL), 44);
+	assert_int_equal(mesh_cache_record_words(MESH_CACHE_COLORS), 5);
 }
 
 static void the_directory_is_named_as_systemd_and_xdg_say(void **state)

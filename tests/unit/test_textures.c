@@ -101,7 +101,7 @@ static void write_model(const char *name, const char *texture, const char *image
 /* The base map the loader decoded for the model's one material. */
 static const struct image *base_map(const struct mesh *m)
 {
-	return m->material_count ? &m->materials[0].base_map : &m->material.base_map;
+	return &m->materials[0].base_map;
 }
 
 /* Load dir/name with its base colour map, the journal's lines into log. */

@@ -67,7 +67,7 @@ static void test_names_and_mapping(void **state)
 	/* The colour follows the material, not the vertices. */
 	assert_null(m.colors);
 	assert_true(m.colors_by_material);
-	assert_true(m.material.has_colors);
+	assert_true(m.has_colors);
 	mesh_release(&m);
 }
 

@@ -22,8 +22,7 @@ extern "C" {
  * errno code after logging one line naming the file and the fault. */
 int gltf_load(const char *path, struct mesh *out);
 
-/* The same, with the first material's factors in out->material, every
- * range's material in out->materials, and their textures named in
+/* The same, with every range's material in out->materials, and their textures named in
  * `textures` (enum gltf_texture bits) decoded by our
  * own image.c: embedded (bufferView, data: URI) or a file in the model's
  * folder or a subfolder of it, by the rule buffers follow. A texture that cannot be used is a

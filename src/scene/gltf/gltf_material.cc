@@ -425,8 +425,7 @@ int gltf_group_ranges(const tinygltf::Model &m, const std::vector<GltfPart> &pri
 
 bool gltf_primitive_base(const tinygltf::Model &m, int material, float rgba[4])
 {
-	rgba[0] = rgba[1] = rgba[2] = 1.0f;
-	rgba[3] = 0.0f;
+	rgba[0] = rgba[1] = rgba[2] = rgba[3] = 1.0f;
 	if (material < 0 || (size_t)material >= m.materials.size())
 		return false;
 	const tinygltf::Material &mat = m.materials[(size_t)material];
@@ -437,11 +436,9 @@ bool gltf_primitive_base(const tinygltf::Model &m, int material, float rgba[4])
 			rgba[k] = f[k];
 			coloured |= rgba[k] != 1.0f;
 		}
-	// Each primitive reads its own material's base map (mesh ranges).
-	bool map = base_texture(mat).index >= 0;
-	if (map)
-		rgba[3] = 1.0f;
-	return coloured || map;
+	// A base map colours it too; whether a draw reads it is its range's
+	// material's (mesh_material.has_base_map), not the colour's.
+	return coloured || base_texture(mat).index >= 0;
 }
 
 void gltf_keep_colors(struct mesh *out, const float uniform[4])
@@ -459,9 +456,9 @@ void gltf_keep_colors(struct mesh *out, const float uniform[4])
 		std::free(out->colors);
 		out->colors = nullptr;
 	} else if (!out->colors && uniform) {
-		std::copy(uniform, uniform + 4, out->material.color);
+		std::copy(uniform, uniform + 4, out->vertex_color);
 	}
-	out->material.has_colors = !plain && (out->colors || uniform);
+	out->has_colors = !plain && (out->colors || uniform);
 }
 
 int gltf_uv_set(const tinygltf::Model &m, int material, unsigned textures)
@@ -552,18 +549,14 @@ static void read_colour(const tinygltf::Model &m, int index, unsigned textures, 
 			     out->images_decoded);
 }
 
-void gltf_read_materials(const tinygltf::Model &m, const std::vector<int> &slots, int first,
+void gltf_read_materials(const tinygltf::Model &m, const std::vector<int> &slots,
 			 const std::string &name, unsigned textures, size_t budget,
 			 const GltfImages &images, struct mesh *out)
 {
 	std::string shown = gltf_ext::escape(name);
 	gltf_fit_textures(m, slots, textures, budget, images);
-	gltf_read_material(m, first, textures, 0, images, name, &out->material);
-	for (size_t k = 0; k < slots.size(); k++) {
+	for (size_t k = 0; k < slots.size(); k++)
 		gltf_read_material(m, slots[k], textures, ~0u, images, name, &out->materials[k]);
-		out->material.images_decoded += out->materials[k].images_decoded;
-		out->material.has_base_map |= out->materials[k].has_base_map;
-	}
 	gltf_say_scaled(shown, images, budget);
 	unsigned mapped = 0;
 	for (uint32_t k = 0; k < out->material_count; k++)

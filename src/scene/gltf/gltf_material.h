@@ -40,13 +40,13 @@ bool gltf_keep_image(tinygltf::Image *image, const int index, std::string *err, 
 		     void *user);
 
 // A primitive's part of the base colour (struct mesh colors): rgb its
-// material's baseColorFactor, a 1 when it reads its material's base map
-// (that of its range's material). Returns whether the material colours
-// the model at all.
+// material's baseColorFactor, a 1 (COLOR_0's alpha multiplies it).
+// Returns whether the material colours the model at all (a factor or a
+// base map).
 bool gltf_primitive_base(const tinygltf::Model &m, int material, float rgba[4]);
 
 // Colours that change nothing (white, and no base map decoded for their
-// alpha to apply) are given back; material.has_colors says what is left.
+// alpha to apply) are given back; mesh.has_colors says what is left.
 // uniform: every vertex's colour when the mesh has no colour array (one
 // colour for the whole model), or null.
 void gltf_keep_colors(struct mesh *out, const float uniform[4]);
@@ -78,12 +78,11 @@ struct GltfPart {
 int gltf_group_ranges(const tinygltf::Model &m, const std::vector<GltfPart> &parts,
 		      const uint32_t *indices, struct mesh *out, std::vector<int> *slots);
 
-// The model's material (`first`: the first part's) for what applies to the
-// whole model, its factors only; then every range's material (slots[k] for
-// out->materials[k]) with its own textures, each decoded once. textures: 0
+// Every range's material (slots[k] for out->materials[k]) with its own
+// textures, each decoded once. textures: 0
 // where the model has no UVs (no texture can be placed). Moved here from
 // gltf_mesh.cc, which is at its length.
-void gltf_read_materials(const tinygltf::Model &m, const std::vector<int> &slots, int first,
+void gltf_read_materials(const tinygltf::Model &m, const std::vector<int> &slots,
 			 const std::string &name, unsigned textures, size_t budget,
 			 const GltfImages &images, struct mesh *out);
 

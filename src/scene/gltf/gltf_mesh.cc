@@ -49,11 +49,10 @@ struct Builder {
 	std::vector<uint32_t> indices;
 	std::vector<Range> ranges;
 	bool any_uvs = false;
-	int material = -1; // the first primitive's with one: the model's
 	bool want_colors = false, any_colors = false;
 	// While colors is empty: the one colour of every vertex so far
-	// (mesh_material.color), so a model of one material costs no array.
-	float uniform[4] = {1, 1, 1, 0};
+	// (mesh.vertex_color), so a model of one material costs no array.
+	float uniform[4] = {1, 1, 1, 1};
 	bool uniform_set = false;
 	unsigned textures = 0;		      // enum gltf_texture: what is asked, for the UV set
 	std::vector<int> slots;		      // the glTF material of each of out->materials
@@ -436,7 +435,7 @@ bool read_vertices(Builder &b, const tinygltf::Model &m, const tinygltf::Primiti
 		if (r->has_tangents)
 			push_tangent(b, a.tan, i, world, det);
 		for (int k = 0; per_vertex && k < 4; k++) { // a float colour may leave [0, 1]
-			double c = a.col.count && k < 3 ? read_component(a.col, i, k) : 1.0;
+			double c = k < a.col.components ? read_component(a.col, i, k) : 1.0;
 			b.colors.push_back(base[k] * (float)(c >= 0.0 ? std::fmin(c, 1.0) : 0.0));
 		}
 	}
@@ -456,8 +455,6 @@ bool add_primitive(Builder &b, const tinygltf::Model &m, const tinygltf::Primiti
 		return true;
 	}
 	Range r = {};
-	if (p.material >= 0 && b.material < 0)
-		b.material = p.material;
 	r.material = p.material >= 0 && (size_t)p.material < m.materials.size() ? p.material : -1;
 	r.first_vertex = (uint32_t)(b.positions.size() / 3);
 	r.first_index = (uint32_t)b.indices.size();
@@ -626,8 +623,8 @@ void finish_materials(const Builder &b, tinygltf::Model &m, const struct gltf_op
 	if (b.not_triangles)
 		log_info("%s: %zu primitives of points or lines left out (only triangles show)",
 			 shown.c_str(), b.not_triangles);
-	gltf_read_materials(m, b.slots, b.material, b.name, b.any_uvs ? o->textures : 0,
-			    o->texture_memory, images, out);
+	gltf_read_materials(m, b.slots, b.name, b.any_uvs ? o->textures : 0, o->texture_memory,
+			    images, out);
 }
 
 } // namespace

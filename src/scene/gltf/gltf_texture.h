@@ -21,7 +21,7 @@ enum gltf_texture {
 	GLTF_TEXTURE_THICKNESS = 1u << 2, /* KHR_materials_iridescence thickness */
 	/* baseColorTexture, and with it the base colour itself: per vertex
 	 * baseColorFactor x COLOR_0 (struct mesh colors), or one colour for
-	 * the whole model (mesh_material.color) */
+	 * the whole model (mesh.vertex_color) */
 	GLTF_TEXTURE_BASE_COLOR = 1u << 3,
 };
 

@@ -258,6 +258,6 @@ void gltf_variants_colors(const tinygltf::Model &m, bool want_colors, const std:
 	std::free(out->colors);
 	out->colors = nullptr;
 	out->colors_by_material = true;
-	out->material.has_colors = true;
-	mesh_material_vertex_color(&out->materials[out->ranges[0].material], out->material.color);
+	out->has_colors = true;
+	mesh_material_vertex_color(&out->materials[out->ranges[0].material], out->vertex_color);
 }

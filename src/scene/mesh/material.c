@@ -86,13 +86,6 @@ static void iridescence_from_gltf(const struct mesh_material *g, struct material
 	m->opacity = (float)(DEFAULT_OPACITY * fmin(fmax(g->iridescence_factor, 0.0), 1.0));
 }
 
-/* The mesh material range k draws with; a mesh without ranges (built in,
- * made by a test) has the model's one. */
-static const struct mesh_material *mesh_surface(const struct mesh *mesh, uint32_t k)
-{
-	return mesh->material_count ? &mesh->materials[k] : &mesh->material;
-}
-
 /* One material's iridescence: on as the settings say or, auto, where its
  * glTF material has it; the settings' numbers over the material's. */
 static void surface_iridescence(const struct material_config *cfg, const struct mesh_material *g,
@@ -124,7 +117,7 @@ static void resolve_iridescence(const struct material_config *cfg, const struct 
 	for (uint32_t k = m->surface_count; k-- > 0;) {
 		struct material_surface *s = &m->surfaces[k];
 
-		surface_iridescence(cfg, mesh_surface(mesh, k), s);
+		surface_iridescence(cfg, mesh_material_at(mesh, k), s);
 		if (!(s->features & MATERIAL_IRIDESCENCE))
 			continue;
 		m->features |= MATERIAL_IRIDESCENCE;
@@ -229,7 +222,7 @@ static int pack_surfaces(const struct material_config *cfg, const struct mesh *m
 	int ret = 0;
 
 	for (uint32_t k = 0; k < m->surface_count && !ret; k++) {
-		const struct mesh_material *g = mesh_surface(mesh, k);
+		const struct mesh_material *g = mesh_material_at(mesh, k);
 		struct material_surface *s = &m->surfaces[k];
 
 		ret = pack_gltf(g, (s->features & MATERIAL_IRIDESCENCE) != 0, &s->detail);
@@ -315,7 +308,7 @@ static int resolve_surfaces(const struct mesh *mesh, bool base, struct material 
 	int ret = 0;
 
 	for (uint32_t k = 0; k < m->surface_count && !ret; k++) {
-		const struct mesh_material *g = mesh_surface(mesh, k);
+		const struct mesh_material *g = mesh_material_at(mesh, k);
 		struct material_surface *s = &m->surfaces[k];
 
 		s->double_sided = g->double_sided;
@@ -363,7 +356,8 @@ static int surface_light(const struct material_config *cfg, const struct mesh *m
 	if (g->emissive_map.width && placed)
 		ret = copy_base_map(&g->emissive_map, &s->emissive_map);
 	if (!ret && s->emissive_map.width)
-		s->features |= MATERIAL_EMISSIVE_MAP | (g->emissive_uv1 ? MATERIAL_EMISSIVE_UV1 : 0);
+		s->features |=
+		    MATERIAL_EMISSIVE_MAP | (g->emissive_uv1 ? MATERIAL_EMISSIVE_UV1 : 0);
 	else if (g->emissive_map.width)
 		log_warn("the model's emissiveTexture has no %s to place it: its "
 			 "emissiveFactor alone is drawn",
@@ -377,18 +371,17 @@ static int surface_light(const struct material_config *cfg, const struct mesh *m
 static int resolve_base_color(const struct material_config *cfg, const struct mesh *mesh,
 			      struct material *m)
 {
-	const struct mesh_material *g = &mesh->material;
 	bool colour = cfg->base_color != MATERIAL_OFF;
-	bool base = colour && (mesh->colors || g->has_colors);
+	bool base = colour && (mesh->colors || mesh->has_colors);
 	int ret;
 
 	if (base) {
 		m->features |= MATERIAL_BASE_COLOR;
-		memcpy(m->vertex_color, g->color, sizeof(m->vertex_color));
+		memcpy(m->vertex_color, mesh->vertex_color, sizeof(m->vertex_color));
 	}
 	ret = resolve_surfaces(mesh, base, m);
 	for (uint32_t k = 0; colour && !ret && k < m->surface_count; k++) {
-		ret = surface_light(cfg, mesh, mesh_surface(mesh, k), &m->surfaces[k]);
+		ret = surface_light(cfg, mesh, mesh_material_at(mesh, k), &m->surfaces[k]);
 		m->features |= m->surfaces[k].features & MATERIAL_PER_RANGE;
 	}
 	return ret;
@@ -397,7 +390,7 @@ static int resolve_base_color(const struct material_config *cfg, const struct me
 int material_load(struct material *out, const struct material_config *cfg, const struct mesh *mesh,
 		  bool strict)
 {
-	const struct mesh_material *g = &mesh->material;
+	const struct mesh_material *g = mesh_material_first(mesh);
 	int ret = 0;
 
 	memset(out, 0, sizeof(*out));
@@ -467,7 +460,8 @@ static int displace(const struct material *m, struct mesh *mesh, int width, int 
 			return ret;
 		/* Triangle t became n x n triangles at t n n: each range
 		 * keeps its material over its own, n n times as many. */
-		fine.material = mesh->material;
+		fine.has_colors = mesh->has_colors;
+		memcpy(fine.vertex_color, mesh->vertex_color, sizeof(fine.vertex_color));
 		fine.ranges = mesh->ranges, fine.range_count = mesh->range_count;
 		fine.materials = mesh->materials, fine.material_count = mesh->material_count;
 		for (uint32_t r = 0; r < fine.range_count; r++) {
@@ -477,7 +471,6 @@ static int displace(const struct material *m, struct mesh *mesh, int width, int 
 		mesh->ranges = NULL, mesh->range_count = 0;
 		mesh->materials = NULL, mesh->material_count = 0;
 		mesh_variants_move(&fine, mesh);
-		mesh_material_default(&mesh->material);
 		mesh_release(mesh);
 		*mesh = fine;
 	}

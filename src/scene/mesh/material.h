@@ -122,7 +122,7 @@ struct material {
 	struct image detail;
 	struct image ramp;
 	struct image height;
-	float vertex_color[4]; /* mesh_material.color: every vertex's without a colour array */
+	float vertex_color[4]; /* mesh.vertex_color: every vertex's without a colour array */
 	/* One per mesh material (one for a mesh without ranges): the
 	 * renderer draws range r with surfaces[ranges[r].material]. */
 	uint32_t surface_count;
@@ -136,7 +136,7 @@ void material_config_release(struct material_config *cfg);
  * gltf_texture bits), so that no other is decoded. */
 unsigned material_gltf_textures(const struct material_config *cfg);
 
-/* Settings plus the model's glTF material (mesh->material) into out, with
+/* Settings plus the model's glTF materials (mesh->materials) into out, with
  * the named files decoded. strict: a file that fails is an error (one
  * line, naming it); otherwise its feature is left off and the journal
  * says so. Returns 0 or a negative errno. */

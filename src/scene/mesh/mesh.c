@@ -5,26 +5,30 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* glTF's defaults: one truth for a material made (mesh_material_default)
+ * and for the one a mesh without materials draws with (mesh_material_at).
+ * const: never written. */
+static const struct mesh_material material_default = {
+    .base_color = {1, 1, 1},
+    .base_alpha = 1,
+    .alpha_cutoff = 0.5f,
+    .iridescence_ior = 1.3f,
+    .thickness_min = 100,
+    .thickness_max = 400,
+    .normal_scale = 1,
+    .occlusion_strength = 1,
+    .base_transform = {1, 0, 0, 1, 0, 0},
+    .emissive_transform = {1, 0, 0, 1, 0, 0},
+};
+
 void mesh_material_default(struct mesh_material *mat)
 {
-	memset(mat, 0, sizeof(*mat));
-	for (int k = 0; k < 3; k++)
-		mat->base_color[k] = mat->color[k] = 1.0f;
-	mat->base_alpha = 1.0f;
-	mat->alpha_cutoff = 0.5f;
-	mat->iridescence_ior = 1.3f;
-	mat->thickness_min = 100.0f;
-	mat->thickness_max = 400.0f;
-	mat->normal_scale = 1.0f;
-	mat->occlusion_strength = 1.0f;
-	mat->base_transform[0] = mat->base_transform[3] = 1.0f;
-	mat->emissive_transform[0] = mat->emissive_transform[3] = 1.0f;
+	*mat = material_default;
 }
 
 int mesh_alloc(struct mesh *m, uint32_t vertex_count, uint32_t index_count, bool with_uvs)
 {
 	memset(m, 0, sizeof(*m));
-	mesh_material_default(&m->material);
 	m->positions = malloc((size_t)vertex_count * 3 * sizeof(float) + 1);
 	m->normals = malloc((size_t)vertex_count * 3 * sizeof(float) + 1);
 	m->uvs = with_uvs ? malloc((size_t)vertex_count * 2 * sizeof(float) + 1) : NULL;
@@ -71,7 +75,6 @@ void mesh_release(struct mesh *m)
 	free(m->colors);
 	free(m->indices);
 	free(m->flat);
-	mesh_material_release(&m->material);
 	for (uint32_t i = 0; m->materials && i < m->material_count; i++)
 		mesh_material_release(&m->materials[i]);
 	free(m->materials);
@@ -109,22 +112,6 @@ int mesh_alloc_ranges(struct mesh *m, uint32_t n, uint32_t k)
 	m->range_count = n;
 	m->materials = mats;
 	m->material_count = k;
-	return 0;
-}
-
-static void drop_images(struct mesh_material *m);
-
-int mesh_set_single_range(struct mesh *m)
-{
-	int ret = mesh_alloc_ranges(m, 1, 1);
-
-	if (ret)
-		return ret;
-	m->materials[0] = m->material;
-	/* The copy owns no image: the model's material keeps its own. */
-	drop_images(&m->materials[0]);
-	m->ranges[0] = (struct mesh_range){0, m->index_count, 0, {0, 0, 0}};
-	mesh_range_centers(m);
 	return 0;
 }
 
@@ -362,8 +349,8 @@ int mesh_copy_factors(struct mesh *to, const struct mesh *from)
 {
 	size_t n = from->material_count;
 
-	to->material = from->material;
-	drop_images(&to->material);
+	to->has_colors = from->has_colors;
+	memcpy(to->vertex_color, from->vertex_color, sizeof(to->vertex_color));
 	to->materials = n ? malloc(n * sizeof(*to->materials)) : NULL;
 	to->material_count = 0;
 	if (n && !to->materials)
@@ -380,7 +367,37 @@ void mesh_material_vertex_color(const struct mesh_material *mat, float rgba[4])
 {
 	for (int k = 0; k < 3; k++)
 		rgba[k] = mat->base_color[k];
-	rgba[3] = mat->has_base_map ? 1.0f : 0.0f;
+	rgba[3] = 1.0f;
+}
+
+const struct mesh_material *mesh_material_at(const struct mesh *m, uint32_t k)
+{
+	return k < m->material_count ? &m->materials[k] : &material_default;
+}
+
+bool mesh_materials_any(const struct mesh *m, bool (*pred)(const struct mesh_material *))
+{
+	for (uint32_t k = 0; k < m->material_count; k++)
+		if (pred(&m->materials[k]))
+			return true;
+	return false;
+}
+
+const struct mesh_material *mesh_material_first(const struct mesh *m)
+{
+	for (uint32_t k = 0; k < m->material_count; k++)
+		if (m->materials[k].present)
+			return &m->materials[k];
+	return mesh_material_at(m, m->material_count);
+}
+
+unsigned mesh_images_decoded(const struct mesh *m)
+{
+	unsigned n = 0;
+
+	for (uint32_t k = 0; k < m->material_count; k++)
+		n += m->materials[k].images_decoded;
+	return n;
 }
 
 int mesh_variant_find(const struct mesh *m, const char *name)

@@ -22,8 +22,8 @@ enum mesh_wrap { MESH_WRAP_REPEAT, MESH_WRAP_CLAMP, MESH_WRAP_MIRROR };
 /* What a glTF material says (src/scene/mesh/material.c decides what a scene
  * uses of it). Its textures are decoded only for a feature the scene asked
  * for; an image left out has width 0. struct mesh has one of these per
- * material its primitives use (materials[]), and one for the model's
- * features (material): see there. */
+ * material its primitives use (materials[]); a question about the whole
+ * model is asked of all of them (mesh_materials_any). */
 struct mesh_material {
 	bool present;	     /* the model names a material */
 	float base_color[3]; /* pbrMetallicRoughness.baseColorFactor */
@@ -46,12 +46,8 @@ struct mesh_material {
 	 * KHR_texture_transform as uv' = (m[0] u + m[2] v + m[4], m[1] u +
 	 * m[3] v + m[5]). Its UVs are the mesh's uvs. */
 	bool has_base_map;
-	bool has_colors; /* the loader gave the mesh colors (kept when they are cached) */
-	/* Every vertex's colour (as struct mesh colors) when has_colors and
-	 * the mesh has no colour array: a model of one colour. */
-	float color[4];
 	/* How many images the loader decoded for it: only those a scene asked
-	 * for and can place (the tests count them). */
+	 * for and can place (the tests count them: mesh_images_decoded). */
 	unsigned images_decoded;
 	struct image base_map;
 	float base_transform[6];
@@ -97,17 +93,19 @@ struct mesh {
 	 * glTF convention). NULL unless the model or a feature provides it. */
 	float *tangents;
 	/* rgba per vertex, linear: rgb = the primitive's baseColorFactor x
-	 * COLOR_0, a = 1 where the primitive reads the material's base map
-	 * (mesh_material.base_map), else 0. NULL when the loader was not asked
-	 * for base colour, the model has none, or every vertex has the same
-	 * (then mesh_material.color holds it). */
+	 * COLOR_0, a = COLOR_0's alpha (1 where it has none): glTF multiplies
+	 * the base colour's alpha by it. Whether a vertex reads a base map is
+	 * its range's material's (a uniform per draw), not the array's. NULL
+	 * when the loader was not asked for base colour, the model has none,
+	 * or every vertex has the same (then vertex_color holds it). */
 	float *colors;
 	uint32_t *indices;
-	/* The model's material for what applies to the whole model (the one
-	 * colour of every vertex, the lit grey): the first primitive's
-	 * material, its factors only. Its images are left empty when the
-	 * mesh has materials[]: each holds its own maps. */
-	struct mesh_material material;
+	/* The loader gave the model colours of its own: colors, or
+	 * vertex_color for every vertex (kept when they are cached). */
+	bool has_colors;
+	/* Every vertex's colour (as colors) when has_colors and colors is
+	 * NULL: a model of one colour costs no array. */
+	float vertex_color[4];
 	/* Draw ranges: indices[first_index .. first_index + index_count)
 	 * drawn with materials[material]. Together they cover every index
 	 * once, in order. A model of one material has one range. */
@@ -151,10 +149,6 @@ int mesh_alloc_colors(struct mesh *m);
 int mesh_alloc_uv1(struct mesh *m, const float *from);
 /* Frees the arrays and the materials' images. */
 void mesh_release(struct mesh *m);
-/* One range over every index and one material (a copy of m->material's
- * factors, no images): what a model of one material has. Replaces any
- * ranges and materials m had. Returns 0 or -ENOMEM. */
-int mesh_set_single_range(struct mesh *m);
 /* Allocates n ranges and k default materials (replacing any). */
 int mesh_alloc_ranges(struct mesh *m, uint32_t n, uint32_t k);
 /* Each range's center from the positions of the triangles it draws. */
@@ -162,14 +156,26 @@ void mesh_range_centers(struct mesh *m);
 void mesh_material_release(struct mesh_material *mat);
 /* Whether the material holds a decoded image (any of its maps). */
 bool mesh_material_decoded(const struct mesh_material *mat);
-/* to's material and materials from from's, their images left out (to's
- * own materials array is not freed first). Returns 0 or -ENOMEM. */
+/* to's materials and colour facts (has_colors, vertex_color) from
+ * from's, their images left out (to's own materials array is not freed
+ * first). Returns 0 or -ENOMEM. */
 int mesh_copy_factors(struct mesh *to, const struct mesh *from);
 /* The material with every field at the glTF default and no image. */
 void mesh_material_default(struct mesh_material *mat);
+/* Material k, or for a mesh without materials (built in, made by a
+ * test) the glTF default: what its one draw reads. */
+const struct mesh_material *mesh_material_at(const struct mesh *m, uint32_t k);
+/* Whether any of the mesh's materials answers yes: the whole model's
+ * questions (does some part read a base map?) asked of materials[]. */
+bool mesh_materials_any(const struct mesh *m, bool (*pred)(const struct mesh_material *));
+/* The first material the file names (present), else the default: the
+ * model's colour where one colour stands for the whole (the lit grey). */
+const struct mesh_material *mesh_material_first(const struct mesh *m);
+/* The images the loader decoded over every material. */
+unsigned mesh_images_decoded(const struct mesh *m);
 /* What a range of this material reads as its vertex colour when the mesh
- * has colors_by_material: rgb its base colour factor, a 1 where it reads
- * its base map (as struct mesh colors). */
+ * has colors_by_material: rgb its base colour factor, a 1 (as struct mesh
+ * colors without COLOR_0). */
 void mesh_material_vertex_color(const struct mesh_material *mat, float rgba[4]);
 /* The index of the variant named `name` (exact), or -1. */
 int mesh_variant_find(const struct mesh *m, const char *name);

@@ -32,7 +32,7 @@ struct cache_header {
 	uint32_t format; /* enum vertex_format */
 	uint32_t arrays; /* bit a: array a is present */
 	float position_scale;
-	uint32_t range_count, material_count; /* the model's material comes first */
+	uint32_t range_count, material_count;
 	uint32_t width, height;
 	uint64_t payload_size, payload_hash;
 	/* The live playback's section (mesh_cache_anim.c) at the payload's
@@ -48,7 +48,9 @@ struct mesh_cache_entry {
 	void *map;
 	size_t size;
 	struct mesh_packed mesh;
-	struct mesh materials; /* no arrays: the materials and ranges */
+	/* No arrays: what only it holds, the materials' factors and the
+	 * model's colour facts (its ranges are mesh's). */
+	struct mesh materials;
 	struct mesh_cache_key key;
 	struct anim_play *play; /* read from the anim section; NULL: a still */
 };
@@ -58,11 +60,12 @@ static size_t padded(size_t n)
 	return (n + 7) & ~(size_t)7;
 }
 
-/* The records after the indices: the model's material, each range
+/* The records after the indices: the model's colour facts, each range
  * material, each range (mesh_cache_fields.c), 32-bit words each. */
 static uint64_t record_words(const struct cache_header *h)
 {
-	return (uint64_t)(1 + h->material_count) * mesh_cache_record_words(MESH_CACHE_MATERIAL) +
+	return (uint64_t)mesh_cache_record_words(MESH_CACHE_COLORS) +
+	       (uint64_t)h->material_count * mesh_cache_record_words(MESH_CACHE_MATERIAL) +
 	       (uint64_t)h->range_count * mesh_cache_record_words(MESH_CACHE_RANGE);
 }
 
@@ -112,9 +115,8 @@ static int read_records(const struct cache_header *h, const uint32_t *w, struct 
 	memset(materials, 0, sizeof(*materials));
 	if (h->range_count && mesh_alloc_ranges(materials, h->range_count, h->material_count))
 		return -ENOMEM;
-	mesh_material_default(&materials->material);
-	ok = mesh_cache_record_read(MESH_CACHE_MATERIAL, w, &materials->material);
-	w += mw;
+	ok = mesh_cache_record_read(MESH_CACHE_COLORS, w, materials);
+	w += mesh_cache_record_words(MESH_CACHE_COLORS);
 	for (uint32_t k = 0; ok && k < h->material_count; k++, w += mw)
 		ok = mesh_cache_record_read(MESH_CACHE_MATERIAL, w, &materials->materials[k]);
 	for (uint32_t r = 0; ok && r < h->range_count; r++, w += rw) {
@@ -322,8 +324,8 @@ static void write_records(const struct cache_header *h, const struct mesh_packed
 	size_t mw = mesh_cache_record_words(MESH_CACHE_MATERIAL);
 	size_t rw = mesh_cache_record_words(MESH_CACHE_RANGE);
 
-	mesh_cache_record_write(MESH_CACHE_MATERIAL, &materials->material, w);
-	w += mw;
+	mesh_cache_record_write(MESH_CACHE_COLORS, materials, w);
+	w += mesh_cache_record_words(MESH_CACHE_COLORS);
 	for (uint32_t k = 0; k < h->material_count; k++, w += mw)
 		mesh_cache_record_write(MESH_CACHE_MATERIAL, &materials->materials[k], w);
 	for (uint32_t r = 0; r < h->range_count; r++, w += rw)

@@ -73,9 +73,10 @@ int mesh_cache_open(const char *dir, const struct mesh_cache_key *key,
 		    struct mesh_cache_entry **out);
 /* The entry's mesh, its arrays pointing into the mapping. */
 const struct mesh_packed *mesh_cache_entry_mesh(const struct mesh_cache_entry *e);
-/* The model's material and each range's (no images: an entry is written
- * only for a scene that decodes none), in a mesh with no arrays; its
- * ranges are the entry mesh's. */
+/* What the entry keeps that its packed mesh does not: each range's
+ * material (no images: an entry is written only for a scene that decodes
+ * none) and the model's colour facts (has_colors, vertex_color), in a
+ * mesh with no arrays; its ranges are the entry mesh's. */
 const struct mesh *mesh_cache_entry_materials(const struct mesh_cache_entry *e);
 /* Once its mesh is on the GPU: the mapping's pages leave the process
  * (the file keeps them; a later read maps them in again). */
@@ -138,10 +139,11 @@ struct mesh_cache_writer *mesh_cache_write_async_play(const char *dir,
 void mesh_cache_writer_join(struct mesh_cache_writer *w);
 
 /* The table of fields an entry keeps (src/scene/mesh/mesh_cache_fields.c):
- * each field of struct mesh_material and struct mesh_range, stored as
+ * each field of struct mesh_material and struct mesh_range, and struct
+ * mesh's colour facts (has_colors, vertex_color), stored as
  * 32-bit words (a bool 0 or 1, an int up to max, a float finite: checked
  * when read), or NONE: named, not stored. */
-enum mesh_cache_table { MESH_CACHE_MATERIAL, MESH_CACHE_RANGE };
+enum mesh_cache_table { MESH_CACHE_MATERIAL, MESH_CACHE_RANGE, MESH_CACHE_COLORS };
 enum mesh_field_kind {
 	MESH_FIELD_NONE,
 	MESH_FIELD_BOOL,

@@ -33,8 +33,6 @@ static const struct mesh_cache_field material_fields[] = {
     FIELD(mesh_material, normal_scale, float, MESH_FIELD_FLOAT, 0),
     FIELD(mesh_material, occlusion_strength, float, MESH_FIELD_FLOAT, 0),
     FIELD(mesh_material, has_base_map, bool, MESH_FIELD_BOOL, 1),
-    FIELD(mesh_material, has_colors, bool, MESH_FIELD_BOOL, 1),
-    FIELD(mesh_material, color, float, MESH_FIELD_FLOAT, 0),
     FIELD(mesh_material, images_decoded, unsigned, MESH_FIELD_U32, 0),
     FIELD(mesh_material, base_transform, float, MESH_FIELD_FLOAT, 0),
     FIELD(mesh_material, base_wrap, int, MESH_FIELD_INT, MESH_WRAP_MIRROR),
@@ -55,6 +53,13 @@ static const struct mesh_cache_field material_fields[] = {
     FIELD(mesh_material, emissive_map, struct image, MESH_FIELD_NONE, 0),
 };
 
+/* The model's colour facts, which no material holds: the rest of struct
+ * mesh is the entry's arrays, ranges and materials. */
+static const struct mesh_cache_field color_fields[] = {
+    FIELD(mesh, has_colors, bool, MESH_FIELD_BOOL, 1),
+    FIELD(mesh, vertex_color, float, MESH_FIELD_FLOAT, 0),
+};
+
 static const struct mesh_cache_field range_fields[] = {
     FIELD(mesh_range, first_index, uint32_t, MESH_FIELD_U32, 0),
     FIELD(mesh_range, index_count, uint32_t, MESH_FIELD_U32, 0),
@@ -67,6 +72,10 @@ const struct mesh_cache_field *mesh_cache_fields(enum mesh_cache_table t, size_t
 	if (t == MESH_CACHE_RANGE) {
 		*count = sizeof(range_fields) / sizeof(range_fields[0]);
 		return range_fields;
+	}
+	if (t == MESH_CACHE_COLORS) {
+		*count = sizeof(color_fields) / sizeof(color_fields[0]);
+		return color_fields;
 	}
 	*count = sizeof(material_fields) / sizeof(material_fields[0]);
 	return material_fields;
