@@ -23,7 +23,7 @@ UNIT_TESTS  += anim anim_palette anim_play kiosk_anim anim_frames gltf_bake
 UNIT_TESTS  += caption import gltf_depth load_guard
 UNIT_TESTS  += ini stranger_settings normals
 UNIT_TESTS  += textures
-UNIT_TESTS  += variants
+UNIT_TESTS  += variants vertex_alpha
 TOOLS_DIR   := $(BUILD)/tools
 ASAN_BUILD  := $(BUILD)/asan
 # MK_TEST_HOOKS: the test hooks (MK_TEST_PREPARE_DELAY_MS, src/app/reload.c)
