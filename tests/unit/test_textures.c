@@ -98,7 +98,7 @@ static void write_model(const char *name, const char *texture, const char *image
 	write_file(name, json, (size_t)n);
 }
 
-/* The base map the loader decoded for the model's one material. */
+/* The base map the loader decoded for the model's one material (materials[0]). */
 static const struct image *base_map(const struct mesh *m)
 {
 	return &m->materials[0].base_map;

@@ -1,4 +1,4 @@
-// The model's material for the optional features (src/scene/mesh/material.c): factors
+// Each range's material for the optional features (src/scene/mesh/material.c): factors
 // always, textures only when asked, decoded by src/util/image.c. As for
 // buffers, nothing tinygltf hands back is trusted: every index, offset and
 // length is checked here before a byte is read.

@@ -45,8 +45,9 @@ bool gltf_keep_image(tinygltf::Image *image, const int index, std::string *err, 
 // base map).
 bool gltf_primitive_base(const tinygltf::Model &m, int material, float rgba[4]);
 
-// Colours that change nothing (white, and no base map decoded for their
-// alpha to apply) are given back; mesh.has_colors says what is left.
+// Colours that change nothing (white, every material opaque and without a
+// base map decoded, which only a base colour program draws) are given
+// back; mesh.has_colors says what is left.
 // uniform: every vertex's colour when the mesh has no colour array (one
 // colour for the whole model), or null.
 void gltf_keep_colors(struct mesh *out, const float uniform[4]);

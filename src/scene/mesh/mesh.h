@@ -41,7 +41,7 @@ struct mesh_material {
 	struct image normal_map;    /* normalTexture: tangent-space xyz in rgb */
 	struct image occlusion_map; /* occlusionTexture: ambient occlusion in r */
 	struct image thickness_map; /* iridescenceThicknessTexture: thickness in g */
-	/* pbrMetallicRoughness.baseColorTexture of the model's material, as
+	/* pbrMetallicRoughness.baseColorTexture of this material, as
 	 * stored (sRGB encoded: the shader decodes it), and its
 	 * KHR_texture_transform as uv' = (m[0] u + m[2] v + m[4], m[1] u +
 	 * m[3] v + m[5]). Its UVs are the mesh's uvs. */

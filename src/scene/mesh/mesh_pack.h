@@ -39,7 +39,7 @@ struct mesh_packed {
 	const void *arrays[MESH_ARRAYS]; /* NULL: the mesh has none */
 	const uint32_t *indices;
 	/* The mesh's draw ranges (struct mesh ranges); none: one range over
-	 * every index with the model's material. */
+	 * every index with the default material (mesh_material_at). */
 	uint32_t range_count;
 	const struct mesh_range *ranges;
 	void *owned; /* what mesh_packed_release frees; NULL: borrowed */
