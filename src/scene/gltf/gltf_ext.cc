@@ -3,6 +3,7 @@
 // Every one becomes a plain buffer, bufferView and accessor, so that the
 // builder in gltf.cc checks and reads one kind of data only.
 #include "scene/gltf/gltf_ext.h"
+#include "scene/gltf/gltf_features.h"
 #include "util/log.h"
 #include "scene/gltf/gltf_draco.h"
 
@@ -32,23 +33,6 @@ template <typename T> bool negative(T v)
 	else
 		return false;
 }
-
-// The loader's one list of what it understands. Anything else in
-// extensionsRequired refuses the file, naming it.
-const char *const supported_extensions[] = {
-    "KHR_mesh_quantization",
-    "EXT_meshopt_compression",
-    "KHR_draco_mesh_compression",
-    "KHR_materials_iridescence",
-    "KHR_texture_transform",
-    "KHR_materials_unlit",
-    "KHR_materials_emissive_strength",
-    // Its diffuse colour and texture are the base colour; specular and
-    // glossiness are not needed by a matcap, which holds its own light.
-    "KHR_materials_pbrSpecularGlossiness",
-    "EXT_texture_webp",
-    "KHR_materials_variants",
-};
 
 // Extensions refused with a reason beyond "not supported": what the
 // operator would otherwise look for.
@@ -177,10 +161,7 @@ std::string unsupported(const std::vector<std::string> &names)
 {
 	std::string out;
 	for (const std::string &n : names) {
-		bool known = false;
-		for (const char *s : supported_extensions)
-			known |= n == s;
-		if (!known && out.find(n) == std::string::npos)
+		if (!gltf_extension_known(n.c_str()) && out.find(n) == std::string::npos)
 			out += (out.empty() ? "" : ", ") + n + refusal_reason(n);
 	}
 	return out;
