@@ -2,7 +2,7 @@
  * the bytes of a prepared-mesh cache entry's last section, and read back
  * from them: every struct of the rig described once in a member table
  * (scene/mesh/mesh_cache_nest.h), written and read by the one walker, as
- * the material and range records are by mesh_cache_fields.c. The entry's
+ * the material and range records' tables (mesh_cache_fields.c) are. The entry's
  * checksum finds damage; the reading checks every word, count, index and
  * sampler as well (as the glTF loader does), so that bytes that pass the
  * checksum but not these (a forgery, a bug of the writer) are refused,
@@ -23,14 +23,8 @@
 /* A sampler's floats a key at most (a weights sampler: a node's targets). */
 #define WIDTH_MAX 65536
 
-#define MEMBER(s, f, k, ...)                                                                       \
-	{                                                                                          \
-		.name = #f, .offset = offsetof(struct s, f), .kind = k, __VA_ARGS__                \
-	}
-#define TABLE(s, members, check)                                                                   \
-	{                                                                                          \
-#s, sizeof(struct s), members, sizeof(members) / sizeof(members[0]), check         \
-	}
+#define MEMBER MESH_NEST_MEMBER
+#define TABLE  MESH_NEST_TABLE
 
 /* What the reader checks against: the play read so far, the mesh's size. */
 struct rig_ctx {
@@ -323,8 +317,6 @@ static const struct mesh_nest_member part_members[] = {
 };
 static const struct mesh_nest part_table = TABLE(anim_play_part, part_members, part_check);
 
-/* The play's scratch and GPU arrays are not stored: anim_play_finish and
- * the upload (anim_play_gpu_prepare, anim_play_morph_prepare) make them. */
 static const struct mesh_nest_member play_members[] = {
     MEMBER(anim_play, anim, MESH_NEST_STRUCT, .sub = &anim_table),
     MEMBER(anim_play, center, MESH_NEST_DOUBLES, .n = 3),
@@ -341,8 +333,31 @@ static const struct mesh_nest_member play_members[] = {
     MEMBER(anim_play, part_count, MESH_NEST_U32),
     MEMBER(anim_play, parts, MESH_NEST_STRUCTS, .count = play_parts, .sub = &part_table,
 	   .count_at = offsetof(struct anim_play, part_count), .count_u32 = true),
+    /* A pose's scratch: anim_play_finish makes it. */
+    MEMBER(anim_play, worlds, MESH_NEST_NONE),
+    MEMBER(anim_play, joint_matrices, MESH_NEST_NONE),
+    MEMBER(anim_play, morphed, MESH_NEST_NONE),
+    MEMBER(anim_play, joint_total, MESH_NEST_NONE),
+    MEMBER(anim_play, part_vertex_max, MESH_NEST_NONE),
+    /* The GPU's arrays: the upload makes them (anim_play_gpu_prepare,
+     * anim_play_morph_prepare), for the display it runs on. */
+    MEMBER(anim_play, bones, MESH_NEST_NONE),
+    MEMBER(anim_play, gpu_joints, MESH_NEST_NONE),
+    MEMBER(anim_play, gpu_weights, MESH_NEST_NONE),
+    MEMBER(anim_play, node_bone, MESH_NEST_NONE),
+    MEMBER(anim_play, rows, MESH_NEST_NONE),
+    MEMBER(anim_play, morphs, MESH_NEST_NONE),
+    MEMBER(anim_play, morph_targets, MESH_NEST_NONE),
+    MEMBER(anim_play, morph_normals, MESH_NEST_NONE),
+    MEMBER(anim_play, morph_node, MESH_NEST_NONE),
+    MEMBER(anim_play, gpu_morph, MESH_NEST_NONE),
 };
 static const struct mesh_nest play_table = TABLE(anim_play, play_members, play_check);
+
+const struct mesh_nest *mesh_cache_anim_table(void)
+{
+	return &play_table;
+}
 
 int mesh_cache_anim_encode(const struct anim_play *p, void **out, size_t *size)
 {

@@ -11,6 +11,11 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* The member table of struct anim_play (mesh_cache_nest.h), the rig's
+ * other structs under it: for the test that every field is described. */
+struct mesh_nest;
+const struct mesh_nest *mesh_cache_anim_table(void);
+
 /* p's playback data (not its scratch, nor its GPU arrays: those are
  * made again) as bytes, a multiple of 4, in *out (to free). 0 or
  * -ENOMEM. */

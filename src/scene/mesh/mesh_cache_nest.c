@@ -146,9 +146,9 @@ static void write_member(struct mesh_nest_out *b, const struct mesh_nest_member 
 	}
 }
 
-/* The fewest bytes a struct of t takes (every array empty): a count of
- * them that the bytes left cannot hold is refused before it allocates. */
-static size_t min_bytes(const struct mesh_nest *t)
+/* A count of structs that the bytes left cannot hold is refused before
+ * it allocates. */
+size_t mesh_nest_min_bytes(const struct mesh_nest *t)
 {
 	size_t n = 0;
 
@@ -158,7 +158,7 @@ static size_t min_bytes(const struct mesh_nest *t)
 		if (m->kind == MESH_NEST_FLOATS || m->kind == MESH_NEST_DOUBLES)
 			n += (size_t)m->n * (m->kind == MESH_NEST_FLOATS ? 4 : 8);
 		else if (m->kind == MESH_NEST_STRUCT)
-			n += min_bytes(m->sub);
+			n += mesh_nest_min_bytes(m->sub);
 		else if (m->kind >= MESH_NEST_F32S)
 			n += m->optional ? 4 : 0;
 		else if (m->kind != MESH_NEST_NONE)
@@ -222,7 +222,8 @@ static bool read_array(struct mesh_nest_in *g, const struct mesh_nest_member *m,
 {
 	uint32_t present = m->optional ? mesh_nest_get_u32(g) : 1;
 	uint64_t n = m->count(obj);
-	size_t width = m->kind == MESH_NEST_STRUCTS ? min_bytes(m->sub) : elem_size(m->kind);
+	size_t width =
+	    m->kind == MESH_NEST_STRUCTS ? mesh_nest_min_bytes(m->sub) : elem_size(m->kind);
 	size_t size = m->kind == MESH_NEST_STRUCTS ? m->sub->size : width;
 	void *a = NULL;
 

@@ -1,7 +1,7 @@
-/* The field table for structs that hold arrays and other structs (live
- * playback's rig: scene/mesh/mesh_cache_anim.c), as mesh_cache_fields.c
- * is for the flat material and range records: each member of a struct is
- * described once (its place, its kind, how many elements an array has),
+/* The one field table of a cache entry: the material, range and colour
+ * records (scene/mesh/mesh_cache_fields.c) and live playback's rig, with
+ * its arrays and structs (scene/mesh/mesh_cache_anim.c). Each member of a
+ * struct is described once (its place, its kind, how many elements an array has),
  * and one writer and one reader walk the description, the reader
  * checking every word against what it may hold and every count against
  * the bytes left before it allocates. What ties members together (an
@@ -35,8 +35,8 @@ struct mesh_nest;
 
 struct mesh_nest_member {
 	const char *name;
-	size_t offset;
-	int kind; /* enum mesh_nest_kind */
+	size_t offset, size; /* size: sizeof the member, for the table's test */
+	int kind;	     /* enum mesh_nest_kind */
 	uint32_t n;
 	/* Arrays: NULL allowed (a word says whether it is there). */
 	bool optional;
@@ -61,6 +61,22 @@ struct mesh_nest {
 	const char *(*check)(void *obj, void *ctx);
 };
 
+/* A member of struct s, every member of s described (stored, or NONE with
+ * a comment saying why): tests/unit/test_mesh_cache.c fails on a field of
+ * s in no table. */
+#define MESH_NEST_MEMBER(s, f, k, ...)                                                             \
+	{                                                                                          \
+		.name = #f, .offset = offsetof(struct s, f), .size = sizeof(((struct s *)0)->f),   \
+		.kind = k, __VA_ARGS__                                                             \
+	}
+/* A float or an array of floats in the struct. */
+#define MESH_NEST_FLOATS_OF(s, f)                                                                  \
+	MESH_NEST_MEMBER(s, f, MESH_NEST_FLOATS, .n = sizeof(((struct s *)0)->f) / sizeof(float))
+#define MESH_NEST_TABLE(s, members, check)                                                         \
+	{                                                                                          \
+#s, sizeof(struct s), members, sizeof(members) / sizeof(members[0]), check         \
+	}
+
 /* A growing buffer of 32-bit words. */
 struct mesh_nest_out {
 	char *data;
@@ -84,6 +100,9 @@ void mesh_nest_write(struct mesh_nest_out *b, const struct mesh_nest *t, const v
 /* obj zeroed by the caller; on failure it holds what was read, for the
  * caller's own free. */
 bool mesh_nest_read(struct mesh_nest_in *g, const struct mesh_nest *t, void *obj);
+/* The bytes a struct of t takes with every array empty: those of a
+ * struct of no arrays (a record). */
+size_t mesh_nest_min_bytes(const struct mesh_nest *t);
 /* false, with why, at the place the reader is in. */
 bool mesh_nest_fail(struct mesh_nest_in *g, const char *where, const char *why);
 
