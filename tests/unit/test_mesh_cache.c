@@ -13,6 +13,7 @@
 #include "scene/anim/anim_play.h"
 #include "scene/mesh/mesh_cache.h"
 #include "scene/mesh/mesh_cache_anim.h"
+#include "scene/mesh/mesh_cache_nest.h"
 #include "scene/mesh/mesh_pack.h"
 #include "util/log.h"
 
@@ -143,6 +144,31 @@ static void a_damaged_entry_is_refused(void **state)
 	free(data);
 }
 
+/* Parsing bytes resealed, what the journal says of them (into log). */
+static int parse_logged(unsigned char *data, size_t size, char *log, size_t log_size)
+{
+	char path[] = "/tmp/mk-cache-log-XXXXXX";
+	int fd = mkstemp(path), saved = dup(2), ret;
+	struct mesh_packed out;
+	ssize_t got;
+
+	assert_true(fd >= 0 && saved >= 0);
+	mesh_cache_reseal(data, size);
+	log_set_level(LOG_WARN);
+	fflush(stderr);
+	dup2(fd, 2);
+	ret = mesh_cache_parse(data, size, NULL, &out, NULL, NULL);
+	fflush(stderr);
+	dup2(saved, 2);
+	close(saved);
+	log_set_level(LOG_ERR);
+	got = pread(fd, log, log_size - 1, 0);
+	log[got > 0 ? got : 0] = '\0';
+	close(fd);
+	unlink(path);
+	return ret;
+}
+
 /* Checksums made right over a wrong field (a forgery, or a bug in the
  * writer): the index range and the layout are still checked. */
 static void a_resealed_entry_is_still_checked(void **state)
@@ -158,14 +184,16 @@ static void a_resealed_entry_is_still_checked(void **state)
 	data = read_entry(f, &size);
 	/* The records (colours, materials, then ranges) end the payload,
 	 * 8-aligned; the last index is before them. */
-	size_t records = (mesh_cache_record_words(MESH_CACHE_COLORS) +
-			  2 * mesh_cache_record_words(MESH_CACHE_MATERIAL) +
-			  2 * mesh_cache_record_words(MESH_CACHE_RANGE)) *
-			 4;
+	size_t range_bytes = mesh_nest_min_bytes(mesh_cache_table(MESH_CACHE_RANGE));
+	size_t records = mesh_nest_min_bytes(mesh_cache_table(MESH_CACHE_COLORS)) +
+			 2 * mesh_nest_min_bytes(mesh_cache_table(MESH_CACHE_MATERIAL)) +
+			 2 * range_bytes;
 	size_t last_index =
 	    size - ((records + 7) & ~(size_t)7) - 4 - (f->packed.index_count % 2 ? 4 : 0);
-	size_t range1 = size - ((records + 7) & ~(size_t)7) + records -
-			mesh_cache_record_words(MESH_CACHE_RANGE) * 4;
+	size_t range1 = size - ((records + 7) & ~(size_t)7) + records - range_bytes;
+	size_t material0 = size - ((records + 7) & ~(size_t)7) +
+			   mesh_nest_min_bytes(mesh_cache_table(MESH_CACHE_COLORS));
+	char log[512];
 
 	bad = f->packed.vertex_count;
 	memcpy(data + last_index, &bad, 4);
@@ -175,18 +203,27 @@ static void a_resealed_entry_is_still_checked(void **state)
 	mesh_cache_reseal(data, size);
 	assert_int_equal(mesh_cache_parse(data, size, NULL, &out, NULL, NULL), 0);
 	/* The second range starting one triangle late (a gap), then with a
-	 * material that does not exist: refused. */
+	 * material that does not exist, the first material's alpha mode
+	 * past the last: refused, the journal saying which record and why. */
 	memcpy(&bad, data + range1, 4);
 	bad += 3;
 	memcpy(data + range1, &bad, 4);
-	mesh_cache_reseal(data, size);
-	assert_int_equal(mesh_cache_parse(data, size, NULL, &out, NULL, NULL), -EBADMSG);
+	assert_int_equal(parse_logged(data, size, log, sizeof(log)), -EBADMSG);
+	assert_non_null(strstr(log, "records are refused at ranges[1]: it does not start where the "
+				    "range before it ends"));
 	bad -= 3;
 	memcpy(data + range1, &bad, 4);
 	bad = 2;
 	memcpy(data + range1 + 8, &bad, 4);
-	mesh_cache_reseal(data, size);
-	assert_int_equal(mesh_cache_parse(data, size, NULL, &out, NULL, NULL), -EBADMSG);
+	assert_int_equal(parse_logged(data, size, log, sizeof(log)), -EBADMSG);
+	assert_non_null(strstr(log, "at ranges[1]: its material is not one the entry holds"));
+	bad = 1;
+	memcpy(data + range1 + 8, &bad, 4);
+	assert_int_equal(parse_logged(data, size, log, sizeof(log)), 0);
+	bad = MESH_ALPHA_BLEND + 1; /* words: colours 5, then present, base colour 3, alpha */
+	memcpy(data + material0 + 5 * 4, &bad, 4);
+	assert_int_equal(parse_logged(data, size, log, sizeof(log)), -EBADMSG);
+	assert_non_null(strstr(log, "at materials[0].alpha_mode: out of its range"));
 	/* A size that does not match the layout, resealed. */
 	mesh_cache_reseal(data, size - 8);
 	assert_int_equal(mesh_cache_parse(data, size - 8, NULL, &out, NULL, NULL), -EBADMSG);
@@ -313,47 +350,116 @@ static void the_key_follows_the_bytes(void **state)
 
 static int by_offset(const void *a, const void *b)
 {
-	const struct mesh_cache_field *x = a, *y = b;
+	const struct mesh_nest_member *x = a, *y = b;
 
 	return (x->offset > y->offset) - (x->offset < y->offset);
 }
 
-/* Every byte of the struct is a field of the table or the padding the
- * next field's alignment makes: a field added to the struct and not to
- * the table (stored, or named as not stored) leaves a hole and fails. */
-static void check_table(enum mesh_cache_table t, size_t struct_size, size_t struct_align)
+/* A member's alignment, from its kind; one not stored is only sized, so
+ * the most its size allows (lenient: never a hole that is not there). */
+static size_t align_of(const struct mesh_nest_member *m)
 {
-	size_t n, end = 0;
-	const struct mesh_cache_field *table = mesh_cache_fields(t, &n);
-	struct mesh_cache_field *f = malloc(n * sizeof(*f));
+	size_t a = _Alignof(max_align_t);
 
-	memcpy(f, table, n * sizeof(*f));
-	qsort(f, n, sizeof(*f), by_offset);
-	for (size_t i = 0; i < n; i++) {
-		size_t expected = (end + f[i].align - 1) / f[i].align * f[i].align;
-
-		if (f[i].offset != expected)
-			fail_msg("%s: a field of %zu bytes before it has no entry in the cache's "
-				 "table (src/scene/mesh/mesh_cache_fields.c)",
-				 f[i].name, f[i].offset - end);
-		end = f[i].offset + f[i].size;
+	switch (m->kind) {
+	case MESH_NEST_BOOL:
+		return _Alignof(bool);
+	case MESH_NEST_U32:
+	case MESH_NEST_INT:
+	case MESH_NEST_ENUM:
+	case MESH_NEST_FLOATS:
+		return 4;
+	case MESH_NEST_SIZE:
+		return _Alignof(size_t);
+	case MESH_NEST_DOUBLES:
+		return _Alignof(double);
+	case MESH_NEST_NONE:
+		while (m->size % a)
+			a /= 2;
+		return a;
+	default:
+		return _Alignof(void *);
 	}
-	if ((end + struct_align - 1) / struct_align * struct_align != struct_size)
-		fail_msg("a field after %s has no entry in the cache's table", f[n - 1].name);
-	free(f);
 }
 
+/* Every byte of t's struct is a member of the table or the padding the
+ * next member's alignment makes: a field added to the struct and not to
+ * the table (stored, or named as not stored) leaves a hole. Returns NULL,
+ * or a member that a hole comes before ("" : one at the end). */
+static const char *table_hole(const struct mesh_nest_member *members, size_t n, size_t size)
+{
+	struct mesh_nest_member *m = malloc(n * sizeof(*m));
+	size_t end = 0, align = 1;
+	const char *hole = NULL;
+
+	memcpy(m, members, n * sizeof(*m));
+	qsort(m, n, sizeof(*m), by_offset);
+	for (size_t i = 0; !hole && i < n; i++) {
+		if (m[i].offset < end || m[i].offset - end >= align_of(&m[i]))
+			hole = m[i].name;
+		end = m[i].offset + m[i].size;
+		align = align_of(&m[i]) > align ? align_of(&m[i]) : align;
+	}
+	if (!hole && (end > size || size - end >= align))
+		hole = "";
+	free(m);
+	return hole;
+}
+
+/* t and the tables under it (the rig's), once each, into all. */
+static size_t collect(const struct mesh_nest *t, const struct mesh_nest **all, size_t n)
+{
+	for (size_t i = 0; i < n; i++)
+		if (all[i] == t)
+			return n;
+	assert_true(n < 16);
+	all[n++] = t;
+	for (size_t i = 0; i < t->member_count; i++)
+		if (t->members[i].sub)
+			n = collect(t->members[i].sub, all, n);
+	return n;
+}
+
+/* One mechanism describes the whole entry: every field of the material,
+ * the range and every struct of the rig is in its member table (stored or
+ * named as not stored); a table with a member taken out (what a field
+ * added to the struct and not to the table looks like) is caught. */
 static void every_field_is_in_the_cache_table(void **state)
 {
+	const struct mesh_nest *all[16] = {mesh_cache_table(MESH_CACHE_MATERIAL),
+					   mesh_cache_table(MESH_CACHE_RANGE)};
+	size_t n = collect(mesh_cache_anim_table(), all, 2), caught = 0, big = 0;
+
 	(void)state;
-	check_table(MESH_CACHE_MATERIAL, sizeof(struct mesh_material),
-		    _Alignof(struct mesh_material));
-	check_table(MESH_CACHE_RANGE, sizeof(struct mesh_range), _Alignof(struct mesh_range));
+	assert_int_equal(n, 10); /* material, range and the rig's eight */
+	for (size_t t = 0; t < n; t++) {
+		const char *hole = table_hole(all[t]->members, all[t]->member_count, all[t]->size);
+		struct mesh_nest_member less[64];
+
+		if (hole)
+			fail_msg(
+			    "struct %s: a field before '%s' is in no member table of the cache "
+			    "(src/scene/mesh/mesh_cache_fields.c, mesh_cache_anim.c)",
+			    all[t]->name, hole);
+		/* Each member of 8 bytes or more left out is caught (a smaller
+		 * one may hide in the padding before the next). */
+		for (size_t k = 0; k < all[t]->member_count; k++) {
+			if (all[t]->members[k].size < 8)
+				continue;
+			memcpy(less, all[t]->members, k * sizeof(*less));
+			memcpy(less + k, all[t]->members + k + 1,
+			       (all[t]->member_count - k - 1) * sizeof(*less));
+			big++;
+			caught += table_hole(less, all[t]->member_count - 1, all[t]->size) != NULL;
+		}
+	}
+	assert_true(big > 20);
+	assert_int_equal(caught, big);
 	/* Stored: every field but the five images (29 words, and 14 for
 	 * unlit and emission); the model's colour facts, 5 words. */
-	assert_int_equal(mesh_cache_record_words(MESH_CACHE_RANGE), 6);
-	assert_int_equal(mesh_cache_record_words(MESH_CACHE_MATERIAL), 44);
-	assert_int_equal(mesh_cache_record_words(MESH_CACHE_COLORS), 5);
+	assert_int_equal(mesh_nest_min_bytes(mesh_cache_table(MESH_CACHE_RANGE)), 6 * 4);
+	assert_int_equal(mesh_nest_min_bytes(mesh_cache_table(MESH_CACHE_MATERIAL)), 44 * 4);
+	assert_int_equal(mesh_nest_min_bytes(mesh_cache_table(MESH_CACHE_COLORS)), 5 * 4);
 }
 
 static void the_directory_is_named_as_systemd_and_xdg_say(void **state)

@@ -1,5 +1,6 @@
 #include "scene/mesh/mesh_cache.h"
 #include "scene/mesh/mesh_cache_anim.h"
+#include "scene/mesh/mesh_cache_nest.h"
 #include "util/file.h"
 #include "util/log.h"
 
@@ -17,7 +18,7 @@
 
 /* Changed whenever the layout or the preparation changes: an entry of
  * another version is stale. */
-#define CACHE_VERSION 9
+#define CACHE_VERSION 10
 #define CACHE_SUFFIX  ".mkmesh"
 
 static const char cache_magic[8] = {'M', 'K', 'M', 'E', 'S', 'H', '\r', '\n'};
@@ -61,12 +62,13 @@ static size_t padded(size_t n)
 }
 
 /* The records after the indices: the model's colour facts, each range
- * material, each range (mesh_cache_fields.c), 32-bit words each. */
-static uint64_t record_words(const struct cache_header *h)
+ * material, each range (mesh_cache_fields.c's tables), in bytes. */
+static uint64_t record_bytes(const struct cache_header *h)
 {
-	return (uint64_t)mesh_cache_record_words(MESH_CACHE_COLORS) +
-	       (uint64_t)h->material_count * mesh_cache_record_words(MESH_CACHE_MATERIAL) +
-	       (uint64_t)h->range_count * mesh_cache_record_words(MESH_CACHE_RANGE);
+	return (uint64_t)mesh_nest_min_bytes(mesh_cache_table(MESH_CACHE_COLORS)) +
+	       (uint64_t)h->material_count *
+		   mesh_nest_min_bytes(mesh_cache_table(MESH_CACHE_MATERIAL)) +
+	       (uint64_t)h->range_count * mesh_nest_min_bytes(mesh_cache_table(MESH_CACHE_RANGE));
 }
 
 /* The payload's layout: each present array, then the indices, then the
@@ -85,7 +87,7 @@ static uint64_t payload_layout(const struct cache_header *h, uint64_t offset[MES
 	}
 	offset[MESH_ARRAYS] = total;
 	offset[MESH_ARRAYS + 1] = total + padded((uint64_t)h->index_count * 4);
-	offset[MESH_ARRAYS + 2] = offset[MESH_ARRAYS + 1] + padded(record_words(h) * 4);
+	offset[MESH_ARRAYS + 2] = offset[MESH_ARRAYS + 1] + padded(record_bytes(h));
 	return offset[MESH_ARRAYS + 2] + padded(h->anim_size);
 }
 
@@ -102,33 +104,46 @@ static bool header_sane(const struct cache_header *h, size_t size)
 	       h->anim_size <= size && (h->range_count == 0) == (h->material_count == 0);
 }
 
-/* The records into materials (allocated), each checked: the ranges in
- * order, covering every index once, each a whole number of triangles
- * with a material that exists. */
-static int read_records(const struct cache_header *h, const uint32_t *w, struct mesh *materials)
+/* One record of table t into obj; what is wrong said at its place,
+ * name[i] ("ranges[1].material: ..."), or name alone (i UINT32_MAX). */
+static bool read_record(struct mesh_nest_in *g, enum mesh_cache_table t, void *obj,
+			const char *name, uint32_t i)
 {
-	size_t mw = mesh_cache_record_words(MESH_CACHE_MATERIAL);
-	size_t rw = mesh_cache_record_words(MESH_CACHE_RANGE);
-	uint32_t at = 0;
-	bool ok;
+	char why[sizeof(g->why)], at[32];
+
+	if (mesh_nest_read(g, mesh_cache_table(t), obj))
+		return true;
+	memcpy(why, g->why, sizeof(why));
+	if (i == UINT32_MAX)
+		snprintf(at, sizeof(at), "%s", name);
+	else
+		snprintf(at, sizeof(at), "%s[%u]", name, i);
+	snprintf(g->why, sizeof(g->why), "%s%s%.120s", at, why[0] == ':' ? "" : ".", why);
+	return false;
+}
+
+/* The records (size bytes at data) into materials (allocated), each
+ * checked by its table (the ranges': in order, covering every index
+ * once, each a whole number of triangles with a material that exists). */
+static int read_records(const struct cache_header *h, const void *data, size_t size,
+			struct mesh *materials)
+{
+	struct mesh_cache_ranges ranges = {0, h->index_count, h->material_count};
+	struct mesh_nest_in g = {data, size, true, &ranges, ""};
 
 	memset(materials, 0, sizeof(*materials));
 	if (h->range_count && mesh_alloc_ranges(materials, h->range_count, h->material_count))
 		return -ENOMEM;
-	ok = mesh_cache_record_read(MESH_CACHE_COLORS, w, materials);
-	w += mesh_cache_record_words(MESH_CACHE_COLORS);
-	for (uint32_t k = 0; ok && k < h->material_count; k++, w += mw)
-		ok = mesh_cache_record_read(MESH_CACHE_MATERIAL, w, &materials->materials[k]);
-	for (uint32_t r = 0; ok && r < h->range_count; r++, w += rw) {
-		struct mesh_range *g = &materials->ranges[r];
-
-		ok = mesh_cache_record_read(MESH_CACHE_RANGE, w, g) && g->first_index == at &&
-		     g->index_count % 3 == 0 && g->index_count <= h->index_count - at &&
-		     g->material < h->material_count;
-		at += ok ? g->index_count : 0;
-	}
-	if (ok && (!h->range_count || at == h->index_count))
+	read_record(&g, MESH_CACHE_COLORS, materials, "colours", UINT32_MAX);
+	for (uint32_t k = 0; g.ok && k < h->material_count; k++)
+		read_record(&g, MESH_CACHE_MATERIAL, &materials->materials[k], "materials", k);
+	for (uint32_t r = 0; g.ok && r < h->range_count; r++)
+		read_record(&g, MESH_CACHE_RANGE, &materials->ranges[r], "ranges", r);
+	if (g.ok && h->range_count && ranges.at != h->index_count)
+		mesh_nest_fail(&g, "ranges", "they leave indices uncovered");
+	if (g.ok)
 		return 0;
+	log_warn("a cache entry's records are refused at %s", g.why);
 	mesh_release(materials);
 	return -EBADMSG;
 }
@@ -166,8 +181,7 @@ int mesh_cache_parse(const void *data, size_t size, const struct mesh_cache_key 
 	for (int a = 0; a < MESH_ARRAYS; a++)
 		out->arrays[a] = h.arrays & (1u << a) ? payload + offset[a] : NULL;
 	out->indices = idx;
-	ret = read_records(&h, (const uint32_t *)(const void *)(payload + offset[MESH_ARRAYS + 1]),
-			   &shell);
+	ret = read_records(&h, payload + offset[MESH_ARRAYS + 1], (size_t)record_bytes(&h), &shell);
 	if (ret) {
 		memset(out, 0, sizeof(*out));
 		return ret;
@@ -318,18 +332,25 @@ void mesh_cache_entry_free(struct mesh_cache_entry *e)
 	free(e);
 }
 
-static void write_records(const struct cache_header *h, const struct mesh_packed *m,
-			  const struct mesh *materials, uint32_t *w)
+/* The records in layout order (record_bytes of them: a table of arrays
+ * would write more, and is refused); false when out of memory. */
+static bool write_records(const struct cache_header *h, const struct mesh_packed *m,
+			  const struct mesh *materials, char *to)
 {
-	size_t mw = mesh_cache_record_words(MESH_CACHE_MATERIAL);
-	size_t rw = mesh_cache_record_words(MESH_CACHE_RANGE);
+	struct mesh_nest_out b = {NULL, 0, 0, false};
+	bool ok;
 
-	mesh_cache_record_write(MESH_CACHE_COLORS, materials, w);
-	w += mesh_cache_record_words(MESH_CACHE_COLORS);
-	for (uint32_t k = 0; k < h->material_count; k++, w += mw)
-		mesh_cache_record_write(MESH_CACHE_MATERIAL, &materials->materials[k], w);
-	for (uint32_t r = 0; r < h->range_count; r++, w += rw)
-		mesh_cache_record_write(MESH_CACHE_RANGE, &m->ranges[r], w);
+	mesh_nest_write(&b, mesh_cache_table(MESH_CACHE_COLORS), materials);
+	for (uint32_t k = 0; k < h->material_count; k++)
+		mesh_nest_write(&b, mesh_cache_table(MESH_CACHE_MATERIAL),
+				&materials->materials[k]);
+	for (uint32_t r = 0; r < h->range_count; r++)
+		mesh_nest_write(&b, mesh_cache_table(MESH_CACHE_RANGE), &m->ranges[r]);
+	ok = !b.failed && b.size == record_bytes(h);
+	if (ok)
+		memcpy(to, b.data, b.size);
+	free(b.data);
+	return ok;
 }
 
 /* The payload in layout order, hashed as it goes. */
@@ -350,7 +371,10 @@ static int write_payload(int fd, const struct cache_header *h, const struct mesh
 			       (size_t)m->vertex_count *
 				   mesh_array_stride(m->format, (enum mesh_array)a));
 	memcpy(buf + offset[MESH_ARRAYS], m->indices, (size_t)m->index_count * 4);
-	write_records(h, m, materials, (uint32_t *)(void *)(buf + offset[MESH_ARRAYS + 1]));
+	if (!write_records(h, m, materials, buf + offset[MESH_ARRAYS + 1])) {
+		free(buf);
+		return -ENOMEM;
+	}
 	if (h->anim_size)
 		memcpy(buf + offset[MESH_ARRAYS + 2], anim, (size_t)h->anim_size);
 	*hash_out = mesh_cache_hash(buf, size, h->content);

@@ -138,29 +138,18 @@ struct mesh_cache_writer *mesh_cache_write_async_play(const char *dir,
 /* Waits for the entry to be written, and frees w (NULL: nothing). */
 void mesh_cache_writer_join(struct mesh_cache_writer *w);
 
-/* The table of fields an entry keeps (src/scene/mesh/mesh_cache_fields.c):
- * each field of struct mesh_material and struct mesh_range, and struct
- * mesh's colour facts (has_colors, vertex_color), stored as
- * 32-bit words (a bool 0 or 1, an int up to max, a float finite: checked
- * when read), or NONE: named, not stored. */
+/* The member tables (scene/mesh/mesh_cache_nest.h) of the records an
+ * entry keeps (src/scene/mesh/mesh_cache_fields.c): each field of struct
+ * mesh_material and struct mesh_range, and struct mesh's colour facts
+ * (has_colors, vertex_color), stored as 32-bit words, checked when read,
+ * or NONE: named, not stored. */
 enum mesh_cache_table { MESH_CACHE_MATERIAL, MESH_CACHE_RANGE, MESH_CACHE_COLORS };
-enum mesh_field_kind {
-	MESH_FIELD_NONE,
-	MESH_FIELD_BOOL,
-	MESH_FIELD_INT,
-	MESH_FIELD_U32,
-	MESH_FIELD_FLOAT
+struct mesh_nest;
+const struct mesh_nest *mesh_cache_table(enum mesh_cache_table t);
+/* What the range table's check reads against (the reader's ctx): the
+ * index a range must start at (moved past each), the entry's counts. */
+struct mesh_cache_ranges {
+	uint32_t at, index_count, material_count;
 };
-struct mesh_cache_field {
-	const char *name;
-	size_t offset, size, align;
-	int kind; /* enum mesh_field_kind */
-	uint32_t max;
-};
-const struct mesh_cache_field *mesh_cache_fields(enum mesh_cache_table t, size_t *count);
-size_t mesh_cache_record_words(enum mesh_cache_table t);
-void mesh_cache_record_write(enum mesh_cache_table t, const void *obj, uint32_t *out);
-/* false: a word out of its field's range (the entry is damaged). */
-bool mesh_cache_record_read(enum mesh_cache_table t, const uint32_t *in, void *obj);
 
 #endif
