@@ -15,4 +15,7 @@ if ! command -v make >/dev/null; then
 	$sudo env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y -qq --no-install-recommends make
 fi
 [ $# -gt 0 ] || set -- deps
-make "$@"
+# The deps targets read no library, but the Makefile asks pkg-config for
+# them as it is read: on a fresh machine, where neither is there yet, that
+# is a screenful of "pkg-config: not found" before apt says anything.
+make PKG_CONFIG=true "$@"
