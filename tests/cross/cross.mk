@@ -92,7 +92,12 @@ test-cross: cross-build $(KIOSK) $(TOOLS_DIR)/mkmodels $(TOOLS_DIR)/imgdiff
 .PHONY: cross-arch deps-cross cross-tools cross-build test-cross
 
 # The Debian package, from config/debian (debhelper):
-#   make deps-deb               what the package targets need on this machine
+#   make deps-pkg               what a native `make deb` needs, nothing for roots or
+#                               cross builds (a Pi building its own package)
+#   make deps-deb               what the package targets need on this machine, the
+#                               roots' mmdebstrap and qemu-user-static included
+#   make dist                   build/matcap-kiosk-VERSION.tar.gz, the source tarball
+#   make test-pi-quickstart     the README's quick start in a fresh Debian 13 arm64 root
 #   make deb                    matcap-kiosk_VERSION_ARCH.deb for this machine, built
 #                               here, then lintian (no error allowed): in build/deb/ on
 #                               Debian 13, build/deb/bookworm/ on 12
@@ -127,8 +132,20 @@ DEB_HOST_OUT = $(if $(filter trixie,$(OS_CODENAME)),$(DEB_BUILD),$(DEB_BUILD)/$(
 DEB_SUDO_ROOT := $(if $(filter 0,$(shell id -u)),,sudo)
 
 # systemd.pc and udev.pc (where units and rules go) are in systemd-dev from
-# Debian 13 on, in systemd and udev before: for `make deb` here. The
-# roots need mmdebstrap, qemu-user-static's binfmt handlers and arch-test.
+# Debian 13 on, in systemd and udev before: `apt-get build-dep` picks the
+# alternative config/debian/control names for this release, and brings
+# build-essential (make, the compilers, dpkg-dev) with the Build-Depends.
+# It reads ./config as an unpacked source (config/debian/control): nothing
+# needs to exist before it but apt. lintian checks what `make deb` wrote.
+deps-pkg:
+	$(APT_GET) update -qq
+	$(APT_GET) build-dep -y -qq --no-install-recommends ./config
+	$(APT_GET) install -y -qq --no-install-recommends lintian
+
+# deps-deb: what the package targets need here, the roots' mmdebstrap,
+# qemu-user-static's binfmt handlers and arch-test included (the roots
+# install the Build-Depends themselves; systemd-dev, or systemd and udev
+# before Debian 13, for a native `make deb`).
 deps-deb:
 	$(CROSS_SUDO) apt-get -o DPkg::Lock::Timeout=600 update -qq
 	sd=$$(apt-cache show systemd-dev >/dev/null 2>&1 && echo systemd-dev || echo systemd udev); \
@@ -148,9 +165,21 @@ deb-src:
 	cp -r config/debian $(DEB_SRC)/debian
 	cp systemd/matcap-kiosk.sysusers $(DEB_SRC)/debian/matcap-kiosk.sysusers
 
+# The release's source: what the package is built from, with the
+# documents and contrib/ (a Pi OS Lite has tar, not git).
+DIST_TREE := $(DEB_TREE) docs contrib .clang-format
+dist:
+	mkdir -p build
+	tar -czf build/matcap-kiosk-$(VERSION).tar.gz --exclude=tests/out --exclude=tests/vm/cache \
+		--exclude=tests/trixie/cache --exclude='*.o' --transform='s,^,matcap-kiosk-$(VERSION)/,' \
+		$(DIST_TREE)
+
+# A native build uses every core (a Pi 4 or 5 has four) unless
+# DEB_BUILD_OPTIONS says otherwise; debian/rules passes parallel=N to make.
 deb: deb-src
 ifeq ($(ARCH),)
-	cd $(DEB_SRC) && dpkg-buildpackage --build=binary --no-sign
+	cd $(DEB_SRC) && DEB_BUILD_OPTIONS="$${DEB_BUILD_OPTIONS-parallel=$$(nproc)}" \
+		dpkg-buildpackage --build=binary --no-sign
 	mkdir -p $(DEB_HOST_OUT)
 	mv $(dir $(DEB_SRC))matcap-kiosk*_$(VERSION)_$(DEB_HOST_ARCH).deb $(DEB_HOST_OUT)/
 	lintian --fail-on error $(DEB_HOST_OUT)/matcap-kiosk_$(VERSION)_$(DEB_HOST_ARCH).deb
@@ -165,4 +194,12 @@ test-deb: deb-src $(TOOLS_DIR)/imgdiff
 	$(DEB_SUDO_ROOT) env DEB_OTHER_ARCHS="$(DEB_OTHER_ARCHS)" sh tests/cross/deb-test.sh $(DEB_SRC) $(TOOLS_DIR)/imgdiff "$(DEB_SUITES)" \
 		"$(DEB_ARCHS)" "$(DEB_INSTALL)"
 
-.PHONY: deps-deb deb-src deb test-deb
+# The README's quick start, verbatim, in a fresh Debian 13 arm64 root
+# under qemu-user: the package built natively there, installed, rendering
+# (tests/cross/pi-quickstart.sh; as root; long under emulation, not in
+# .ci/run). At the lowest priority: the machine is shared.
+test-pi-quickstart: dist
+	$(DEB_SUDO_ROOT) nice -n 19 ionice -c3 sh tests/cross/pi-quickstart.sh \
+		build/matcap-kiosk-$(VERSION).tar.gz build/pi-quickstart
+
+.PHONY: deps-pkg deps-deb deb-src dist deb test-deb test-pi-quickstart
