@@ -16,6 +16,7 @@
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <unistd.h>
 #include <cmocka.h>
 
 struct fixture {
@@ -86,6 +87,38 @@ static inline void *read_path(const char *path, size_t *size)
 	fclose(file);
 	*size = (size_t)n;
 	return data;
+}
+
+/* What the journal says between the two calls (warnings and up), into
+ * log: stderr goes to a file meanwhile. */
+struct journal_capture {
+	char path[32];
+	int fd, saved;
+};
+
+static inline void journal_capture_begin(struct journal_capture *c)
+{
+	snprintf(c->path, sizeof(c->path), "/tmp/mk-cache-log-XXXXXX");
+	c->fd = mkstemp(c->path);
+	c->saved = dup(2);
+	assert_true(c->fd >= 0 && c->saved >= 0);
+	log_set_level(LOG_WARN);
+	fflush(stderr);
+	dup2(c->fd, 2);
+}
+
+static inline void journal_capture_end(struct journal_capture *c, char *log, size_t size)
+{
+	ssize_t got;
+
+	fflush(stderr);
+	dup2(c->saved, 2);
+	close(c->saved);
+	log_set_level(LOG_ERR);
+	got = pread(c->fd, log, size - 1, 0);
+	log[got > 0 ? got : 0] = '\0';
+	close(c->fd);
+	unlink(c->path);
 }
 
 #endif

@@ -109,16 +109,9 @@ static bool header_sane(const struct cache_header *h, size_t size)
 static bool read_record(struct mesh_nest_in *g, enum mesh_cache_table t, void *obj,
 			const char *name, uint32_t i)
 {
-	char why[sizeof(g->why)], at[32];
-
 	if (mesh_nest_read(g, mesh_cache_table(t), obj))
 		return true;
-	memcpy(why, g->why, sizeof(why));
-	if (i == UINT32_MAX)
-		snprintf(at, sizeof(at), "%s", name);
-	else
-		snprintf(at, sizeof(at), "%s[%u]", name, i);
-	snprintf(g->why, sizeof(g->why), "%s%s%.120s", at, why[0] == ':' ? "" : ".", why);
+	mesh_nest_prefix(g, name, i == UINT32_MAX ? SIZE_MAX : i);
 	return false;
 }
 

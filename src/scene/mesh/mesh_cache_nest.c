@@ -167,9 +167,7 @@ size_t mesh_nest_min_bytes(const struct mesh_nest *t)
 	return n > 4 ? n : 4;
 }
 
-/* The failure of an element (index i; SIZE_MAX: the one a pointer
- * holds) said at its place: "nodes[3].parent: ...". */
-static void prefix(struct mesh_nest_in *g, const char *name, size_t i)
+void mesh_nest_prefix(struct mesh_nest_in *g, const char *name, size_t i)
 {
 	char was[sizeof(g->why)], at[64];
 
@@ -200,7 +198,7 @@ static bool read_elements(struct mesh_nest_in *g, const struct mesh_nest_member 
 	}
 	for (size_t i = 0; i < n; i++)
 		if (!mesh_nest_read(g, m->sub, (char *)a + i * m->sub->size)) {
-			prefix(g, m->name, i);
+			mesh_nest_prefix(g, m->name, i);
 			return false;
 		}
 	return true;
@@ -267,7 +265,7 @@ static bool read_struct(struct mesh_nest_in *g, const struct mesh_nest_member *m
 	if (!s)
 		return mesh_nest_fail(g, m->name, "out of memory");
 	if (!mesh_nest_read(g, m->sub, s))
-		prefix(g, m->name, SIZE_MAX);
+		mesh_nest_prefix(g, m->name, SIZE_MAX);
 	return g->ok;
 }
 
@@ -330,7 +328,8 @@ bool mesh_nest_read(struct mesh_nest_in *g, const struct mesh_nest *t, void *obj
 
 	for (size_t i = 0; g->ok && i < t->member_count; i++)
 		if (!read_member(g, &t->members[i], obj) && g->why[0] == ':')
-			prefix(g, t->members[i].name, SIZE_MAX); /* the bytes ran out in it */
+			mesh_nest_prefix(g, t->members[i].name,
+					 SIZE_MAX); /* the bytes ran out in it */
 	if (g->ok && t->check && (why = t->check(obj, g->ctx)))
 		mesh_nest_fail(g, "", why);
 	return g->ok;

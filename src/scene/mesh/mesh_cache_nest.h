@@ -103,6 +103,9 @@ bool mesh_nest_read(struct mesh_nest_in *g, const struct mesh_nest *t, void *obj
 /* The bytes a struct of t takes with every array empty: those of a
  * struct of no arrays (a record). */
 size_t mesh_nest_min_bytes(const struct mesh_nest *t);
+/* The failure of an element (index i; SIZE_MAX: the one a pointer
+ * holds, or a record alone) said at its place: "nodes[3].parent: ...". */
+void mesh_nest_prefix(struct mesh_nest_in *g, const char *name, size_t i);
 /* false, with why, at the place the reader is in. */
 bool mesh_nest_fail(struct mesh_nest_in *g, const char *where, const char *why);
 
