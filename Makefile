@@ -93,7 +93,7 @@ SRC_SCENE   += scene/anim/anim scene/anim/anim_sampler scene/anim/anim_palette s
 SRC_UTIL    := util/file util/folder_watch util/image util/ini util/log util/math3d
 LIB_C  := $(SRC_APP) $(SRC_OPS) $(SRC_CONTENT) $(SRC_CONFIG) $(SRC_STATE) $(SRC_DISPLAY) $(SRC_INPUT) $(SRC_CAMERA) $(SRC_RENDER) $(SRC_SCENE) $(SRC_UTIL)
 # The C++ shims, each behind a C header (gltf_ext.h is internal to the glTF one).
-LIB_CC := scene/gltf/gltf scene/gltf/gltf_mesh scene/gltf/gltf_fs scene/gltf/gltf_material scene/gltf/gltf_ext scene/gltf/gltf_files scene/gltf/gltf_pose \
+LIB_CC := scene/gltf/gltf scene/gltf/gltf_mesh scene/gltf/gltf_accessor scene/gltf/gltf_fs scene/gltf/gltf_material scene/gltf/gltf_ext scene/gltf/gltf_files scene/gltf/gltf_pose \
 	  scene/gltf/gltf_draco camera/camera
 LIB_CC += scene/gltf/gltf_words scene/gltf/gltf_anim scene/gltf/gltf_fit scene/gltf/gltf_name scene/gltf/gltf_play scene/gltf/gltf_flat
 LIB_CC += scene/gltf/gltf_variants

@@ -1,7 +1,9 @@
 // The mesh builder of the glTF shim: the default scene's nodes walked in
-// order, every triangle primitive's accessors checked (indices, offsets,
-// strides, index values) before a byte is read, and appended to one plain
-// struct mesh. Split from gltf.cc, which reads and parses the file.
+// order, every triangle primitive's accessors checked (gltf_accessor.h:
+// offsets and strides before a byte is read; index values here), and
+// appended to one plain struct mesh. Split from gltf.cc, which reads and
+// parses the file.
+#include "scene/gltf/gltf_accessor.h"
 #include "scene/gltf/gltf_ext.h"
 #include "scene/gltf/gltf_material.h"
 #include "scene/gltf/gltf_variants.h"
@@ -63,19 +65,6 @@ struct Builder {
 
 typedef double Mat4[16]; // column-major, as glTF stores it
 
-// A checked view of one accessor: where element i starts, and how to read
-// its components. Built only after every offset has been proven in range.
-struct View {
-	const unsigned char *base = nullptr;
-	size_t stride = 0;
-	size_t count = 0;
-	int components = 0;
-	int component_type = 0;
-	bool normalized = false;
-};
-
-using gltf_ext::component_size;
-
 // Room for `more` elements, at least doubling (as push_back would,
 // without its copies on the way there).
 template <typename T> void grow(std::vector<T> &v, size_t more)
@@ -84,115 +73,23 @@ template <typename T> void grow(std::vector<T> &v, size_t more)
 		v.reserve(std::max(v.size() + more, 2 * v.capacity()));
 }
 
-std::string type_name(int type)
-{
-	switch (type) {
-	case TINYGLTF_TYPE_SCALAR:
-		return "SCALAR";
-	case TINYGLTF_TYPE_VEC2:
-		return "VEC2";
-	case TINYGLTF_TYPE_VEC3:
-		return "VEC3";
-	case TINYGLTF_TYPE_VEC4:
-		return "VEC4";
-	default:
-		return std::to_string(type);
-	}
-}
-
 bool fail(Builder &b, const std::string &what, const std::string &msg)
 {
 	b.error = what + ": " + msg;
 	return false;
 }
 
-// `types` lists the accepted component types, ending in 0.
 bool check_accessor(Builder &b, const tinygltf::Model &m, int index, int type, const int *types,
-		    const std::string &what, View *v)
+		    const std::string &what, GltfView *v)
 {
-	std::string w = what + " (accessors[" + std::to_string(index) + "])";
-	if (index < 0 || (size_t)index >= m.accessors.size())
-		return fail(b, what, "accessor " + std::to_string(index) + " does not exist");
-	const tinygltf::Accessor &a = m.accessors[(size_t)index];
-	bool type_ok = false;
-	std::string expected;
-	for (const int *t = types; *t; t++) {
-		type_ok |= a.componentType == *t;
-		expected +=
-		    std::string(expected.empty() ? "" : ", ") + gltf_ext::component_name(*t);
-	}
-	if (a.type != type)
-		return fail(b, w, "type " + type_name(a.type) + ", expected " + type_name(type));
-	if (!type_ok)
-		return fail(b, w,
-			    std::string("componentType ") +
-				gltf_ext::component_name(a.componentType) + ", expected " +
-				expected);
-	// Sparse accessors and those without a bufferView were made plain
-	// before the builder runs (gltf_ext::make_dense).
-	if (a.bufferView < 0 || (size_t)a.bufferView >= m.bufferViews.size())
-		return fail(b, w, "bufferView " + std::to_string(a.bufferView) + " does not exist");
-	const tinygltf::BufferView &bv = m.bufferViews[(size_t)a.bufferView];
-	if (bv.buffer < 0 || (size_t)bv.buffer >= m.buffers.size())
-		return fail(b, w, "buffer " + std::to_string(bv.buffer) + " does not exist");
-	const std::vector<unsigned char> &buf = m.buffers[(size_t)bv.buffer].data;
-	size_t elem =
-	    component_size(a.componentType) * (size_t)tinygltf::GetNumComponentsInType(a.type);
-	size_t stride = bv.byteStride ? bv.byteStride : elem;
-	size_t view_end, last, end;
-	if (a.count == 0)
-		return fail(b, w, "count is 0");
-	if (stride < elem)
-		return fail(b, w,
-			    "byteStride " + std::to_string(stride) + " is smaller than an element");
-	if (__builtin_add_overflow(bv.byteOffset, bv.byteLength, &view_end) ||
-	    view_end > buf.size())
-		return fail(b, w,
-			    "bufferView " + std::to_string(a.bufferView) +
-				" runs past the end of its buffer (" + std::to_string(buf.size()) +
-				" bytes)");
-	if (__builtin_mul_overflow(stride, a.count - 1, &last) ||
-	    __builtin_add_overflow(last, a.byteOffset, &last) ||
-	    __builtin_add_overflow(last, elem, &end) || end > bv.byteLength)
-		return fail(b, w,
-			    "offset " + std::to_string(a.byteOffset) + " + stride " +
-				std::to_string(stride) + " x count " + std::to_string(a.count) +
-				" runs past the end of bufferView " + std::to_string(a.bufferView) +
-				" (" + std::to_string(bv.byteLength) + " bytes)");
-	v->base = buf.data() + bv.byteOffset + a.byteOffset;
-	v->stride = stride;
-	v->count = a.count;
-	v->components = tinygltf::GetNumComponentsInType(a.type);
-	v->component_type = a.componentType;
-	v->normalized = a.normalized;
-	return true;
+	return gltf_view_check(m, index, type, types, what, v, &b.error);
 }
 
-// Float first and inline: nearly every exporter writes float attributes,
-// and a 1M-triangle model reads some twelve million components.
-inline double read_component(const View &v, size_t i, int c)
+bool check_color(Builder &b, const tinygltf::Model &m, int index, const std::string &what,
+		 GltfView *v)
 {
-	if (v.component_type == TINYGLTF_COMPONENT_TYPE_FLOAT) {
-		float f;
-		std::memcpy(&f, v.base + i * v.stride + (size_t)c * 4, 4);
-		return f;
-	}
-	return gltf_ext::component_value(v.base + i * v.stride +
-					     (size_t)c * component_size(v.component_type),
-					 v.component_type, v.normalized);
+	return gltf_view_color(m, index, what, v, &b.error);
 }
-
-// KHR_mesh_quantization widens what an attribute may be stored as:
-// positions and texture coordinates in any 8 or 16-bit integer
-// (normalized or not), normals and tangents in normalized signed ones.
-const int position_types[] = {TINYGLTF_COMPONENT_TYPE_FLOAT,	      TINYGLTF_COMPONENT_TYPE_BYTE,
-			      TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,  TINYGLTF_COMPONENT_TYPE_SHORT,
-			      TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, 0};
-const int direction_types[] = {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE,
-			       TINYGLTF_COMPONENT_TYPE_SHORT, 0};
-const int index_types[] = {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-			   TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
-			   TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, 0};
 
 // Triangle lists, strips and fans become one list; the mirrored flag and
 // the strip's alternating order decide the winding.
@@ -228,13 +125,13 @@ bool read_indices(Builder &b, const tinygltf::Model &m, const tinygltf::Primitiv
 			out->push_back((uint32_t)i);
 		return true;
 	}
-	View v;
-	if (!check_accessor(b, m, p.indices, TINYGLTF_TYPE_SCALAR, index_types, what + ".indices",
-			    &v))
+	GltfView v;
+	if (!check_accessor(b, m, p.indices, TINYGLTF_TYPE_SCALAR, gltf_index_types,
+			    what + ".indices", &v))
 		return false;
 	out->reserve(v.count);
 	for (size_t i = 0; i < v.count; i++) {
-		double idx = read_component(v, i, 0);
+		double idx = gltf_view_read(v, i, 0);
 		if (idx >= (double)vertex_count)
 			return fail(
 			    b, what + ".indices (accessors[" + std::to_string(p.indices) + "])",
@@ -250,36 +147,21 @@ bool read_indices(Builder &b, const tinygltf::Model &m, const tinygltf::Primitiv
 // matrix itself (not the normal matrix). A mirroring transform flips the
 // bitangent cross(n, t) against the surface, so w flips with it. Length
 // and orthogonality are restored later against the final normals.
-void push_tangent(Builder &b, const View &tan, size_t i, const Mat4 world, double det)
+void push_tangent(Builder &b, const GltfView &tan, size_t i, const Mat4 world, double det)
 {
-	double t[3], w = read_component(tan, i, 3);
+	double t[3], w = gltf_view_read(tan, i, 3);
 	for (int k = 0; k < 3; k++)
-		t[k] = world[k] * read_component(tan, i, 0) +
-		       world[4 + k] * read_component(tan, i, 1) +
-		       world[8 + k] * read_component(tan, i, 2);
+		t[k] = world[k] * gltf_view_read(tan, i, 0) +
+		       world[4 + k] * gltf_view_read(tan, i, 1) +
+		       world[8 + k] * gltf_view_read(tan, i, 2);
 	for (int k = 0; k < 3; k++)
 		b.tangents.push_back(std::isfinite(t[k]) ? (float)t[k] : 0.0f);
 	b.tangents.push_back((w < 0) != (det < 0) ? -1.0f : 1.0f);
 }
 
-// COLOR_0: vec3 or vec4, float or normalized unsigned byte or short.
-bool check_color(Builder &b, const tinygltf::Model &m, int index, const std::string &what, View *v)
-{
-	static const int types[] = {TINYGLTF_COMPONENT_TYPE_FLOAT,
-				    TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-				    TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, 0};
-	bool vec4 = index < (int)m.accessors.size() && index >= 0 &&
-		    m.accessors[(size_t)index].type == TINYGLTF_TYPE_VEC4;
-	if (!check_accessor(b, m, index, vec4 ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_VEC3, types,
-			    what, v))
-		return false;
-	v->normalized = true; // the spec's only choice for integer colours
-	return true;
-}
-
 // A primitive's vertex attributes, checked: an absent one has count 0.
 struct Attributes {
-	View pos, nrm, uv, tan, col, uv1;
+	GltfView pos, nrm, uv, tan, col, uv1;
 };
 
 int find_attribute(const tinygltf::Primitive &p, const char *key)
@@ -290,12 +172,12 @@ int find_attribute(const tinygltf::Primitive &p, const char *key)
 
 // An attribute the primitive may leave out: absent, or checked.
 bool check_optional(Builder &b, const tinygltf::Model &m, int index, int type, const int *types,
-		    const std::string &what, View *v)
+		    const std::string &what, GltfView *v)
 {
 	return index < 0 || check_accessor(b, m, index, type, types, what, v);
 }
 
-bool same_count(const View &v, size_t count)
+bool same_count(const GltfView &v, size_t count)
 {
 	return v.count == 0 || v.count == count;
 }
@@ -309,19 +191,19 @@ bool check_attributes(Builder &b, const tinygltf::Model &m, const tinygltf::Prim
 	if (ipos < 0)
 		return fail(b, what + ".attributes", "has no POSITION, expected one");
 	std::string at = what + ".attributes.";
-	if (!check_accessor(b, m, ipos, TINYGLTF_TYPE_VEC3, position_types, at + "POSITION",
+	if (!check_accessor(b, m, ipos, TINYGLTF_TYPE_VEC3, gltf_position_types, at + "POSITION",
 			    &a->pos) ||
-	    !check_optional(b, m, inrm, TINYGLTF_TYPE_VEC3, direction_types, at + "NORMAL",
+	    !check_optional(b, m, inrm, TINYGLTF_TYPE_VEC3, gltf_direction_types, at + "NORMAL",
 			    &a->nrm) ||
-	    !check_optional(b, m, iuv, TINYGLTF_TYPE_VEC2, position_types, at + uv, &a->uv) ||
-	    !check_optional(b, m, itan, TINYGLTF_TYPE_VEC4, direction_types, at + "TANGENT",
+	    !check_optional(b, m, iuv, TINYGLTF_TYPE_VEC2, gltf_position_types, at + uv, &a->uv) ||
+	    !check_optional(b, m, itan, TINYGLTF_TYPE_VEC4, gltf_direction_types, at + "TANGENT",
 			    &a->tan))
 		return false;
 	size_t n = a->pos.count;
 	int set1 = gltf_emissive_uv_set(m, p.material, b.textures);
 	std::string uv1 = "TEXCOORD_" + std::to_string(set1);
 	if (set1 >= 0 && !check_optional(b, m, find_attribute(p, uv1.c_str()), TINYGLTF_TYPE_VEC2,
-					 position_types, at + uv1, &a->uv1))
+					 gltf_position_types, at + uv1, &a->uv1))
 		return false;
 	int icol = b.want_colors ? find_attribute(p, "COLOR_0") : -1;
 	if (icol >= 0 && !check_color(b, m, icol, at + "COLOR_0", &a->col))
@@ -334,10 +216,11 @@ bool check_attributes(Builder &b, const tinygltf::Model &m, const tinygltf::Prim
 	return true;
 }
 
-bool push_position(Builder &b, const View &pos, size_t i, const Mat4 world, const std::string &what)
+bool push_position(Builder &b, const GltfView &pos, size_t i, const Mat4 world,
+		   const std::string &what)
 {
-	double x = read_component(pos, i, 0), y = read_component(pos, i, 1),
-	       z = read_component(pos, i, 2);
+	double x = gltf_view_read(pos, i, 0), y = gltf_view_read(pos, i, 1),
+	       z = gltf_view_read(pos, i, 2);
 	if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
 		return fail(b, what + ".attributes.POSITION",
 			    "vertex " + std::to_string(i) + " is not a finite number");
@@ -349,12 +232,12 @@ bool push_position(Builder &b, const View &pos, size_t i, const Mat4 world, cons
 
 // Through the normal matrix and normalised; +z where the model has no
 // normals, or this one has no length.
-void push_normal(Builder &b, const View *nrm, size_t i, const double nm[9])
+void push_normal(Builder &b, const GltfView *nrm, size_t i, const double nm[9])
 {
 	double n[3] = {0, 0, 1}, len = 0;
 	if (nrm) {
-		double a = read_component(*nrm, i, 0), c = read_component(*nrm, i, 1),
-		       d = read_component(*nrm, i, 2);
+		double a = gltf_view_read(*nrm, i, 0), c = gltf_view_read(*nrm, i, 1),
+		       d = gltf_view_read(*nrm, i, 2);
 		for (int k = 0; k < 3; k++)
 			n[k] = nm[k] * a + nm[3 + k] * c + nm[6 + k] * d;
 		len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
@@ -400,14 +283,14 @@ void make_room(Builder &b, size_t n, bool tangents, bool colors)
 }
 
 // Second UVs: once a primitive has them, every vertex has them (or 0, 0).
-void read_uv1(Builder &b, const View &uv1, size_t before, size_t n)
+void read_uv1(Builder &b, const GltfView &uv1, size_t before, size_t n)
 {
 	if (!uv1.count && b.uv1.empty())
 		return;
 	b.uv1.resize(before * 2, 0.0f);
 	for (size_t i = 0; i < n; i++)
 		for (int k = 0; k < 2; k++)
-			b.uv1.push_back(uv1.count ? (float)read_component(uv1, i, k) : 0.0f);
+			b.uv1.push_back(uv1.count ? (float)gltf_view_read(uv1, i, k) : 0.0f);
 }
 
 bool read_vertices(Builder &b, const tinygltf::Model &m, const tinygltf::Primitive &p,
@@ -431,11 +314,11 @@ bool read_vertices(Builder &b, const tinygltf::Model &m, const tinygltf::Primiti
 			return false;
 		push_normal(b, r->has_normals ? &a.nrm : nullptr, i, nm);
 		for (int k = 0; k < 2; k++)
-			b.uvs.push_back(a.uv.count ? (float)read_component(a.uv, i, k) : 0.0f);
+			b.uvs.push_back(a.uv.count ? (float)gltf_view_read(a.uv, i, k) : 0.0f);
 		if (r->has_tangents)
 			push_tangent(b, a.tan, i, world, det);
 		for (int k = 0; per_vertex && k < 4; k++) { // a float colour may leave [0, 1]
-			double c = k < a.col.components ? read_component(a.col, i, k) : 1.0;
+			double c = k < a.col.components ? gltf_view_read(a.col, i, k) : 1.0;
 			b.colors.push_back(base[k] * (float)(c >= 0.0 ? std::fmin(c, 1.0) : 0.0));
 		}
 	}
