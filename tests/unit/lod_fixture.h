@@ -217,4 +217,22 @@ static inline void four_parts(const struct mesh *s, struct mesh *m)
 	free(part);
 }
 
+/* four_parts' ranges, simplified: each in order, material k, not empty,
+ * every triangle of it still of part k (its vertices' colour), together
+ * every index once. */
+static inline void assert_four_parts_in_order(const struct mesh *m)
+{
+	uint32_t at = 0;
+
+	for (uint32_t k = 0; k < 4; k++) {
+		assert_int_equal(m->ranges[k].first_index, at);
+		assert_int_equal(m->ranges[k].material, k);
+		assert_true(m->ranges[k].index_count > 0);
+		for (uint32_t i = at; i < at + m->ranges[k].index_count; i++)
+			assert_true(m->colors[m->indices[i] * 4] == k / 4.0f);
+		at += m->ranges[k].index_count;
+	}
+	assert_int_equal(at, m->index_count);
+}
+
 #endif

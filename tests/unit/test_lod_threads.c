@@ -123,7 +123,6 @@ static void threads_keep_materials(void **state)
 {
 	struct mesh sphere, parts, m;
 	size_t open;
-	uint32_t at = 0;
 
 	(void)state;
 	assert_int_equal(mesh_uv_sphere(&sphere, 256, 256), 0);
@@ -131,15 +130,7 @@ static void threads_keep_materials(void **state)
 	open = open_edges(&parts);
 	like_one_thread(&parts, &m, 4.0, 320, 240, 2);
 	assert_true(open_edges(&m) <= open);
-	for (uint32_t k = 0; k < 4; k++) {
-		assert_int_equal(m.ranges[k].first_index, at);
-		assert_int_equal(m.ranges[k].material, k);
-		assert_true(m.ranges[k].index_count > 0);
-		for (uint32_t i = at; i < at + m.ranges[k].index_count; i++)
-			assert_true(m.colors[m.indices[i] * 4] == k / 4.0f);
-		at += m.ranges[k].index_count;
-	}
-	assert_int_equal(at, m.index_count);
+	assert_four_parts_in_order(&m);
 	mesh_release(&m);
 	mesh_release(&parts);
 	mesh_release(&sphere);
