@@ -10,7 +10,7 @@
 #include "config/options.h"
 #include "content/content.h"
 #include "display/display.h"
-#include "gltf_write.h"
+#include "live_kiosk.h"
 #include "render/render.h"
 #include "scene/mesh/mesh.h"
 #include "util/clock.h"
@@ -146,20 +146,12 @@ static void script_destroy(struct input_source *src)
 static void next_matcap_and_a_rewritten_one_are_shown(void **state)
 {
 	char dir[] = "/tmp/mk-matcap-XXXXXX", ini[64], model[64], folder[64], red[80], blue[80];
-	char *argv[] = {"matcap-kiosk", "--backend", "osmesa",	 "--size", "32x32", "--config", ini,
-			"--keyboard",	"none",	     "--camera", "off",	   "-q",    NULL};
-	struct gltf_write_opts w = {.index_bytes = 2, .with_normals = 1, .bad_index = -1};
 	struct script s = {.base = {.name = "matcap script",
 				    .fd = -1,
 				    .read = script_read,
 				    .deadline = script_deadline,
 				    .destroy = script_destroy}};
-	struct display_config cfg = {.width = 32, .height = 32};
-	struct options o;
-	struct content content;
-	struct kiosk_parts parts = {.content = &content, .options = &o, .argv = argv};
-	struct renderer *r;
-	struct mesh m;
+	struct live_kiosk lk;
 	FILE *f;
 
 	(void)state;
@@ -174,38 +166,21 @@ static void next_matcap_and_a_rewritten_one_are_shown(void **state)
 	write_colour(blue, 0, 0, 255);
 	s.blue = blue;
 	setenv("XDG_CACHE_HOME", dir, 1);
-	assert_int_equal(mesh_uv_sphere(&m, 16, 8), 0);
-	assert_int_equal(gltf_write(model, &m, &w), 0);
-	mesh_release(&m);
+	live_kiosk_sphere(model);
 	f = fopen(ini, "w");
 	assert_non_null(f);
 	fprintf(f, "[scene]\nmodel = %s\nmatcap = %s\n", model, folder);
 	fclose(f);
-	assert_int_equal(options_parse(&o, 12, argv), OPTIONS_OK);
-	assert_int_equal(content_load(&content, &o.content, true), 0);
-	s.d = display_osmesa_new(&cfg);
-	assert_non_null(s.d);
-	r = renderer_new(&s.d->gl, NULL);
-	assert_non_null(r);
-	assert_int_equal(content_prepare(&content, &o.content, s.d->width, s.d->height), 0);
-	assert_int_equal(content_upload(&content, r), 0);
-	assert_int_equal(renderer_set_mode(r, o.content.mode, o.content.ortho), 0);
-	parts.display = s.d;
-	parts.renderer = r;
-	s.k = kiosk_new(&parts, 0);
-	assert_non_null(s.k);
-	assert_int_equal(kiosk_add_input(s.k, &s.base), 0);
+	live_kiosk_start(&lk, ini, &s.base);
+	s.k = lk.k;
+	s.d = lk.d;
 	assert_int_equal(kiosk_run(s.k), 0);
 	assert_int_equal(s.seen[FIRST_RED], RED);
 	assert_int_equal(s.seen[PRESSED], BLUE);    /* the press: the next image */
 	assert_int_equal(s.seen[REWRITTEN], GREEN); /* the shown one, decoded again */
 	assert_int_equal(s.seen[BROKEN], GREEN);    /* refused: the previous stays */
 	assert_int_equal(kiosk_app_state(s.k)->matcap, 1);
-	kiosk_free(s.k);
-	renderer_free(r);
-	/* The display is left open: see __lsan_default_suppressions. */
-	content_release(&content);
-	options_release(&o);
+	live_kiosk_stop(&lk);
 	unsetenv("XDG_CACHE_HOME");
 }
 

@@ -10,7 +10,7 @@
 #include "config/options.h"
 #include "content/content.h"
 #include "display/display.h"
-#include "gltf_write.h"
+#include "live_kiosk.h"
 #include "render/render.h"
 #include "scene/mesh/mesh.h"
 #include "util/log.h"
@@ -118,21 +118,12 @@ static void script_destroy(struct input_source *src)
 static void a_key_during_a_reload_is_applied_at_once(void **state)
 {
 	char dir[] = "/tmp/mk-reload-XXXXXX", ini[64], model[64], gate[64];
-	char *argv[] = {"matcap-kiosk", "--backend", "osmesa",	 "--size", "32x32", "--config", ini,
-			"--keyboard",	"none",	     "--camera", "off",	   "-q",    NULL};
-	struct gltf_write_opts w = {.index_bytes = 2, .with_normals = 1, .bad_index = -1};
 	struct script s = {.base = {.name = "reload script",
 				    .fd = -1,
 				    .read = script_read,
 				    .deadline = script_deadline,
 				    .destroy = script_destroy}};
-	struct display_config cfg = {.width = 32, .height = 32};
-	struct options o;
-	struct content content;
-	struct kiosk_parts parts = {.content = &content, .options = &o, .argv = argv};
-	struct display *d;
-	struct renderer *r;
-	struct mesh m;
+	struct live_kiosk lk;
 	FILE *f;
 
 	(void)state;
@@ -140,33 +131,16 @@ static void a_key_during_a_reload_is_applied_at_once(void **state)
 	snprintf(ini, sizeof(ini), "%s/kiosk.ini", dir);
 	snprintf(model, sizeof(model), "%s/sphere.glb", dir);
 	setenv("XDG_CACHE_HOME", dir, 1);
-	assert_int_equal(mesh_uv_sphere(&m, 16, 8), 0);
-	assert_int_equal(gltf_write(model, &m, &w), 0);
-	mesh_release(&m);
+	live_kiosk_sphere(model);
 	f = fopen(ini, "w");
 	assert_non_null(f);
 	fprintf(f, "[scene]\nmode = view\n");
 	fclose(f);
-	assert_int_equal(options_parse(&o, 12, argv), OPTIONS_OK);
-	assert_int_equal(content_load(&content, &o.content, true), 0);
-	assert_null(content.model_path); /* the built-in knot first */
-#ifdef MK_HAVE_OSMESA
-	d = display_osmesa_new(&cfg);
-#else
-	d = display_egl_new(&cfg);
-#endif
-	assert_non_null(d);
-	r = renderer_new(&d->gl, NULL);
-	assert_non_null(r);
-	assert_int_equal(content_prepare(&content, &o.content, d->width, d->height), 0);
-	assert_int_equal(content_upload(&content, r), 0);
-	assert_int_equal(renderer_set_mode(r, o.content.mode, o.content.ortho), 0);
-	parts.display = d;
-	parts.renderer = r;
-	s.k = kiosk_new(&parts, 0);
-	assert_non_null(s.k);
-	assert_int_equal(kiosk_add_input(s.k, &s.base), 0);
-	/* The reload reads the new model; its preparation is held 1.5 s. */
+	live_kiosk_start(&lk, ini, &s.base);
+	assert_null(lk.content.model_path); /* the built-in knot first */
+	s.k = lk.k;
+	/* The reload reads the new model; its preparation waits at the gate
+	 * (MK_TEST_PREPARE_GATE) until the script has seen the key applied. */
 	f = fopen(ini, "w");
 	assert_non_null(f);
 	fprintf(f, "[scene]\nmode = view\nmodel = %s\n", model);
@@ -182,13 +156,9 @@ static void a_key_during_a_reload_is_applied_at_once(void **state)
 	assert_true(s.frames_seen_changed >= 3);
 	assert_true(s.frames_during_reload >= s.frames_seen_changed);
 	/* And the new model on screen after. */
-	assert_non_null(content.model_path);
-	assert_string_equal(content.model_path, model);
-	kiosk_free(s.k);
-	renderer_free(r);
-	/* The display is left open: see __lsan_default_suppressions. */
-	content_release(&content);
-	options_release(&o);
+	assert_non_null(lk.content.model_path);
+	assert_string_equal(lk.content.model_path, model);
+	live_kiosk_stop(&lk);
 	unsetenv("XDG_CACHE_HOME");
 }
 
