@@ -33,7 +33,7 @@ BUILD   ?= build
 # call goes through the table in src/render/gl.c (the README, "How it is put
 # together"). Their headers are still found through pkg-config.
 PKGS_LINK    := egl gbm libdrm libudev libpng libturbojpeg libwebp tinygltf libsystemd libgpiod libevdev \
-		libcamera draco freetype2 harfbuzz fribidi
+		libcamera draco freetype2 harfbuzz fribidi fontconfig libunibreak libmosquitto
 # Mesa 25.1 and later have no OSMesa: without its headers the osmesa
 # backend is left out (OSMESA=0 leaves it out by hand) and offscreen
 # rendering, the tests' included, goes through egl-headless.
@@ -208,12 +208,15 @@ APT_GET       := $(if $(filter 0,$(shell id -u)),,sudo) env DEBIAN_FRONTEND=noni
 # test bench). procps brings /bin/kill, which the unit's ExecReload names
 # (a minimal Debian 13 has none); libcamera-ipa runs the camera matcap;
 # FreeType, HarfBuzz and FriBidi shape [caption]'s text, in DejaVu Sans
-# (fonts-dejavu-core) unless [caption] font names another.
+# (fonts-dejavu-core) unless [caption] font names another; fontconfig finds
+# a fallback font for characters it lacks; libunibreak breaks lines (UAX
+# #14, CJK too); libmosquitto is [mqtt]'s client (off unless set).
 DEBIAN_PACKAGES := make gcc g++ pkg-config libegl-dev libgles-dev \
 	libegl-mesa0 libgl1-mesa-dri libgbm-dev libdrm-dev libtinygltf-dev nlohmann-json3-dev \
 	libpng-dev libturbojpeg0-dev libwebp-dev libudev-dev libsystemd-dev \
 	libgpiod-dev libevdev-dev libcamera-dev libcamera-ipa libmeshoptimizer-dev libdraco-dev \
-	libfreetype-dev libharfbuzz-dev libfribidi-dev fonts-dejavu-core procps
+	libfreetype-dev libharfbuzz-dev libfribidi-dev fonts-dejavu-core procps \
+	libfontconfig-dev libunibreak-dev libmosquitto-dev
 # make deps-test: the test bench on top. The unit tests' cmocka and zlib;
 # systemd-analyze for the unit; clang for the fuzzers; valgrind for the
 # soak; gnuplot for make report; the virtual board (qemu, busybox, kernel
@@ -223,14 +226,17 @@ DEBIAN_PACKAGES := make gcc g++ pkg-config libegl-dev libgles-dev \
 # mke2fs -d; no root or loop device needed); rsync for content by sync
 # (tests/e2e/sync.sh: real rsync into a live kiosk's folder); [status]
 # metrics scraped from a real node_exporter (tests/e2e/metrics.sh); the
-# Ansible role applied to a fresh root (tests/cross/ansible.sh).
+# Ansible role applied to a fresh root (tests/cross/ansible.sh); a real
+# mosquitto broker for [mqtt] (tests/e2e/mqtt.sh) and Noto CJK for the
+# captions' fallback font (a Japanese caption's golden).
 DEBIAN_TEST_PACKAGES := libcmocka-dev zlib1g-dev systemd \
 	clang-$(CLANG_VERSION) libclang-rt-$(CLANG_VERSION)-dev valgrind gnuplot-nox \
 	qemu-system-x86 busybox-static lz4 cpio kmod udev xz-utils kmscube libdrm-tests \
 	libcamera-tools gpiod v4l-utils \
 	draco gltfpack assimp-testmodels \
 	dosfstools mtools e2fsprogs rsync time \
-	prometheus-node-exporter curl ansible mmdebstrap man-db groff-base bsdextrautils
+	prometheus-node-exporter curl ansible mmdebstrap man-db groff-base bsdextrautils \
+	mosquitto mosquitto-clients fonts-noto-cjk
 
 deps:
 	$(APT_GET) update -qq

@@ -33,7 +33,8 @@ CROSS_PACKAGES := libc6 libstdc++6 libgcc-s1 libubsan1 libegl-dev libgles-dev li
 	libosmesa6 libgbm-dev libdrm-dev libtinygltf-dev nlohmann-json3-dev libpng-dev \
 	libturbojpeg0-dev libwebp-dev libcmocka-dev libudev-dev libsystemd-dev libgpiod-dev \
 	libevdev-dev libcamera-dev libmeshoptimizer-dev libdraco-dev zlib1g-dev \
-	libfreetype-dev libharfbuzz-dev libfribidi-dev fonts-dejavu-core
+	libfreetype-dev libharfbuzz-dev libfribidi-dev fonts-dejavu-core \
+	libfontconfig-dev libunibreak-dev libmosquitto-dev
 CROSS_HOST_PACKAGES := gcc-$(CROSS_TRIPLET) g++-$(CROSS_TRIPLET) qemu-user-static mmdebstrap \
 	pkg-config make
 
