@@ -403,6 +403,22 @@ test_cli() {
 		echo "not ok the scenario stopped early" >>"$out/config_check.log"
 	results check-config "$out/config_check.log"
 
+	# The one precedence (issue 33): --yaw 90 --caption X --background
+	# '#ff0000' beside a NAME.ini that sets all three drew the NAME.ini's
+	# frame, byte for byte; now it draws what the same options draw for
+	# a model without a NAME.ini.
+	cp "$out/models/long.glb" "$out/bad/own.glb"
+	cp "$out/models/long.glb" "$out/bad/bare.glb"
+	printf '[scene]\nyaw = 10\n[caption]\ntext = Vase\n[display]\nbackground = #00ff00\n' \
+		>"$out/bad/own.ini"
+	check "the command line goes over a model's NAME.ini" sh -c "
+		r() { $KIOSK -q --backend $offscreen --size 160x120 --model $out/bad/\$1.glb \
+			--output $out/bad/prec-\$2.png \$3; }
+		r own own '' && r own cli '--yaw 90 --caption X --background #ff0000' &&
+		r bare bare '--yaw 90 --caption X --background #ff0000' &&
+		! cmp -s $out/bad/prec-own.png $out/bad/prec-cli.png &&
+		cmp $out/bad/prec-bare.png $out/bad/prec-cli.png"
+
 	# [scene] matcap_first = auto (the default) with the shipped matcaps: a
 	# coloured model starts on pearl, not gold (which turned its colours
 	# olive), and says so; the frame differs from gold's; an uncoloured one

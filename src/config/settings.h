@@ -156,5 +156,14 @@ const char *options_origin_file(struct options *o, const char *file);
 int options_files_read(const struct options *o, const char *const **files);
 /* options_release does this; for a reader that starts over. */
 void options_origins_free(struct options *o);
+/* Whether the command line set d (a setting kept in struct content_config). */
+bool content_config_from_cli(const struct content_config *c, const struct option_def *d);
+/* The one precedence: each setting of dst that the command line set in
+ * cli is cli's again (a model's NAME.ini read over dst does not override
+ * the command line). 0, or -ENOMEM. */
+int content_config_keep_cli(struct content_config *dst, const struct content_config *cli);
+/* d's value in o as a settings file would write it ("45", "top",
+ * "640x480"; a string as it is, "" when none). */
+void option_value_text(const struct options *o, const struct option_def *d, char *buf, size_t n);
 
 #endif

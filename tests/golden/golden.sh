@@ -114,13 +114,15 @@ render() {
 		$k -c matcaps/gold.png --model "$m/long-up.glb" --output "$o"
 		;;
 	# [scene] matcap and [display] background from the model's own
-	# NAME.ini, over the command line's: the pearl matcap on a blue grey,
-	# not the gold one on the default grey.
+	# NAME.ini, over kiosk.ini's: the pearl matcap on a blue grey, not
+	# the gold one on the default grey. (Over kiosk.ini, not the command
+	# line: the command line goes over NAME.ini, test_precedence.)
 	frame-own-look)
 		cp "$m/long.glb" "$m/long-look.glb"
 		printf '[scene]\nmatcap = %s/matcaps/pearl.png\n[display]\nbackground = #304050\n' \
 			"$PWD" >"$m/long-look.ini"
-		$k -c matcaps/gold.png --model "$m/long-look.glb" --output "$o"
+		printf '[scene]\nmatcap = %s/matcaps/gold.png\n' "$PWD" >"$m/look-kiosk.ini"
+		$k --config "$m/look-kiosk.ini" --model "$m/long-look.glb" --output "$o"
 		;;
 	frame-start-view)
 		$k -c matcaps/gold.png --model "$m/long.glb" --start-yaw 60 --start-pitch 45 \
