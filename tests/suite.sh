@@ -419,6 +419,17 @@ test_cli() {
 		! cmp -s $out/bad/prec-own.png $out/bad/prec-cli.png &&
 		cmp $out/bad/prec-bare.png $out/bad/prec-cli.png"
 
+	# --caption auto on a Blender file (its scene is "Scene", as every
+	# Blender file's is) showed "Scene"; now the file's name made
+	# readable: the frame of --caption 'Old radio v2', not of 'Scene'.
+	cp tests/corpus/blender/cube-textured.glb "$out/bad/old_radio-v2.glb"
+	check "--caption auto passes over Blender's 'Scene' for the file's name" sh -c "
+		r() { $KIOSK -q --backend $offscreen --size 320x240 --model $out/bad/old_radio-v2.glb \
+			--output $out/bad/auto-\$1.png --caption \"\$2\"; }
+		r auto auto && r file 'Old radio v2' && r scene Scene &&
+		cmp $out/bad/auto-auto.png $out/bad/auto-file.png &&
+		! cmp -s $out/bad/auto-auto.png $out/bad/auto-scene.png"
+
 	# [scene] matcap_first = auto (the default) with the shipped matcaps: a
 	# coloured model starts on pearl, not gold (which turned its colours
 	# olive), and says so; the frame differs from gold's; an uncoloured one
