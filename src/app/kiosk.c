@@ -246,6 +246,7 @@ static int draw(struct kiosk *k, uint64_t now)
 	k->view.orientation = st->orientation;
 	/* Pinching scales the fitted picture ([scene] fit). */
 	k->view.zoom = (float)(st->zoom * (k->content->zoom > 0 ? k->content->zoom : 1.0));
+	content_place_view(k->content, &k->view);
 	/* Not connected, or waiting for the display: stay dirty, the display
 	 * asks for a redraw through dispatch() when it is back. */
 	k->display_absent = true;

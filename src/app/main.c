@@ -102,6 +102,7 @@ static int render_frames(const struct options *o, const struct content *s, struc
 	}
 	/* [frame] zoom: the start view's, over the fit's. */
 	v.zoom = (float)(s->zoom * (c->frame.zoom > 0 ? c->frame.zoom : 1.0));
+	content_place_view(s, &v);
 	for (int i = 0; i < o->frames && !ret; i++) {
 		double t = now_ms();
 

@@ -71,6 +71,9 @@ struct content {
 	struct background_spec background; /* its path is NULL once decoded */
 	struct image background_image;	   /* decoded once, when it is an image */
 	double zoom; /* the fit (render/framing.h) on the display prepared for; 0: none */
+	/* The outline's centre at the start view (NDC at zoom 1) and the
+	 * room's the fit puts it at: the frame less the caption's box. */
+	double outline[2], room[2];
 	/* The caption's picture (scene/caption.h), this model's; empty: none.
 	 * Kept after the upload: the overlay plane is filled from it. */
 	struct image caption;
@@ -182,6 +185,12 @@ int content_upload_model(struct content *s, struct renderer *r);
 int content_variant_find(const struct content *s, const char *name);
 int content_variant_names(const struct mesh *m, char *buf, size_t n);
 struct view content_view(const struct content_config *c);
+/* [scene] fit in a width x height frame less s's caption (content_fit.c):
+ * s's zoom, outline and room. */
+void content_frame(struct content *s, const struct content_config *o, int width, int height);
+/* The outline's centre and the room's of s into v (render_matrices
+ * shifts the one to the other). */
+void content_place_view(const struct content *s, struct view *v);
 /* Draw s's caption and its stops' pictures (content_caption.c), c's
  * [caption] and [frame] stops. A picture that fails is left out (the
  * journal says why), unless strict. */

@@ -138,6 +138,9 @@ void content_fit_captions(struct content *s, const struct content_config *o, int
 		snprintf(what, sizeof(what), "[frame] stops: stop %d's text", i + 1);
 		fit_picture(&c, f.stops[i].text, what, frame, &s->stop_caption[i]);
 	}
+	/* The model is fitted into the frame less the caption's box, now
+	 * that its size is known. */
+	content_frame(s, o, width, height);
 }
 
 void content_release_captions(struct content *s)

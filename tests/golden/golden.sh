@@ -18,6 +18,7 @@ scenes="$scenes knot-iridescence knot-iridescence-ramp knot-detail-map sphere-de
 scenes="$scenes sphere-beetle-gltf sphere-displaced sphere-lit sphere-lit-beside"
 scenes="$scenes sphere-vertex-color sphere-base-map sphere-base-map-off"
 scenes="$scenes background-color background-gradient background-image fit-long fit-long-half"
+scenes="$scenes fit-above-caption"
 scenes="$scenes parts-textures parts-mask parts-blend parts-leaf parts-normals parts-iridescence"
 scenes="$scenes parts-unlit parts-unlit-shade parts-emissive parts-emissive-sem-vertex parts-specgloss"
 scenes="$scenes parts-emissive-uv1"
@@ -104,6 +105,13 @@ render() {
 		;;
 	fit-long-half)
 		$k -c matcaps/gold.png --model "$m/long.glb" --fit 0.5 --output "$o"
+		;;
+	# The fit in the room a caption leaves (issue 33): a lopsided model
+	# (a body and a tall fin at one end) centred by its outline at the
+	# start view above a caption at the bottom, not behind it.
+	fit-above-caption)
+		$k -c matcaps/gold.png --model "$m/lopsided.glb" --caption "A lopsided model" \
+			--caption-position bottom --output "$o"
 		;;
 	# [frame] from the model's own NAME.ini: the long model stood on its
 	# end (up = +x, then a quarter roll), framed as turned (the fit

@@ -410,6 +410,36 @@ static int write_cube(const char *dir)
 	return bad;
 }
 
+/* The fit's centring (issue 33): a lopsided model, as a plane seen from
+ * its side: a long body and, at one end, a tall thin fin. Its box's and
+ * sphere's centres are far from its outline's at the start view. */
+static int write_lopsided(const char *dir)
+{
+	static const float boxes[2][6] = {{-2, -0.3f, -0.3f, 2, 0.3f, 0.3f},
+					  {1.3f, 0.3f, -0.08f, 2, 1.8f, 0.08f}};
+	struct gltf_write_opts o = {.index_bytes = 2, .bad_index = -1};
+	struct mesh cube, m;
+	int bad = 1;
+
+	if (gltf_test_cube(&cube))
+		return 1;
+	if (!mesh_alloc(&m, 16, 72, false)) {
+		for (uint32_t b = 0; b < 2; b++) {
+			for (uint32_t v = 0; v < 8; v++)
+				for (int k = 0; k < 3; k++)
+					m.positions[(b * 8 + v) * 3 + k] =
+					    cube.positions[v * 3 + k] > 0 ? boxes[b][3 + k]
+									  : boxes[b][k];
+			for (uint32_t i = 0; i < 36; i++)
+				m.indices[b * 36 + i] = cube.indices[i] + b * 8;
+		}
+		bad = put(dir, "lopsided.glb", &m, o);
+		mesh_release(&m);
+	}
+	mesh_release(&cube);
+	return bad;
+}
+
 int main(int argc, char **argv)
 {
 	struct mesh s;
@@ -459,6 +489,7 @@ int main(int argc, char **argv)
 	o.scenes = "{\"name\":\"one\",\"nodes\":[0]},{\"name\":\"pair\",\"nodes\":[0,1]}";
 	bad |= put(argv[1], "scenes.glb", &s, o);
 	bad |= write_look(argv[1], &s);
+	bad |= write_lopsided(argv[1]);
 	mesh_release(&s);
 	bad |= write_material_models(argv[1]);
 	bad |= parts_models_write(argv[1]);
