@@ -204,6 +204,43 @@ test_fit() {
 		--caption "A lopsided model" --caption-position top-left
 }
 
+# --stop N and --at SECONDS (issue 33): an offscreen still of a moment the
+# kiosk would show, through its own app state. The tour resting at its
+# second stop draws, byte for byte, what --stop 2 draws (view and text);
+# two moments of the tour differ as the tour does; a stop the model lacks
+# is refused, naming it; the README's toured picture is what make readme
+# draws.
+preview() { # OUT [OPTION]...
+	png=$1
+	shift
+	"$KIOSK" -q --backend $offscreen --size 160x120 --model "$out/models/lopsided.glb" \
+		--stops '0 0 1 "Front"; 90 10 1.2 "The fin"; 200 -10 0.9 "Behind"' \
+		--stop-seconds 4 --attract-speed 360 --caption Lopsided --output "$out/render/$png" "$@"
+}
+test_preview() {
+	need_models
+	check "--stop 2 draws" preview stop-2.png --stop 2
+	check "--at 7.5 (the tour at rest at its second stop) draws" preview at-7.5.png --at 7.5
+	check "--at 7.5 is --stop 2, byte for byte" cmp "$out/render/stop-2.png" \
+		"$out/render/at-7.5.png"
+	check "--at 2 draws" preview at-2.png --at 2
+	check "--at 6 draws" preview at-6.png --at 6
+	check "the start view draws" preview start.png
+	check "two moments of the tour differ, and from the start view" sh -c "
+		! cmp -s $out/render/at-2.png $out/render/at-6.png &&
+		! cmp -s $out/render/at-2.png $out/render/start.png &&
+		! cmp -s $out/render/stop-2.png $out/render/start.png"
+	check "--stop 4 of three stops is refused, naming them" sh -c "
+		! $KIOSK --backend $offscreen --size 64x64 --stops '0 0 1; 90 0 1; 180 0 1' --stop 4 \
+			--output $out/render/stop-4.png 2>$out/render/stop-4.log &&
+		grep -q -- '--stop 4: the model has 3 stops (.frame. stops); expected 1 to 3' \
+			$out/render/stop-4.log"
+	check "the README's toured picture: --at renders" sh tests/readme/tour.sh "$KIOSK" \
+		$offscreen "$out/render/readme-tour.png"
+	check "the README's toured picture is what make readme draws (tests/readme/tour.png)" \
+		imgdiff_golden tests/readme/tour.png "$out/render/readme-tour.png"
+}
+
 # Loader variants that must work from the command line.
 test_loaders() {
 	need_models

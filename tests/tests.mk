@@ -246,6 +246,7 @@ golden: $(KIOSK) test-tools
 # machine with no display (the frame it writes), through the offscreen backend.
 readme: $(KIOSK)
 	./$(KIOSK) -q --backend $(OFFSCREEN_BACKEND) --output tests/readme/first.png
+	sh tests/readme/tour.sh ./$(KIOSK) $(OFFSCREEN_BACKEND) tests/readme/tour.png
 
 .PHONY: unit-tests test-tools asan asan-kiosk asan-unit tsan test unit quick check golden readme
 

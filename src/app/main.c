@@ -5,6 +5,7 @@
 #include "display/display.h"
 #include "util/image.h"
 #include "app/kiosk.h"
+#include "app/preview.h"
 #include "app/signals.h"
 #include "util/log.h"
 #include "config/exit_codes.h"
@@ -93,7 +94,7 @@ static int render_frames(const struct options *o, const struct content *s, struc
 	struct render_scale *scale =
 	    render_scale_new(&d->gl, o->display.render_scale, d->samples, o->shader_dir);
 	double first = 0;
-	int ret = 0, w, h;
+	int ret = 0, w, h, stop;
 
 	if (!times || !scale) {
 		free(times);
@@ -103,6 +104,10 @@ static int render_frames(const struct options *o, const struct content *s, struc
 	/* [frame] zoom: the start view's, over the fit's. */
 	v.zoom = (float)(s->zoom * (c->frame.zoom > 0 ? c->frame.zoom : 1.0));
 	content_place_view(s, &v);
+	/* --stop, --at: that moment, and its stop's caption. */
+	if ((o->preview_stop > 0 || o->preview_at >= 0) &&
+	    (ret = preview_moment(o, s, c, &v, &stop)) == 0)
+		renderer_show_stop(r, stop);
 	for (int i = 0; i < o->frames && !ret; i++) {
 		double t = now_ms();
 

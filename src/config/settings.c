@@ -56,6 +56,7 @@ void option_defaults(struct options *o)
 	o->camera.view = (struct camera_view){0.5, 0.5, 0.5, false};
 	o->camera.stall_s = 3;
 	o->frames = 1;
+	o->preview_at = -1; /* no --at: not a moment of the tour */
 }
 
 /* Strings are kept as char * or const char * (the module configs hold

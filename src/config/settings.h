@@ -92,6 +92,10 @@ struct options {
 	bool stats;
 	bool help, version;
 	bool status, check_config;
+	/* --stop N (1 the first; 0: none) and --at SECONDS (< 0: none): the
+	 * moment an offscreen still shows (app/preview.h). */
+	int preview_stop;
+	double preview_at;
 };
 
 /* K_DEGREES: read in degrees, kept in radians. K_LEVEL: a log level by
@@ -118,7 +122,7 @@ struct option_def {
 
 /* The table's length: the compiler refuses an entry more, and
  * tests/unit/test_options.c one less. */
-#define OPTION_DEFS 127
+#define OPTION_DEFS 129
 extern const struct option_def option_defs[OPTION_DEFS];
 
 void option_defaults(struct options *o);

@@ -307,6 +307,12 @@ const struct option_def option_defs[OPTION_DEFS] = {
     {"zoom", 0, OPTION_CLI, NULL, K_DOUBLE, AT(content.zoom), 0.05, 20, 0, NULL, "Z",
      "draw at this scale of the sphere's framing instead of the one [scene] fit chose (logged "
      "at debug), so stills of other views keep one size"},
+    {"stop", 0, OPTION_CLI, NULL, K_INT, AT(preview_stop), 1, 8, 1, NULL, "N",
+     "with --output: draw what the kiosk shows at [frame] stops' Nth stop (1 the first), its "
+     "view and its text, as a visitor's presses leave it"},
+    {"at", 0, OPTION_CLI, NULL, K_DOUBLE, AT(preview_at), 0, 1e7, 0, NULL, "SECONDS",
+     "with --output: draw what the attract tour shows this many seconds after it begins (the "
+     "stops in turn, or the turn), caption and all"},
     {"fit", 0, OPTIONS_SCENE, "fit", K_DOUBLE, AT(content.fit), 0.1, 1, 0, NULL, "SHARE",
      "the share of the frame the model fills at its start view; it stays inside as it turns"},
     {"render-scale", 0, OPTIONS_DISPLAY, "render_scale", K_DOUBLE, AT(display.render_scale), 0.5, 1,

@@ -18,7 +18,7 @@ scenes="$scenes knot-iridescence knot-iridescence-ramp knot-detail-map sphere-de
 scenes="$scenes sphere-beetle-gltf sphere-displaced sphere-lit sphere-lit-beside"
 scenes="$scenes sphere-vertex-color sphere-base-map sphere-base-map-off"
 scenes="$scenes background-color background-gradient background-image fit-long fit-long-half"
-scenes="$scenes fit-above-caption"
+scenes="$scenes fit-above-caption preview-stop-2"
 scenes="$scenes parts-textures parts-mask parts-blend parts-leaf parts-normals parts-iridescence"
 scenes="$scenes parts-unlit parts-unlit-shade parts-emissive parts-emissive-sem-vertex parts-specgloss"
 scenes="$scenes parts-emissive-uv1"
@@ -109,6 +109,14 @@ render() {
 	# The fit in the room a caption leaves (issue 33): a lopsided model
 	# (a body and a tall fin at one end) centred by its outline at the
 	# start view above a caption at the bottom, not behind it.
+	# --stop 2 (issue 33): the still of the second of three stops, its
+	# view (yaw 90, pitch 10, zoom 1.2) and its text for the caption, as
+	# the kiosk shows it after a visitor's two next-stop presses.
+	preview-stop-2)
+		$k -c matcaps/gold.png --model "$m/lopsided.glb" --caption Lopsided \
+			--stops '0 0 1 "Front"; 90 10 1.2 "The fin"; 200 -10 0.9 "Behind"' \
+			--stop 2 --output "$o"
+		;;
 	fit-above-caption)
 		$k -c matcaps/gold.png --model "$m/lopsided.glb" --caption "A lopsided model" \
 			--caption-position bottom --output "$o"
