@@ -483,6 +483,19 @@ test_cli() {
 		! cmp -s $out/bad/prec-own.png $out/bad/prec-cli.png &&
 		cmp $out/bad/prec-bare.png $out/bad/prec-cli.png"
 
+	# --check-config -v: every value in effect with its origin, and a
+	# NAME.ini's under the command line's (the README's promise).
+	printf '[scene]\nmodel = own.glb\nfit = 0.6\n' >"$out/bad/verbose.ini"
+	check "--check-config -v names each value's file and line, command line or default" sh -c "
+		$KIOSK --check-config -v --config $out/bad/verbose.ini --yaw 90 \
+			>$out/bad/verbose.out 2>/dev/null &&
+		grep -qx '  .scene. fit = 0.6 ($out/bad/verbose.ini:3)' $out/bad/verbose.out &&
+		grep -qx '  .scene. yaw = 90 (the command line)' $out/bad/verbose.out &&
+		grep -qx '  .scene. pitch = 20 (the default)' $out/bad/verbose.out &&
+		grep -qx '    .scene. yaw = 90 (the command line, over $out/bad/own.ini:2)' \
+			$out/bad/verbose.out &&
+		grep -qx '    .caption. text = Vase ($out/bad/own.ini:4)' $out/bad/verbose.out"
+
 	# --caption auto on a Blender file (its scene is "Scene", as every
 	# Blender file's is) showed "Scene"; now the file's name made
 	# readable: the frame of --caption 'Old radio v2', not of 'Scene'.
