@@ -215,10 +215,38 @@ preview() { # OUT [OPTION]...
 	shift
 	"$KIOSK" -q --backend $offscreen --size 160x120 --model "$out/models/lopsided.glb" \
 		--stops '0 0 1 "Front"; 90 10 1.2 "The fin"; 200 -10 0.9 "Behind"' \
-		--stop-seconds 4 --attract-speed 360 --caption Lopsided --output "$out/render/$png" "$@"
+		--stop-seconds 4 --attract-speed 360 --caption Lopsided --caption-drift off \
+		--output "$out/render/$png" "$@"
+}
+# live_at_stop: the live kiosk (offscreen) touring the same stops; its
+# frame (--status) once the tour rests at its first stop is what --stop 1
+# drew (10 s at most for the kiosk to get there). The caption's drift off
+# in both: the live one drifts by the time of day.
+live_at_stop() {
+	run=$out/preview-run
+	rm -rf "$run"
+	mkdir -p "$run"
+	RUNTIME_DIRECTORY=$run "$KIOSK" -q --backend $offscreen --size 160x120 --keyboard none \
+		--model "$out/models/lopsided.glb" \
+		--stops '0 0 1 "Front"; 90 10 1.2 "The fin"; 200 -10 0.9 "Behind"' \
+		--stop-seconds 30 --attract-speed 360 --attract-after 0.2 --caption Lopsided \
+		--caption-drift off 2>"$run/kiosk.log" &
+	pid=$!
+	i=0 seen=1
+	while [ $i -lt 100 ] && [ $seen -ne 0 ]; do
+		sleep 0.1
+		i=$((i + 1))
+		RUNTIME_DIRECTORY=$run "$KIOSK" --status >/dev/null 2>&1 &&
+			"$TOOLS/imgdiff" --tol 8 --share 0.005 "$out/render/stop-1.png" \
+				"$run/frame.png" >/dev/null 2>&1 && seen=0
+	done
+	kill -TERM $pid && wait $pid
+	return $seen
 }
 test_preview() {
 	need_models
+	check "--stop 1 draws" preview stop-1.png --stop 1
+	check "the live kiosk at its tour's first stop shows what --stop 1 drew" live_at_stop
 	check "--stop 2 draws" preview stop-2.png --stop 2
 	check "--at 7.5 (the tour at rest at its second stop) draws" preview at-7.5.png --at 7.5
 	check "--at 7.5 is --stop 2, byte for byte" cmp "$out/render/stop-2.png" \
