@@ -7,6 +7,7 @@
 #include "util/log.h"
 
 #include <errno.h>
+#include <math.h>
 
 #define NS 1000000000ull
 /* The live kiosk draws attract mode at [kiosk] attract_fps; a display's
@@ -41,8 +42,19 @@ static uint64_t run_frames(struct app *a, uint64_t from, uint64_t to, double fps
 
 static int check_stop(const struct options *o, const struct app_config *cfg)
 {
+	if (o->preview_stop > 0 && o->preview_at >= 0) {
+		log_err("--stop %d and --at %g: one moment at a time; expected one of them",
+			o->preview_stop, o->preview_at);
+		return -EINVAL;
+	}
 	if (o->preview_stop <= cfg->frame.stop_count)
 		return 0;
+	if (!cfg->frame.stop_count) {
+		log_err("--stop %d: the model has no stops ([frame] stops); expected none, or "
+			"--at for the attract mode's turn",
+			o->preview_stop);
+		return -EINVAL;
+	}
 	log_err("--stop %d: the model has %d stop%s ([frame] stops); expected 1 to %d",
 		o->preview_stop, cfg->frame.stop_count, cfg->frame.stop_count == 1 ? "" : "s",
 		cfg->frame.stop_count);
@@ -51,7 +63,7 @@ static int check_stop(const struct options *o, const struct app_config *cfg)
 
 /* The app at the moment asked for, from its start at time 1 s (0 is no
  * input in the app's clock). */
-static int run_app(const struct options *o, struct app_config *cfg, struct app *a)
+static void run_app(const struct options *o, const struct app_config *cfg, struct app *a)
 {
 	const uint64_t t0 = NS;
 	uint64_t t = t0;
@@ -65,7 +77,6 @@ static int run_app(const struct options *o, struct app_config *cfg, struct app *
 		t = t0 + (uint64_t)((cfg->attract_after_s + o->preview_at) * NS);
 		run_frames(a, t0, t, cfg->attract_fps, false);
 	}
-	return 0;
 }
 
 int preview_moment(const struct options *o, const struct content *s, const struct content_config *c,
@@ -90,7 +101,7 @@ int preview_moment(const struct options *o, const struct content *s, const struc
 	a = app_new(&cfg, 1, NS);
 	if (!a)
 		return -ENOMEM;
-	ret = run_app(o, &cfg, a);
+	run_app(o, &cfg, a);
 	st = app_state(a);
 	v->orientation = st->orientation;
 	v->zoom = (float)(st->zoom * (s->zoom > 0 ? s->zoom : 1.0));
