@@ -81,7 +81,7 @@ SRC_DISPLAY := display/backlight display/cec display/cec_link display/display di
 	       display/drm display/drm_atomic display/drm_legacy display/egl_util display/hotplug \
 	       display/kms_fb display/kms_overlay
 SRC_INPUT   := input/action input/button input/gesture input/touch_decode input/gpio \
-	       input/gpio_$(GPIOD_API) input/keyboard input/touch
+	       input/gpio_$(GPIOD_API) input/keyboard input/touch input/knob input/knob_device
 SRC_CAMERA  := camera/camera_feed camera/camera_link camera/camera_math camera/camera_proto \
 	       camera/camera_texture
 SRC_RENDER  := render/background render/bake render/draw_list render/framing render/gl render/poster render/render_scale render/render_caption \

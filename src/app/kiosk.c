@@ -12,6 +12,7 @@
 #include "camera/camera_feed.h"
 #include "input/gpio.h"
 #include "input/keyboard.h"
+#include "input/knob_device.h"
 #include "input/touch.h"
 #include "util/clock.h"
 #include "util/folder_watch.h"
@@ -96,11 +97,13 @@ static int open_buttons(struct kiosk *k)
 	return n < 0 ? n : 0;
 }
 
+/* The keyboards and the knobs: evdev devices both, opened again together. */
 static void open_keyboards(struct kiosk *k)
 {
 	struct input_source *in[KIOSK_MAX_INPUTS];
 	int n = keyboard_open(&k->applied.keyboard, in, KIOSK_MAX_INPUTS - k->input_count);
 
+	n += knob_open(&k->applied.knob, in + n, KIOSK_MAX_INPUTS - k->input_count - n);
 	for (int i = 0; i < n; i++)
 		add_input(k, in[i], INPUT_KEYBOARD);
 }
@@ -326,8 +329,9 @@ static void reopen_devices(struct kiosk *k, unsigned sections)
 		if (open_buttons(k))
 			log_err("reload: two buttons are one line; running on without buttons");
 	}
-	if (sections & 1u << OPTIONS_KEYBOARD) {
-		log_info("reload: [keyboard] changed: opening the keyboards again");
+	if (sections & (1u << OPTIONS_KEYBOARD | 1u << OPTIONS_KNOB)) {
+		log_info(
+		    "reload: [keyboard] or [knob] changed: opening the keyboards and knobs again");
 		close_inputs(k, INPUT_KEYBOARD);
 		open_keyboards(k);
 	}

@@ -26,6 +26,12 @@ enum app_action {
 	ACTION_PLAY_PAUSE,     /* the model's animation stops where it is, or goes on */
 	ACTION_NEXT_ANIMATION, /* its next clip, crossfaded */
 	ACTION_NEXT_VARIANT,   /* its next KHR_materials_variants variant (then its default) */
+	/* The knob's press (or a button's): what the knob points at is taken;
+	 * today the next stop (hotspots, issue 33, step through theirs). */
+	ACTION_SELECT,
+	/* The knob's long press: the next of [caption] languages. Nothing
+	 * yet: the languages' part of issue 33 gives it its meaning. */
+	ACTION_NEXT_LANGUAGE,
 	ACTION_COUNT
 };
 
@@ -36,6 +42,9 @@ struct app_event {
 	uint64_t time_ns; /* CLOCK_MONOTONIC, or the kernel's event timestamp */
 	enum app_action action;
 	bool pressed; /* false: released (ends a held turn) */
+	/* A turn pressed with an angle (radians, > 0): a knob's detent,
+	 * turned that far at once with nothing held and no release. */
+	double angle;
 };
 
 static inline bool app_action_is_turn(enum app_action a)
