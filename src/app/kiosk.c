@@ -393,6 +393,8 @@ static void read_input(struct kiosk *k, int i, uint64_t now)
 	for (int e = 0; e < n; e++) {
 		struct app_msg m = {.kind = APP_INPUT, .input = ev[e]};
 
+		visits_press(&k->visits, k->inputs[i]->kind, &ev[e],
+			     k->applied.app.attract_after_s);
 		/* Any input wakes a sleeping screen; it also does what it does. */
 		if (k->screen && screen_input(k->screen, now))
 			kiosk_tell_app(k, APP_DISPLAY_BACK);
@@ -414,6 +416,8 @@ static void service_touch(struct kiosk *k, const struct pollfd *fds, uint64_t no
 		if (k->screen && screen_input(k->screen, now))
 			kiosk_tell_app(k, APP_DISPLAY_BACK);
 		m.touch = g[i];
+		visits_touch(&k->visits, &g[i], k->applied.app.long_press,
+			     k->applied.app.attract_after_s);
 		app_apply(k->app, &m);
 	}
 }
@@ -554,6 +558,7 @@ static int loop_once(struct kiosk *k, int sig_fd)
 		next = earliest(next, screen_deadline(k->screen, now), CLOCK_NEVER);
 	next = earliest(next, k->rescan_at, service_deadline(&k->service));
 	next = earliest(next, kiosk_models_deadline(k->models), metrics_deadline(k->metrics));
+	visits_observe(&k->visits, now, app_state(k->app)->stop, app_attracting(k->app));
 	n = fill_fds(k, fds, sig_fd);
 	note_step(k);
 	if (poll(fds, (nfds_t)n, poll_timeout_ms(k, next, now)) < 0 && errno != EINTR)

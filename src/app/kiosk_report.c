@@ -24,7 +24,8 @@ static void report(const struct kiosk *k, struct status_report *r, char *last_er
 	    .last_error = last_error,
 	    .last_error_at = log_last_error_time(),
 	    .started_at = k->started_at,
-	    .counts = k->counts};
+	    .counts = k->counts,
+	    .visits = &k->visits};
 }
 
 void kiosk_report_status(struct kiosk *k)

@@ -1,5 +1,4 @@
 #include "input/action.h"
-#include "input/input.h"
 
 #include <stddef.h>
 

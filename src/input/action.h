@@ -38,6 +38,20 @@ enum app_action {
 /* "none", "turn-left", ... "next-variant", then NULL: the config file's names. */
 extern const char *const app_action_names[ACTION_COUNT + 1];
 
+/* What kind of thing a source is: the visitors' presses are counted per
+ * kind (src/state/visits.h); the order is that of input_kind_names. */
+enum input_kind {
+	INPUT_KIND_OTHER,
+	INPUT_KIND_BUTTON,
+	INPUT_KIND_KEY,
+	INPUT_KIND_TOUCH,
+	INPUT_KIND_KNOB,
+	INPUT_KINDS
+};
+
+/* "other", "button", "key", "touch", "knob": the metrics' source label. */
+extern const char *const input_kind_names[INPUT_KINDS];
+
 struct app_event {
 	uint64_t time_ns; /* CLOCK_MONOTONIC, or the kernel's event timestamp */
 	enum app_action action;

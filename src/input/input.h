@@ -8,20 +8,6 @@
 #include "input/action.h"
 #include "util/clock.h"
 
-/* What kind of thing a source is: the visitors' presses are counted per
- * kind (src/state/visits.h); the order is that of input_kind_names. */
-enum input_kind {
-	INPUT_KIND_OTHER,
-	INPUT_KIND_BUTTON,
-	INPUT_KIND_KEY,
-	INPUT_KIND_TOUCH,
-	INPUT_KIND_KNOB,
-	INPUT_KINDS
-};
-
-/* "other", "button", "key", "touch", "knob": the metrics' source label. */
-extern const char *const input_kind_names[INPUT_KINDS];
-
 struct input_source {
 	const char *name;
 	enum input_kind kind;
