@@ -36,6 +36,11 @@ path=$(sed -n 's/.*frames reach the GPU by \(.*\)/\1/p' kiosk.log | head -1)
 vm_check "the log names how frames reach the GPU (${path:-nothing})" test -n "$path"
 wait_until 60 shows_hues camera.png 5 6
 vm_check "the camera's colour bars are on the model" hues camera.png 5 6
+# No camera frame is ever written to a file: --status writes no frame.png.
+mkdir -p /run/matcap-kiosk
+matcap-kiosk --status >status.json 2>&1
+vm_check "--status while the camera is the matcap: \"frame\": null" grep -q '"frame": null' status.json
+vm_check "and no frame.png in the runtime folder" test ! -e /run/matcap-kiosk/frame.png
 
 echo vimc.0 >"$vimc/unbind"
 wait_until 30 grep -Eq "sent no frame|was removed" kiosk.log
