@@ -106,6 +106,12 @@ $(TOOLS_DIR)/touch_inject: tests/tools/touch_inject.c
 	$(CC) $(ALL_CFLAGS) -o $@ $^
 test-tools: $(TOOLS_DIR)/touch_inject
 
+# A uinput rotary knob that turns and presses (tests/e2e/knob-board.sh).
+$(TOOLS_DIR)/knob_inject: tests/tools/knob_inject.c
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -o $@ $^
+test-tools: $(TOOLS_DIR)/knob_inject
+
 # Whether a model with no reference image shows (tests/corpus/run.sh).
 $(TOOLS_DIR)/silhouette: tests/corpus/silhouette.c $(BUILD)/util/image.o $(BUILD)/util/file.o $(BUILD)/util/log.o
 	@mkdir -p $(@D)

@@ -139,6 +139,10 @@ static int source_new(const struct knob_config *c, const char *path, bool named,
 	int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC), ret, axis;
 
 	*out = NULL;
+	/* A device found by the scan that the service may not read (a mouse,
+	 * without the input group) is no knob worth a line. */
+	if (fd < 0 && !named && errno == EACCES)
+		return -EACCES;
 	if (fd < 0) {
 		ret = -errno;
 		log_err("%s: cannot open the knob: %s%s", path, strerror(errno),
