@@ -75,13 +75,13 @@ SRC_OPS     := ops/check ops/import ops/import_copy ops/import_ini ops/metrics o
 SRC_CONTENT := content/content content/load_guard content/content_cache content/content_look content/content_view content/content_fit content/content_caption content/content_play content/content_deform content/matcap_set content/matcap_job content/model_list \
 	       content/model_loader content/worker
 SRC_CONFIG  := config/options config/options_file config/model_settings config/settings config/settings_table config/settings_origin config/settings_text
-SRC_STATE   := state/app state/view state/power state/schedule
+SRC_STATE   := state/app state/view state/power state/schedule state/visits
 SRC_DISPLAY := display/backlight display/cec display/cec_link display/display display/display_egl display/display_kms display/kms_scale \
 	       display/display_osmesa \
 	       display/drm display/drm_atomic display/drm_legacy display/egl_util display/hotplug \
 	       display/kms_fb display/kms_overlay
 SRC_INPUT   := input/action input/button input/gesture input/touch_decode input/gpio \
-	       input/gpio_$(GPIOD_API) input/keyboard input/touch
+	       input/gpio_$(GPIOD_API) input/keyboard input/touch input/knob input/knob_device
 SRC_CAMERA  := camera/camera_feed camera/camera_link camera/camera_math camera/camera_proto \
 	       camera/camera_texture
 SRC_RENDER  := render/background render/bake render/draw_list render/framing render/gl render/poster render/render_scale render/render_caption \

@@ -104,7 +104,7 @@ needs() {
 	fuzz) echo fuzzers ;;
 	soak) echo "$TOOLS/soak" ;;
 	systemd-board) echo all ;;
-	board) echo "all $TOOLS/imgdiff $TOOLS/hues $TOOLS/cec_power $TOOLS/clock_set $TOOLS/touch_inject $TOOLS/mkmodels" ;;
+	board) echo "all $TOOLS/imgdiff $TOOLS/hues $TOOLS/cec_power $TOOLS/clock_set $TOOLS/touch_inject $TOOLS/knob_inject $TOOLS/mkmodels" ;;
 	esac
 }
 

@@ -25,6 +25,7 @@ UNIT_TESTS  += ini stranger_settings normals
 UNIT_TESTS  += textures
 UNIT_TESTS  += variants vertex_alpha
 UNIT_TESTS  += precedence model_name
+UNIT_TESTS  += knob visits
 TOOLS_DIR   := $(BUILD)/tools
 ASAN_BUILD  := $(BUILD)/asan
 # MK_TEST_HOOKS: the test hooks (MK_TEST_PREPARE_DELAY_MS, src/app/reload.c)
@@ -105,6 +106,12 @@ $(TOOLS_DIR)/touch_inject: tests/tools/touch_inject.c
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -o $@ $^
 test-tools: $(TOOLS_DIR)/touch_inject
+
+# A uinput rotary knob that turns and presses (tests/e2e/knob-board.sh).
+$(TOOLS_DIR)/knob_inject: tests/tools/knob_inject.c
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -o $@ $^
+test-tools: $(TOOLS_DIR)/knob_inject
 
 # Whether a model with no reference image shows (tests/corpus/run.sh).
 $(TOOLS_DIR)/silhouette: tests/corpus/silhouette.c $(BUILD)/util/image.o $(BUILD)/util/file.o $(BUILD)/util/log.o

@@ -50,6 +50,9 @@ void option_defaults(struct options *o)
 	o->app.long_press = ACTION_NEXT_MATCAP;
 	o->buttons.debounce_ms = 10;
 	o->buttons.long_press_ms = 800;
+	o->knob.step = radians(15);
+	o->knob.press = ACTION_SELECT;
+	o->knob.long_press = ACTION_NEXT_LANGUAGE;
 	memcpy(o->buttons.buttons, buttons, sizeof(buttons));
 	o->camera.use = CAMERA_FEED_ON;
 	o->camera.width = o->camera.height = 512;

@@ -13,6 +13,7 @@
 #include "display/display.h"
 #include "input/gpio.h"
 #include "input/keyboard.h"
+#include "input/knob.h"
 #include "input/touch.h"
 #include "state/app.h"
 #include "util/log.h"
@@ -36,6 +37,7 @@ enum options_section {
 	OPTIONS_STATUS,
 	OPTIONS_FRAME,
 	OPTIONS_CAPTION,
+	OPTIONS_KNOB,
 	OPTIONS_SECTIONS
 };
 
@@ -75,6 +77,8 @@ struct options {
 	struct screen_config power;
 	/* [touch]; its gestures' settings are in app */
 	struct touch_config touch;
+	/* [knob] */
+	struct knob_config knob;
 	char *poster;  /* [display] poster */
 	char *include; /* [kiosk] include */
 	char *metrics; /* [status] metrics */
@@ -122,7 +126,7 @@ struct option_def {
 
 /* The table's length: the compiler refuses an entry more, and
  * tests/unit/test_options.c one less. */
-#define OPTION_DEFS 129
+#define OPTION_DEFS 134
 extern const struct option_def option_defs[OPTION_DEFS];
 
 void option_defaults(struct options *o);
