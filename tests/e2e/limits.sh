@@ -118,7 +118,7 @@ step "... naming the file and line" grep -q \
 #    finding what the cold one wrote.
 if [ -x /usr/bin/time ]; then
 	mkdir -p "$dir/scan"
-	"$mkmodels" "$dir/scan" --bench >"$dir/scan.log" 2>&1
+	"$mkmodels" "$dir/scan" --scan >"$dir/scan.log" 2>&1
 	scan_peak() { # CACHE THREADS: the peak RSS, KiB, of one start
 		XDG_CACHE_HOME=$1 /usr/bin/time -f "peak=%M" "$kiosk" --backend "$backend" \
 			--size 1280x720 --model "$dir/scan/knot-1m.glb" --prepare-threads "$2" \
