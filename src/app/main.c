@@ -20,6 +20,7 @@
 #include "scene/mesh/mesh_cache.h"
 
 #include <errno.h>
+#include <malloc.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -422,6 +423,14 @@ int main(int argc, char **argv)
 	/* The kiosk starts itself again as its camera helper (src/camera/camera.h). */
 	if (argc > 0 && strcmp(argv[0], CAMERA_HELPER_NAME) == 0)
 		return camera_helper_main(CAMERA_HELPER_FD);
+	/* An array of 1 MiB or more is mapped for itself and unmapped when
+	 * freed. glibc's moving threshold would put those under the largest
+	 * one freed so far (a model file's 28 MB) on the heap instead, where
+	 * a cold start's many large arrays in turn (the file, the parse, the
+	 * level of detail's clusters on several threads' arenas) held 10 MB
+	 * more at the peak (issue 34), and a kiosk switching models for
+	 * months gives back what a model freed. */
+	mallopt(M_MMAP_THRESHOLD, 1 << 20);
 	status = options_parse(&opts, argc, argv);
 	log_set_level(opts.log_level);
 	guard_shader_cache();

@@ -28,9 +28,10 @@ void option_defaults(struct options *o)
 	o->content.pitch = 20.0;
 	o->content.yaw = -30.0;
 	o->content.lod_pixels = 4.0;
-	/* One thread until the speed-up of several is measured on free cores
-	 * (issue 34): auto is there to try. */
-	o->content.prepare_threads = 1;
+	/* auto: one thread a core (issue 34). A large model is simplified in
+	 * clusters on any count (scene/mesh/lod.h), so more threads cost a
+	 * cluster's memory each (some 9 MB), not a model's. */
+	o->content.prepare_threads = 0;
 	o->content.fit = CONTENT_FIT_DEFAULT;
 	o->content.caption.size = CAPTION_SIZE_DEFAULT;
 	o->content.caption.padding = 12;

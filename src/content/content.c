@@ -32,7 +32,7 @@ struct model_bytes {
  * in *play (posed at 0 s, fitted over its clip); NULL: a still. b: the
  * file's bytes, read by the caller to key the cache with them; the parse
  * reads them, not the file again. */
-static int load_model(const char *path, const struct model_bytes *b, const struct content_config *o,
+static int load_model(const char *path, struct model_bytes *b, const struct content_config *o,
 		      struct mesh *mesh, struct anim_play **play)
 {
 	if (path) {
@@ -50,7 +50,8 @@ static int load_model(const char *path, const struct model_bytes *b, const struc
 					 .loop = o->anim_loop,
 					 .normals = o->normals};
 
-		return b->data ? gltf_load_bytes(path, b->data, b->size, &g, mesh)
+		/* The bytes go once parsed (gltf.h): the caller frees NULL. */
+		return b->data ? gltf_load_bytes_owned(path, &b->data, b->size, &g, mesh)
 			       : gltf_load_options(path, &g, mesh);
 	}
 	return mesh_torus_knot(mesh, KNOT_TUBULAR, KNOT_RADIAL);

@@ -7,7 +7,9 @@
  *                         and flat-shaded, and the 10k and 100k ones without normals
  *   mkmodels DIR --bomb SIDE  only bomb.gltf: four SIDE x SIDE PNGs of one
  *                         colour as its base colour, normal, occlusion and
- *                         film thickness textures (tests/suite.sh) */
+ *                         film thickness textures (tests/suite.sh)
+ *   mkmodels DIR --scan   only knot-1m.glb, the bench's 1M-triangle knot
+ *                         (tests/e2e/limits.sh: a scan's cold start's memory) */
 #include "gltf_morph.h"
 #include "gltf_variants.h"
 #include "gltf_write.h"
@@ -273,6 +275,21 @@ static int write_bench_forms(const char *dir, const struct mesh *k)
 	return bad;
 }
 
+/* The bench's 1M-triangle knot, as write_bench writes it. */
+static int write_scan(const char *dir)
+{
+	struct gltf_write_opts o = {
+	    .index_bytes = 4, .with_normals = 1, .bad_index = -1, .with_uvs = 1};
+	struct mesh k1m;
+	int bad;
+
+	if (mesh_torus_knot(&k1m, 4096, 122))
+		return 1;
+	bad = put(dir, "knot-1m.glb", &k1m, o);
+	mesh_release(&k1m);
+	return bad;
+}
+
 static int write_bench(const char *dir)
 {
 	struct mesh k10, k100, k1m;
@@ -453,6 +470,8 @@ int main(int argc, char **argv)
 	}
 	if (argc > 3 && strcmp(argv[2], "--bomb") == 0)
 		return write_bomb(argv[1], atoi(argv[3]));
+	if (argc > 2 && strcmp(argv[2], "--scan") == 0)
+		return write_scan(argv[1]);
 	if (mesh_uv_sphere(&s, 128, 64))
 		return 1;
 	bad |= put(argv[1], "sphere.glb", &s, ok);

@@ -242,9 +242,9 @@ static void prepare_threads_setting(void **state)
 	struct options o;
 
 	(void)state;
-	/* One thread unless asked (auto is 0). */
+	/* auto (0) unless asked. */
 	assert_int_equal(parse(&o, 1, argv), OPTIONS_OK);
-	assert_int_equal(o.content.prepare_threads, 1);
+	assert_int_equal(o.content.prepare_threads, 0);
 	options_release(&o);
 	assert_int_equal(parse(&o, 3, argv), OPTIONS_OK);
 	assert_int_equal(o.content.prepare_threads, 3);
