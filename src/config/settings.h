@@ -9,6 +9,7 @@
 
 #include "camera/camera_feed.h"
 #include "config/content_config.h"
+#include "config/mqtt_config.h"
 #include "config/screen_config.h"
 #include "display/display.h"
 #include "input/gpio.h"
@@ -36,6 +37,7 @@ enum options_section {
 	OPTIONS_STATUS,
 	OPTIONS_FRAME,
 	OPTIONS_CAPTION,
+	OPTIONS_MQTT,
 	OPTIONS_SECTIONS
 };
 
@@ -75,9 +77,10 @@ struct options {
 	struct screen_config power;
 	/* [touch]; its gestures' settings are in app */
 	struct touch_config touch;
-	char *poster;  /* [display] poster */
-	char *include; /* [kiosk] include */
-	char *metrics; /* [status] metrics */
+	char *poster;		 /* [display] poster */
+	char *include;		 /* [kiosk] include */
+	char *metrics;		 /* [status] metrics */
+	struct mqtt_config mqtt; /* [mqtt] */
 	/* Where each setting came from (file and line), and the files read,
 	 * for --check-config and the messages; NULL: none recorded. Owned;
 	 * options_copy does not copy it (a copy has none). */
@@ -118,7 +121,7 @@ struct option_def {
 
 /* The table's length: the compiler refuses an entry more, and
  * tests/unit/test_options.c one less. */
-#define OPTION_DEFS 127
+#define OPTION_DEFS 132
 extern const struct option_def option_defs[OPTION_DEFS];
 
 void option_defaults(struct options *o);

@@ -26,6 +26,7 @@ const struct options_section_rule options_sections[OPTIONS_SECTIONS] = {
 			"at once; a metrics file no longer named is removed"},
     [OPTIONS_FRAME] = {"frame", OPTIONS_LIVE, NULL, "at once"},
     [OPTIONS_CAPTION] = {"caption", OPTIONS_LIVE, NULL, "at once"},
+    [OPTIONS_MQTT] = {"mqtt", OPTIONS_AT_START, NULL, "at the next start (systemctl restart)"},
 };
 
 static const char *const backend_names[] = {"auto", "kms", "osmesa", "egl-headless", NULL};
@@ -51,6 +52,7 @@ static const char *const drift_names[] = {"off", "on", NULL};
 static const char *const auto_names[] = {"auto", NULL};
 static const char *const up_names[] = {"+y", "-y", "+z", "-z", "+x", "-x", NULL}; /* frame_up */
 static const char *const direction_names[] = {"right", "left", NULL};
+static const char *const yes_no_names[] = {"no", "yes", NULL};
 
 /* A field's place and size: the size tells a bool from an enum, and the
  * copy, the comparison and the release go by it. */
@@ -372,6 +374,19 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "on: the caption moves a few pixels over hours against burn-in; off: it stays"},
     {"logo", 0, OPTIONS_CAPTION, "logo", K_STRING, AT(content.caption.logo), 0, 0, 0, NULL, "FILE",
      "a PNG/JPEG shown at its own size in the caption's box, left of the text"},
+    {"mqtt-broker", 0, OPTIONS_MQTT, "broker", K_STRING, AT(mqtt.broker), 0, 0, 0, NULL,
+     "HOST[:PORT]",
+     "remote control: the MQTT broker (port 1883, 8883 with tls); default: none, MQTT off"},
+    {"mqtt-topic", 0, OPTIONS_MQTT, "topic", K_STRING, AT(mqtt.topic), 0, 0, 0, NULL, "TOPIC",
+     "the kiosk's topic: commands on TOPIC/command, state on TOPIC/state (default: "
+     "kiosk/HOSTNAME)"},
+    {"mqtt-tls", 0, OPTIONS_MQTT, "tls", K_CHOICE, AT(mqtt.tls), 0, 0, 0, yes_no_names, "yes|no",
+     "TLS to the broker, its certificate checked"},
+    {"mqtt-ca-file", 0, OPTIONS_MQTT, "ca_file", K_STRING, AT(mqtt.ca_file), 0, 0, 0, NULL, "FILE",
+     "the broker's CA certificate, PEM (default: the system's, /etc/ssl/certs)"},
+    {"mqtt-home-assistant", 0, OPTIONS_MQTT, "home_assistant", K_CHOICE, AT(mqtt.home_assistant), 0,
+     0, 0, yes_no_names, "yes|no",
+     "announce the kiosk and its controls to Home Assistant (MQTT discovery)"},
 };
 
 const char *backend_name(enum backend_kind kind)

@@ -1,0 +1,16 @@
+/* [mqtt] in kiosk.ini: remote control over MQTT. Plain data, so that the
+ * settings need not know the client (src/ops/mqtt.h). */
+#ifndef MK_MQTT_CONFIG_H
+#define MK_MQTT_CONFIG_H
+
+#include <stdbool.h>
+
+struct mqtt_config {
+	char *broker;	     /* HOST[:PORT]; NULL or "": off (the default) */
+	char *topic;	     /* kiosk/NAME; NULL: kiosk/ and the host's name */
+	bool tls;	     /* TLS to the broker (port 8883 by default) */
+	char *ca_file;	     /* the broker's CA (PEM); NULL: the system's */
+	bool home_assistant; /* Home Assistant's MQTT discovery messages */
+};
+
+#endif
