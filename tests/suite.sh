@@ -603,6 +603,23 @@ test_metrics() {
 	results metrics "$out/metrics.log" "$out/metrics/stderr"
 }
 
+# [mqtt] remote control against a real mosquitto on 127.0.0.1
+# (tests/e2e/mqtt.sh): every command, retained state, malformed payloads
+# ignored, a broker restart, the last will after SIGKILL, TLS with a test
+# certificate and a password from the credentials folder.
+test_mqtt() {
+	need_models
+	if ! command -v mosquitto >/dev/null || ! command -v mosquitto_pub >/dev/null ||
+		! command -v openssl >/dev/null; then
+		ko "mqtt: mosquitto, mosquitto-clients and openssl are not installed (make deps)"
+		return
+	fi
+	sh tests/e2e/mqtt.sh "$ASAN_KIOSK" "$out/models" "$out/mqtt" >"$out/mqtt.log" 2>&1
+	grep -q "^ok every step ran" "$out/mqtt.log" ||
+		echo "not ok the scenario stopped early" >>"$out/mqtt.log"
+	results mqtt "$out/mqtt.log" "$out/mqtt/kiosk.log"
+}
+
 # Content by sync (tests/e2e/sync.sh): real rsync, slowed down, and
 # Syncthing's temporary names, into the model folder of a live kiosk
 # (the ASan build): nothing is tried before it is whole.

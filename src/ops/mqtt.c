@@ -125,10 +125,10 @@ static void say_down(struct mqtt_link *l, int rc, int backoff)
 	if (l->said_down)
 		return;
 	l->said_down = true;
-	log_warn("mqtt: %s:%d: %s; the kiosk runs on without remote control and tries again "
+	log_warn("mqtt: %s:%d: %s (%d); the kiosk runs on without remote control and tries again "
 		 "(after %d s, then up to every %d s)",
 		 l->host, l->port, rc == MOSQ_ERR_ERRNO ? strerror(errno) : mosquitto_strerror(rc),
-		 backoff, BACKOFF_MAX_S);
+		 rc, backoff, BACKOFF_MAX_S);
 }
 
 /* Connect, run, and after a failure or a loss wait 1, 2, 4 ... 60 s. */
