@@ -45,7 +45,8 @@ trap cleanup EXIT
 
 # broker CONF LOG: mosquitto on its config; its pid in broker_pid.
 broker() {
-	mosquitto -c "$1" >"$2" 2>&1 &
+	: >"$2"
+	mosquitto -c "$1" >>"$2" 2>&1 &
 	broker_pid=$!
 	pids="$pids $broker_pid"
 	until_true grep -q "Opening ipv4 listen socket" "$2" && kill -0 "$broker_pid" 2>/dev/null
