@@ -663,7 +663,8 @@ test_install() {
 
 # The systemd unit, checked offline (no running systemd needed), from an
 # install whose ExecStart exists on this machine: verify must print nothing
-# (it exits 0 on warnings), and the sandbox must rate at most 2.5
+# (it exits 0 on warnings), and the sandbox must rate at most 1.5 (also with
+# the MQTT drop-in, systemd/mqtt.conf)
 # (--threshold counts in tenths); the sysusers.d file, with systemd's own
 # basic.conf (video), must create the user and every group the unit names.
 test_systemd() {
@@ -688,6 +689,25 @@ test_systemd() {
 		check "systemd-analyze security --offline: $(basename "$u") exposure ${score:-unknown}, at most 1.5" \
 			systemd-analyze security --offline=yes --threshold=15 "$u"
 	done
+	# [mqtt]: the unit alone creates no IP socket; the shipped drop-in
+	# (systemd/mqtt.conf) lifts that for the broker's address, and the
+	# exposure stays at most 1.5 with it.
+	check "the unit alone denies IP sockets" sh -c "systemd-analyze security --offline=yes \
+		$unit 2>/dev/null | grep -q 'Service cannot allocate Internet sockets'"
+	mq=$out/mqtt-unit
+	mkdir -p "$mq/matcap-kiosk.service.d"
+	cp "$unit" "$mq/"
+	cp "$prefix/share/matcap-kiosk/mqtt.conf.example" "$mq/matcap-kiosk.service.d/mqtt.conf"
+	check "with the MQTT drop-in: IP sockets, the broker's address allowed" sh -c \
+		"o=\$(systemd-analyze security --offline=yes $mq/matcap-kiosk.service 2>/dev/null) &&
+		echo \"\$o\" | grep -q 'Service may allocate Internet sockets' &&
+		echo \"\$o\" | grep -q 'IP address allow list with non-localhost entries'"
+	score=$(systemd-analyze security --offline=yes "$mq/matcap-kiosk.service" 2>/dev/null |
+		sed -n 's/.*Overall exposure level for .*: \([0-9.]*\).*/\1/p')
+	check "systemd-analyze security --offline with the MQTT drop-in: exposure ${score:-unknown}, at most 1.5" \
+		systemd-analyze security --offline=yes --threshold=15 "$mq/matcap-kiosk.service"
+	check "systemd-analyze verify with the MQTT drop-in: no warning" sh -c \
+		"o=\$(MANPATH=$prefix/share/man systemd-analyze verify $mq/matcap-kiosk.service 2>&1); echo \"\$o\"; [ -z \"\$o\" ]"
 	check "sysusers.d creates the user and the unit's groups" sh -c "
 		mkdir -p $out/sysroot/etc &&
 		systemd-sysusers --root=$PWD/$out/sysroot /usr/lib/sysusers.d/basic.conf \
