@@ -48,8 +48,13 @@ static void on_connect(struct mosquitto *mosq, void *ctx, int rc)
 	char state[STATE_MAX];
 
 	if (rc) {
-		log_err("mqtt: %s:%d refused the connection: %s", l->host, l->port,
-			mosquitto_connack_string(rc));
+		/* Said once per outage, as a broker not there is: the
+		 * retries go on, with the same answer each time. */
+		if (!l->said_down)
+			log_err("mqtt: %s:%d refused the connection: %s (a user name and password "
+				"come from LoadCredential=mqtt:FILE); tried again after up to %d s",
+				l->host, l->port, mosquitto_connack_string(rc), BACKOFF_MAX_S);
+		l->said_down = true;
 		return;
 	}
 	log_info("mqtt: connected to %s:%d; commands on %s", l->host, l->port, l->t.command);

@@ -206,10 +206,20 @@ EOF
 kill "$broker_pid"
 wait "$broker_pid" 2>/dev/null
 broker "$dir/tls.conf" "$dir/broker3.log"
-printf 'kiosk\ns3cret pass\n' >"$dir/cred/mqtt"
-chmod 600 "$dir/cred/mqtt"
 sed "s/^broker = .*/broker = 127.0.0.1:$tport/; s|^\[mqtt\]|[mqtt]\ntls = yes\nca_file = $dir/ca.pem|" \
 	"$dir/kiosk.ini" >"$dir/tls.ini"
+# A wrong password: refused by the broker, said once, the kiosk draws on.
+printf 'kiosk\nwrong\n' >"$dir/cred/mqtt"
+: >"$dir/kiosk.log"
+CREDENTIALS_DIRECTORY=$dir/cred start_kiosk "$dir/tls.ini"
+step "TLS: a wrong password refused" until_true logged "refused the connection"
+sleep 4 # retried after 1 and 2 s meanwhile
+step "TLS: the refusal said once, not at each retry" [ "$(count 'refused the connection')" -eq 1 ]
+step "TLS: the kiosk draws on all the same" logged "ready: the first frame"
+kill "$kiosk_pid"
+wait "$kiosk_pid" 2>/dev/null
+printf 'kiosk\ns3cret pass\n' >"$dir/cred/mqtt"
+chmod 600 "$dir/cred/mqtt"
 : >"$dir/kiosk.log"
 CREDENTIALS_DIRECTORY=$dir/cred start_kiosk "$dir/tls.ini"
 step "TLS: connected with the test CA and the credential" until_true \
