@@ -230,4 +230,12 @@ kill "$kiosk_pid"
 wait "$kiosk_pid" 2>/dev/null
 step "TLS: a clean stop says offline" until_true available offline
 step "TLS: the password is in no log" sh -c "! grep -q s3cret '$dir/kiosk.log'"
+# --check-config says a bad [mqtt] line with its file and line: 78.
+printf '[mqtt]\nbroker = 127.0.0.1:0\ntopic = kiosk/#\n' >"$dir/bad.ini"
+"$kiosk" --check-config --config "$dir/bad.ini" >"$dir/check.out" 2>"$dir/check.err"
+step "--check-config: a bad [mqtt] is a bad setting (78)" [ $? -eq 78 ]
+step "--check-config: the broker's file, line and what was expected" \
+	grep -qF "$dir/bad.ini:2: [mqtt] broker = '127.0.0.1:0': the port must be a number 1-65535" \
+	"$dir/check.err"
+step "--check-config: the topic's" grep -qF "$dir/bad.ini:3: [mqtt] topic = 'kiosk/#'" "$dir/check.err"
 echo "ok every step ran"
