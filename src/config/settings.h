@@ -77,10 +77,11 @@ struct options {
 	struct screen_config power;
 	/* [touch]; its gestures' settings are in app */
 	struct touch_config touch;
-	char *poster;		 /* [display] poster */
-	char *include;		 /* [kiosk] include */
-	char *metrics;		 /* [status] metrics */
-	struct mqtt_config mqtt; /* [mqtt] */
+	/* [mqtt] */
+	struct mqtt_config mqtt;
+	char *poster;  /* [display] poster */
+	char *include; /* [kiosk] include */
+	char *metrics; /* [status] metrics */
 	/* Where each setting came from (file and line), and the files read,
 	 * for --check-config and the messages; NULL: none recorded. Owned;
 	 * options_copy does not copy it (a copy has none). */

@@ -531,16 +531,26 @@ static void broken_include_is_ignored(void **state)
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
-	    cmocka_unit_test(defaults),		  cmocka_unit_test(full_line),
-	    cmocka_unit_test(rejects_bad_values), cmocka_unit_test(config_file_then_command_line),
-	    cmocka_unit_test(config_errors),	  cmocka_unit_test(power_settings),
-	    cmocka_unit_test(indented_lines),	  cmocka_unit_test(shipped_example_parses),
-	    cmocka_unit_test(table_is_full),	  cmocka_unit_test(sections_into_module_configs),
-	    cmocka_unit_test(mqtt_section),	  cmocka_unit_test(module_defaults),
-	    cmocka_unit_test(copy_is_deep),	  cmocka_unit_test(content_copy_is_deep),
-	    cmocka_unit_test(reload_table),	  cmocka_unit_test(reload_reopens_what_changed),
-	    cmocka_unit_test(attract_settings),	  cmocka_unit_test(prepare_threads_setting),
-	    cmocka_unit_test(include_file),	  cmocka_unit_test(broken_include_is_ignored),
+	    cmocka_unit_test(defaults),
+	    cmocka_unit_test(full_line),
+	    cmocka_unit_test(rejects_bad_values),
+	    cmocka_unit_test(config_file_then_command_line),
+	    cmocka_unit_test(config_errors),
+	    cmocka_unit_test(power_settings),
+	    cmocka_unit_test(indented_lines),
+	    cmocka_unit_test(shipped_example_parses),
+	    cmocka_unit_test(table_is_full),
+	    cmocka_unit_test(sections_into_module_configs),
+	    cmocka_unit_test(mqtt_section),
+	    cmocka_unit_test(module_defaults),
+	    cmocka_unit_test(copy_is_deep),
+	    cmocka_unit_test(content_copy_is_deep),
+	    cmocka_unit_test(reload_table),
+	    cmocka_unit_test(reload_reopens_what_changed),
+	    cmocka_unit_test(attract_settings),
+	    cmocka_unit_test(prepare_threads_setting),
+	    cmocka_unit_test(include_file),
+	    cmocka_unit_test(broken_include_is_ignored),
 	};
 	return cmocka_run_group_tests_name("options", tests, NULL, NULL);
 }
