@@ -74,6 +74,11 @@ logged() { grep -qF -- "$1" "$dir/kiosk.log"; }
 count() { grep -cF -- "$1" "$dir/kiosk.log"; }
 at_least() { [ "$(count "$2")" -ge "$1" ]; }
 
+# fresh_log: the next kiosk's log empty, the last one's kept in kiosk-all.log.
+fresh_log() {
+	cat "$dir/kiosk.log" >>"$dir/kiosk-all.log" 2>/dev/null
+	: >"$dir/kiosk.log"
+}
 # start_kiosk INI: a live kiosk on that config; its pid in kiosk_pid.
 start_kiosk() {
 	ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 \
@@ -93,7 +98,7 @@ broker = 127.0.0.1:$port
 topic = $topic
 home_assistant = yes
 EOF
-: >"$dir/kiosk.log"
+fresh_log
 start_kiosk "$dir/kiosk.ini"
 step "the kiosk connects" until_true logged "mqtt: connected to 127.0.0.1:$port"
 step "its state is retained" until_true state_has '"screen":"on"'
@@ -168,7 +173,7 @@ wait "$kiosk_pid" 2>/dev/null
 step "last will after SIGKILL: offline (retained)" until_true available offline
 
 # No broker at the start: said once, the kiosk draws on.
-: >"$dir/kiosk.log"
+fresh_log
 sed "s/^broker = .*/broker = 127.0.0.1:1/" "$dir/kiosk.ini" >"$dir/absent.ini"
 start_kiosk "$dir/absent.ini"
 step "no broker: the kiosk is ready all the same" until_true logged "ready: the first frame"
@@ -210,7 +215,7 @@ sed "s/^broker = .*/broker = 127.0.0.1:$tport/; s|^\[mqtt\]|[mqtt]\ntls = yes\nc
 	"$dir/kiosk.ini" >"$dir/tls.ini"
 # A wrong password: refused by the broker, said once, the kiosk draws on.
 printf 'kiosk\nwrong\n' >"$dir/cred/mqtt"
-: >"$dir/kiosk.log"
+fresh_log
 CREDENTIALS_DIRECTORY=$dir/cred start_kiosk "$dir/tls.ini"
 step "TLS: a wrong password refused" until_true logged "refused the connection"
 sleep 4 # retried after 1 and 2 s meanwhile
@@ -220,7 +225,7 @@ kill "$kiosk_pid"
 wait "$kiosk_pid" 2>/dev/null
 printf 'kiosk\ns3cret pass\n' >"$dir/cred/mqtt"
 chmod 600 "$dir/cred/mqtt"
-: >"$dir/kiosk.log"
+fresh_log
 CREDENTIALS_DIRECTORY=$dir/cred start_kiosk "$dir/tls.ini"
 step "TLS: connected with the test CA and the credential" until_true \
 	logged "mqtt: connected to 127.0.0.1:$tport"
@@ -230,6 +235,10 @@ kill "$kiosk_pid"
 wait "$kiosk_pid" 2>/dev/null
 step "TLS: a clean stop says offline" until_true available offline
 step "TLS: the password is in no log" sh -c "! grep -q s3cret '$dir/kiosk.log'"
+fresh_log
+step "no sanitizer report in any kiosk's log" sh -c "! grep -E \
+	'ERROR: AddressSanitizer|WARNING: ThreadSanitizer|runtime error' '$dir/kiosk-all.log'"
+
 # --check-config says a bad [mqtt] line with its file and line: 78.
 printf '[mqtt]\nbroker = 127.0.0.1:0\ntopic = kiosk/#\n' >"$dir/bad.ini"
 "$kiosk" --check-config --config "$dir/bad.ini" >"$dir/check.out" 2>"$dir/check.err"
