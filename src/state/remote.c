@@ -279,3 +279,54 @@ int remote_state_json(const struct remote_state *st, char *buf, size_t n)
 	     json_raw(buf, n, &at, "}");
 	return ok ? (int)at : -ENOSPC;
 }
+
+/* key=N at *p for a number lo..hi (a leading '-' only for -1): moves *p
+ * past it and one space (none after the last). */
+static bool sync_field(const char **p, const char *key, long long lo, long long hi, bool last,
+		       long long *v)
+{
+	size_t k = strlen(key);
+	const char *s = *p;
+	char *end;
+
+	if (strncmp(s, key, k) || s[k] != '=')
+		return false;
+	s += k + 1;
+	if (!((*s >= '0' && *s <= '9') || (s[0] == '-' && s[1] == '1')))
+		return false;
+	errno = 0;
+	*v = strtoll(s, &end, 10);
+	if (errno || end == s || end - s > 16 || *v < lo || *v > hi || (*s == '0' && end - s > 1) ||
+	    (last ? *end != '\0' : *end != ' '))
+		return false;
+	*p = last ? end : end + 1;
+	return true;
+}
+
+int remote_sync_parse(const void *payload, size_t len, struct remote_sync *s, char *why, size_t n)
+{
+	char text[REMOTE_SYNC_MAX + 1];
+	const char *p = text;
+	long long at, model, matcap, stop;
+
+	memset(s, 0, sizeof(*s));
+	if (len > REMOTE_SYNC_MAX)
+		return refuse(why, n, "longer than %s bytes", "80");
+	if (copy_payload(payload, len, text, why, n))
+		return -EINVAL;
+	if (!sync_field(&p, "at", 1, 99999999999999LL, false, &at) ||
+	    !sync_field(&p, "model", -1, 9999, false, &model) ||
+	    !sync_field(&p, "matcap", 0, REMOTE_MATCAP_MAX - 1, false, &matcap) ||
+	    !sync_field(&p, "stop", -1, REMOTE_STOP_MAX - 1, true, &stop))
+		return refuse(why, n, "%s",
+			      "expected 'at=MS model=M matcap=C stop=S' (the wall clock in ms, "
+			      "model -1..9999, matcap 0..998, stop -1..63)");
+	*s = (struct remote_sync){(unsigned long long)at, (int)model, (int)matcap, (int)stop};
+	return 0;
+}
+
+int remote_sync_format(const struct remote_sync *s, char *buf, size_t n)
+{
+	return snprintf(buf, n, "at=%llu model=%d matcap=%d stop=%d", s->at_ms, s->model, s->matcap,
+			s->stop);
+}

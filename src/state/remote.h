@@ -57,6 +57,24 @@ struct remote_state {
 	const char *error; /* the last error in the journal; "" or NULL: none */
 };
 
+/* A leader's step for its followers ([mqtt] sync): what it shows, and the
+ * wall clock (CLOCK_REALTIME, ms) it shows it from; the followers show
+ * the same from then. Indices as the app state has them. The payload:
+ * "at=MS model=M matcap=C stop=S", these keys in this order. */
+struct remote_sync {
+	unsigned long long at_ms;
+	int model;  /* -1..9999; -1: no list */
+	int matcap; /* 0..998 */
+	int stop;   /* -1..63; -1: none */
+};
+
+#define REMOTE_SYNC_MAX 80
+
+/* 0, or -EINVAL with what was expected in why. */
+int remote_sync_parse(const void *payload, size_t len, struct remote_sync *s, char *why, size_t n);
+/* The payload of s into buf (REMOTE_SYNC_MAX bytes at least); its length. */
+int remote_sync_format(const struct remote_sync *s, char *buf, size_t n);
+
 /* The JSON of st into buf (n bytes); its length, or -ENOSPC. */
 int remote_state_json(const struct remote_state *st, char *buf, size_t n);
 /* The last part of a path (a model's or matcap's file name). */

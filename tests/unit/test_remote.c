@@ -184,12 +184,50 @@ static void test_state_json(void **state)
 	assert_null(remote_basename(NULL));
 }
 
+/* A leader's step: read back as written; anything else refused whole. */
+static void test_sync_words(void **state)
+{
+	struct remote_sync a = {1795886943123ull, 1, 4, -1}, b;
+	static const char *const bad[] = {
+	    "at=1795886943123 model=1 matcap=4",	       /* a key missing */
+	    "at=1795886943123 matcap=4 model=1 stop=0",	       /* out of order */
+	    "at=1795886943123 model=1 matcap=4 stop=0 x=1",    /* one more */
+	    "at=1795886943123 model=1 matcap=999 stop=0",      /* past the range */
+	    "at=1795886943123 model=-2 matcap=4 stop=0",       /* below it */
+	    "at=1795886943123 model=01 matcap=4 stop=0",       /* a leading zero */
+	    "at=1795886943123  model=1 matcap=4 stop=0",       /* two spaces */
+	    "at=-1 model=1 matcap=4 stop=0",		       /* no time */
+	    "at=1795886943123 model=1 matcap=/etc/x stop=0",   /* a path */
+	    "at=99999999999999999999 model=1 matcap=4 stop=0", /* overflow */
+	};
+	char buf[REMOTE_SYNC_MAX + 1], why[200];
+	int len;
+
+	(void)state;
+	len = remote_sync_format(&a, buf, sizeof(buf));
+
+	assert_string_equal(buf, "at=1795886943123 model=1 matcap=4 stop=-1");
+	assert_int_equal(len, (int)strlen(buf));
+	assert_int_equal(remote_sync_parse(buf, strlen(buf), &b, why, sizeof(why)), 0);
+	assert_true(b.at_ms == a.at_ms);
+	assert_int_equal(b.model, 1);
+	assert_int_equal(b.matcap, 4);
+	assert_int_equal(b.stop, -1);
+	for (size_t i = 0; i < sizeof(bad) / sizeof(bad[0]); i++) {
+		why[0] = '\0';
+		assert_int_equal(remote_sync_parse(bad[i], strlen(bad[i]), &b, why, sizeof(why)),
+				 -EINVAL);
+		if (!strstr(why, "expected 'at=MS model=M matcap=C stop=S'"))
+			fail_msg("'%s': '%s'", bad[i], why);
+	}
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_every_command),     cmocka_unit_test(test_paths_refused),
 	    cmocka_unit_test(test_malformed_refused), cmocka_unit_test(test_broker_and_topic),
-	    cmocka_unit_test(test_state_json),
+	    cmocka_unit_test(test_state_json),	      cmocka_unit_test(test_sync_words),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
