@@ -5,7 +5,14 @@
 #include "app/kiosk_state.h"
 #include "ops/mqtt.h"
 #include "ops/screen.h"
+#include "util/clock.h"
 #include "util/log.h"
+
+#include <time.h>
+
+/* A leader's clock further ahead than this is not waited for: shown at
+ * once, and said (the clocks are not in step: chrony). */
+#define SYNC_WAIT_MAX_MS 10000ull
 
 /* A press and its release of action at now: what a button gives. */
 static void press(struct kiosk *k, enum app_action action, uint64_t now)
@@ -94,18 +101,66 @@ static void apply(struct kiosk *k, const struct remote_cmd *c, uint64_t now)
 
 void kiosk_remote_start(struct kiosk *k)
 {
-	k->mqtt = mqtt_link_new(&k->started.mqtt);
+	k->remote.link = mqtt_link_new(&k->started.mqtt);
 }
 
 void kiosk_remote_stop(struct kiosk *k)
 {
-	mqtt_link_free(k->mqtt);
-	k->mqtt = NULL;
+	mqtt_link_free(k->remote.link);
+	k->remote.link = NULL;
 }
 
 int kiosk_remote_fd(const struct kiosk *k)
 {
-	return mqtt_link_fd(k->mqtt);
+	return mqtt_link_fd(k->remote.link);
+}
+
+static unsigned long long wall_ms(void)
+{
+	return clock_ns(CLOCK_REALTIME) / 1000000ull;
+}
+
+/* A leader's step shown: what differs, by the presses that reach it. */
+static void follow(struct kiosk *k, const struct remote_sync *s, uint64_t now)
+{
+	const struct app_state *st = app_state(k->app);
+	int matcaps = k->content->set ? matcap_set_count(k->content->set) : 1;
+	int models = kiosk_models_count(k->models), stops = stop_count(k);
+
+	log_info("mqtt: the leader's step: model %d, matcap %d, stop %d", s->model + 1,
+		 s->matcap + 1, s->stop + 1);
+	if (s->model >= 0 && s->model < models && s->model != st->model)
+		for (int i = presses_to(s->model + 1, st->model, models); i > 0; i--)
+			press(k, ACTION_NEXT_MODEL, now);
+	if (s->matcap < matcaps && s->matcap != st->matcap)
+		for (int i = presses_to(s->matcap + 1, st->matcap, matcaps); i > 0; i--)
+			press(k, ACTION_NEXT_MATCAP, now);
+	if (s->stop >= 0 && s->stop < stops && s->stop != st->stop)
+		for (int i = presses_to(s->stop + 1, st->stop, stops); i > 0; i--)
+			press(k, ACTION_NEXT_STOP, now);
+}
+
+/* A follower's step waits for its time on the wall clock. */
+static void service_step(struct kiosk *k, uint64_t now)
+{
+	struct remote_sync s;
+	unsigned long long wall;
+
+	if (mqtt_link_take_sync(k->remote.link, &s)) {
+		k->remote.due = s;
+		k->remote.due_any = true;
+	}
+	if (!k->remote.due_any)
+		return;
+	wall = wall_ms();
+	if (k->remote.due.at_ms > wall + SYNC_WAIT_MAX_MS)
+		log_warn("mqtt: the leader's step is %.1f s ahead of this clock: shown now (are "
+			 "both clocks synchronised? chrony)",
+			 (double)(k->remote.due.at_ms - wall) / 1e3);
+	else if (k->remote.due.at_ms > wall)
+		return;
+	k->remote.due_any = false;
+	follow(k, &k->remote.due, now);
 }
 
 void kiosk_remote_service(struct kiosk *k, short revents, uint64_t now)
@@ -114,14 +169,42 @@ void kiosk_remote_service(struct kiosk *k, short revents, uint64_t now)
 	char said[64];
 	int n;
 
-	if (!(revents & POLLIN))
-		return;
-	n = mqtt_link_take(k->mqtt, cmds, MQTT_QUEUE);
-	for (int i = 0; i < n; i++) {
-		remote_describe(&cmds[i], said, sizeof(said));
-		log_info("mqtt: %s", said);
-		apply(k, &cmds[i], now);
+	if (revents & POLLIN) {
+		n = mqtt_link_take(k->remote.link, cmds, MQTT_QUEUE);
+		for (int i = 0; i < n; i++) {
+			remote_describe(&cmds[i], said, sizeof(said));
+			log_info("mqtt: %s", said);
+			apply(k, &cmds[i], now);
+		}
 	}
+	if (k->remote.link && k->started.mqtt.sync == MQTT_SYNC_FOLLOWER)
+		service_step(k, now);
+}
+
+uint64_t kiosk_remote_deadline(const struct kiosk *k, uint64_t now)
+{
+	unsigned long long wall;
+
+	if (!k->remote.due_any)
+		return CLOCK_NEVER;
+	wall = wall_ms();
+	return k->remote.due.at_ms > wall ? now + (k->remote.due.at_ms - wall) * 1000000ull : now;
+}
+
+/* A leader's step when what it shows changed: the wall clock it shows it
+ * from, for the followers. */
+static void lead(struct kiosk *k)
+{
+	const struct app_state *st = app_state(k->app);
+	struct remote_sync s = {wall_ms(), kiosk_models_count(k->models) ? st->model : -1,
+				st->matcap, st->stop};
+
+	if (k->remote.sent_any && s.model == k->remote.sent.model &&
+	    s.matcap == k->remote.sent.matcap && s.stop == k->remote.sent.stop)
+		return;
+	k->remote.sent = s;
+	k->remote.sent_any = true;
+	mqtt_link_publish_sync(k->remote.link, &s);
 }
 
 void kiosk_remote_publish(struct kiosk *k)
@@ -130,7 +213,7 @@ void kiosk_remote_publish(struct kiosk *k)
 	struct remote_state r;
 	char error[512];
 
-	if (!k->mqtt)
+	if (!k->remote.link)
 		return;
 	st = app_state(k->app);
 	log_last_error(error, sizeof(error));
@@ -141,5 +224,7 @@ void kiosk_remote_publish(struct kiosk *k)
 				  .stop = st->stop + 1,
 				  .screen_on = !k->screen || screen_on(k->screen),
 				  .error = error};
-	mqtt_link_publish_state(k->mqtt, &r);
+	mqtt_link_publish_state(k->remote.link, &r);
+	if (k->started.mqtt.sync == MQTT_SYNC_LEADER)
+		lead(k);
 }

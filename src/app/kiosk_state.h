@@ -10,6 +10,7 @@
 #define MK_KIOSK_STATE_H
 
 #include "state/app.h"
+#include "state/remote.h"
 #include "content/content.h"
 #include "app/kiosk_models.h"
 #include "app/reload.h"
@@ -135,7 +136,14 @@ struct kiosk {
 	struct kiosk_anim *anim;  /* the animation player (kiosk_anim.h) */
 	/* The material variant shown (kiosk_variant.h). */
 	struct kiosk_variant variant;
-	struct mqtt_link *mqtt; /* [mqtt] remote control; NULL: off */
+	/* [mqtt] remote control (kiosk_remote.c). */
+	struct {
+		struct mqtt_link *link;	 /* NULL: off */
+		struct remote_sync sent; /* a leader's last step */
+		bool sent_any;
+		struct remote_sync due; /* a follower's step to show at due.at_ms */
+		bool due_any;
+	} remote;
 };
 
 /* A message with no payload to the app state (a frame shown, the display
@@ -184,5 +192,7 @@ void kiosk_remote_stop(struct kiosk *k);
 int kiosk_remote_fd(const struct kiosk *k);
 void kiosk_remote_service(struct kiosk *k, short revents, uint64_t now);
 void kiosk_remote_publish(struct kiosk *k);
+/* A follower's step due later (CLOCK_MONOTONIC), or CLOCK_NEVER. */
+uint64_t kiosk_remote_deadline(const struct kiosk *k, uint64_t now);
 
 #endif

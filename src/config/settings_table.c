@@ -53,6 +53,7 @@ static const char *const auto_names[] = {"auto", NULL};
 static const char *const up_names[] = {"+y", "-y", "+z", "-z", "+x", "-x", NULL}; /* frame_up */
 static const char *const direction_names[] = {"right", "left", NULL};
 static const char *const yes_no_names[] = {"no", "yes", NULL};
+static const char *const sync_names[] = {"off", "leader", "follower", NULL}; /* enum mqtt_sync */
 
 /* A field's place and size: the size tells a bool from an enum, and the
  * copy, the comparison and the release go by it. */
@@ -387,6 +388,11 @@ const struct option_def option_defs[OPTION_DEFS] = {
     {"mqtt-home-assistant", 0, OPTIONS_MQTT, "home_assistant", K_CHOICE, AT(mqtt.home_assistant), 0,
      0, 0, yes_no_names, "yes|no",
      "announce the kiosk and its controls to Home Assistant (MQTT discovery)"},
+    {"mqtt-sync", 0, OPTIONS_MQTT, "sync", K_CHOICE, AT(mqtt.sync), 0, 0, 0, sync_names, "ROLE",
+     "kiosks showing one exhibit: the leader publishes the model, matcap and stop it shows "
+     "with the wall-clock time, followers show the same from then; off, leader or follower"},
+    {"mqtt-group", 0, OPTIONS_MQTT, "group", K_STRING, AT(mqtt.group), 0, 0, 0, NULL, "TOPIC",
+     "the topic a leader and its followers share (default: kiosk/group)"},
 };
 
 const char *backend_name(enum backend_kind kind)

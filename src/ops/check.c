@@ -113,6 +113,11 @@ static void check_mqtt(struct check *c, const struct mqtt_config *m)
 		log_err("%s: [mqtt] topic = %s", at, why);
 		c->bad_mqtt++;
 	}
+	if (m->sync && m->group && m->group[0] && remote_topic_check(m->group, why, sizeof(why))) {
+		where(c->o, def_of("mqtt", "group"), at, sizeof(at));
+		log_err("%s: [mqtt] group = %s", at, why);
+		c->bad_mqtt++;
+	}
 	if (m->tls && m->ca_file && m->ca_file[0])
 		found(c, "mqtt", "ca_file", m->ca_file, access(m->ca_file, R_OK) ? -errno : 0);
 }

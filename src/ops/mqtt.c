@@ -38,6 +38,10 @@ struct mqtt_link {
 	int queued;
 	char state[STATE_MAX]; /* the last state asked for; "": none yet */
 	bool said_down;	       /* this outage was said (the thread's own) */
+	enum mqtt_sync sync;
+	char step_topic[REMOTE_TOPIC_MAX + 16]; /* GROUP/step */
+	struct remote_sync step; /* a follower's newest, not taken; a leader's last */
+	bool step_waiting;	 /* a follower's: not taken yet; a leader's: one sent */
 };
 
 /* The broker's CONNACK: subscribed and announced again on each
@@ -46,6 +50,8 @@ static void on_connect(struct mosquitto *mosq, void *ctx, int rc)
 {
 	struct mqtt_link *l = ctx;
 	char state[STATE_MAX];
+	struct remote_sync step;
+	bool leader_step;
 
 	if (rc) {
 		/* Said once per outage, as a broker not there is: the
@@ -61,14 +67,49 @@ static void on_connect(struct mosquitto *mosq, void *ctx, int rc)
 	l->said_down = false;
 	atomic_store(&l->connected, true);
 	mosquitto_subscribe(mosq, NULL, l->t.command, 1);
+	if (l->sync == MQTT_SYNC_FOLLOWER)
+		mosquitto_subscribe(mosq, NULL, l->step_topic, 1);
 	mosquitto_publish(mosq, NULL, l->t.availability, 6, "online", 1, true);
 	pthread_mutex_lock(&l->lock);
 	memcpy(state, l->state, sizeof(state));
+	step = l->step;
+	leader_step = l->sync == MQTT_SYNC_LEADER && l->step_waiting;
 	pthread_mutex_unlock(&l->lock);
 	if (state[0])
 		mosquitto_publish(mosq, NULL, l->t.state, (int)strlen(state), state, 1, true);
+	/* A restarted broker forgot the retained step: the followers that
+	 * start meanwhile find it again. */
+	if (leader_step)
+		mqtt_link_publish_sync(l, &step);
 	if (l->home_assistant)
 		mqtt_ha_announce(mosq, &l->t);
+}
+
+static void wake_loop(struct mqtt_link *l)
+{
+	uint64_t one = 1;
+
+	if (write(l->efd, &one, sizeof(one)) < 0)
+		log_debug("mqtt: the loop's eventfd: %s", strerror(errno));
+}
+
+/* A leader's step: the newest replaces one not taken yet. */
+static void take_step(struct mqtt_link *l, const struct mosquitto_message *m)
+{
+	struct remote_sync s;
+	char why[200];
+
+	if (m->payloadlen < 0 ||
+	    remote_sync_parse(m->payload, (size_t)m->payloadlen, &s, why, sizeof(why))) {
+		log_warn("mqtt: %s: a leader's step of %d bytes ignored: %s", m->topic,
+			 m->payloadlen, why);
+		return;
+	}
+	pthread_mutex_lock(&l->lock);
+	l->step = s;
+	l->step_waiting = true;
+	pthread_mutex_unlock(&l->lock);
+	wake_loop(l);
 }
 
 /* A payload checked here, on the connection's thread: the loop sees a
@@ -78,10 +119,13 @@ static void on_message(struct mosquitto *mosq, void *ctx, const struct mosquitto
 	struct mqtt_link *l = ctx;
 	struct remote_cmd cmd;
 	char why[160];
-	uint64_t one = 1;
 	bool full;
 
 	(void)mosq;
+	if (l->sync == MQTT_SYNC_FOLLOWER && !strcmp(m->topic, l->step_topic)) {
+		take_step(l, m);
+		return;
+	}
 	if (strcmp(m->topic, l->t.command))
 		return;
 	if (m->payloadlen < 0 ||
@@ -98,8 +142,8 @@ static void on_message(struct mosquitto *mosq, void *ctx, const struct mosquitto
 	if (full)
 		log_warn("mqtt: %s: %d commands wait already; this one is dropped", m->topic,
 			 MQTT_QUEUE);
-	else if (write(l->efd, &one, sizeof(one)) < 0)
-		log_debug("mqtt: the loop's eventfd: %s", strerror(errno));
+	else
+		wake_loop(l);
 }
 
 static void on_disconnect(struct mosquitto *mosq, void *ctx, int rc)
@@ -203,6 +247,14 @@ static int settings(struct mqtt_link *l, const struct mqtt_config *cfg)
 		return -EINVAL;
 	}
 	l->home_assistant = cfg->home_assistant;
+	l->sync = cfg->sync;
+	if (cfg->sync != MQTT_SYNC_OFF && cfg->group && cfg->group[0] &&
+	    remote_topic_check(cfg->group, why, sizeof(why))) {
+		log_err("mqtt: [mqtt] group = %s; remote control is off", why);
+		return -EINVAL;
+	}
+	snprintf(l->step_topic, sizeof(l->step_topic), "%s/step",
+		 cfg->group && cfg->group[0] ? cfg->group : "kiosk/group");
 	return 0;
 }
 
@@ -297,4 +349,34 @@ void mqtt_link_publish_state(struct mqtt_link *l, const struct remote_state *st)
 	 * Not connected: on_connect publishes the latest. */
 	if (!same && atomic_load(&l->connected))
 		mosquitto_publish(l->mosq, NULL, l->t.state, len, json, 1, true);
+}
+
+void mqtt_link_publish_sync(struct mqtt_link *l, const struct remote_sync *s)
+{
+	char payload[REMOTE_SYNC_MAX + 1];
+	int len = remote_sync_format(s, payload, sizeof(payload));
+
+	if (!l)
+		return;
+	pthread_mutex_lock(&l->lock);
+	l->step = *s;
+	l->step_waiting = true;
+	pthread_mutex_unlock(&l->lock);
+	/* Not connected: on_connect sends the last one. */
+	if (atomic_load(&l->connected))
+		mosquitto_publish(l->mosq, NULL, l->step_topic, len, payload, 1, true);
+}
+
+bool mqtt_link_take_sync(struct mqtt_link *l, struct remote_sync *out)
+{
+	bool waiting;
+
+	if (!l)
+		return false;
+	pthread_mutex_lock(&l->lock);
+	waiting = l->step_waiting;
+	*out = l->step;
+	l->step_waiting = false;
+	pthread_mutex_unlock(&l->lock);
+	return waiting;
 }

@@ -28,5 +28,11 @@ int mqtt_link_fd(const struct mqtt_link *l);
 int mqtt_link_take(struct mqtt_link *l, struct remote_cmd *out, int max);
 /* The state shown: published (retained) when it differs from the last. */
 void mqtt_link_publish_state(struct mqtt_link *l, const struct remote_state *st);
+/* [mqtt] sync = leader: a step for the followers, on GROUP/step (retained:
+ * a follower that starts later takes the latest). */
+void mqtt_link_publish_sync(struct mqtt_link *l, const struct remote_sync *s);
+/* [mqtt] sync = follower: the leader's newest step not taken yet; false
+ * when there is none. */
+bool mqtt_link_take_sync(struct mqtt_link *l, struct remote_sync *out);
 
 #endif

@@ -235,6 +235,53 @@ kill "$kiosk_pid"
 wait "$kiosk_pid" 2>/dev/null
 step "TLS: a clean stop says offline" until_true available offline
 step "TLS: the password is in no log" sh -c "! grep -q s3cret '$dir/kiosk.log'"
+# A leader and a follower ([mqtt] sync): the follower shows the leader's
+# model, matcap and stop from the wall-clock time the leader sent.
+fresh_log
+sed "s|^topic = .*|topic = kiosk/lead\nsync = leader\ngroup = kiosk/wall|" "$dir/kiosk.ini" \
+	>"$dir/lead.ini"
+sed "s|^topic = .*|topic = kiosk/follow\nsync = follower\ngroup = kiosk/wall|" "$dir/kiosk.ini" \
+	>"$dir/follow.ini"
+start_kiosk "$dir/lead.ini"
+lead_pid=$kiosk_pid
+start_kiosk "$dir/follow.ini"
+follow_pid=$kiosk_pid
+step "sync: the leader and the follower connect" until_true at_least 2 "mqtt: connected to"
+# follows NAME TEXT: kiosk/NAME's state has TEXT.
+follows() { retained "kiosk/$1/state" | grep -qF -- "$2"; }
+# the_same: both states say the same model, matcap and stop.
+the_same() {
+	a=$(retained kiosk/lead/state | sed 's/,"screen".*//')
+	[ -n "$a" ] && [ "$a" = "$(retained kiosk/follow/state | sed 's/,"screen".*//')" ]
+}
+mosquitto_pub -h 127.0.0.1 -p "$port" -t kiosk/lead/command -m "matcap 3"
+step "sync: the leader shows matcap 3" until_true follows lead "\"matcap\":\"$third\""
+step "sync: so does the follower" until_true follows follow "\"matcap\":\"$third\""
+# The next model first: a model swapped in starts at no stop.
+mosquitto_pub -h 127.0.0.1 -p "$port" -t kiosk/lead/command -m "model next"
+lead_other() {
+	retained kiosk/lead/state | grep -q '"model":"[a-z]*\.glb"' &&
+		! retained kiosk/lead/state | grep -qF "\"model\":\"$first\""
+}
+step "sync: the leader's next model" until_true lead_other
+mosquitto_pub -h 127.0.0.1 -p "$port" -t kiosk/lead/command -m "stop 2"
+step "sync: the leader's stop 2" until_true follows lead '"stop":2'
+step "sync: the follower shows the same model, matcap and stop" until_true the_same
+step_is() { retained kiosk/wall/step | grep -qE "^at=[0-9]{13} model=[0-9]+ matcap=[0-9]+ stop=1\$"; }
+step "sync: the step carries the leader's wall clock (ms) and what it shows" until_true step_is
+mosquitto_pub -h 127.0.0.1 -p "$port" -t kiosk/wall/step -r -m "at=1 model=0 matcap=/etc/x stop=0"
+step "sync: a malformed step ignored by the follower" until_true \
+	logged "a leader's step of 33 bytes ignored"
+step "sync: the follower lives on" kill -0 "$follow_pid"
+# A leader a minute ahead (clocks not in step): shown at once, and said.
+second=$(cd matcaps && LC_ALL=C ls ./*.png | sed -n 2p | sed 's|^\./||')
+mosquitto_pub -h 127.0.0.1 -p "$port" -t kiosk/wall/step -r \
+	-m "at=$(($(date +%s) * 1000 + 60000)) model=0 matcap=1 stop=-1"
+step "sync: a step a minute ahead is said" until_true logged "s ahead of this clock: shown now"
+step "sync: and shown at once ($second)" until_true follows follow "\"matcap\":\"$second\""
+kill "$lead_pid" "$follow_pid"
+wait "$lead_pid" "$follow_pid" 2>/dev/null
+
 fresh_log
 step "no sanitizer report in any kiosk's log" sh -c "! grep -E \
 	'ERROR: AddressSanitizer|WARNING: ThreadSanitizer|runtime error' '$dir/kiosk-all.log'"

@@ -263,7 +263,8 @@ static void mqtt_section(void **state)
 {
 	const char *path =
 	    write_ini("[mqtt]\nbroker = 127.0.0.1:1884\ntopic = kiosk/hall\n"
-		      "tls = yes\nca_file = /etc/ssl/ca.pem\nhome_assistant = yes\n");
+		      "tls = yes\nca_file = /etc/ssl/ca.pem\nhome_assistant = yes\n"
+		      "sync = follower\ngroup = kiosk/wall\n");
 	const char *argv[] = {"mk", "--config", path};
 	struct options o;
 
@@ -274,6 +275,8 @@ static void mqtt_section(void **state)
 	assert_true(o.mqtt.tls);
 	assert_string_equal(o.mqtt.ca_file, "/etc/ssl/ca.pem");
 	assert_true(o.mqtt.home_assistant);
+	assert_int_equal(o.mqtt.sync, MQTT_SYNC_FOLLOWER);
+	assert_string_equal(o.mqtt.group, "kiosk/wall");
 	options_release(&o);
 	unlink(path);
 	/* write_ini's path is one buffer: argv[2] names the new file. */
