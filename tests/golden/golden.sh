@@ -22,7 +22,7 @@ scenes="$scenes parts-textures parts-mask parts-blend parts-leaf parts-normals p
 scenes="$scenes parts-unlit parts-unlit-shade parts-emissive parts-emissive-sem-vertex parts-specgloss"
 scenes="$scenes parts-emissive-uv1"
 scenes="$scenes variant-blue first-coloured first-uncoloured"
-scenes="$scenes caption-latin caption-rtl caption-logo"
+scenes="$scenes caption-latin caption-rtl caption-logo caption-wrap"
 scenes="$scenes frame-up frame-start-view frame-own-look"
 scenes="$scenes render-scale-half normals-flat normals-smooth"
 scenes="$scenes morph-t1 morph-t3 morph-pingpong skin-t1 nodes-t1.7"
@@ -177,6 +177,13 @@ render() {
 		$k -c matcaps/gold.png --caption-size 16 --caption-position top-right \
 			--caption-color '#ffe8a0' --caption-box '#30206080' \
 			--caption 'כד עתיק (מאה 5)\nمزهرية أثرية' --output "$o"
+		;;
+	# A label longer than the frame is wide: wrapped between words
+	# (UAX #14) into three lines, the box as high as they are.
+	caption-wrap)
+		$k -c matcaps/gold.png --caption-size 16 \
+			--caption 'A museum label that is long enough to wrap over three lines at this width, by words' \
+			--output "$o"
 		;;
 	caption-logo)
 		$k -c matcaps/gold.png --caption-size 16 --caption-position bottom --caption-box none \

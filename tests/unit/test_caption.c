@@ -437,7 +437,10 @@ static void hundred_thousand_chars_fit(void **state)
 
 	(void)state;
 	fitted(text, 0, &cut);
-	assert_true(cut.lines == 1 && cut.shown == 1 && cut.cut == 1);
+	/* A word of 100,000 letters wraps between its letters: the lines
+	 * that fit are shown, the last with an ellipsis, none cut at the
+	 * side. */
+	assert_true(cut.shown > 1 && cut.shown < cut.lines && cut.cut == 0);
 	free(text);
 }
 

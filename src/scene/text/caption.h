@@ -37,6 +37,10 @@ struct caption_config {
 	int padding; /* pixels inside the box, and from the screen's edge */
 	enum caption_position position;
 	bool drift; /* move a few pixels over hours against burn-in */
+	/* Not a setting: the language of text (a BCP 47 code such as "ja",
+	 * from [caption] languages), for its line breaks and its fallback
+	 * font's glyphs; NULL: none said. */
+	const char *lang;
 };
 
 /* The most pictures of [frame] stops' texts a model has, each drawn as
@@ -45,6 +49,9 @@ struct caption_config {
 
 /* The default size, in pixels of the panel. */
 #define CAPTION_SIZE_DEFAULT 28
+
+/* The size c asks for, in whole pixels. */
+int caption_size(const struct caption_config *c);
 
 /* Whether c shows anything (a text or a logo). */
 bool caption_wanted(const struct caption_config *c);
