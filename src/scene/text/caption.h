@@ -41,6 +41,7 @@ struct caption_config {
 	 * from [caption] languages), for its line breaks and its fallback
 	 * font's glyphs; NULL: none said. */
 	const char *lang;
+	char *languages; /* [caption] languages: "en de fr", the first shown first */
 };
 
 /* The most pictures of [frame] stops' texts a model has, each drawn as
