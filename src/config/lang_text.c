@@ -112,8 +112,10 @@ int lang_texts_set(struct lang_texts *t, const char *section, const char *key, c
 		snprintf(e->lang, sizeof(e->lang), "%s", lang);
 	} else {
 		free(e->value);
+		free(e->origin);
 	}
 	e->value = copy;
+	e->origin = NULL;
 	return 0;
 }
 
@@ -176,6 +178,16 @@ int lang_text_read(struct lang_texts *t, const char *path, int line, const char 
 			path, line, section, key, LANG_TEXTS_MAX);
 	else if (ret)
 		log_err("%s:%d: [%s] %s: %s", path, line, section, key, strerror(-ret));
+	if (!ret) {
+		char full[96]; /* a translatable key's: short, as lang_texts_set stored it */
+		struct lang_entry *e;
+
+		snprintf(full, sizeof(full), "%s.%s", section, base);
+		e = find(t, full, lang);
+		/* Only --check-config reads it: none is no error. */
+		if (e && asprintf(&e->origin, "%s:%d", path, line) < 0)
+			e->origin = NULL;
+	}
 	return ret ? -1 : 0;
 }
 
@@ -183,19 +195,24 @@ int lang_texts_copy(struct lang_texts *dst, const struct lang_texts *src)
 {
 	*dst = *src;
 	for (int i = 0; i < dst->count; i++)
-		dst->e[i].value = NULL;
-	for (int i = 0; i < dst->count; i++)
-		if (!(dst->e[i].value = strdup(src->e[i].value))) {
+		dst->e[i].value = dst->e[i].origin = NULL;
+	for (int i = 0; i < dst->count; i++) {
+		dst->e[i].value = strdup(src->e[i].value);
+		dst->e[i].origin = src->e[i].origin ? strdup(src->e[i].origin) : NULL;
+		if (!dst->e[i].value || (src->e[i].origin && !dst->e[i].origin)) {
 			lang_texts_release(dst);
 			return -ENOMEM;
 		}
+	}
 	return 0;
 }
 
 void lang_texts_release(struct lang_texts *t)
 {
-	for (int i = 0; i < t->count; i++)
+	for (int i = 0; i < t->count; i++) {
 		free(t->e[i].value);
+		free(t->e[i].origin);
+	}
 	t->count = 0;
 }
 

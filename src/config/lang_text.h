@@ -25,6 +25,7 @@ struct lang_entry {
 	char key[32]; /* "caption.text", "frame.stops" */
 	char lang[LANG_CODE_MAX];
 	char *value;
+	char *origin; /* "file:line" it was read from, for --check-config; NULL: none */
 };
 
 struct lang_texts {

@@ -9,6 +9,7 @@
 
 #include <errno.h>
 #include <fontconfig/fontconfig.h>
+#include <fribidi.h>
 #include <hb-ft.h>
 #include <stdbool.h>
 #include <stdlib.h>
@@ -238,4 +239,60 @@ int caption_char_invisible(uint32_t c)
 {
 	return c < 0x20 || c == 0x200b || c == 0x200c || c == 0x200d || c == 0x2060 ||
 	       (c >= 0xfe00 && c <= 0xfe0f) || (c >= 0xe0100 && c <= 0xe01ef) || c == 0xfeff;
+}
+
+int caption_missing(const char *font, const char *lang, const char *utf8, uint32_t *out, int cap)
+{
+	size_t bytes = strlen(utf8);
+	uint32_t *u = malloc((bytes + 1) * sizeof(*u));
+	struct caption_fonts *f = NULL;
+	int n = 0, len, ret = u ? caption_fonts_new(font, CAPTION_SIZE_DEFAULT, lang, &f) : -ENOMEM;
+
+	if (ret)
+		goto out;
+	len =
+	    (int)fribidi_charset_to_unicode(FRIBIDI_CHAR_SET_UTF8, utf8, (FriBidiStrIndex)bytes, u);
+	for (int i = 0; i < len; i++) {
+		bool seen = false;
+
+		if (caption_char_invisible(u[i]) || caption_fonts_pick(f, u[i]) >= 0)
+			continue;
+		/* Among those kept only: a text is long, its missing few. */
+		for (int k = 0; k < n && k < cap && !seen; k++)
+			seen = out[k] == u[i];
+		if (!seen && n < cap)
+			out[n] = u[i];
+		n += !seen;
+	}
+	ret = n;
+out:
+	caption_fonts_free(f);
+	free(u);
+	return ret;
+}
+
+const char *caption_font_package(uint32_t c)
+{
+	static const struct {
+		uint32_t lo, hi;
+		const char *package;
+	} ranges[] = {
+	    {0x1100, 0x11ff, "fonts-noto-cjk"},	  /* Hangul Jamo */
+	    {0x2e80, 0x2fdf, "fonts-noto-cjk"},	  /* CJK radicals */
+	    {0x3000, 0x9fff, "fonts-noto-cjk"},	  /* kana, CJK ideographs */
+	    {0xac00, 0xd7af, "fonts-noto-cjk"},	  /* Hangul syllables */
+	    {0xf900, 0xfaff, "fonts-noto-cjk"},	  /* CJK compatibility */
+	    {0xff00, 0xffef, "fonts-noto-cjk"},	  /* full-width forms */
+	    {0x20000, 0x3ffff, "fonts-noto-cjk"}, /* CJK extensions */
+	    {0x2190, 0x21ff, "fonts-symbola"},	  /* arrows */
+	    {0x2300, 0x23ff, "fonts-symbola"},	  /* technical */
+	    {0x2600, 0x27bf, "fonts-symbola"},	  /* symbols, dingbats */
+	    {0x2b00, 0x2bff, "fonts-symbola"},	  /* more arrows and stars */
+	    {0x1f000, 0x1faff, "fonts-symbola"},  /* emoji */
+	};
+
+	for (size_t i = 0; i < sizeof(ranges) / sizeof(ranges[0]); i++)
+		if (c >= ranges[i].lo && c <= ranges[i].hi)
+			return ranges[i].package;
+	return "fonts-noto-core";
 }

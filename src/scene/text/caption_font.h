@@ -38,4 +38,17 @@ FT_Face caption_fonts_face(const struct caption_fonts *f, int i);
  * a variation selector): never counted as missing. */
 int caption_char_invisible(uint32_t c);
 
+/* The distinct characters of utf8 that neither font (NULL: the
+ * default) nor any installed font has, as caption_fonts_pick finds
+ * them for lang: at most cap into out; returns how many there are (past
+ * cap a character may be counted again), or
+ * a negative errno (the font did not open: the journal said why). */
+int caption_missing(const char *font, const char *lang, const char *utf8, uint32_t *out, int cap);
+
+/* The Debian package with a font that has c: fonts-noto-cjk for
+ * Chinese, Japanese and Korean, fonts-symbola for emoji and symbols (an
+ * outline font: fonts-noto-color-emoji's bitmaps are not drawn), else
+ * fonts-noto-core (most other scripts). */
+const char *caption_font_package(uint32_t c);
+
 #endif
