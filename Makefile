@@ -69,13 +69,13 @@ LDLIBS    = $(PKG_LIBS) -lmeshoptimizer -ldl -lm
 # The program's sources, minus app/main.c (tests link the same objects),
 # one folder per layer: each includes only the layers listed after it
 # (tests/tools/layers.sh checks that).
-SRC_APP     := app/kiosk_models app/kiosk app/kiosk_anim app/kiosk_variant app/kiosk_content app/kiosk_report app/reload \
+SRC_APP     := app/kiosk_models app/kiosk app/kiosk_anim app/kiosk_variant app/kiosk_lang app/kiosk_content app/kiosk_report app/reload \
 	       app/signals
-SRC_OPS     := ops/check ops/import ops/import_copy ops/import_ini ops/metrics ops/screen ops/service ops/status
+SRC_OPS     := ops/check ops/check_text ops/import ops/import_copy ops/import_ini ops/metrics ops/screen ops/service ops/status
 SRC_CONTENT := content/content content/load_guard content/content_cache content/content_look content/content_view content/content_caption content/content_play content/content_deform content/matcap_set content/matcap_job content/model_list \
 	       content/model_loader content/worker
 SRC_CONFIG  := config/options config/options_file config/model_settings config/settings config/settings_table config/settings_origin config/lang_text
-SRC_STATE   := state/app state/view state/power state/schedule
+SRC_STATE   := state/app state/view state/power state/schedule state/lang
 SRC_DISPLAY := display/backlight display/cec display/cec_link display/display display/display_egl display/display_kms display/kms_scale \
 	       display/display_osmesa \
 	       display/drm display/drm_atomic display/drm_legacy display/egl_util display/hotplug \

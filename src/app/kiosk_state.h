@@ -9,6 +9,7 @@
 #define MK_KIOSK_STATE_H
 
 #include "state/app.h"
+#include "state/lang.h"
 #include "content/content.h"
 #include "app/kiosk_models.h"
 #include "app/reload.h"
@@ -31,6 +32,16 @@
 #include <stdint.h>
 
 struct kiosk_anim; /* app/kiosk_anim.h */
+
+/* The language shown (src/app/kiosk_lang.c): what was last seen of the
+ * app state and the content. */
+struct kiosk_lang {
+	unsigned serial;       /* renderer_mesh_serial when set up */
+	int step;	       /* app_state lang_step seen */
+	double round;	       /* attract mode's tour, seconds a language */
+	bool picked;	       /* a visitor chose one (kept across models) */
+	struct lang_pick pick; /* state/lang.h */
+};
 
 /* The material variant shown (src/app/kiosk_variant.c): what was last
  * applied, to act on changes alone. */
@@ -132,6 +143,8 @@ struct kiosk {
 	struct kiosk_anim *anim;  /* the animation player (kiosk_anim.h) */
 	/* The material variant shown (kiosk_variant.h). */
 	struct kiosk_variant variant;
+	/* The language the texts are shown in (kiosk_lang.c). */
+	struct kiosk_lang lang;
 };
 
 /* A message with no payload to the app state (a frame shown, the display
@@ -152,6 +165,10 @@ uint64_t kiosk_play_animation(struct kiosk *k, uint64_t now, bool awake);
  * and next-variant ask for, shown by the renderer (the draw list's
  * materials changed: no upload); a frame asked for when it changed. */
 void kiosk_show_variant(struct kiosk *k);
+/* src/app/kiosk_lang.c: the language next-language, attract mode and
+ * idle_seconds ask for, its pictures given to the renderer; a frame
+ * asked for when it changed. */
+void kiosk_show_language(struct kiosk *k, uint64_t now);
 /* src/app/kiosk_content.c: the content worker's jobs (reload, matcap,
  * the matcap folder). */
 int kiosk_content_start(struct kiosk *k);

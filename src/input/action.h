@@ -26,10 +26,11 @@ enum app_action {
 	ACTION_PLAY_PAUSE,     /* the model's animation stops where it is, or goes on */
 	ACTION_NEXT_ANIMATION, /* its next clip, crossfaded */
 	ACTION_NEXT_VARIANT,   /* its next KHR_materials_variants variant (then its default) */
+	ACTION_NEXT_LANGUAGE,  /* the texts in the next of [caption] languages */
 	ACTION_COUNT
 };
 
-/* "none", "turn-left", ... "next-variant", then NULL: the config file's names. */
+/* "none", "turn-left", ... "next-language", then NULL: the config file's names. */
 extern const char *const app_action_names[ACTION_COUNT + 1];
 
 struct app_event {
