@@ -131,7 +131,7 @@ static void a_word_longer_than_the_line(void **state)
 	line_is(&w, 1, "e\xcc\x81");
 }
 
-/* Past the lines asked for, only that there are more is said. */
+/* Past the lines asked for, the lines are counted, not kept. */
 static void counted_to_the_room(void **state)
 {
 	struct wrapped w;
@@ -141,7 +141,8 @@ static void counted_to_the_room(void **state)
 	w.len = decode("a b c d e f g h i j k l", w.u);
 	for (int i = 0; i < w.len; i++)
 		adv[i] = 10;
-	assert_int_equal(caption_wrap(w.u, adv, w.len, NULL, 10, w.span, 3), 4);
+	assert_int_equal(caption_wrap(w.u, adv, w.len, NULL, 10, w.span, 3), 12);
+	assert_int_equal(w.span[2].start, 4); /* "c" */
 	assert_int_equal(caption_wrap(w.u, adv, w.len, NULL, 1000, w.span, 3), 1);
 	assert_int_equal(caption_wrap(w.u, adv, 0, NULL, 1000, w.span, 3), 0);
 }

@@ -313,8 +313,7 @@ static int advances(struct caption_fonts *fonts, const uint32_t *u, int len, lon
 }
 
 /* One paragraph (bytes of UTF-8, no '\n') wrapped into max_w, its lines
- * shaped into lay's free lines; the lines it has are counted, those
- * past the room only as one more. */
+ * that fit the room shaped into lay's free lines, all of them counted. */
 static int wrap_paragraph(struct caption_fonts *fonts, const char *lang, const char *utf8,
 			  int bytes, long max_w, int room, struct layout *lay)
 {

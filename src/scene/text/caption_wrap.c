@@ -39,15 +39,6 @@ static int drawn_end(const uint32_t *u, int start, int end)
 	return end;
 }
 
-static long width(const long *adv, int start, int end)
-{
-	long w = 0;
-
-	for (int i = start; i < end; i++)
-		w += adv[i];
-	return w;
-}
-
 /* A word wider than the line: as many of its characters as fit, at least
  * one (with its marks). */
 static int by_characters(const uint32_t *u, const long *adv, int start, int len, long max)
@@ -61,17 +52,23 @@ static int by_characters(const uint32_t *u, const long *adv, int start, int len,
 }
 
 /* Where the line from start breaks: after the last opportunity whose
- * line (less its blanks) fits, or at a mandatory break. */
+ * line (less its blanks) fits, or at a mandatory break. The width drawn
+ * only grows along the line (a blank adds none until a letter follows
+ * it), so the first character past max ends the search: a line costs
+ * its own length, and a text of 100,000 letters is laid out whole. */
 static int line_break(const uint32_t *u, const long *adv, const char *brks, int start, int len,
 		      long max)
 {
+	long w = 0, tail = 0; /* the line's width; its trailing blanks' */
 	int ok = -1;
 
 	for (int i = start; i < len; i++) {
+		w += adv[i];
+		tail = blank(u[i]) ? tail + adv[i] : 0;
+		if (w - tail > max)
+			break;
 		if (brks[i] != LINEBREAK_MUSTBREAK && brks[i] != LINEBREAK_ALLOWBREAK)
 			continue;
-		if (width(adv, start, drawn_end(u, start, i + 1)) > max)
-			break;
 		ok = i + 1;
 		if (brks[i] == LINEBREAK_MUSTBREAK)
 			break;
@@ -95,9 +92,6 @@ int caption_wrap(const uint32_t *u, const long *adv, int len, const char *lang, 
 			out[n] = (struct caption_span){start, drawn_end(u, start, next), next};
 		n++;
 		start = next;
-		/* Past cap only the count is wanted: the rest is one more. */
-		if (n > cap)
-			break;
 	}
 	free(brks);
 	return n;

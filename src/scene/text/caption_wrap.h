@@ -22,9 +22,9 @@ void caption_wrap_init(void);
 /* The lines of u[0..len) (one paragraph: no '\n') within max, adv[i]
  * being code point i's advance (any unit), for the language lang (a
  * BCP 47 code such as "ja"; NULL: none). At most cap spans are written
- * to out; returns how many lines there are, cap + 1 when there are
- * more than cap (the rest is not laid out), or -ENOMEM. A line holds at
- * least one character, even one wider than max. */
+ * to out (those past cap are counted, not kept); returns how many
+ * lines there are, or -ENOMEM. A line holds at least one character,
+ * even one wider than max. */
 int caption_wrap(const uint32_t *u, const long *adv, int len, const char *lang, long max,
 		 struct caption_span *out, int cap);
 
