@@ -76,7 +76,8 @@ bool lang_key_split(const char *key, char *base, size_t base_n, char *lang, size
 	return true;
 }
 
-/* The keys whose value a visitor reads. */
+/* The keys whose value a visitor reads (a later one, such as a
+ * hotspot's text, joins here and reads its text with lang_text_get). */
 bool lang_key_translatable(const char *section, const char *key)
 {
 	return (!strcmp(section, "caption") && !strcmp(key, "text")) ||
@@ -158,7 +159,7 @@ char *lang_stop_text(const char *stops, int index)
 int lang_text_read(struct lang_texts *t, const char *path, int line, const char *section,
 		   const char *key, const char *value)
 {
-	char base[32], lang[LANG_CODE_MAX + 8];
+	char base[64], lang[LANG_CODE_MAX + 8];
 	int ret;
 
 	lang_key_split(key, base, sizeof(base), lang, sizeof(lang));

@@ -199,7 +199,10 @@ void content_release_captions(struct content *s);
  * says what was cut, once a picture. */
 void content_fit_captions(struct content *s, const struct content_config *c, int width, int height);
 /* The picture shown at stop (the app state's; -1: none): the stop's, else
- * the caption (empty: nothing). */
+ * the caption (empty: nothing), in the language shown. Its width and
+ * height are the caption's box on screen (padding inside it included,
+ * the margin outside not), its text wrapped to the frame once
+ * content_fit_captions knew the frame: what a fit leaves room for. */
 const struct image *content_caption(const struct content *s, int stop);
 /* Show language lang's pictures (an index of [caption] languages, out of
  * range: the first), and give them to the renderer: on the loop thread,
