@@ -83,7 +83,8 @@ struct content {
 	struct content_lang {
 		struct image caption, stop[CAPTION_STOPS];
 	} lang_spare[LANG_MAX];
-	int lang_shown, lang_count;	     /* lang_count 0: no languages named */
+	int lang_shown, lang_count; /* lang_count 0: no languages named */
+	int caption_frame[2];	    /* the frame the pictures were laid out in; 0: none yet */
 	struct caption_config caption_place; /* its position, padding, drift; no strings */
 	/* The model's settings: the caller's with its NAME.ini over them
 	 * (config/model_settings.h); NULL: the caller's (the built-in knot). */
@@ -194,9 +195,10 @@ struct view content_view(const struct content_config *c);
  * journal says why), unless strict. */
 int content_load_captions(struct content *s, const struct content_config *c, bool strict);
 void content_release_captions(struct content *s);
-/* The pictures larger than a width x height panel (turned by c's
- * rotation) drawn again within it, cut with an ellipsis; the journal
- * says what was cut, once a picture. */
+/* The pictures laid out again for a width x height panel (turned by c's
+ * rotation): wrapped to its width, cut with an ellipsis; the journal
+ * says what was cut, once a picture. Once a frame: the same again draws
+ * nothing. */
 void content_fit_captions(struct content *s, const struct content_config *c, int width, int height);
 /* The picture shown at stop (the app state's; -1: none): the stop's, else
  * the caption (empty: nothing), in the language shown. Its width and

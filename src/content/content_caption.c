@@ -153,6 +153,7 @@ int content_load_captions(struct content *s, const struct content_config *o, boo
 						   .drift = o->caption.drift};
 	s->lang_count = n;
 	s->lang_shown = first_shown(o, codes, n);
+	s->caption_frame[0] = s->caption_frame[1] = 0; /* not laid out for a frame yet */
 	for (int l = 0; l < (n ? n : 1) && !ret; l++) {
 		struct caption_config c = caption_in(o, codes, n, l);
 
@@ -163,16 +164,15 @@ int content_load_captions(struct content *s, const struct content_config *o, boo
 	return ret;
 }
 
-/* A picture larger than the frame (less the margin round it) drawn again
- * within it; one that fits is kept as it is. */
+/* A picture drawn again within the frame (less the margin round it):
+ * wrapped to its width, cut to its height. */
 static void fit_picture(const struct caption_config *c, const char *name, const char *what,
 			const int frame[2], struct image *img)
 {
 	struct caption_fit fit = {frame[0], frame[1], what, false};
 	struct image again;
 
-	if (!img->rgba ||
-	    (img->width <= frame[0] - 2 * c->padding && img->height <= frame[1] - 2 * c->padding))
+	if (!img->rgba)
 		return;
 	if (caption_render_fit(c, name, &fit, &again, NULL))
 		return;
@@ -216,10 +216,14 @@ void content_fit_captions(struct content *s, const struct content_config *o, int
 	char codes[LANG_MAX][LANG_CODE_MAX];
 	int n = languages(o, codes);
 
-	if (width <= 0 || height <= 0)
+	/* Drawn for this frame already: a caption is laid out once a frame. */
+	if (width <= 0 || height <= 0 ||
+	    (s->caption_frame[0] == frame[0] && s->caption_frame[1] == frame[1]))
 		return;
 	for (int l = 0; l < (n ? n : 1); l++)
 		fit_language(s, o, codes, n, l, frame);
+	s->caption_frame[0] = frame[0];
+	s->caption_frame[1] = frame[1];
 }
 
 void content_release_captions(struct content *s)

@@ -445,6 +445,37 @@ static void hundred_thousand_chars_fit(void **state)
 	free(text);
 }
 
+/* 100,000 words: every one measured (HarfBuzz shapes a long buffer only
+ * so far; measured whole, the words past it measured nothing and all
+ * fitted the last line), so thousands of lines are counted. */
+static void hundred_thousand_words_measured(void **state)
+{
+	char *text = repeated("Wort ", 100000);
+	struct caption_cut cut;
+
+	(void)state;
+	fitted(text, 0, &cut);
+	assert_true(cut.lines > 10000 && cut.shown > 1 && cut.shown < 20 && cut.cut == 0);
+	free(text);
+}
+
+/* Before the frame is known a long text is laid out in a large panel's
+ * frame, not in IMAGE_MAX_SIDE's: its picture was 8192x8192 (256 MiB)
+ * until it was fitted. */
+static void no_frame_yet_a_panel_sized_picture(void **state)
+{
+	char *text = repeated("x", 100000);
+	struct caption_config c = {.text = text, .padding = 12};
+	struct caption_fit fit = {.quiet = true};
+	struct image img;
+
+	(void)state;
+	assert_int_equal(caption_render_fit(&c, NULL, &fit, &img, NULL), 0);
+	assert_true(img.width <= CAPTION_FRAME_GUESS_W && img.height <= CAPTION_FRAME_GUESS_H);
+	image_release(&img);
+	free(text);
+}
+
 static void a_size_too_large_fits(void **state)
 {
 	char *lines = repeated("A\\n", 90);
@@ -530,6 +561,8 @@ int main(void)
 	    cmocka_unit_test(twenty_thousand_lines_fit),
 	    cmocka_unit_test(hundred_thousand_chars_fit),
 	    cmocka_unit_test(a_size_too_large_fits),
+	    cmocka_unit_test(hundred_thousand_words_measured),
+	    cmocka_unit_test(no_frame_yet_a_panel_sized_picture),
 	    cmocka_unit_test(lines_that_fit),
 	    cmocka_unit_test(missing_characters),
 	    cmocka_unit_test(drawn_from_the_fallback),

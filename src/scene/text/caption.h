@@ -72,8 +72,14 @@ char *caption_text(const struct caption_config *c, const char *name);
 int caption_render(const struct caption_config *c, const char *name, struct image *out);
 
 /* Where a caption must fit, and who says so when it does not. */
+/* The frame a caption is laid out in before the display's is known: a
+ * large panel's. Wrapped within IMAGE_MAX_SIDE instead, a long text made
+ * a picture of 8192x8192 (256 MiB) before it was fitted. */
+#define CAPTION_FRAME_GUESS_W 1920
+#define CAPTION_FRAME_GUESS_H 1080
+
 struct caption_fit {
-	int width, height; /* the frame (turned for the panel); 0: IMAGE_MAX_SIDE */
+	int width, height; /* the frame (turned for the panel); 0: CAPTION_FRAME_GUESS_* */
 	const char *what;  /* the journal's name for the text, e.g. "[caption] text" */
 	bool quiet;	   /* a draw for a frame not known yet: nothing said */
 };

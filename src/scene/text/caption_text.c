@@ -296,19 +296,43 @@ static int ellipsize(hb_font_t *font, struct line *l, long max, bool more)
 	return ret;
 }
 
+/* Code points shaped at once to measure: HarfBuzz stops shaping a
+ * buffer past a budget of operations (its defence against hostile
+ * text), and the rest would measure nothing and fit one line. */
+#define MEASURE_CHUNK 2048
+
+/* Where a chunk from start ends: at a blank near the budget, so that a
+ * word is shaped whole (kerning, Arabic joining), else at the budget. */
+static int chunk_end(const uint32_t *u, int start, int len)
+{
+	int end = start + MEASURE_CHUNK;
+
+	if (end >= len)
+		return len;
+	for (int i = end; i > end - MEASURE_CHUNK / 8; i--)
+		if (u[i - 1] == ' ')
+			return i;
+	return end;
+}
+
 /* Each code point's advance in the paragraph u (26.6): the glyphs of
- * its cluster, shaped as one line. */
+ * its cluster, shaped a chunk at a time. */
 static int advances(struct caption_fonts *fonts, const uint32_t *u, int len, long *adv)
 {
-	struct line l = {0};
-	int ret = shape_line(fonts, u, len, &l);
+	int ret = 0;
 
 	for (int i = 0; i < len; i++)
 		adv[i] = 0;
-	for (size_t i = 0; !ret && i < l.n; i++)
-		if (l.g[i].cluster >= 0 && l.g[i].cluster < len)
-			adv[l.g[i].cluster] += l.g[i].advance;
-	free(l.g);
+	for (int start = 0, end; start < len && !ret; start = end) {
+		struct line l = {0};
+
+		end = chunk_end(u, start, len);
+		ret = shape_line(fonts, u + start, end - start, &l);
+		for (size_t i = 0; !ret && i < l.n; i++)
+			if (l.g[i].cluster >= 0 && l.g[i].cluster < end - start)
+				adv[start + l.g[i].cluster] += l.g[i].advance;
+		free(l.g);
+	}
 	return ret;
 }
 
@@ -462,8 +486,9 @@ static int compose(const struct caption_config *c, const struct caption_fonts *f
 static void text_room(const struct caption_config *c, const struct caption_fit *fit,
 		      const struct image *logo, bool text, long room[2])
 {
-	long frame[2] = {fit && fit->width > 0 ? fit->width - 2L * c->padding : IMAGE_MAX_SIDE,
-			 fit && fit->height > 0 ? fit->height - 2L * c->padding : IMAGE_MAX_SIDE};
+	long frame[2] = {
+	    (fit && fit->width > 0 ? fit->width : CAPTION_FRAME_GUESS_W) - 2L * c->padding,
+	    (fit && fit->height > 0 ? fit->height : CAPTION_FRAME_GUESS_H) - 2L * c->padding};
 	long gap = logo->width && text ? c->padding : 0;
 
 	for (int k = 0; k < 2; k++) {
