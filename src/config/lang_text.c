@@ -1,6 +1,7 @@
 /* The curator's texts in each language (lang_text.h): a small table
  * searched by key and language, as few as a label has. */
 #include "config/lang_text.h"
+#include "state/view.h"
 #include "util/log.h"
 
 #include <ctype.h>
@@ -156,6 +157,23 @@ char *lang_stop_text(const char *stops, int index)
 	return len ? strndup(p, len) : NULL;
 }
 
+/* A translated [frame] stops: as many texts as stops at most, each as
+ * long as a stop's own may be. */
+static bool stop_texts_fit(const char *value)
+{
+	int count = 0;
+
+	for (const char *p = value; p; p = strchr(p, ';') ? strchr(p, ';') + 1 : NULL) {
+		char *t = lang_stop_text(p, 0);
+		size_t len = t ? strlen(t) : 0;
+
+		free(t);
+		if (len >= FRAME_STOP_TEXT || (++count > FRAME_STOPS && len))
+			return false;
+	}
+	return true;
+}
+
 int lang_text_read(struct lang_texts *t, const char *path, int line, const char *section,
 		   const char *key, const char *value)
 {
@@ -167,6 +185,12 @@ int lang_text_read(struct lang_texts *t, const char *path, int line, const char 
 		log_err("%s:%d: [%s] %s: only the texts a visitor reads take a [LANG]: [caption] "
 			"text[LANG] and [frame] stops[LANG]",
 			path, line, section, key);
+		return -1;
+	}
+	if (!strcmp(base, "stops") && !stop_texts_fit(value)) {
+		log_err("%s:%d: [%s] %s: a stop's text is longer than %d bytes, or there are more "
+			"than %d; expected \"TEXT\"; \"TEXT\" ..., a text a stop",
+			path, line, section, key, FRAME_STOP_TEXT - 1, FRAME_STOPS);
 		return -1;
 	}
 	ret = lang_texts_set(t, section, base, lang, value);

@@ -143,6 +143,63 @@ static int first_shown(const struct content_config *o, char codes[LANG_MAX][LANG
 	return 0;
 }
 
+/* All of a content's caption pictures together, at most: each language's
+ * caption and stops (a model's NAME.ini may set six languages of nine
+ * full-frame pictures each: 450 MiB at 1920x1080). */
+#define CAPTION_PICTURES_MAX (64 << 20)
+
+static size_t pictures_bytes(const struct content *s)
+{
+	size_t n = (size_t)s->caption.width * s->caption.height;
+
+	for (int i = 0; i < CAPTION_STOPS; i++)
+		n += (size_t)s->stop_caption[i].width * s->stop_caption[i].height;
+	for (int l = 0; l < LANG_MAX; l++) {
+		n += (size_t)s->lang_spare[l].caption.width * s->lang_spare[l].caption.height;
+		for (int i = 0; i < CAPTION_STOPS; i++)
+			n += (size_t)s->lang_spare[l].stop[i].width *
+			     s->lang_spare[l].stop[i].height;
+	}
+	return n * 4;
+}
+
+/* Language l's pictures into the shown slots, the shown ones into the
+ * old language's spare slot: a swap, nothing drawn. */
+static void swap_in(struct content *s, int l)
+{
+	struct content_lang *old = &s->lang_spare[s->lang_shown], *now = &s->lang_spare[l];
+
+	old->caption = s->caption;
+	memcpy(old->stop, s->stop_caption, sizeof(old->stop));
+	s->caption = now->caption;
+	memcpy(s->stop_caption, now->stop, sizeof(s->stop_caption));
+	memset(now, 0, sizeof(*now));
+	s->lang_shown = l;
+}
+
+/* The languages past the budget (of the count drawn) left out, the last
+ * first, never the first: next-language passes them by. Said once. */
+static void within_budget(struct content *s, int drawn)
+{
+	int had = drawn;
+
+	while (drawn > 1 && pictures_bytes(s) > CAPTION_PICTURES_MAX) {
+		int l = --drawn;
+
+		if (l == s->lang_shown)
+			swap_in(s, 0);
+		image_release(&s->lang_spare[l].caption);
+		for (int i = 0; i < CAPTION_STOPS; i++)
+			image_release(&s->lang_spare[l].stop[i]);
+	}
+	if (drawn == had)
+		return;
+	s->lang_count = drawn;
+	log_warn("%s: [caption] languages: only the first %d are shown; with the next, the "
+		 "captions' pictures would take more than %d MiB",
+		 s->model_path ? s->model_path : "the model", drawn, CAPTION_PICTURES_MAX >> 20);
+}
+
 int content_load_captions(struct content *s, const struct content_config *o, bool strict)
 {
 	char codes[LANG_MAX][LANG_CODE_MAX];
@@ -154,12 +211,14 @@ int content_load_captions(struct content *s, const struct content_config *o, boo
 	s->lang_count = n;
 	s->lang_shown = first_shown(o, codes, n);
 	s->caption_frame[0] = s->caption_frame[1] = 0; /* not laid out for a frame yet */
-	for (int l = 0; l < (n ? n : 1) && !ret; l++) {
+	for (int l = 0; l < (n ? n : 1) && !ret && s->lang_count >= l; l++) {
 		struct caption_config c = caption_in(o, codes, n, l);
 
 		ret = load_caption(s, o, &c, caption_slot(s, l), strict);
 		if (!ret)
 			ret = load_stops(s, o, codes, n, l, strict);
+		if (!ret && n)
+			within_budget(s, l + 1);
 	}
 	return ret;
 }
@@ -220,8 +279,10 @@ void content_fit_captions(struct content *s, const struct content_config *o, int
 	if (width <= 0 || height <= 0 ||
 	    (s->caption_frame[0] == frame[0] && s->caption_frame[1] == frame[1]))
 		return;
-	for (int l = 0; l < (n ? n : 1); l++)
+	for (int l = 0; l < (s->lang_count ? s->lang_count : 1); l++)
 		fit_language(s, o, codes, n, l, frame);
+	if (s->lang_count)
+		within_budget(s, s->lang_count);
 	s->caption_frame[0] = frame[0];
 	s->caption_frame[1] = frame[1];
 }
@@ -236,20 +297,6 @@ void content_release_captions(struct content *s)
 		for (int i = 0; i < CAPTION_STOPS; i++)
 			image_release(&s->lang_spare[l].stop[i]);
 	}
-}
-
-/* Language l's pictures into the shown slots, the shown ones into the
- * old language's spare slot: a swap, nothing drawn. */
-static void swap_in(struct content *s, int l)
-{
-	struct content_lang *old = &s->lang_spare[s->lang_shown], *now = &s->lang_spare[l];
-
-	old->caption = s->caption;
-	memcpy(old->stop, s->stop_caption, sizeof(old->stop));
-	s->caption = now->caption;
-	memcpy(s->stop_caption, now->stop, sizeof(s->stop_caption));
-	memset(now, 0, sizeof(*now));
-	s->lang_shown = l;
 }
 
 int content_show_language(struct content *s, struct renderer *r, int lang)
