@@ -5,8 +5,10 @@
 #include "scene/text/caption_font.h"
 #include "util/log.h"
 
+#include <stdbool.h>
 #include <stdio.h>
 #include <string.h>
+#include <strings.h>
 
 /* Characters named at most, per text. */
 #define SHOWN 8
@@ -61,13 +63,22 @@ static int check_one(const struct options *o, const char *where, const char *wha
 	return 1;
 }
 
+/* Whether lang is one of the n codes. */
+static bool listed(char codes[LANG_MAX][LANG_CODE_MAX], int n, const char *lang)
+{
+	for (int i = 0; i < n; i++)
+		if (!strcasecmp(codes[i], lang))
+			return true;
+	return false;
+}
+
 int check_texts(const struct options *o, const char *caption_at, const char *stops_at)
 {
 	const struct lang_texts *t = &o->content.texts;
 	const struct content_config *c = &o->content;
-	char first[LANG_MAX][LANG_CODE_MAX], err[128], what[64];
-	const char *lang =
-	    lang_list_parse(c->caption.languages, first, err, sizeof(err)) > 0 ? first[0] : NULL;
+	char first[LANG_MAX][LANG_CODE_MAX], err[128], what[96];
+	int n = lang_list_parse(c->caption.languages, first, err, sizeof(err));
+	const char *lang = n > 0 ? first[0] : NULL;
 	int bad = 0;
 
 	bad += check_one(o, caption_at, "[caption] text", lang, c->caption.text);
@@ -78,6 +89,10 @@ int check_texts(const struct options *o, const char *caption_at, const char *sto
 			 !strcmp(t->e[i].key, "caption.text") ? "text" : "stops", t->e[i].lang);
 		bad += check_one(o, t->e[i].origin ? t->e[i].origin : "the settings", what,
 				 t->e[i].lang, t->e[i].value);
+		if (!listed(first, n > 0 ? n : 0, t->e[i].lang))
+			log_warn("%s: %s: %s is not one of [caption] languages (%s): never shown",
+				 t->e[i].origin ? t->e[i].origin : "the settings", what,
+				 t->e[i].lang, n > 0 ? c->caption.languages : "none named");
 	}
 	return bad;
 }

@@ -175,6 +175,9 @@ case_ boxes-verdict 78 "boxes.ini: 2 texts would show empty boxes" "$dir/boxes.i
 w '[caption]\ntext[deutsch] = Vase\n' >"$dir/badlang.ini"
 case_ not-a-language-code 78 "badlang.ini:2: \[caption\] text\[deutsch\]: 'deutsch' is not a language code" \
 	"$dir/badlang.ini" $mc
+w '[caption]\nlanguages = en fr\ntext = Vase\ntext[de] = Vase\n' >"$dir/unlisted.ini"
+case_ language-not-listed 0 "unlisted.ini:4: \[caption\] text\[de\]: de is not one of \[caption\] languages (en fr): never shown" \
+	"$dir/unlisted.ini" $mc
 w '[scene]\nmodel[de] = x.glb\n' >"$dir/untranslatable.ini"
 case_ key-not-translatable 78 "untranslatable.ini:2: \[scene\] model\[de\]: only the texts a visitor reads" \
 	"$dir/untranslatable.ini" $mc
