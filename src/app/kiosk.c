@@ -549,6 +549,7 @@ static int loop_once(struct kiosk *k, int sig_fd)
 	kiosk_content_start_jobs(k);
 	next = earliest(next, kiosk_play_animation(k, now, awake(k)), CLOCK_NEVER);
 	kiosk_show_variant(k);
+	kiosk_show_language(k, now);
 	if (app_state(k->app)->dirty && awake(k) && !k->display->waiting && (ret = draw(k, now)))
 		return ret;
 	service_camera(k, 0);

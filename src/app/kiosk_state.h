@@ -12,6 +12,7 @@
 #include "state/app.h"
 #include "state/visits.h"
 #include "state/remote.h"
+#include "state/lang.h"
 #include "content/content.h"
 #include "app/kiosk_models.h"
 #include "app/reload.h"
@@ -35,6 +36,16 @@
 
 struct kiosk_anim; /* app/kiosk_anim.h */
 struct mqtt_link;  /* ops/mqtt.h */
+
+/* The language shown (src/app/kiosk_lang.c): what was last seen of the
+ * app state and the content. */
+struct kiosk_lang {
+	unsigned serial;       /* renderer_mesh_serial when set up */
+	int step;	       /* app_state lang_step seen */
+	double round;	       /* attract mode's tour, seconds a language */
+	bool picked;	       /* a visitor chose one (kept across models) */
+	struct lang_pick pick; /* state/lang.h */
+};
 
 /* The material variant shown (src/app/kiosk_variant.c): what was last
  * applied, to act on changes alone. */
@@ -146,6 +157,8 @@ struct kiosk {
 		struct remote_sync due; /* a follower's step to show at due.at_ms */
 		bool due_any;
 	} remote;
+	/* The language the texts are shown in (kiosk_lang.c). */
+	struct kiosk_lang lang;
 };
 
 /* A message with no payload to the app state (a frame shown, the display
@@ -166,6 +179,10 @@ uint64_t kiosk_play_animation(struct kiosk *k, uint64_t now, bool awake);
  * and next-variant ask for, shown by the renderer (the draw list's
  * materials changed: no upload); a frame asked for when it changed. */
 void kiosk_show_variant(struct kiosk *k);
+/* src/app/kiosk_lang.c: the language next-language, attract mode and
+ * idle_seconds ask for, its pictures given to the renderer; a frame
+ * asked for when it changed. */
+void kiosk_show_language(struct kiosk *k, uint64_t now);
 /* src/app/kiosk_content.c: the content worker's jobs (reload, matcap,
  * the matcap folder). */
 int kiosk_content_start(struct kiosk *k);

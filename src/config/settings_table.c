@@ -363,8 +363,10 @@ const struct option_def option_defs[OPTION_DEFS] = {
      3600, 0, NULL, "S", "attract mode plays the stops in turn, each this long; 0: it turns"},
     {"caption", 0, OPTIONS_CAPTION, "text", K_STRING, AT(content.caption.text), 0, 0, 0, NULL,
      "TEXT",
-     "a caption over the model, UTF-8 (any script; \\n breaks the line); auto: the model's "
-     "name (its glTF title or scene name, else its file's); default: none"},
+     "a caption over the model, UTF-8: wrapped between words to the frame's width (\\n breaks "
+     "the line); a character the font lacks is drawn from an installed font that has it "
+     "(--check-config names those none has); text[de] = gives it in a language; auto: the "
+     "model's name (its glTF title or scene name, else its file's); default: none"},
     {"caption-font", 0, OPTIONS_CAPTION, "font", K_STRING, AT(content.caption.font), 0, 0, 0, NULL,
      "FILE", "a TrueType/OpenType font (default: DejaVu Sans, fonts-dejavu-core)"},
     {"caption-size", 0, OPTIONS_CAPTION, "size", K_DOUBLE, AT(content.caption.size), 6, 400, 0,
@@ -412,6 +414,14 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "with the wall-clock time, followers show the same from then; off, leader or follower"},
     {"mqtt-group", 0, OPTIONS_MQTT, "group", K_STRING, AT(mqtt.group), 0, 0, 0, NULL, "TOPIC",
      "the topic a leader and its followers share (default: kiosk/group)"},
+    {"caption-languages", 0, OPTIONS_CAPTION, "languages", K_STRING, AT(content.caption.languages),
+     0, 0, 0, NULL, "CODES",
+     "the languages of the texts, in the order shown (e.g. en de fr): KEY[LANG] = gives a text "
+     "in one (text[de] =, [frame] stops[de] = \"A\"; \"B\"), the plain KEY = is the first's "
+     "and stands in for a text missing in another; next-language switches, attract mode shows "
+     "each in turn, the first comes back after idle_seconds"},
+    {"lang", 0, OPTION_CLI, NULL, K_STRING, AT(content.lang), 0, 0, 0, NULL, "CODE",
+     "show the texts in this language of [caption] languages (with --output)"},
 };
 
 const char *backend_name(enum backend_kind kind)

@@ -2,6 +2,7 @@
  * A problem is one line: where the setting came from (file:line), the
  * setting, its value and the loader's own reason. */
 #include "ops/check.h"
+#include "ops/check_text.h"
 #include "config/model_settings.h"
 #include "content/content.h"
 #include "content/model_list.h"
@@ -27,6 +28,7 @@ struct check {
 	int bad_clips;	  /* animations named that a model lacks */
 	int bad_variants; /* material variants named that a model lacks */
 	int bad_mqtt;	  /* [mqtt] broker or topic the client would refuse */
+	int bad_texts;	  /* texts with characters no installed font has */
 };
 
 int check_model_settings(const struct content_config *cfg, FILE *out, bool stick)
@@ -426,6 +428,15 @@ static void list_values(const struct check *c)
 	}
 }
 
+static int check_texts_at(struct check *c)
+{
+	char caption_at[512], stops_at[512];
+
+	where(c->o, def_of("caption", "text"), caption_at, sizeof(caption_at));
+	where(c->o, def_of("frame", "stops"), stops_at, sizeof(stops_at));
+	return check_texts(c->o, caption_at, stops_at);
+}
+
 static void list_files(struct check *c)
 {
 	const char *const *files;
@@ -476,6 +487,7 @@ int check_config_run(const struct options *o, FILE *out)
 			name, c.bad_mqtt, c.bad_mqtt == 1 ? "" : "s");
 		return CHECK_BAD_SETTINGS;
 	}
+	c.bad_texts = check_texts_at(&c);
 	if (c.bad_settings) {
 		log_err("%s: %d model%s own settings file%s errors (above)", name, c.bad_settings,
 			c.bad_settings == 1 ? "'s" : "s'", c.bad_settings == 1 ? " has" : "s have");
@@ -493,6 +505,11 @@ int check_config_run(const struct options *o, FILE *out)
 			"would show its default materials, or at a stop keep the ones shown",
 			name, c.bad_variants, c.bad_variants == 1 ? "" : "s",
 			c.bad_variants == 1 ? "is" : "are", c.bad_variants == 1 ? "" : "s");
+		return CHECK_BAD_SETTINGS;
+	}
+	if (c.bad_texts) {
+		log_err("%s: %d text%s would show empty boxes (above)", name, c.bad_texts,
+			c.bad_texts == 1 ? "" : "s");
 		return CHECK_BAD_SETTINGS;
 	}
 	if (c.bad_files) {
