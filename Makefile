@@ -74,8 +74,8 @@ SRC_APP     := app/kiosk_models app/kiosk app/kiosk_anim app/kiosk_variant app/k
 SRC_OPS     := ops/check ops/import ops/import_copy ops/import_ini ops/metrics ops/screen ops/service ops/status
 SRC_CONTENT := content/content content/load_guard content/content_cache content/content_look content/content_view content/content_caption content/content_play content/content_deform content/matcap_set content/matcap_job content/model_list \
 	       content/model_loader content/worker
-SRC_CONFIG  := config/options config/options_file config/model_settings config/settings config/settings_table config/settings_origin
-SRC_STATE   := state/app state/view state/power state/schedule
+SRC_CONFIG  := config/options config/options_file config/model_settings config/settings config/settings_table config/settings_origin config/hotspot_settings
+SRC_STATE   := state/app state/view state/power state/schedule state/hotspot
 SRC_DISPLAY := display/backlight display/cec display/cec_link display/display display/display_egl display/display_kms display/kms_scale \
 	       display/display_osmesa \
 	       display/drm display/drm_atomic display/drm_legacy display/egl_util display/hotplug \

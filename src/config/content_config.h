@@ -7,6 +7,7 @@
 #include "render/shading.h"
 #include "scene/text/caption.h"
 #include "scene/mesh/material.h"
+#include "state/hotspot.h"
 #include "state/view.h"
 
 #include <stdbool.h>
@@ -43,6 +44,9 @@ struct content_config {
 	struct material_config material;
 	struct frame_config frame;     /* [frame]: orientation, start view, limits, stops */
 	struct caption_config caption; /* [caption] */
+	/* [hotspot.NAME] sections: kiosk.ini's, then the model's own over
+	 * them (config/hotspot_settings.h); fixed arrays, copied whole. */
+	struct hotspot_set hotspots;
 	/* Live playback: anim_live is set for the live kiosk (not a
 	 * setting); [scene] animation_fps (0: the display's rate) and
 	 * animation_pause_after (seconds without input; 0: never). */

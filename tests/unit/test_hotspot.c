@@ -1,0 +1,168 @@
+/* Hotspots' pure decisions (state/hotspot.c): the words a value is read
+ * from and the errors for bad ones, which hotspot comes next, the yaw and
+ * pitch that bring a point to face the visitor (checked by turning the
+ * point with the view's own quaternions, as content_view composes them),
+ * the fade at the silhouette and a label kept on screen. */
+#include "state/hotspot.h"
+#include "util/math3d.h"
+
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+#include <cmocka.h>
+
+static void test_vectors_and_errors(void **state)
+{
+	double v[3];
+	char err[160] = "";
+
+	(void)state;
+	assert_int_equal(hotspot_parse_vec3(" 0.1 -2 3e-1 ", v, err, sizeof(err)), 0);
+	assert_true(fabs(v[0] - 0.1) < 1e-12 && v[1] == -2 && fabs(v[2] - 0.3) < 1e-12);
+	assert_int_equal(hotspot_parse_vec3("1 2", v, err, sizeof(err)), -1);
+	assert_non_null(strstr(err, "three numbers X Y Z"));
+	assert_int_equal(hotspot_parse_vec3("1 2 3 4", v, err, sizeof(err)), -1);
+	assert_int_equal(hotspot_parse_vec3("1 2 nan", v, err, sizeof(err)), -1);
+	assert_int_equal(hotspot_parse_vec3("a b c", v, err, sizeof(err)), -1);
+	assert_int_equal(hotspot_parse_normal("0 0 2", v, err, sizeof(err)), 0);
+	assert_true(v[2] == 1 && v[0] == 0);
+	assert_int_equal(hotspot_parse_normal("0 0 0", v, err, sizeof(err)), -1);
+	assert_non_null(strstr(err, "not 0 0 0"));
+}
+
+static void test_look_and_colour(void **state)
+{
+	enum hotspot_look look;
+	float c[4];
+	char err[160];
+
+	(void)state;
+	assert_int_equal(hotspot_parse_look("badge", &look, err, sizeof(err)), 0);
+	assert_int_equal(look, HOTSPOT_BADGE);
+	assert_int_equal(hotspot_parse_look("dot", &look, err, sizeof(err)), 0);
+	assert_int_equal(look, HOTSPOT_DOT);
+	assert_int_equal(hotspot_parse_look("star", &look, err, sizeof(err)), -1);
+	assert_non_null(strstr(err, "dot or badge"));
+	assert_int_equal(hotspot_parse_color("#ff8000", c, err, sizeof(err)), 0);
+	assert_true(c[0] == 1 && fabsf(c[1] - 128 / 255.0f) < 1e-6f && c[2] == 0 && c[3] == 1);
+	assert_int_equal(hotspot_parse_color("#FF800080", c, err, sizeof(err)), 0);
+	assert_true(fabsf(c[3] - 128 / 255.0f) < 1e-6f);
+	assert_int_equal(hotspot_parse_color("ff8000", c, err, sizeof(err)), -1);
+	assert_non_null(strstr(err, "#rrggbb"));
+	assert_int_equal(hotspot_parse_color("#ff80", c, err, sizeof(err)), -1);
+	assert_int_equal(hotspot_parse_color("#gg0000", c, err, sizeof(err)), -1);
+}
+
+static void test_find_and_next(void **state)
+{
+	struct hotspot_set s = {0};
+
+	(void)state;
+	assert_int_equal(hotspot_next(&s, -1), -1);
+	hotspot_init(&s.items[0], "signature", 3);
+	hotspot_init(&s.items[1], "valve", 9);
+	hotspot_init(&s.items[2], "foot", 14);
+	s.count = 3;
+	assert_int_equal(hotspot_find(&s, "valve"), 1);
+	assert_int_equal(hotspot_find(&s, "lid"), -1);
+	assert_int_equal(hotspot_next(&s, -1), 0);
+	assert_int_equal(hotspot_next(&s, 0), 1);
+	assert_int_equal(hotspot_next(&s, 2), 0); /* wraps */
+	assert_string_equal(hotspot_text(&s.items[0], NULL), "");
+	strcpy(s.items[0].text, "The painter's signature");
+	assert_string_equal(hotspot_text(&s.items[0], "de"), "The painter's signature");
+}
+
+/* dir turned as the view turns the model: pitch about x after yaw about
+ * y (content_view), through the renderer's own matrix maker. */
+static void turned(const double dir[3], double yaw, double pitch, double out[3])
+{
+	struct quat q =
+	    quat_multiply(quat_from_axis_angle(1, 0, 0, pitch), quat_from_axis_angle(0, 1, 0, yaw));
+	float m[16];
+
+	mat4_from_quat(m, q);
+	for (int r = 0; r < 3; r++)
+		out[r] = m[r] * dir[0] + m[4 + r] * dir[1] + m[8 + r] * dir[2];
+}
+
+static void test_facing(void **state)
+{
+	static const double dirs[][3] = {{1, 0, 0},	   {-1, 0, 0},	      {0, 0, -1},
+					 {0.3, 0.8, -0.5}, {-0.2, -0.9, 0.1}, {0, 1, 0}};
+
+	(void)state;
+	for (size_t i = 0; i < sizeof(dirs) / sizeof(dirs[0]); i++) {
+		double yaw, pitch, out[3], len = sqrt(vec3_dot(dirs[i], dirs[i]));
+
+		hotspot_facing(dirs[i], &yaw, &pitch);
+		turned(dirs[i], yaw, pitch, out);
+		/* Straight at the visitor: +z, the same length. */
+		assert_true(fabs(out[0]) < 1e-6);
+		assert_true(fabs(out[1]) < 1e-6);
+		assert_true(fabs(out[2] - len) < 1e-6);
+	}
+	/* A point already in front needs no turn; one on the right (+x) turns
+	 * by a quarter to the left (negative yaw). */
+	{
+		double yaw, pitch;
+
+		hotspot_facing((const double[3]){0, 0, 1}, &yaw, &pitch);
+		assert_true(fabs(yaw) < 1e-12 && fabs(pitch) < 1e-12);
+		hotspot_facing((const double[3]){1, 0, 0}, &yaw, &pitch);
+		assert_true(fabs(yaw + M_PI / 2) < 1e-12);
+		hotspot_facing((const double[3]){0, 0, 0}, &yaw, &pitch);
+		assert_true(yaw == 0 && pitch == 0);
+	}
+}
+
+static void test_fade(void **state)
+{
+	const double eye[3] = {0, 0, 1};
+	double edge[3] = {1, 0, 0}, slant[3] = {sin(1.4), 0, cos(1.4)}; /* 80 degrees */
+
+	(void)state;
+	assert_true(hotspot_fade((const double[3]){0, 0, 1}, eye) == 1);
+	assert_true(hotspot_fade((const double[3]){0, 0, -1}, eye) == 0);
+	assert_true(hotspot_fade(edge, eye) == 0);
+	assert_true(hotspot_fade(slant, eye) > 0 && hotspot_fade(slant, eye) < 1);
+}
+
+static void test_label_stays_on_screen(void **state)
+{
+	int at[2];
+
+	(void)state;
+	/* Room on the right: beside it, centred on it. */
+	hotspot_label_place(100, 200, 10, 120, 30, 640, 480, 8, at);
+	assert_int_equal(at[0], 100 + 10 + 8);
+	assert_int_equal(at[1], 200 - 15);
+	/* At the right edge: on the left. */
+	hotspot_label_place(600, 200, 10, 120, 30, 640, 480, 8, at);
+	assert_int_equal(at[0], 600 - 18 - 120);
+	/* At the top and bottom: moved in. */
+	hotspot_label_place(300, 2, 10, 120, 30, 640, 480, 8, at);
+	assert_int_equal(at[1], 8);
+	hotspot_label_place(300, 479, 10, 120, 30, 640, 480, 8, at);
+	assert_int_equal(at[1], 480 - 30 - 8);
+	/* Wider than the screen: its start on it. */
+	hotspot_label_place(300, 200, 10, 900, 30, 640, 480, 8, at);
+	assert_int_equal(at[0], 8);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+	    cmocka_unit_test(test_vectors_and_errors),
+	    cmocka_unit_test(test_look_and_colour),
+	    cmocka_unit_test(test_find_and_next),
+	    cmocka_unit_test(test_facing),
+	    cmocka_unit_test(test_fade),
+	    cmocka_unit_test(test_label_stays_on_screen),
+	};
+
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
