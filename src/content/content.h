@@ -53,6 +53,10 @@ struct content_look {
  * with it in place of the one on screen. */
 enum { CONTENT_OWN_MATCAP = 1u << 0, CONTENT_OWN_BACKGROUND = 1u << 1 };
 
+/* The hotspots a content draws: every one a model's settings may hold. */
+#define CONTENT_HOTSPOTS RENDER_HOTSPOTS
+_Static_assert(HOTSPOTS <= CONTENT_HOTSPOTS, "every hotspot drawn");
+
 struct content {
 	char *model_path; /* the file the mesh came from; NULL: the built-in knot */
 	/* The mesh as loaded and prepared; once prepared for the cache
@@ -78,6 +82,9 @@ struct content {
 	 * style; empty: a stop without text (the caption is shown). */
 	struct image stop_caption[CAPTION_STOPS];
 	struct caption_config caption_place; /* its position, padding, drift; no strings */
+	/* Its hotspots as the renderer draws them (content_hotspot.c). */
+	struct render_hotspot hotspots[CONTENT_HOTSPOTS];
+	int hotspot_count;
 	/* The model's settings: the caller's with its NAME.ini over them
 	 * (config/model_settings.h); NULL: the caller's (the built-in knot). */
 	struct content_config *own;
@@ -193,6 +200,9 @@ void content_release_captions(struct content *s);
 void content_fit_captions(struct content *s, const struct content_config *c, int width, int height);
 /* The picture shown at stop (the app state's; -1: none): the stop's, else
  * the caption (empty: nothing). */
+/* s's hotspots from c's [hotspot.NAME] sections, in the mesh's unit
+ * sphere (content_hotspot.c); on the worker, after the mesh. */
+void content_load_hotspots(struct content *s, const struct content_config *c);
 const struct image *content_caption(const struct content *s, int stop);
 /* The settings s's model is shown with: its own, else c. */
 const struct content_config *content_settings(const struct content *s,

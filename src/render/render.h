@@ -5,6 +5,7 @@
 #include "render/background.h"
 #include "scene/text/caption.h"
 #include "render/gl.h"
+#include "render/hotspot_gl.h"
 #include "util/image.h"
 #include "scene/mesh/material.h"
 #include "util/math3d.h"
@@ -108,6 +109,18 @@ int renderer_set_stop_captions(struct renderer *r, const struct image *imgs, int
  * state's stop; -1: none) where it has one, else the caption. Picking is
  * all the loop thread does: every picture is uploaded already. */
 void renderer_show_stop(struct renderer *r, int stop);
+
+/* The hotspots drawn over the model from now on (count 0: none), their
+ * points in the mesh's unit sphere. Returns 0, or -EINVAL after logging
+ * (none drawn). */
+int renderer_set_hotspots(struct renderer *r, const struct render_hotspot *hs, int count);
+/* Their points from now on (xyz each, in order): a node's that a clip
+ * moves, posed for the frame. */
+void renderer_set_hotspot_points(struct renderer *r, const float *points, int count);
+/* Where hotspot i is drawn on a width x height frame of view v; false:
+ * there is no hotspot i. */
+bool renderer_hotspot_at(const struct renderer *r, const struct view *v, int width, int height,
+			 int i, struct hotspot_place *out);
 
 /* KHR_materials_variants: draw the mesh's ranges with variant `variant`'s
  * materials (-1, or one the mesh lacks: the file's default ones). Every

@@ -120,8 +120,17 @@ struct renderer {
 	 * (-1: the file's default materials). */
 	struct render_variants looks, looks_next;
 	int look;
+	/* Hotspots (render_hotspot.c): drawn after the model, against its
+	 * depth; the program built with the first set. */
+	struct hotspot_gl *hotspot_gl;
+	struct render_hotspot hotspots[RENDER_HOTSPOTS];
+	int hotspot_count;
 };
 
+/* render_hotspot.c: the hotspots drawn over the model just drawn (its
+ * depth bound); what they hold, given back (renderer_free). */
+void render_draw_hotspots(struct renderer *r, const struct view *v, int width, int height);
+void render_hotspots_free(struct renderer *r);
 /* render.c: every program dropped (built again on use). */
 void render_drop_programs(struct renderer *r);
 /* render_skin.c: what the skinning holds, given back (renderer_free); the

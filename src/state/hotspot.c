@@ -132,37 +132,3 @@ void hotspot_facing(const double dir[3], double *yaw, double *pitch)
 	*yaw = flat > 0 ? atan2(-dir[0], dir[2]) : 0;
 	*pitch = flat > 0 || dir[1] != 0 ? atan2(dir[1], flat) : 0;
 }
-
-/* Edge-on below cos = 0.1 (84 degrees), whole above 0.35 (70 degrees):
- * a badge at the rim reads as leaving rather than blinking out. */
-double hotspot_fade(const double normal[3], const double to_eye[3])
-{
-	double c = normal[0] * to_eye[0] + normal[1] * to_eye[1] + normal[2] * to_eye[2];
-	double t = (c - 0.1) / (0.35 - 0.1);
-
-	if (t <= 0)
-		return 0;
-	if (t >= 1)
-		return 1;
-	return t * t * (3 - 2 * t);
-}
-
-static int clamp_int(int v, int lo, int hi)
-{
-	return v < lo ? lo : v > hi ? hi : v;
-}
-
-void hotspot_label_place(double x, double y, double r, int w, int h, int width, int height,
-			 int margin, int out[2])
-{
-	int gap = (int)ceil(r) + margin;
-	int right = (int)lround(x) + gap, left = (int)lround(x) - gap - w;
-
-	out[0] = right + w + margin <= width || left < margin ? right : left;
-	out[1] = (int)lround(y) - h / 2;
-	/* A label wider than the screen keeps its start on it. */
-	out[0] =
-	    clamp_int(out[0], margin, width - w - margin > margin ? width - w - margin : margin);
-	out[1] =
-	    clamp_int(out[1], margin, height - h - margin > margin ? height - h - margin : margin);
-}

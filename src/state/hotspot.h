@@ -1,8 +1,8 @@
 /* Hotspots: points on a model a curator names ([hotspot.NAME] in the
  * model's NAME.ini or in kiosk.ini) with a text and a look. Plain data and
  * pure decisions: a value's words, which hotspot comes next, the yaw and
- * pitch that turn a point to the visitor, the fade at the silhouette and
- * where a label goes so it stays on screen. The settings reader
+ * pitch that turn a point to the visitor (the fade at the silhouette and
+ * the label's place are the renderer's: render/hotspot_gl.h). The settings reader
  * (config/hotspot_settings.c) fills a set; the tour, the renderer and the
  * tests ask these functions the same questions. */
 #ifndef MK_HOTSPOT_H
@@ -66,17 +66,5 @@ int hotspot_next(const struct hotspot_set *s, int current);
  * where given, else from the centre to the point) to face the visitor
  * (+z, towards the camera). A zero direction gives 0, 0. */
 void hotspot_facing(const double dir[3], double *yaw, double *pitch);
-
-/* How much of a badge shows for a unit normal in the camera's frame and
- * the unit direction from the point to the eye: 1 facing, fading to 0 as
- * the surface turns edge-on (the silhouette), 0 behind. */
-double hotspot_fade(const double normal[3], const double to_eye[3]);
-
-/* A label of w x h pixels beside a badge at (x, y) of radius r on a
- * width x height screen with margin pixels kept free at its edges: to the
- * right, else to the left, moved in to stay on screen. out: its top-left
- * corner. */
-void hotspot_label_place(double x, double y, double r, int w, int h, int width, int height,
-			 int margin, int out[2]);
 
 #endif

@@ -2,7 +2,8 @@
  * from and the errors for bad ones, which hotspot comes next, the yaw and
  * pitch that bring a point to face the visitor (checked by turning the
  * point with the view's own quaternions, as content_view composes them),
- * the fade at the silhouette and a label kept on screen. */
+ * and the renderer's fade at the silhouette and label kept on screen. */
+#include "render/hotspot_gl.h"
 #include "state/hotspot.h"
 #include "util/math3d.h"
 
