@@ -24,7 +24,7 @@ UNIT_TESTS  += caption import gltf_depth load_guard
 UNIT_TESTS  += ini stranger_settings normals
 UNIT_TESTS  += textures
 UNIT_TESTS  += variants vertex_alpha
-UNIT_TESTS  += hotspot hotspot_settings
+UNIT_TESTS  += hotspot hotspot_settings hotspot_place
 TOOLS_DIR   := $(BUILD)/tools
 ASAN_BUILD  := $(BUILD)/asan
 # MK_TEST_HOOKS: the test hooks (MK_TEST_PREPARE_DELAY_MS, src/app/reload.c)
