@@ -303,7 +303,7 @@ static int configure(struct kiosk *k, uint64_t now_ns)
 	const struct content_config *shown = content_settings(k->content, &o->content);
 
 	k->view = content_view(shown);
-	content_app_frame(shown, &cfg.frame, &cfg.rest);
+	content_app_frame_at(k->content, shown, &cfg.frame, &cfg.rest);
 	cfg.mode = shown->mode;
 	if (k->app)
 		app_apply(k->app, &m);

@@ -102,6 +102,8 @@ static int render_frames(const struct options *o, const struct content *s, struc
 	}
 	/* [frame] zoom: the start view's, over the fit's. */
 	v.zoom = (float)(s->zoom * (c->frame.zoom > 0 ? c->frame.zoom : 1.0));
+	if (o->hotspot > 0)
+		ret = content_show_hotspot(s, c, o->hotspot, r, &v);
 	for (int i = 0; i < o->frames && !ret; i++) {
 		double t = now_ms();
 

@@ -372,6 +372,9 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "on: the caption moves a few pixels over hours against burn-in; off: it stays"},
     {"logo", 0, OPTIONS_CAPTION, "logo", K_STRING, AT(content.caption.logo), 0, 0, 0, NULL, "FILE",
      "a PNG/JPEG shown at its own size in the caption's box, left of the text"},
+    {"hotspot", 0, OPTION_CLI, NULL, K_INT, AT(hotspot), 1, 8, 0, NULL, "N",
+     "draw offscreen the view of the model's hotspot N (1: its first [hotspot.NAME]) with its "
+     "text, as a stop at it shows it (with --output)"},
 };
 
 const char *backend_name(enum backend_kind kind)

@@ -263,6 +263,8 @@ int content_load(struct content *s, const struct content_config *o, bool strict)
 		ret = content_load_captions(s, content_settings(s, o), strict);
 	if (!ret)
 		content_load_hotspots(s, content_settings(s, o));
+	if (!ret)
+		content_load_hotspot_captions(s, content_settings(s, o));
 	if (ret)
 		content_release(s);
 	return ret;
@@ -289,6 +291,8 @@ int content_load_model(struct content *s, const struct content_config *o, const 
 		content_fit_captions(s, content_settings(s, o), width, height);
 	if (!ret)
 		content_load_hotspots(s, content_settings(s, o));
+	if (!ret)
+		content_load_hotspot_captions(s, content_settings(s, o));
 	if (ret)
 		content_release(s);
 	return ret;

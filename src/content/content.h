@@ -56,6 +56,9 @@ enum { CONTENT_OWN_MATCAP = 1u << 0, CONTENT_OWN_BACKGROUND = 1u << 1 };
 /* The hotspots a content draws: every one a model's settings may hold. */
 #define CONTENT_HOTSPOTS RENDER_HOTSPOTS
 _Static_assert(HOTSPOTS <= CONTENT_HOTSPOTS, "every hotspot drawn");
+/* Hotspot i's text picture is stop_caption[CONTENT_HOTSPOT_CAPTION + i]. */
+#define CONTENT_HOTSPOT_CAPTION FRAME_STOPS
+_Static_assert(FRAME_STOPS + HOTSPOTS <= CAPTION_STOPS, "a picture for every hotspot");
 
 struct content {
 	char *model_path; /* the file the mesh came from; NULL: the built-in knot */
@@ -84,6 +87,7 @@ struct content {
 	struct caption_config caption_place; /* its position, padding, drift; no strings */
 	/* Its hotspots as the renderer draws them (content_hotspot.c). */
 	struct render_hotspot hotspots[CONTENT_HOTSPOTS];
+	int hotspot_source[CONTENT_HOTSPOTS]; /* each one's index in the settings' set */
 	int hotspot_count;
 	/* The model's settings: the caller's with its NAME.ini over them
 	 * (config/model_settings.h); NULL: the caller's (the built-in knot). */
@@ -203,6 +207,26 @@ void content_fit_captions(struct content *s, const struct content_config *c, int
 /* s's hotspots from c's [hotspot.NAME] sections, in the mesh's unit
  * sphere (content_hotspot.c); on the worker, after the mesh. */
 void content_load_hotspots(struct content *s, const struct content_config *c);
+/* Each hotspot's text as the caption would show it, drawn here on the
+ * worker (stop_caption[CONTENT_HOTSPOT_CAPTION + i]). */
+void content_load_hotspot_captions(struct content *s, const struct content_config *c);
+/* The offscreen still of the settings' hotspot number (1, 2, ...): v
+ * turned to face it (rest: the model's base turn), its text shown
+ * (renderer_show_stop). -EINVAL after logging when s has no such hotspot. */
+int content_show_hotspot(const struct content *s, const struct content_config *c, int number,
+			 struct renderer *r, struct view *v);
+/* Which of s's drawn hotspots is the settings' hotspot index; -1: none
+ * (a node's, not drawn). */
+int content_hotspot_drawn(const struct content *s, int index);
+/* The app's yaw and pitch (radians) that turn the settings' hotspot
+ * index to face the visitor, the model's base turn rest; false: s does
+ * not draw it. */
+bool content_hotspot_facing(const struct content *s, int index, struct quat rest, double *yaw,
+			    double *pitch);
+/* content_app_frame, and each stop that names a hotspot turned to face
+ * it (its yaw and pitch replaced): the frame the app state is given. */
+void content_app_frame_at(const struct content *s, const struct content_config *c,
+			  struct app_frame *f, struct quat *rest);
 const struct image *content_caption(const struct content *s, int stop);
 /* The settings s's model is shown with: its own, else c. */
 const struct content_config *content_settings(const struct content *s,

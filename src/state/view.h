@@ -49,6 +49,10 @@ struct frame_stop {
 	/* The KHR_materials_variants variant shown there (its name); "": the
 	 * one shown stays. */
 	char variant[FRAME_STOP_CLIP];
+	/* The hotspot turned to the visitor there ([hotspot.NAME]'s NAME):
+	 * its facing view replaces the stop's yaw and pitch, its text an
+	 * empty stop text (content_frame); "": none. */
+	char hotspot[FRAME_STOP_CLIP];
 };
 
 /* In radians, as the app state uses it. */
@@ -67,9 +71,9 @@ void frame_config_defaults(struct frame_config *f);
 /* The model's turn before everything (up, then orientation). 0, or -1
  * with err naming what is wrong. */
 int frame_base(const struct frame_config *f, struct quat *out, char *err, size_t n);
-/* Parse 'yaw pitch zoom "text" animation=CLIP variant=NAME; ...'
- * (degrees; the text, the clip and the variant optional, the last two in
- * either order). The count, or -1 with err. */
+/* Parse 'yaw pitch zoom "text" animation=CLIP variant=NAME hotspot=NAME;
+ * ...' (degrees; the text and the last three optional, those in any
+ * order). The count, or -1 with err. */
 int frame_stops_parse(const char *text, struct frame_stop *out, int max, char *err, size_t n);
 /* f in radians for the app, with the start yaw and pitch (degrees) that
  * apply when f sets none. -1 with err when its stops do not parse or a
