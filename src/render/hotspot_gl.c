@@ -127,11 +127,11 @@ void hotspot_project(const struct render_hotspot *h, const float modelview[16],
 
 double hotspot_radius(bool badge, int short_side)
 {
-	/* 8 and 12 pixels at 480: a fingertip's target on a 10" panel is
-	 * larger, and a tap is hit-tested with a margin. */
-	double r = (badge ? 12.0 : 8.0) * short_side / 480.0;
+	/* 8 and 12 pixels at 480; never so small that a badge's digit (3x5
+	 * cells in two thirds of it) cannot be read. */
+	double r = (badge ? 12.0 : 8.0) * short_side / 480.0, least = badge ? 9 : 5;
 
-	return r < 5 ? 5 : r;
+	return r < least ? least : r;
 }
 
 static int clamp_int(int v, int lo, int hi)
