@@ -3,6 +3,7 @@
  * pitch that bring a point to face the visitor (checked by turning the
  * point with the view's own quaternions, as content_view composes them),
  * and the renderer's fade at the silhouette and label kept on screen. */
+#include "content/content.h"
 #include "render/hotspot_gl.h"
 #include "state/hotspot.h"
 #include "util/math3d.h"
@@ -12,6 +13,7 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 #include <cmocka.h>
 
@@ -154,6 +156,65 @@ static void test_label_stays_on_screen(void **state)
 	assert_int_equal(at[0], 8);
 }
 
+/* [frame] stops' hotspot=NAME, in any order with the other words. */
+static void stop_words(void **state)
+{
+	struct frame_stop st[FRAME_STOPS];
+	char err[300] = "";
+
+	(void)state;
+	assert_int_equal(frame_stops_parse("0 0 1 \"Here\" hotspot=rim variant=blue; 90 0 2 "
+					   "hotspot=foot animation=open",
+					   st, FRAME_STOPS, err, sizeof(err)),
+			 2);
+	assert_string_equal(st[0].hotspot, "rim");
+	assert_string_equal(st[0].variant, "blue");
+	assert_string_equal(st[0].text, "Here");
+	assert_string_equal(st[1].hotspot, "foot");
+	assert_string_equal(st[1].animation, "open");
+	assert_int_equal(frame_stops_parse("0 0 1 hotspot=", st, FRAME_STOPS, err, sizeof(err)),
+			 -1);
+	assert_non_null(strstr(err, "hotspot= names a hotspot of the model"));
+	assert_int_equal(
+	    frame_stops_parse("0 0 1 hotspot=a hotspot=b", st, FRAME_STOPS, err, sizeof(err)), -1);
+}
+
+/* A stop at a hotspot: the app is given the yaw and pitch that face it
+ * (the point is on the model's right, off its centre: the fit's centre
+ * counts) and, having no text, the hotspot's. */
+static void stop_faces_its_hotspot(void **state)
+{
+	struct content s;
+	struct content_config c = {0};
+	struct app_frame f;
+	struct quat rest;
+	struct hotspot *h = &c.hotspots.items[0];
+	double out[3], dir[3];
+
+	(void)state;
+	memset(&s, 0, sizeof(s));
+	frame_config_defaults(&c.frame);
+	c.frame.stops = strdup("0 0 1 hotspot=side; 10 20 1 \"Own\" hotspot=side");
+	/* The file's model about (5, 0, 0), 2 units across: fit (5,0,0) 0.5. */
+	s.mesh.fit[0] = 5, s.mesh.fit[3] = 0.5;
+	hotspot_init(h, "side", 1);
+	h->has_point = true;
+	h->point[0] = 7, h->point[1] = 1, h->point[2] = 0; /* right and up of the centre */
+	strcpy(h->text, "The handle");
+	c.hotspots.count = 1;
+	content_load_hotspots(&s, &c);
+	assert_int_equal(s.hotspot_count, 1);
+	content_app_frame_at(&s, &c, &f, &rest);
+	assert_int_equal(f.stop_count, 2);
+	dir[0] = 1, dir[1] = 0.5, dir[2] = 0;
+	turned(dir, f.stops[0].yaw, f.stops[0].pitch, out);
+	assert_true(fabs(out[0]) < 1e-6 && fabs(out[1]) < 1e-6 && out[2] > 0);
+	assert_string_equal(f.stops[0].text, "The handle");
+	assert_string_equal(f.stops[1].text, "Own");
+	assert_true(fabs(f.stops[1].yaw - f.stops[0].yaw) < 1e-12);
+	free(c.frame.stops);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -163,6 +224,8 @@ int main(void)
 	    cmocka_unit_test(test_facing),
 	    cmocka_unit_test(test_fade),
 	    cmocka_unit_test(test_label_stays_on_screen),
+	    cmocka_unit_test(stop_words),
+	    cmocka_unit_test(stop_faces_its_hotspot),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);
