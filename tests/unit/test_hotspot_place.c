@@ -96,6 +96,40 @@ static int dot_centre(const struct image *f, double out[2])
 	return n;
 }
 
+/* The dot's drawn centre at yaw against the reference. */
+static void at_yaw(struct display *d, struct renderer *r, struct content *s, struct options *o,
+		   const double p[3], double yaw)
+{
+	double want[2], got[2];
+	struct image f;
+	struct view v;
+
+	o->content.yaw = yaw;
+	v = content_view(&o->content);
+	v.zoom = (float)s->zoom;
+	assert_true(s->zoom == 1);
+	renderer_draw(r, &v, W, H);
+	assert_int_equal(d->read_frame(d, &f), 0);
+	reference(p, yaw, want);
+	assert_true(dot_centre(&f, got) > 20);
+	image_release(&f);
+	print_message("yaw %g: drawn (%.2f, %.2f), reference (%.2f, %.2f)\n", yaw, got[0], got[1],
+		      want[0], want[1]);
+	if (fabs(got[0] - want[0]) > 2 || fabs(got[1] - want[1]) > 2)
+		fail_msg(
+		    "yaw %g: the dot is drawn at (%.2f, %.2f), the reference projects its point "
+		    "to (%.2f, %.2f)",
+		    yaw, got[0], got[1], want[0], want[1]);
+}
+
+static void load(struct content *s, struct options *o, struct renderer *r)
+{
+	assert_int_equal(content_load(s, &o->content, true), 0);
+	assert_int_equal(content_prepare(s, &o->content, W, H), 0);
+	assert_int_equal(content_upload(s, r), 0);
+	assert_int_equal(renderer_set_mode(r, o->content.mode, false), 0);
+}
+
 static void drawn_at_its_projection(void **state)
 {
 	static const double yaws[] = {0, 25, -30};
@@ -131,31 +165,14 @@ static void drawn_at_its_projection(void **state)
 	memcpy(h->point, p, sizeof(p));
 	h->color[0] = 0, h->color[1] = 1, h->color[2] = 0, h->color[3] = 1;
 	o.content.hotspots.count = 1;
-	assert_int_equal(content_load(&s, &o.content, true), 0);
-	assert_int_equal(content_prepare(&s, &o.content, W, H), 0);
-	assert_int_equal(content_upload(&s, r), 0);
-	assert_int_equal(renderer_set_mode(r, o.content.mode, false), 0);
-	for (size_t i = 0; i < sizeof(yaws) / sizeof(yaws[0]); i++) {
-		double want[2], got[2];
-		struct image f;
-		struct view v;
-
-		o.content.yaw = yaws[i];
-		v = content_view(&o.content);
-		v.zoom = (float)s.zoom;
-		assert_true(s.zoom == 1);
-		renderer_draw(r, &v, W, H);
-		assert_int_equal(d->read_frame(d, &f), 0);
-		reference(p, yaws[i], want);
-		assert_true(dot_centre(&f, got) > 20);
-		image_release(&f);
-		print_message("yaw %g: drawn (%.2f, %.2f), reference (%.2f, %.2f)\n", yaws[i],
-			      got[0], got[1], want[0], want[1]);
-		if (fabs(got[0] - want[0]) > 2 || fabs(got[1] - want[1]) > 2)
-			fail_msg("yaw %g: the dot is drawn at (%.2f, %.2f), the reference projects "
-				 "its point to (%.2f, %.2f)",
-				 yaws[i], got[0], got[1], want[0], want[1]);
-	}
+	load(&s, &o, r);
+	for (size_t i = 0; i < sizeof(yaws) / sizeof(yaws[0]); i++)
+		at_yaw(d, r, &s, &o, p, yaws[i]);
+	/* Again from the prepared-mesh cache: the fit is kept in its entry. */
+	content_release(&s);
+	load(&s, &o, r);
+	assert_non_null(s.cached);
+	at_yaw(d, r, &s, &o, p, yaws[1]);
 	/* Turned away: the model's own depth hides it. */
 	{
 		struct image f;
