@@ -47,10 +47,3 @@ void render_draw_hotspots(struct renderer *r, const struct view *v, int width, i
 	hotspot_gl_draw(r->hotspot_gl, r->hotspots, r->hotspot_count, mv, proj, v->ortho,
 			v->rotation, width, height);
 }
-
-void render_hotspots_free(struct renderer *r)
-{
-	hotspot_gl_free(r->hotspot_gl);
-	r->hotspot_gl = NULL;
-	r->hotspot_count = 0;
-}

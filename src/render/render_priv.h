@@ -128,9 +128,8 @@ struct renderer {
 };
 
 /* render_hotspot.c: the hotspots drawn over the model just drawn (its
- * depth bound); what they hold, given back (renderer_free). */
+ * depth bound). */
 void render_draw_hotspots(struct renderer *r, const struct view *v, int width, int height);
-void render_hotspots_free(struct renderer *r);
 /* render.c: every program dropped (built again on use). */
 void render_drop_programs(struct renderer *r);
 /* render_skin.c: what the skinning holds, given back (renderer_free); the
