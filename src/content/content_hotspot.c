@@ -112,6 +112,17 @@ void content_app_frame_at(const struct content *s, const struct content_config *
 		if (at >= 0)
 			content_hotspot_facing(s, at, *rest, &f->stops[i].yaw, &f->stops[i].pitch);
 	}
+	/* next-hotspot's views: each faces its hotspot at the start zoom (a
+	 * node's, not drawn, the start view), its text the hotspot's. */
+	f->hotspot_count = c->hotspots.count;
+	for (int i = 0; i < c->hotspots.count && i < HOTSPOTS; i++) {
+		struct frame_stop *v = &f->stops[FRAME_STOPS + i];
+
+		memset(v, 0, sizeof(*v));
+		v->yaw = f->yaw0, v->pitch = f->pitch0, v->zoom = f->zoom0;
+		content_hotspot_facing(s, i, *rest, &v->yaw, &v->pitch);
+		snprintf(v->text, sizeof(v->text), "%s", hotspot_text(&c->hotspots.items[i], NULL));
+	}
 }
 
 void content_load_hotspot_captions(struct content *s, const struct content_config *o)

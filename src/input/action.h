@@ -26,6 +26,7 @@ enum app_action {
 	ACTION_PLAY_PAUSE,     /* the model's animation stops where it is, or goes on */
 	ACTION_NEXT_ANIMATION, /* its next clip, crossfaded */
 	ACTION_NEXT_VARIANT,   /* its next KHR_materials_variants variant (then its default) */
+	ACTION_NEXT_HOTSPOT,   /* glide to face the model's next hotspot, its text shown */
 	ACTION_COUNT
 };
 

@@ -39,6 +39,7 @@ static const struct {
     {KEY_PLAYPAUSE, ACTION_PLAY_PAUSE},
     {KEY_A, ACTION_NEXT_ANIMATION},
     {KEY_V, ACTION_NEXT_VARIANT},
+    {KEY_H, ACTION_NEXT_HOTSPOT},
 };
 
 #define N_KEYS (sizeof(keys) / sizeof(keys[0]))

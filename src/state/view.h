@@ -6,6 +6,7 @@
 #ifndef MK_VIEW_H
 #define MK_VIEW_H
 
+#include "state/hotspot.h"
 #include "util/math3d.h"
 
 #include <stdbool.h>
@@ -63,7 +64,11 @@ struct app_frame {
 	double direction; /* +1: right, -1: left */
 	double sway;	  /* radians each way; 0: full turns */
 	int stop_count;
-	struct frame_stop stops[FRAME_STOPS];
+	/* stops[0 .. stop_count): [frame] stops; stops[FRAME_STOPS + i]: the
+	 * view that faces hotspot i (next-hotspot), hotspot_count of them,
+	 * filled by the content (content_app_frame_at). */
+	struct frame_stop stops[FRAME_STOPS + HOTSPOTS];
+	int hotspot_count;
 	double stop_seconds;
 };
 

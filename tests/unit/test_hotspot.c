@@ -5,6 +5,7 @@
  * and the renderer's fade at the silhouette and label kept on screen. */
 #include "content/content.h"
 #include "render/hotspot_gl.h"
+#include "state/app.h"
 #include "state/hotspot.h"
 #include "util/math3d.h"
 
@@ -215,6 +216,53 @@ static void stop_faces_its_hotspot(void **state)
 	free(c.frame.stops);
 }
 
+/* next-hotspot glides to each hotspot's view in turn (wrapping), shows
+ * its text, and next-stop from there starts at the first stop. */
+static void next_hotspot_steps(void **state)
+{
+	struct app_config cfg = {.turn_speed = M_PI / 2, .rest = {1, 0, 0, 0}};
+	struct app *a;
+	const struct app_state *st;
+
+	(void)state;
+	cfg.frame.zoom0 = 1;
+	cfg.frame.stop_count = 1;
+	cfg.frame.stops[0] = (struct frame_stop){.yaw = 0.5, .pitch = 0, .zoom = 1};
+	cfg.frame.hotspot_count = 2;
+	cfg.frame.stops[FRAME_STOPS] = (struct frame_stop){.yaw = 1.0, .pitch = 0.2, .zoom = 1};
+	strcpy(cfg.frame.stops[FRAME_STOPS].text, "The rim");
+	cfg.frame.stops[FRAME_STOPS + 1] = (struct frame_stop){.yaw = -1.0, .pitch = 0, .zoom = 1};
+	strcpy(cfg.frame.stops[FRAME_STOPS + 1].text, "The foot");
+	a = app_new(&cfg, 1, 0);
+	assert_non_null(a);
+	st = app_state(a);
+	app_apply(a, &(struct app_msg){
+			 .kind = APP_INPUT,
+			 .input = {.time_ns = 1, .action = ACTION_NEXT_HOTSPOT, .pressed = true}});
+	assert_int_equal(st->stop, FRAME_STOPS);
+	assert_string_equal(st->stop_text, "The rim");
+	app_advance(a, 10ull * 1000000000ull);
+	assert_true(fabs(st->yaw - 1.0) < 1e-6 && fabs(st->pitch - 0.2) < 1e-6);
+	app_apply(a, &(struct app_msg){.kind = APP_INPUT,
+				       .input = {.time_ns = 11ull * 1000000000ull,
+						 .action = ACTION_NEXT_HOTSPOT,
+						 .pressed = true}});
+	assert_int_equal(st->stop, FRAME_STOPS + 1);
+	assert_string_equal(st->stop_text, "The foot");
+	app_apply(a, &(struct app_msg){.kind = APP_INPUT,
+				       .input = {.time_ns = 12ull * 1000000000ull,
+						 .action = ACTION_NEXT_HOTSPOT,
+						 .pressed = true}});
+	assert_int_equal(st->stop, FRAME_STOPS); /* wraps */
+	app_apply(a, &(struct app_msg){.kind = APP_INPUT,
+				       .input = {.time_ns = 13ull * 1000000000ull,
+						 .action = ACTION_NEXT_STOP,
+						 .pressed = true}});
+	assert_int_equal(st->stop, 0);
+	assert_string_equal(app_action_names[ACTION_NEXT_HOTSPOT], "next-hotspot");
+	app_free(a);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -226,6 +274,7 @@ int main(void)
 	    cmocka_unit_test(test_label_stays_on_screen),
 	    cmocka_unit_test(stop_words),
 	    cmocka_unit_test(stop_faces_its_hotspot),
+	    cmocka_unit_test(next_hotspot_steps),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);
