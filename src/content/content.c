@@ -518,7 +518,7 @@ int content_upload_model(struct content *s, struct renderer *r)
 		ret = renderer_set_stop_captions(r, s->stop_caption, CAPTION_STOPS,
 						 &s->caption_place);
 	if (!ret)
-		ret = renderer_set_hotspots(r, s->hotspots, s->hotspot_count);
+		ret = renderer_set_hotspots(r, s->hotspots, s->hotspot_count, s->stop_hotspot);
 	/* The parse, the preparation and the upload freed far more than the
 	 * scene keeps; malloc holds freed heap for reuse, and a kiosk reuses
 	 * little: back to the system before the first frame. */

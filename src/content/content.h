@@ -89,6 +89,9 @@ struct content {
 	struct render_hotspot hotspots[CONTENT_HOTSPOTS];
 	int hotspot_source[CONTENT_HOTSPOTS]; /* each one's index in the settings' set */
 	int hotspot_count;
+	/* The drawn hotspot each stop's picture labels (-1: none): a stop's
+	 * hotspot=NAME, and next-hotspot's views after FRAME_STOPS. */
+	int stop_hotspot[CAPTION_STOPS];
 	/* The model's settings: the caller's with its NAME.ini over them
 	 * (config/model_settings.h); NULL: the caller's (the built-in knot). */
 	struct content_config *own;

@@ -21,19 +21,27 @@ static void fit_of(const struct mesh *m, double centre[3], double *scale)
 	*scale = known ? m->fit[3] : 1;
 }
 
-/* A stop naming a hotspot the model lacks: said once a load (the stop
- * keeps its own yaw, pitch and text). */
-static void say_unknown_stops(const struct content_config *o)
+/* Which drawn hotspot each stop's picture labels; a stop naming a
+ * hotspot the model lacks is said once a load (it keeps its own view). */
+static void label_stops(struct content *s, const struct content_config *o)
 {
 	struct frame_stop stops[FRAME_STOPS];
 	char err[200];
 	int n = frame_stops_parse(o->frame.stops, stops, FRAME_STOPS, err, sizeof(err));
 
-	for (int i = 0; i < n; i++)
-		if (stops[i].hotspot[0] && hotspot_find(&o->hotspots, stops[i].hotspot) < 0)
+	for (int i = 0; i < CAPTION_STOPS; i++)
+		s->stop_hotspot[i] = -1;
+	for (int i = 0; i < n; i++) {
+		int at = stops[i].hotspot[0] ? hotspot_find(&o->hotspots, stops[i].hotspot) : -1;
+
+		if (stops[i].hotspot[0] && at < 0)
 			log_err("[frame] stops: stop %d's hotspot=%s: expected the NAME of one of "
 				"the model's [hotspot.NAME] sections; the stop keeps its own view",
 				i + 1, stops[i].hotspot);
+		s->stop_hotspot[i] = at < 0 ? -1 : content_hotspot_drawn(s, at);
+	}
+	for (int i = 0; i < HOTSPOTS; i++)
+		s->stop_hotspot[CONTENT_HOTSPOT_CAPTION + i] = content_hotspot_drawn(s, i);
 }
 
 void content_load_hotspots(struct content *s, const struct content_config *o)
@@ -65,7 +73,7 @@ void content_load_hotspots(struct content *s, const struct content_config *o)
 		s->hotspot_source[n++] = i;
 	}
 	s->hotspot_count = n;
-	say_unknown_stops(o);
+	label_stops(s, o);
 }
 
 /* The direction that faces the visitor at hotspot k of s: its normal,

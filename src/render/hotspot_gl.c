@@ -139,19 +139,26 @@ static int clamp_int(int v, int lo, int hi)
 	return v < lo ? lo : v > hi ? hi : v;
 }
 
+/* Right of the badge, else left, else below, else above: the first
+ * that fits the screen across (beside) or down (below, above), moved in
+ * along the other axis; none fits: right, moved in both ways. */
 void hotspot_label_place(double x, double y, double r, int w, int h, int width, int height,
 			 int margin, int out[2])
 {
-	int gap = (int)ceil(r) + margin;
-	int right = (int)lround(x) + gap, left = (int)lround(x) - gap - w;
+	int gap = (int)ceil(r) + margin, cx = (int)lround(x), cy = (int)lround(y);
+	const int xs[4] = {cx + gap, cx - gap - w, cx - w / 2, cx - w / 2};
+	const int ys[4] = {cy - h / 2, cy - h / 2, cy + gap, cy - gap - h};
+	int k = 0;
 
-	out[0] = right + w + margin <= width || left < margin ? right : left;
-	out[1] = (int)lround(y) - h / 2;
-	/* A label wider than the screen keeps its start on it. */
+	while (k < 4 && !(k < 2 ? xs[k] >= margin && xs[k] + w + margin <= width
+				: ys[k] >= margin && ys[k] + h + margin <= height))
+		k++;
+	k = k < 4 ? k : 0;
+	/* A label larger than the screen keeps its start on it. */
 	out[0] =
-	    clamp_int(out[0], margin, width - w - margin > margin ? width - w - margin : margin);
+	    clamp_int(xs[k], margin, width - w - margin > margin ? width - w - margin : margin);
 	out[1] =
-	    clamp_int(out[1], margin, height - h - margin > margin ? height - h - margin : margin);
+	    clamp_int(ys[k], margin, height - h - margin > margin ? height - h - margin : margin);
 }
 
 static void draw_one(const struct hotspot_gl *g, const struct render_hotspot *h,

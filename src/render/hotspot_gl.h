@@ -52,7 +52,8 @@ double hotspot_fade(const double normal[3], const double to_eye[3]);
 double hotspot_radius(bool badge, int short_side);
 /* A label of w x h pixels beside a disc at (x, y) of radius r on a
  * width x height screen, margin pixels kept free at its edges: to the
- * right, else to the left, moved in to stay on screen. out: its
+ * right, else to the left, else below, else above, moved in to stay on
+ * screen, never over the disc while one of those fits. out: its
  * top-left corner. */
 void hotspot_label_place(double x, double y, double r, int w, int h, int width, int height,
 			 int margin, int out[2]);

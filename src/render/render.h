@@ -111,9 +111,12 @@ int renderer_set_stop_captions(struct renderer *r, const struct image *imgs, int
 void renderer_show_stop(struct renderer *r, int stop);
 
 /* The hotspots drawn over the model from now on (count 0: none), their
- * points in the mesh's unit sphere. Returns 0, or -EINVAL after logging
- * (none drawn). */
-int renderer_set_hotspots(struct renderer *r, const struct render_hotspot *hs, int count);
+ * points in the mesh's unit sphere; stop_hotspot (CAPTION_STOPS of them,
+ * or NULL): the hotspot each stop's picture labels, drawn beside its
+ * badge (-1: in the caption's place). Returns 0, or -EINVAL after
+ * logging (none drawn). */
+int renderer_set_hotspots(struct renderer *r, const struct render_hotspot *hs, int count,
+			  const int *stop_hotspot);
 /* Their points from now on (xyz each, in order): a node's that a clip
  * moves, posed for the frame. */
 void renderer_set_hotspot_points(struct renderer *r, const float *points, int count);

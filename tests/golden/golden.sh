@@ -232,7 +232,7 @@ render() {
 	# normal) in front, 3 (the foot, on the back) hidden; at yaw 180 3
 	# in front, 1 and 2 behind: 2 hidden by the model's depth alone. The
 	# stop at hotspot 2: the model turned so its point faces the visitor,
-	# its text as the stop's caption.
+	# its text beside the badge (too wide for either side: below it).
 	hotspots-yaw0 | hotspots-yaw180 | hotspot-stop)
 		hot_ini "$m/long-hot.ini"
 		cp "$m/long.glb" "$m/long-hot.glb"

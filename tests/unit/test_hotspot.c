@@ -152,6 +152,13 @@ static void test_label_stays_on_screen(void **state)
 	assert_int_equal(at[1], 8);
 	hotspot_label_place(300, 479, 10, 120, 30, 640, 480, 8, at);
 	assert_int_equal(at[1], 480 - 30 - 8);
+	/* Too wide for either side: below, centred on it; at the bottom,
+	 * above. */
+	hotspot_label_place(320, 200, 10, 400, 30, 640, 480, 8, at);
+	assert_int_equal(at[0], 120);
+	assert_int_equal(at[1], 200 + 18);
+	hotspot_label_place(320, 460, 10, 400, 30, 640, 480, 8, at);
+	assert_int_equal(at[1], 460 - 18 - 30);
 	/* Wider than the screen: its start on it. */
 	hotspot_label_place(300, 200, 10, 900, 30, 640, 480, 8, at);
 	assert_int_equal(at[0], 8);

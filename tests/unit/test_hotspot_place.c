@@ -130,6 +130,31 @@ static void load(struct content *s, struct options *o, struct renderer *r)
 	assert_int_equal(renderer_set_mode(r, o->content.mode, false), 0);
 }
 
+/* At next-hotspot's view of it (its picture shown), the hotspot's text
+ * is placed beside the dot: right of it, centred on it, on screen. */
+static void label_beside(struct renderer *r, struct content *s, struct options *o,
+			 const double p[3])
+{
+	const struct image *pic = content_caption(s, CONTENT_HOTSPOT_CAPTION);
+	double want[2];
+	struct view v;
+	int at[2];
+
+	o->content.yaw = 0;
+	v = content_view(&o->content);
+	v.zoom = (float)s->zoom;
+	reference(p, 0, want);
+	assert_non_null(pic->rgba);
+	renderer_show_stop(r, CONTENT_HOTSPOT_CAPTION);
+	assert_true(renderer_caption_at(r, &v, 0, W, H, at));
+	print_message("label at (%d, %d), %dx%d, the dot at (%.1f, %.1f)\n", at[0], at[1],
+		      pic->width, pic->height, want[0], want[1]);
+	assert_true(at[0] > want[0] + 5 && at[0] < want[0] + 30);
+	assert_true(fabs(at[1] + pic->height / 2.0 - want[1]) < 2);
+	assert_true(at[0] + pic->width <= W);
+	renderer_show_stop(r, -1);
+}
+
 static void drawn_at_its_projection(void **state)
 {
 	static const double yaws[] = {0, 25, -30};
@@ -164,10 +189,12 @@ static void drawn_at_its_projection(void **state)
 	h->has_point = true;
 	memcpy(h->point, p, sizeof(p));
 	h->color[0] = 0, h->color[1] = 1, h->color[2] = 0, h->color[3] = 1;
+	strcpy(h->text, "A dot");
 	o.content.hotspots.count = 1;
 	load(&s, &o, r);
 	for (size_t i = 0; i < sizeof(yaws) / sizeof(yaws[0]); i++)
 		at_yaw(d, r, &s, &o, p, yaws[i]);
+	label_beside(r, &s, &o, p);
 	/* Again from the prepared-mesh cache: the fit is kept in its entry. */
 	content_release(&s);
 	load(&s, &o, r);
