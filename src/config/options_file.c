@@ -476,7 +476,7 @@ enum options_status options_read_text(struct options *o, const char *path, const
 	check_background(&st);
 	check_frame(&st);
 	check_caption(&st);
-	hotspot_settings_finish(&st.hot, path, &o->content.hotspots);
+	o->content.hotspots.dropped += hotspot_settings_finish(&st.hot, path, &o->content.hotspots);
 	return ret || st.errors ? OPTIONS_CONFIG : OPTIONS_OK;
 }
 

@@ -42,7 +42,8 @@ int check_model_settings(const struct content_config *cfg, FILE *out, bool stick
 		if (content_config_copy(&own, cfg))
 			return bad + 1;
 		if ((stick ? model_settings_read_stick(&own, path)
-			   : model_settings_read(&own, path)) != OPTIONS_OK)
+			   : model_settings_read(&own, path)) != OPTIONS_OK ||
+		    own.hotspots.dropped > cfg->hotspots.dropped)
 			bad++;
 		else if (out)
 			fprintf(out, "  read %s (the settings of %s)\n", ini, path);
@@ -418,6 +419,11 @@ int check_config_run(const struct options *o, FILE *out)
 	if (o->content.background && background_names_image(o->content.background))
 		check_image(&c, "display", "background", o->content.background);
 	check_caption(&c, &o->content.caption);
+	if (o->content.hotspots.dropped) {
+		log_err("%s: %d hotspot%s left out for the errors above", name,
+			o->content.hotspots.dropped, o->content.hotspots.dropped == 1 ? "" : "s");
+		return CHECK_BAD_SETTINGS;
+	}
 	if (c.bad_settings) {
 		log_err("%s: %d model%s own settings file%s errors (above)", name, c.bad_settings,
 			c.bad_settings == 1 ? "'s" : "s'", c.bad_settings == 1 ? " has" : "s have");

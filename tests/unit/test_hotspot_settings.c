@@ -6,6 +6,7 @@
 #include "config/hotspot_settings.h"
 #include "config/model_settings.h"
 #include "config/settings.h"
+#include "ops/check.h"
 #include "util/log.h"
 
 #include <math.h>
@@ -90,6 +91,14 @@ static void one_bad(const char *bad, const char *said)
 	assert_float_equal(o.content.frame.yaw, 30, 0);
 	assert_int_equal(o.content.hotspots.count, 1);
 	assert_string_equal(o.content.hotspots.items[0].name, "good");
+	/* Counted: --check-config calls the model's settings bad. */
+	assert_int_equal(o.content.hotspots.dropped, 1);
+	options_release(&o);
+	option_defaults(&o);
+	write_file("cup.glb", "");
+	o.content.model = m;
+	assert_int_equal(check_model_settings(&o.content, NULL, false), 1);
+	o.content.model = NULL;
 	options_release(&o);
 }
 
