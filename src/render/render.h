@@ -117,9 +117,6 @@ void renderer_show_stop(struct renderer *r, int stop);
  * logging (none drawn). */
 int renderer_set_hotspots(struct renderer *r, const struct render_hotspot *hs, int count,
 			  const int *stop_hotspot);
-/* Their points from now on (xyz each, in order): a node's that a clip
- * moves, posed for the frame. */
-void renderer_set_hotspot_points(struct renderer *r, const float *points, int count);
 /* Where hotspot i is drawn on a width x height frame of view v; false:
  * there is no hotspot i. */
 bool renderer_hotspot_at(const struct renderer *r, const struct view *v, int width, int height,

@@ -22,12 +22,6 @@ int renderer_set_hotspots(struct renderer *r, const struct render_hotspot *hs, i
 	return 0;
 }
 
-void renderer_set_hotspot_points(struct renderer *r, const float *points, int count)
-{
-	for (int i = 0; i < count && i < r->hotspot_count; i++)
-		memcpy(r->hotspots[i].point, points + 3 * i, sizeof(r->hotspots[i].point));
-}
-
 bool renderer_hotspot_at(const struct renderer *r, const struct view *v, int width, int height,
 			 int i, struct hotspot_place *out)
 {

@@ -281,7 +281,7 @@ static void step_hotspot(struct app *a, uint64_t t)
 	int n = a->cfg.frame.hotspot_count, k = a->state.stop - FRAME_STOPS;
 
 	if (n > 0)
-		to_stop(a, FRAME_STOPS + (k < 0 || k + 1 >= n ? 0 : k + 1), t, a->cfg.turn_speed);
+		to_stop(a, FRAME_STOPS + hotspot_next(n, k), t, a->cfg.turn_speed);
 }
 
 /* Attract mode from t: the stops in turn, or home (no snap) and then the

@@ -116,11 +116,11 @@ int hotspot_find(const struct hotspot_set *s, const char *name)
 	return -1;
 }
 
-int hotspot_next(const struct hotspot_set *s, int current)
+int hotspot_next(int count, int current)
 {
-	if (s->count <= 0)
+	if (count <= 0)
 		return -1;
-	return current < 0 || current + 1 >= s->count ? 0 : current + 1;
+	return current < 0 || current + 1 >= count ? 0 : current + 1;
 }
 
 /* Yaw about y first brings dir into the y-z plane in front (x = 0, z > 0),

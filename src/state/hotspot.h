@@ -60,8 +60,9 @@ void hotspot_init(struct hotspot *h, const char *name, int line);
 
 /* The index of the hotspot called name, or -1. */
 int hotspot_find(const struct hotspot_set *s, const char *name);
-/* After current (-1: none shown yet), wrapping; -1 when there is none. */
-int hotspot_next(const struct hotspot_set *s, int current);
+/* The hotspot after current (-1, or one past the last: none shown yet)
+ * of count, wrapping; -1 when there is none. */
+int hotspot_next(int count, int current);
 
 /* The app's yaw and pitch (radians; the view turns the model by
  * pitch about x after yaw about y, content_view's order) that bring the

@@ -65,16 +65,17 @@ static void test_find_and_next(void **state)
 	struct hotspot_set s = {0};
 
 	(void)state;
-	assert_int_equal(hotspot_next(&s, -1), -1);
+	assert_int_equal(hotspot_next(s.count, -1), -1);
 	hotspot_init(&s.items[0], "signature", 3);
 	hotspot_init(&s.items[1], "valve", 9);
 	hotspot_init(&s.items[2], "foot", 14);
 	s.count = 3;
 	assert_int_equal(hotspot_find(&s, "valve"), 1);
 	assert_int_equal(hotspot_find(&s, "lid"), -1);
-	assert_int_equal(hotspot_next(&s, -1), 0);
-	assert_int_equal(hotspot_next(&s, 0), 1);
-	assert_int_equal(hotspot_next(&s, 2), 0); /* wraps */
+	assert_int_equal(hotspot_next(s.count, -1), 0);
+	assert_int_equal(hotspot_next(s.count, 0), 1);
+	assert_int_equal(hotspot_next(s.count, 2), 0);		  /* wraps */
+	assert_int_equal(hotspot_next(s.count, -FRAME_STOPS), 0); /* from a stop */
 	assert_string_equal(hotspot_text(&s.items[0], NULL), "");
 	strcpy(s.items[0].text, "The painter's signature");
 	assert_string_equal(hotspot_text(&s.items[0], "de"), "The painter's signature");
