@@ -76,7 +76,7 @@ void content_load_hotspots(struct content *s, const struct content_config *o)
 	label_stops(s, o);
 }
 
-/* The direction that faces the visitor at hotspot k of s: its normal,
+/* The direction that faces the visitor at hotspot h: its normal,
  * else from the model's centre to it; after the model's base turn. */
 static void facing_dir(const struct render_hotspot *h, struct quat rest, double out[3])
 {
