@@ -410,6 +410,10 @@ static void service_touch(struct kiosk *k, const struct pollfd *fds, uint64_t no
 		if (k->screen && screen_input(k->screen, now))
 			kiosk_tell_app(k, APP_DISPLAY_BACK);
 		m.touch = g[i];
+		if (g[i].kind == GESTURE_TAP)
+			m.touch.badge = content_hotspot_tapped(k->content, k->renderer, &k->view,
+							       k->display->width,
+							       k->display->height, g[i].x, g[i].y);
 		app_apply(k->app, &m);
 	}
 }

@@ -218,6 +218,10 @@ void content_load_hotspot_captions(struct content *s, const struct content_confi
  * (renderer_show_stop). -EINVAL after logging when s has no such hotspot. */
 int content_show_hotspot(const struct content *s, const struct content_config *c, int number,
 			 struct renderer *r, struct view *v);
+/* The badge a tap at (fx, fy) (fractions of the turned screen) is on,
+ * as gesture.badge says it: 1 + the settings' hotspot index; 0: none. */
+int content_hotspot_tapped(const struct content *s, const struct renderer *r, const struct view *v,
+			   int width, int height, double fx, double fy);
 /* Which of s's drawn hotspots is the settings' hotspot index; -1: none
  * (a node's, not drawn). */
 int content_hotspot_drawn(const struct content *s, int index);

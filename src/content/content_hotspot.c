@@ -172,3 +172,11 @@ int content_show_hotspot(const struct content *s, const struct content_config *c
 	renderer_show_stop(r, CONTENT_HOTSPOT_CAPTION + number - 1);
 	return 0;
 }
+
+int content_hotspot_tapped(const struct content *s, const struct renderer *r, const struct view *v,
+			   int width, int height, double fx, double fy)
+{
+	int k = renderer_hotspot_hit(r, v, width, height, fx, fy);
+
+	return k >= 0 && k < s->hotspot_count ? s->hotspot_source[k] + 1 : 0;
+}

@@ -121,6 +121,11 @@ int renderer_set_hotspots(struct renderer *r, const struct render_hotspot *hs, i
  * there is no hotspot i. */
 bool renderer_hotspot_at(const struct renderer *r, const struct view *v, int width, int height,
 			 int i, struct hotspot_place *out);
+/* The drawn hotspot whose badge a touch at (fx, fy) (fractions of the
+ * turned screen) is on, the nearest; -1: none. A badge another part of
+ * the model hides (the GPU's depth) still answers. */
+int renderer_hotspot_hit(const struct renderer *r, const struct view *v, int width, int height,
+			 double fx, double fy);
 
 /* KHR_materials_variants: draw the mesh's ranges with variant `variant`'s
  * materials (-1, or one the mesh lacks: the file's default ones). Every

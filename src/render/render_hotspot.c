@@ -5,6 +5,7 @@
 #include "render/render_priv.h"
 
 #include <errno.h>
+#include <math.h>
 #include <string.h>
 
 int renderer_set_hotspots(struct renderer *r, const struct render_hotspot *hs, int count,
@@ -75,4 +76,28 @@ bool render_hotspot_label(const struct renderer *r, const struct view *v, int i,
 	hotspot_label_place(t[0], t[1], radius, size[0], size[1], sw, sh, (int)(radius / 2) + 2,
 			    out);
 	return true;
+}
+
+int renderer_hotspot_hit(const struct renderer *r, const struct view *v, int width, int height,
+			 double fx, double fy)
+{
+	int sw = v->rotation % 180 ? height : width, sh = v->rotation % 180 ? width : height;
+	int best = -1;
+	double best_d = 0;
+
+	for (int i = 0; i < r->hotspot_count; i++) {
+		struct hotspot_place at;
+		double t[2], d, reach;
+
+		if (!renderer_hotspot_at(r, v, width, height, i, &at) || !at.ahead || at.fade <= 0)
+			continue;
+		to_turned(at.x, at.y, width, height, v->rotation, t);
+		/* A fingertip is larger than a badge: half as much again and
+		 * a few millimetres' pixels around it. */
+		reach = hotspot_radius(r->hotspots[i].badge, sw < sh ? sw : sh) * 1.5 + 12;
+		d = hypot(fx * sw - t[0], fy * sh - t[1]);
+		if (d <= reach && (best < 0 || d < best_d))
+			best = i, best_d = d;
+	}
+	return best;
 }

@@ -439,6 +439,10 @@ static void touch(struct app *a, const struct gesture *g)
 	case GESTURE_PINCH:
 		zoom(a, g->scale);
 		break;
+	case GESTURE_TAP: /* on a badge: that hotspot's view */
+		if (g->badge > 0 && g->badge <= a->cfg.frame.hotspot_count)
+			to_stop(a, FRAME_STOPS + g->badge - 1, t, a->cfg.turn_speed);
+		break;
 	case GESTURE_DOUBLE_TAP:
 		press(a, ACTION_RESET, t);
 		break;

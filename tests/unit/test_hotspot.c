@@ -268,7 +268,36 @@ static void next_hotspot_steps(void **state)
 						 .pressed = true}});
 	assert_int_equal(st->stop, 0);
 	assert_string_equal(app_action_names[ACTION_NEXT_HOTSPOT], "next-hotspot");
+	/* A tap on badge 2 (the loop's hit test said so): its view; a tap
+	 * on no badge changes nothing. */
+	app_apply(
+	    a, &(struct app_msg){
+		   .kind = APP_TOUCH,
+		   .touch = {.kind = GESTURE_TAP, .time_ns = 14ull * 1000000000ull, .badge = 2}});
+	assert_int_equal(st->stop, FRAME_STOPS + 1);
+	app_apply(
+	    a, &(struct app_msg){.kind = APP_TOUCH,
+				 .touch = {.kind = GESTURE_TAP, .time_ns = 15ull * 1000000000ull}});
+	assert_int_equal(st->stop, FRAME_STOPS + 1);
 	app_free(a);
+}
+
+/* A tap says where it was (a badge is hit-tested there). */
+static void tap_has_its_place(void **state)
+{
+	struct gesture_config cfg;
+	struct gesture_state g;
+	struct gesture out[GESTURE_MAX_EVENTS];
+	const struct gesture_point down = {.id = 1, .x = 0.3, .y = 0.6};
+
+	(void)state;
+	gesture_config_defaults(&cfg);
+	gesture_init(&g, &cfg);
+	assert_int_equal(gesture_frame(&g, 1000000, &down, 1, out), 0);
+	assert_int_equal(gesture_frame(&g, 50000000, &down, 0, out), 1); /* lifted */
+	assert_int_equal(out[0].kind, GESTURE_TAP);
+	assert_true(out[0].x == 0.3 && out[0].y == 0.6);
+	assert_int_equal(out[0].badge, 0); /* the loop's to say */
 }
 
 int main(void)
@@ -283,6 +312,7 @@ int main(void)
 	    cmocka_unit_test(stop_words),
 	    cmocka_unit_test(stop_faces_its_hotspot),
 	    cmocka_unit_test(next_hotspot_steps),
+	    cmocka_unit_test(tap_has_its_place),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

@@ -153,6 +153,12 @@ static void label_beside(struct renderer *r, struct content *s, struct options *
 	assert_true(fabs(at[1] + pic->height / 2.0 - want[1]) < 2);
 	assert_true(at[0] + pic->width <= W);
 	renderer_show_stop(r, -1);
+	/* A tap on the dot (fractions of the screen) is on hotspot 1; one a
+	 * fingertip away from it too; one across the screen on none. */
+	assert_int_equal(content_hotspot_tapped(s, r, &v, W, H, want[0] / W, want[1] / H), 1);
+	assert_int_equal(
+	    content_hotspot_tapped(s, r, &v, W, H, (want[0] + 15) / W, (want[1] - 10) / H), 1);
+	assert_int_equal(content_hotspot_tapped(s, r, &v, W, H, 0.1, 0.9), 0);
 }
 
 static void drawn_at_its_projection(void **state)
