@@ -72,10 +72,10 @@ LDLIBS    = $(PKG_LIBS) -lmeshoptimizer -ldl -lm
 SRC_APP     := app/kiosk_models app/kiosk app/kiosk_anim app/kiosk_variant app/kiosk_lang app/kiosk_content app/kiosk_report app/kiosk_remote app/reload app/preview \
 	       app/signals
 SRC_OPS     := ops/check ops/check_text ops/import ops/import_copy ops/import_ini ops/metrics ops/mqtt ops/mqtt_ha ops/screen ops/service ops/status
-SRC_CONTENT := content/content content/load_guard content/content_cache content/content_look content/content_view content/content_fit content/content_caption content/content_play content/content_deform content/matcap_set content/matcap_job content/model_list \
+SRC_CONTENT := content/content content/load_guard content/content_cache content/content_look content/content_view content/content_fit content/content_caption content/content_hotspot content/content_play content/content_deform content/matcap_set content/matcap_job content/model_list \
 	       content/model_loader content/worker
-SRC_CONFIG  := config/options config/options_file config/model_settings config/settings config/settings_table config/settings_origin config/settings_text config/lang_text
-SRC_STATE   := state/app state/view state/power state/schedule state/visits state/remote state/lang
+SRC_CONFIG  := config/options config/options_file config/model_settings config/settings config/settings_table config/settings_origin config/settings_text config/lang_text config/hotspot_settings
+SRC_STATE   := state/app state/view state/power state/schedule state/visits state/remote state/lang state/hotspot
 SRC_DISPLAY := display/backlight display/cec display/cec_link display/display display/display_egl display/display_kms display/kms_scale \
 	       display/display_osmesa \
 	       display/drm display/drm_atomic display/drm_legacy display/egl_util display/hotplug \
@@ -85,7 +85,7 @@ SRC_INPUT   := input/action input/button input/gesture input/touch_decode input/
 SRC_CAMERA  := camera/camera_feed camera/camera_link camera/camera_math camera/camera_proto \
 	       camera/camera_texture
 SRC_RENDER  := render/background render/bake render/draw_list render/framing render/gl render/poster render/render_scale render/render_caption \
-	       render/caption render/render render/render_draw render/render_live render/render_skin render/render_morph render/render_variant render/shader render/shading
+	       render/caption render/hotspot_gl render/render_hotspot render/render render/render_draw render/render_live render/render_skin render/render_morph render/render_variant render/shader render/shading
 SRC_SCENE   := scene/mesh/lod scene/mesh/lod_seams scene/mesh/lod_split scene/mesh/material scene/mesh/mesh scene/mesh/mesh_cache scene/mesh/mesh_cache_anim scene/mesh/mesh_cache_nest scene/mesh/mesh_cache_fields scene/mesh/mesh_cache_key scene/mesh/mesh_gen scene/mesh/mesh_pack scene/mesh/subdivide scene/mesh/tangent \
 	       scene/mesh/texture scene/text/caption scene/text/caption_text scene/text/model_name scene/text/caption_font scene/text/caption_wrap
 SRC_SCENE   += scene/gltf/gltf_json_depth scene/gltf/gltf_features
@@ -103,6 +103,7 @@ SHADERS += shaders/poster.vert shaders/poster.frag
 SHADERS += shaders/scale.vert shaders/scale.frag
 SHADERS += shaders/background.vert shaders/background.frag
 SHADERS += shaders/caption.vert shaders/caption.frag
+SHADERS += shaders/hotspot.vert shaders/hotspot.frag
 
 LIB_OBJS := $(LIB_C:%=$(BUILD)/%.o) $(LIB_CC:%=$(BUILD)/%.o) $(BUILD)/shaders_embedded.o
 # The tests and tools link the same objects from an archive, so that each

@@ -307,7 +307,7 @@ static int configure(struct kiosk *k, uint64_t now_ns)
 	const struct content_config *shown = content_settings(k->content, &o->content);
 
 	k->view = content_view(shown);
-	content_app_frame(shown, &cfg.frame, &cfg.rest);
+	content_app_frame_at(k->content, shown, &cfg.frame, &cfg.rest);
 	cfg.mode = shown->mode;
 	if (k->app)
 		app_apply(k->app, &m);
@@ -419,6 +419,10 @@ static void service_touch(struct kiosk *k, const struct pollfd *fds, uint64_t no
 		m.touch = g[i];
 		visits_touch(&k->visits, &g[i], k->applied.app.long_press,
 			     k->applied.app.attract_after_s);
+		if (g[i].kind == GESTURE_TAP)
+			m.touch.badge = content_hotspot_tapped(k->content, k->renderer, &k->view,
+							       k->display->width,
+							       k->display->height, g[i].x, g[i].y);
 		app_apply(k->app, &m);
 	}
 }

@@ -52,7 +52,7 @@ static void tell_frame(struct kiosk_models *m)
 	struct app_frame f;
 	struct app_msg msg = {.kind = APP_FRAME};
 
-	content_app_frame(c, &f, &msg.frame.rest);
+	content_app_frame_at(m->p.content, c, &f, &msg.frame.rest);
 	msg.frame.frame = &f;
 	msg.frame.mode = c->mode;
 	msg.frame.now_ns = monotonic_ns();

@@ -110,6 +110,8 @@ static int render_frames(const struct options *o, const struct content *s, struc
 	if ((o->preview_stop > 0 || o->preview_at >= 0) &&
 	    (ret = preview_moment(o, s, c, &v, &stop)) == 0)
 		renderer_show_stop(r, stop);
+	if (o->hotspot > 0)
+		ret = content_show_hotspot(s, c, o->hotspot, r, &v);
 	for (int i = 0; i < o->frames && !ret; i++) {
 		double t = now_ms();
 

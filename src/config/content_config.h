@@ -8,6 +8,7 @@
 #include "render/shading.h"
 #include "scene/text/caption.h"
 #include "scene/mesh/material.h"
+#include "state/hotspot.h"
 #include "state/view.h"
 
 #include <stdbool.h>
@@ -50,6 +51,9 @@ struct content_config {
 	struct lang_texts texts;       /* every KEY[LANG] = text of the files read */
 	char
 	    *lang; /* --lang: the language shown (a code of [caption] languages); NULL: the first */
+	/* [hotspot.NAME] sections: kiosk.ini's, then the model's own over
+	 * them (config/hotspot_settings.h); fixed arrays, copied whole. */
+	struct hotspot_set hotspots;
 	/* Live playback: anim_live is set for the live kiosk (not a
 	 * setting); [scene] animation_fps (0: the display's rate) and
 	 * animation_pause_after (seconds without input; 0: never). */

@@ -1,4 +1,5 @@
 #include "config/model_settings.h"
+#include "config/hotspot_settings.h"
 #include "util/log.h"
 
 #include <errno.h>
@@ -23,6 +24,7 @@ static const struct {
     {"scene", "base_color"}, {"scene", "model_scene"},	{"scene", "lod_pixels"},
     {"scene", "matcap"},     {"scene", "matcap_first"}, {"display", "background"},
     {"scene", "normals"},    {"caption", NULL},		{"scene", "variant"},
+    {"hotspot.NAME", NULL},
 };
 
 #define MODEL_KEYS (sizeof(model_keys) / sizeof(model_keys[0]))
@@ -41,6 +43,8 @@ static void keys_text(char *buf, size_t n)
 
 bool model_settings_allowed(const char *section, const char *key)
 {
+	if (hotspot_settings_section(section))
+		return true;
 	for (size_t i = 0; i < MODEL_KEYS; i++)
 		if (!strcmp(model_keys[i].section, section) &&
 		    (!model_keys[i].key || !strcmp(model_keys[i].key, key)))

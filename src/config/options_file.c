@@ -6,6 +6,7 @@
 #include "config/options.h"
 #include "state/schedule.h"
 #include "config/settings.h"
+#include "config/hotspot_settings.h"
 #include "render/background.h"
 #include "util/file.h"
 #include "util/ini.h"
@@ -28,6 +29,7 @@ struct file_state {
 	int line;
 	int seen_line[OPTION_DEFS];
 	int errors;
+	struct hotspot_read hot; /* its [hotspot.NAME] sections */
 };
 
 const struct options_rules options_rules_admin = {NULL, NULL, NULL, false};
@@ -267,6 +269,11 @@ static int on_key(void *user, int line, const char *section, const char *key, co
 			section, key, st->rules->who, st->rules->allowed_text);
 		return 0;
 	}
+	if (hotspot_settings_section(section)) { /* a bad one is dropped alone */
+		st->errors--;
+		hotspot_settings_key(&st->hot, st->path, line, section, key, value);
+		return 0;
+	}
 	if (translated) {
 		st->errors -=
 		    !lang_text_read(&st->opts->content.texts, st->path, line, section, key, value);
@@ -477,6 +484,7 @@ enum options_status options_read_text(struct options *o, const char *path, const
 	check_background(&st);
 	check_frame(&st);
 	check_caption(&st);
+	o->content.hotspots.dropped += hotspot_settings_finish(&st.hot, path, &o->content.hotspots);
 	return ret || st.errors ? OPTIONS_CONFIG : OPTIONS_OK;
 }
 

@@ -97,6 +97,7 @@ struct options {
 	char *output;
 	char *shader_dir;
 	int frames;
+	int hotspot; /* --hotspot N: the still faces hotspot N; 0: none */
 	bool stats;
 	bool help, version;
 	bool status, check_config;
@@ -130,7 +131,7 @@ struct option_def {
 
 /* The table's length: the compiler refuses an entry more, and
  * tests/unit/test_options.c one less. */
-#define OPTION_DEFS 143
+#define OPTION_DEFS 144
 extern const struct option_def option_defs[OPTION_DEFS];
 
 void option_defaults(struct options *o);

@@ -422,6 +422,9 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "each in turn, the first comes back after idle_seconds"},
     {"lang", 0, OPTION_CLI, NULL, K_STRING, AT(content.lang), 0, 0, 0, NULL, "CODE",
      "show the texts in this language of [caption] languages (with --output)"},
+    {"hotspot", 0, OPTION_CLI, NULL, K_INT, AT(hotspot), 1, 8, 0, NULL, "N",
+     "draw offscreen the view of the model's hotspot N (1: its first [hotspot.NAME]) with its "
+     "text, as a stop at it shows it (with --output)"},
 };
 
 const char *backend_name(enum backend_kind kind)

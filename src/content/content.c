@@ -262,6 +262,10 @@ int content_load(struct content *s, const struct content_config *o, bool strict)
 				    strict);
 	if (!ret)
 		ret = content_load_captions(s, content_settings(s, o), strict);
+	if (!ret)
+		content_load_hotspots(s, content_settings(s, o));
+	if (!ret)
+		content_load_hotspot_captions(s, content_settings(s, o));
 	if (ret)
 		content_release(s);
 	return ret;
@@ -286,6 +290,10 @@ int content_load_model(struct content *s, const struct content_config *o, const 
 		ret = content_load_captions(s, content_settings(s, o), false);
 	if (!ret)
 		content_fit_captions(s, content_settings(s, o), width, height);
+	if (!ret)
+		content_load_hotspots(s, content_settings(s, o));
+	if (!ret)
+		content_load_hotspot_captions(s, content_settings(s, o));
 	if (ret)
 		content_release(s);
 	return ret;
@@ -468,6 +476,8 @@ int content_upload_model(struct content *s, struct renderer *r)
 	if (!ret)
 		ret = renderer_set_stop_captions(r, s->stop_caption, CAPTION_STOPS,
 						 &s->caption_place);
+	if (!ret)
+		ret = renderer_set_hotspots(r, s->hotspots, s->hotspot_count, s->stop_hotspot);
 	/* The parse, the preparation and the upload freed far more than the
 	 * scene keeps; malloc holds freed heap for reuse, and a kiosk reuses
 	 * little: back to the system before the first frame. */

@@ -53,6 +53,13 @@ struct content_look {
  * with it in place of the one on screen. */
 enum { CONTENT_OWN_MATCAP = 1u << 0, CONTENT_OWN_BACKGROUND = 1u << 1 };
 
+/* The hotspots a content draws: every one a model's settings may hold. */
+#define CONTENT_HOTSPOTS RENDER_HOTSPOTS
+_Static_assert(HOTSPOTS <= CONTENT_HOTSPOTS, "every hotspot drawn");
+/* Hotspot i's text picture is stop_caption[CONTENT_HOTSPOT_CAPTION + i]. */
+#define CONTENT_HOTSPOT_CAPTION FRAME_STOPS
+_Static_assert(FRAME_STOPS + HOTSPOTS <= CAPTION_STOPS, "a picture for every hotspot");
+
 struct content {
 	char *model_path; /* the file the mesh came from; NULL: the built-in knot */
 	/* The mesh as loaded and prepared; once prepared for the cache
@@ -89,6 +96,13 @@ struct content {
 	int lang_shown, lang_count; /* lang_count 0: no languages named */
 	int caption_frame[2];	    /* the frame the pictures were laid out in; 0: none yet */
 	struct caption_config caption_place; /* its position, padding, drift; no strings */
+	/* Its hotspots as the renderer draws them (content_hotspot.c). */
+	struct render_hotspot hotspots[CONTENT_HOTSPOTS];
+	int hotspot_source[CONTENT_HOTSPOTS]; /* each one's index in the settings' set */
+	int hotspot_count;
+	/* The drawn hotspot each stop's picture labels (-1: none): a stop's
+	 * hotspot=NAME, and next-hotspot's views after FRAME_STOPS. */
+	int stop_hotspot[CAPTION_STOPS];
 	/* The model's settings: the caller's with its NAME.ini over them
 	 * (config/model_settings.h); NULL: the caller's (the built-in knot). */
 	struct content_config *own;
@@ -214,6 +228,33 @@ void content_fit_captions(struct content *s, const struct content_config *c, int
  * height are the caption's box on screen (padding inside it included,
  * the margin outside not), its text wrapped to the frame once
  * content_fit_captions knew the frame: what a fit leaves room for. */
+/* s's hotspots from c's [hotspot.NAME] sections, in the mesh's unit
+ * sphere (content_hotspot.c); on the worker, after the mesh. */
+void content_load_hotspots(struct content *s, const struct content_config *c);
+/* Each hotspot's text as the caption would show it, drawn here on the
+ * worker (stop_caption[CONTENT_HOTSPOT_CAPTION + i]). */
+void content_load_hotspot_captions(struct content *s, const struct content_config *c);
+/* The offscreen still of the settings' hotspot number (1, 2, ...): v
+ * turned to face it (rest: the model's base turn), its text shown
+ * (renderer_show_stop). -EINVAL after logging when s has no such hotspot. */
+int content_show_hotspot(const struct content *s, const struct content_config *c, int number,
+			 struct renderer *r, struct view *v);
+/* The badge a tap at (fx, fy) (fractions of the turned screen) is on,
+ * as gesture.badge says it: 1 + the settings' hotspot index; 0: none. */
+int content_hotspot_tapped(const struct content *s, const struct renderer *r, const struct view *v,
+			   int width, int height, double fx, double fy);
+/* Which of s's drawn hotspots is the settings' hotspot index; -1: none
+ * (a node's, not drawn). */
+int content_hotspot_drawn(const struct content *s, int index);
+/* The app's yaw and pitch (radians) that turn the settings' hotspot
+ * index to face the visitor, the model's base turn rest; false: s does
+ * not draw it. */
+bool content_hotspot_facing(const struct content *s, int index, struct quat rest, double *yaw,
+			    double *pitch);
+/* content_app_frame, and each stop that names a hotspot turned to face
+ * it (its yaw and pitch replaced): the frame the app state is given. */
+void content_app_frame_at(const struct content *s, const struct content_config *c,
+			  struct app_frame *f, struct quat *rest);
 const struct image *content_caption(const struct content *s, int stop);
 /* Show language lang's pictures (an index of [caption] languages, out of
  * range: the first), and give them to the renderer: on the loop thread,

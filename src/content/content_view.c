@@ -6,6 +6,8 @@
 #include "content/content.h"
 #include "render/framing.h"
 
+#include <stdio.h>
+
 struct view content_view(const struct content_config *o)
 {
 	struct view v = {.ortho = o->ortho, .rotation = o->rotation};
@@ -36,4 +38,13 @@ void content_app_frame(const struct content_config *c, struct app_frame *f, stru
 	}
 	if (frame_base(&c->frame, rest, err, sizeof(err)))
 		*rest = (struct quat){1, 0, 0, 0};
+	/* A stop at a hotspot without a text of its own shows the hotspot's. */
+	for (int i = 0; i < f->stop_count; i++) {
+		int at =
+		    f->stops[i].hotspot[0] ? hotspot_find(&c->hotspots, f->stops[i].hotspot) : -1;
+
+		if (at >= 0 && !f->stops[i].text[0])
+			snprintf(f->stops[i].text, sizeof(f->stops[i].text), "%s",
+				 hotspot_text(&c->hotspots.items[at], NULL));
+	}
 }

@@ -32,10 +32,11 @@ enum app_action {
 	/* The knob's long press (or a button's, a key's): the texts in the
 	 * next of [caption] languages. */
 	ACTION_NEXT_LANGUAGE,
+	ACTION_NEXT_HOTSPOT, /* glide to face the model's next hotspot, its text shown */
 	ACTION_COUNT
 };
 
-/* "none", "turn-left", ... "next-language", then NULL: the config file's names. */
+/* "none", "turn-left", ... "next-hotspot", then NULL: the config file's names. */
 extern const char *const app_action_names[ACTION_COUNT + 1];
 
 /* What kind of thing a source is: the visitors' presses are counted per

@@ -50,7 +50,8 @@ static int touch_end(struct gesture_state *g, uint64_t t, struct gesture *out)
 		return 1;
 	}
 	g->last_tap_ns = t;
-	*out = (struct gesture){.kind = GESTURE_TAP, .time_ns = t};
+	*out =
+	    (struct gesture){.kind = GESTURE_TAP, .time_ns = t, .x = g->start_x, .y = g->start_y};
 	return 1;
 }
 

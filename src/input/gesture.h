@@ -51,6 +51,11 @@ struct gesture {
 	uint64_t time_ns;
 	double dx, dy;
 	double scale;
+	/* GESTURE_TAP: where, in fractions of the screen as it is seen
+	 * (turned with the panel), and the hotspot badge there, 1 + its
+	 * index, as the loop's hit test found it (app/kiosk.c); 0: none. */
+	double x, y;
+	int badge;
 };
 
 struct gesture_state {

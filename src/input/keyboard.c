@@ -40,6 +40,7 @@ static const struct {
     {KEY_A, ACTION_NEXT_ANIMATION},
     {KEY_V, ACTION_NEXT_VARIANT},
     {KEY_L, ACTION_NEXT_LANGUAGE},
+    {KEY_H, ACTION_NEXT_HOTSPOT},
 };
 
 #define N_KEYS (sizeof(keys) / sizeof(keys[0]))

@@ -49,8 +49,10 @@ int check_model_settings(const struct content_config *cfg, FILE *out, bool stick
 			fprintf(out, "  read %s (the settings of %s)\n", ini, path);
 		/* -v: each of its values, and whether the command line's is
 		 * in effect over it. */
-		if (model_settings_read_listed(
-			&own, path, stick, log_get_level() >= LOG_DEBUG ? out : NULL) != OPTIONS_OK)
+		if (model_settings_read_listed(&own, path, stick,
+					       log_get_level() >= LOG_DEBUG ? out : NULL) !=
+			OPTIONS_OK ||
+		    own.hotspots.dropped > cfg->hotspots.dropped)
 			bad++;
 		content_config_release(&own);
 	}
@@ -488,6 +490,11 @@ int check_config_run(const struct options *o, FILE *out)
 		return CHECK_BAD_SETTINGS;
 	}
 	c.bad_texts = check_texts_at(&c);
+	if (o->content.hotspots.dropped) {
+		log_err("%s: %d hotspot%s left out for the errors above", name,
+			o->content.hotspots.dropped, o->content.hotspots.dropped == 1 ? "" : "s");
+		return CHECK_BAD_SETTINGS;
+	}
 	if (c.bad_settings) {
 		log_err("%s: %d model%s own settings file%s errors (above)", name, c.bad_settings,
 			c.bad_settings == 1 ? "'s" : "s'", c.bad_settings == 1 ? " has" : "s have");

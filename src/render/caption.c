@@ -63,18 +63,32 @@ void caption_gl_at(const struct caption_gl *cap, double seconds, int width, int 
 	caption_place(&cap->place, cap->width, cap->height, sw, sh, seconds, out);
 }
 
+void caption_gl_size(const struct caption_gl *cap, int size[2])
+{
+	size[0] = cap->width;
+	size[1] = cap->height;
+}
+
 void caption_gl_draw(const struct caption_gl *cap, double seconds, int width, int height,
 		     int rotation)
+{
+	int at[2];
+
+	caption_gl_at(cap, seconds, width, height, rotation, at);
+	caption_gl_draw_at(cap, at, width, height, rotation);
+}
+
+void caption_gl_draw_at(const struct caption_gl *cap, const int at[2], int width, int height,
+			int rotation)
 {
 	static const float quad[8] = {0, 0, 1, 0, 0, 1, 1, 1};
 	/* The panel's quarter turn, as poster.c turns the poster. */
 	static const float c[4] = {1, 0, -1, 0}, sn[4] = {0, 1, 0, -1};
 	const struct gl *gl = cap->gl;
-	int k = ((rotation / 90) % 4 + 4) % 4, at[2];
+	int k = ((rotation / 90) % 4 + 4) % 4;
 	float sw = (float)(rotation % 180 ? height : width);
 	float sh = (float)(rotation % 180 ? width : height);
 
-	caption_gl_at(cap, seconds, width, height, rotation, at);
 	gl->Viewport(0, 0, width, height);
 	gl->Disable(GL_DEPTH_TEST);
 	gl->Disable(GL_CULL_FACE);

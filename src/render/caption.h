@@ -22,5 +22,11 @@ void caption_gl_at(const struct caption_gl *cap, double seconds, int width, int 
 /* Blend it over the frame (depth test off; blending left off). */
 void caption_gl_draw(const struct caption_gl *cap, double seconds, int width, int height,
 		     int rotation);
+/* The same with its top-left corner at at (the turned screen's pixels):
+ * a hotspot's label beside its badge. */
+void caption_gl_draw_at(const struct caption_gl *cap, const int at[2], int width, int height,
+			int rotation);
+/* Its size in pixels. */
+void caption_gl_size(const struct caption_gl *cap, int size[2]);
 
 #endif

@@ -81,6 +81,7 @@ void renderer_free(struct renderer *r)
 	caption_gl_free(r->caption);
 	for (int i = 0; i < CAPTION_STOPS; i++)
 		caption_gl_free(r->stop_caption[i]);
+	hotspot_gl_free(r->hotspot_gl);
 	free(r);
 }
 

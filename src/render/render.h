@@ -5,6 +5,7 @@
 #include "render/background.h"
 #include "scene/text/caption.h"
 #include "render/gl.h"
+#include "render/hotspot_gl.h"
 #include "util/image.h"
 #include "scene/mesh/material.h"
 #include "util/math3d.h"
@@ -112,6 +113,23 @@ int renderer_set_stop_captions(struct renderer *r, const struct image *imgs, int
  * state's stop; -1: none) where it has one, else the caption. Picking is
  * all the loop thread does: every picture is uploaded already. */
 void renderer_show_stop(struct renderer *r, int stop);
+
+/* The hotspots drawn over the model from now on (count 0: none), their
+ * points in the mesh's unit sphere; stop_hotspot (CAPTION_STOPS of them,
+ * or NULL): the hotspot each stop's picture labels, drawn beside its
+ * badge (-1: in the caption's place). Returns 0, or -EINVAL after
+ * logging (none drawn). */
+int renderer_set_hotspots(struct renderer *r, const struct render_hotspot *hs, int count,
+			  const int *stop_hotspot);
+/* Where hotspot i is drawn on a width x height frame of view v; false:
+ * there is no hotspot i. */
+bool renderer_hotspot_at(const struct renderer *r, const struct view *v, int width, int height,
+			 int i, struct hotspot_place *out);
+/* The drawn hotspot whose badge a touch at (fx, fy) (fractions of the
+ * turned screen) is on, the nearest; -1: none. A badge another part of
+ * the model hides (the GPU's depth) still answers. */
+int renderer_hotspot_hit(const struct renderer *r, const struct view *v, int width, int height,
+			 double fx, double fy);
 
 /* KHR_materials_variants: draw the mesh's ranges with variant `variant`'s
  * materials (-1, or one the mesh lacks: the file's default ones). Every

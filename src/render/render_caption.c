@@ -61,6 +61,22 @@ static const struct caption_gl *shown(const struct renderer *r, unsigned *serial
 	return r->caption;
 }
 
+/* A stop at a hotspot shows its text beside the badge, kept on screen,
+ * while the badge is before the eye and not edge-on (the depth that
+ * hides a badge is the GPU's: a label of a badge that another part
+ * hides still shows); else in the caption's place. */
+static bool label_at(const struct renderer *r, const struct caption_gl *cap, const struct view *v,
+		     int width, int height, int out[2])
+{
+	int size[2];
+
+	if (r->stop < 0 || r->stop >= CAPTION_STOPS || r->stop_hotspot[r->stop] < 0 ||
+	    cap != r->stop_caption[r->stop])
+		return false;
+	caption_gl_size(cap, size);
+	return render_hotspot_label(r, v, r->stop_hotspot[r->stop], size, width, height, out);
+}
+
 unsigned renderer_caption_serial(const struct renderer *r)
 {
 	unsigned serial;
@@ -77,7 +93,8 @@ bool renderer_caption_at(const struct renderer *r, const struct view *v, double 
 
 	if (!cap)
 		return false;
-	caption_gl_at(cap, seconds, width, height, v->rotation, out);
+	if (!label_at(r, cap, v, width, height, out))
+		caption_gl_at(cap, seconds, width, height, v->rotation, out);
 	return true;
 }
 
@@ -87,6 +104,10 @@ void renderer_draw_caption(struct renderer *r, const struct view *v, double seco
 	unsigned serial;
 	const struct caption_gl *cap = shown(r, &serial);
 
-	if (cap)
+	int at[2];
+
+	if (cap && label_at(r, cap, v, width, height, at))
+		caption_gl_draw_at(cap, at, width, height, v->rotation);
+	else if (cap)
 		caption_gl_draw(cap, seconds, width, height, v->rotation);
 }

@@ -244,5 +244,6 @@ void renderer_draw(struct renderer *r, const struct view *v, int width, int heig
 		gl->Viewport(0, 0, width, height);
 	} else {
 		draw_with(r, 0, v, vp);
+		render_draw_hotspots(r, v, width, height);
 	}
 }

@@ -120,8 +120,24 @@ struct renderer {
 	 * (-1: the file's default materials). */
 	struct render_variants looks, looks_next;
 	int look;
+	/* Hotspots (render_hotspot.c): drawn after the model, against its
+	 * depth; the program built with the first set. */
+	struct hotspot_gl *hotspot_gl;
+	struct render_hotspot hotspots[RENDER_HOTSPOTS];
+	int hotspot_count;
+	/* The hotspot each stop's picture labels (-1: none): its text is
+	 * drawn beside that badge. */
+	int stop_hotspot[CAPTION_STOPS];
 };
 
+/* render_hotspot.c: the hotspots drawn over the model just drawn (its
+ * depth bound). */
+void render_draw_hotspots(struct renderer *r, const struct view *v, int width, int height);
+/* Where a label of size (pixels) goes beside hotspot i on the turned
+ * screen of a width x height frame: false while the hotspot is behind
+ * the eye or edge-on. */
+bool render_hotspot_label(const struct renderer *r, const struct view *v, int i, const int size[2],
+			  int width, int height, int out[2]);
 /* render.c: every program dropped (built again on use). */
 void render_drop_programs(struct renderer *r);
 /* render_skin.c: what the skinning holds, given back (renderer_free); the

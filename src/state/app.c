@@ -276,8 +276,17 @@ static void step_stop(struct app *a, int step, uint64_t t)
 
 	if (n < 1)
 		return;
-	k = k < 0 ? (step > 0 ? 0 : n - 1) : ((k + step) % n + n) % n;
+	k = k < 0 || k >= n ? (step > 0 ? 0 : n - 1) : ((k + step) % n + n) % n;
 	to_stop(a, k, t, a->cfg.turn_speed);
+}
+
+/* The next hotspot's view (stops[FRAME_STOPS + i]), after the one shown. */
+static void step_hotspot(struct app *a, uint64_t t)
+{
+	int n = a->cfg.frame.hotspot_count, k = a->state.stop - FRAME_STOPS;
+
+	if (n > 0)
+		to_stop(a, FRAME_STOPS + hotspot_next(n, k), t, a->cfg.turn_speed);
 }
 
 /* Attract mode from t: the stops in turn, or home (no snap) and then the
@@ -290,8 +299,11 @@ static void attract_begin(struct app *a, uint64_t t)
 	a->attract_ns = t;
 	a->touring = f->stop_count > 0 && f->stop_seconds > 0;
 	if (a->touring) {
-		to_stop(a, a->state.stop < 0 ? 0 : (a->state.stop + 1) % f->stop_count, t,
-			ease_speed(a));
+		to_stop(a,
+			a->state.stop < 0 || a->state.stop >= f->stop_count
+			    ? 0
+			    : (a->state.stop + 1) % f->stop_count,
+			t, ease_speed(a));
 		a->stop_at = t + (uint64_t)(f->stop_seconds * 1e9);
 		return;
 	}
@@ -354,6 +366,9 @@ static void press(struct app *a, enum app_action action, uint64_t t)
 	case ACTION_PREV_STOP:
 	case ACTION_SELECT:
 		step_stop(a, action == ACTION_PREV_STOP ? -1 : 1, t);
+		break;
+	case ACTION_NEXT_HOTSPOT:
+		step_hotspot(a, t);
 		break;
 	case ACTION_PLAY_PAUSE:
 		st->anim_paused = !st->anim_paused;
@@ -444,6 +459,10 @@ static void touch(struct app *a, const struct gesture *g)
 		break;
 	case GESTURE_PINCH:
 		zoom(a, g->scale);
+		break;
+	case GESTURE_TAP: /* on a badge: that hotspot's view */
+		if (g->badge > 0 && g->badge <= a->cfg.frame.hotspot_count)
+			to_stop(a, FRAME_STOPS + g->badge - 1, t, a->cfg.turn_speed);
 		break;
 	case GESTURE_DOUBLE_TAP:
 		press(a, ACTION_RESET, t);

@@ -88,24 +88,30 @@ static char *last_of(char *s, const char *key)
 	return last;
 }
 
-/* A stop's optional last words, animation=CLIP and variant=NAME (after
- * its text, if any, in either order), cut off s into st: the later one
- * first. */
+/* A stop's optional last words, animation=CLIP, variant=NAME and
+ * hotspot=NAME (after its text, if any, in any order), cut off s into
+ * st: the latest one first. */
 static int stop_clip(char *s, struct frame_stop *st, char *err, size_t n)
 {
-	char *q = strrchr(s, '"');
+	static const char *const words[3] = {"animation=", "variant=", "hotspot="};
+	static const char *const what[3] = {"a clip (its name, an index or all)",
+					    "a variant of the model (its name)",
+					    "a hotspot of the model (its [hotspot.NAME]'s NAME)"};
+	char *q = strrchr(s, '"'), *into[3] = {st->animation, st->variant, st->hotspot};
 
-	for (int i = 0; i < 3; i++) {
-		char *a = last_of(q ? q : s, "animation="), *v = last_of(q ? q : s, "variant=");
+	/* One more pass than words: a word given twice is said as such. */
+	for (int i = 0; i < 4; i++) {
+		char *at = NULL;
+		int k = -1;
 
-		if (a && (!v || a > v)) {
-			if (stop_word(a, "animation=", "a clip (its name, an index or all)",
-				      st->animation, err, n))
-				return -1;
-		} else if (v && stop_word(v, "variant=", "a variant of the model (its name)",
-					  st->variant, err, n)) {
-			return -1;
+		for (int w = 0; w < 3; w++) {
+			char *f = last_of(q ? q : s, words[w]);
+
+			if (f && (!at || f > at))
+				at = f, k = w;
 		}
+		if (at && stop_word(at, words[k], what[k], into[k], err, n))
+			return -1;
 	}
 	return 0;
 }
@@ -141,8 +147,8 @@ static int stop_parse(char *s, struct frame_stop *st, char *err, size_t n)
 	    !isfinite(p) || !(z > 0 && z <= 20)) {
 		snprintf(err, n,
 			 "each stop is YAW PITCH ZOOM \"text\" animation=CLIP variant=NAME "
-			 "(degrees, degrees, a zoom above 0 up to 20; the text, clip and "
-			 "variant optional)");
+			 "hotspot=NAME (degrees, degrees, a zoom above 0 up to 20; the text, "
+			 "clip, variant and hotspot optional)");
 		return -1;
 	}
 	st->yaw = y * RAD;

@@ -6,6 +6,7 @@
 #ifndef MK_VIEW_H
 #define MK_VIEW_H
 
+#include "state/hotspot.h"
 #include "util/math3d.h"
 
 #include <stdbool.h>
@@ -49,6 +50,10 @@ struct frame_stop {
 	/* The KHR_materials_variants variant shown there (its name); "": the
 	 * one shown stays. */
 	char variant[FRAME_STOP_CLIP];
+	/* The hotspot turned to the visitor there ([hotspot.NAME]'s NAME):
+	 * its facing view replaces the stop's yaw and pitch, its text an
+	 * empty stop text (content_frame); "": none. */
+	char hotspot[FRAME_STOP_CLIP];
 };
 
 /* In radians, as the app state uses it. */
@@ -59,7 +64,11 @@ struct app_frame {
 	double direction; /* +1: right, -1: left */
 	double sway;	  /* radians each way; 0: full turns */
 	int stop_count;
-	struct frame_stop stops[FRAME_STOPS];
+	/* stops[0 .. stop_count): [frame] stops; stops[FRAME_STOPS + i]: the
+	 * view that faces hotspot i (next-hotspot), hotspot_count of them,
+	 * filled by the content (content_app_frame_at). */
+	struct frame_stop stops[FRAME_STOPS + HOTSPOTS];
+	int hotspot_count;
 	double stop_seconds;
 };
 
@@ -67,9 +76,9 @@ void frame_config_defaults(struct frame_config *f);
 /* The model's turn before everything (up, then orientation). 0, or -1
  * with err naming what is wrong. */
 int frame_base(const struct frame_config *f, struct quat *out, char *err, size_t n);
-/* Parse 'yaw pitch zoom "text" animation=CLIP variant=NAME; ...'
- * (degrees; the text, the clip and the variant optional, the last two in
- * either order). The count, or -1 with err. */
+/* Parse 'yaw pitch zoom "text" animation=CLIP variant=NAME hotspot=NAME;
+ * ...' (degrees; the text and the last three optional, those in any
+ * order). The count, or -1 with err. */
 int frame_stops_parse(const char *text, struct frame_stop *out, int max, char *err, size_t n);
 /* f in radians for the app, with the start yaw and pitch (degrees) that
  * apply when f sets none. -1 with err when its stops do not parse or a

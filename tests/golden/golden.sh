@@ -27,8 +27,19 @@ scenes="$scenes caption-latin caption-rtl caption-logo caption-wrap caption-de c
 scenes="$scenes frame-up frame-start-view frame-own-look"
 scenes="$scenes render-scale-half normals-flat normals-smooth"
 scenes="$scenes morph-t1 morph-t3 morph-pingpong skin-t1 nodes-t1.7"
+scenes="$scenes hotspots-yaw0 hotspots-yaw180 hotspot-stop"
 mkdir -p "$out" "$models"
 "$TOOLS/mkmodels" "$models" >/dev/null
+
+# hot_ini FILE: the three hotspots of the hotspot scenes.
+hot_ini() {
+	printf '%s\n' '[hotspot.rim]' 'point = 2 0 0.866' 'normal = 0.125 0 0.866' \
+		'look = badge' 'color = #ffcc00' 'text = The rim' \
+		'[hotspot.glaze]' 'point = -2 0.5 0.707' 'look = badge' 'color = #40c0ff' \
+		'text = The glaze, a point without a normal' \
+		'[hotspot.foot]' 'point = 0 0 -1' 'normal = 0 0 -1' 'look = badge' \
+		'color = #ff4060' 'text = The foot' >"$1"
+}
 
 # render SCENE: one scene into DIR/SCENE.png.
 render() {
@@ -254,6 +265,23 @@ render() {
 		;;
 	render-scale-half)
 		$k -c matcaps/gold.png --render-scale 0.5 --output "$o"
+		;;
+	# Issue 33: three hotspots on the long model (its own NAME.ini; the
+	# file's coordinates, off the unit sphere: the fit moves them too).
+	# At yaw 0 badges 1 (the rim, with a normal) and 2 (the glaze, no
+	# normal) in front, 3 (the foot, on the back) hidden; at yaw 180 3
+	# in front, 1 and 2 behind: 2 hidden by the model's depth alone. The
+	# stop at hotspot 2: the model turned so its point faces the visitor,
+	# its text beside the badge (too wide for either side: below it).
+	hotspots-yaw0 | hotspots-yaw180 | hotspot-stop)
+		hot_ini "$m/long-hot.ini"
+		cp "$m/long.glb" "$m/long-hot.glb"
+		case $1 in
+		hotspot-stop) view="--hotspot 2" ;;
+		*) view="--start-yaw ${1#hotspots-yaw}" ;;
+		esac
+		# shellcheck disable=SC2086 # two words
+		$k -c matcaps/gold.png --model "$m/long-hot.glb" $view --caption-size 14 --output "$o"
 		;;
 	*)
 		echo "golden.sh: no scene named $1 (scenes: $scenes)" >&2

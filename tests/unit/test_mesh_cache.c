@@ -452,10 +452,11 @@ static void every_field_is_in_the_cache_table(void **state)
 	assert_true(big > 20);
 	assert_int_equal(caught, big);
 	/* Stored: every field but the five images (29 words, and 14 for
-	 * unlit and emission); the model's colour facts, 5 words. */
+	 * unlit and emission); the model's colour facts, 5 words, and the
+	 * loader's fit (a hotspot's point lands on the model), 4 doubles. */
 	assert_int_equal(mesh_nest_min_bytes(mesh_cache_table(MESH_CACHE_RANGE)), 6 * 4);
 	assert_int_equal(mesh_nest_min_bytes(mesh_cache_table(MESH_CACHE_MATERIAL)), 44 * 4);
-	assert_int_equal(mesh_nest_min_bytes(mesh_cache_table(MESH_CACHE_COLORS)), 5 * 4);
+	assert_int_equal(mesh_nest_min_bytes(mesh_cache_table(MESH_CACHE_COLORS)), 5 * 4 + 4 * 8);
 }
 
 static void the_directory_is_named_as_systemd_and_xdg_say(void **state)

@@ -439,10 +439,13 @@ int finish_mesh(Builder &b, const tinygltf::Model &m, struct mesh *out, const Gl
 	}
 	if (mesh_alloc(out, nv, (uint32_t)b.indices.size(), b.any_uvs))
 		return -ENOMEM;
-	if (fit.use_fit)
-		mesh_fit_to(b.positions.data(), nv, fit.center, fit.scale, out->positions);
-	else
-		mesh_fit_positions(b.positions.data(), nv, out->positions);
+	if (fit.use_fit) {
+		std::memcpy(out->fit, fit.center, sizeof(fit.center));
+		out->fit[3] = fit.scale;
+	} else {
+		mesh_fit_of(b.positions.data(), nv, out->fit);
+	}
+	mesh_fit_to(b.positions.data(), nv, out->fit, out->fit[3], out->positions);
 	std::memcpy(out->normals, b.normals.data(), b.normals.size() * sizeof(float));
 	std::memcpy(out->indices, b.indices.data(), b.indices.size() * sizeof(uint32_t));
 	std::vector<GltfVariantPart> parts;

@@ -436,13 +436,20 @@ void material_release(struct material *m)
 
 static void refit(struct mesh *mesh)
 {
-	double *world = malloc((size_t)mesh->vertex_count * 3 * sizeof(double) + 1);
+	double *world = malloc((size_t)mesh->vertex_count * 3 * sizeof(double) + 1), again[4];
 
 	if (!world)
 		return; /* it still draws, only a little larger */
 	for (size_t i = 0; i < (size_t)mesh->vertex_count * 3; i++)
 		world[i] = mesh->positions[i];
-	mesh_fit_positions(world, mesh->vertex_count, mesh->positions);
+	mesh_fit_of(world, mesh->vertex_count, again);
+	mesh_fit_to(world, mesh->vertex_count, again, again[3], mesh->positions);
+	/* The file's points follow: (world - c1) s1 - c2) s2. */
+	if (mesh->fit[3] > 0) {
+		for (int k = 0; k < 3; k++)
+			mesh->fit[k] += again[k] / mesh->fit[3];
+		mesh->fit[3] *= again[3];
+	}
 	free(world);
 }
 

@@ -134,7 +134,7 @@ void mesh_range_centers(struct mesh *m)
 	}
 }
 
-void mesh_fit_positions(const double *world, uint32_t count, float *out)
+void mesh_fit_of(const double *world, uint32_t count, double fit[4])
 {
 	double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
 	double c[3] = {0, 0, 0}, r2 = 0.0, scale = 1.0;
@@ -156,9 +156,19 @@ void mesh_fit_positions(const double *world, uint32_t count, float *out)
 	}
 	if (r2 > 0.0 && isfinite(r2))
 		scale = 1.0 / sqrt(r2);
+	for (int k = 0; k < 3; k++)
+		fit[k] = c[k];
+	fit[3] = scale;
+}
+
+void mesh_fit_positions(const double *world, uint32_t count, float *out)
+{
+	double fit[4];
+
+	mesh_fit_of(world, count, fit);
 	for (uint32_t i = 0; i < count; i++)
 		for (int k = 0; k < 3; k++)
-			out[i * 3 + k] = (float)((world[i * 3 + k] - c[k]) * scale);
+			out[i * 3 + k] = (float)((world[i * 3 + k] - fit[k]) * fit[3]);
 }
 
 void mesh_box(const double *world, uint32_t count, const double *center, double box[6], double *r2)
@@ -350,6 +360,7 @@ int mesh_copy_factors(struct mesh *to, const struct mesh *from)
 	size_t n = from->material_count;
 
 	to->has_colors = from->has_colors;
+	memcpy(to->fit, from->fit, sizeof(to->fit));
 	memcpy(to->vertex_color, from->vertex_color, sizeof(to->vertex_color));
 	to->materials = n ? malloc(n * sizeof(*to->materials)) : NULL;
 	to->material_count = 0;

@@ -100,6 +100,11 @@ struct mesh {
 	 * or every vertex has the same (then vertex_color holds it). */
 	float *colors;
 	uint32_t *indices;
+	/* The loader's fit: positions = (file's world - fit[0..2]) * fit[3],
+	 * so that a point the curator gives in the file's coordinates (a
+	 * hotspot) lands where the model is; fit[3] 0: unknown (the built-in
+	 * models, made in the unit sphere). Kept in the cache's entry. */
+	double fit[4];
 	/* The loader gave the model colours of its own: colors, or
 	 * vertex_color for every vertex (kept when they are cached). */
 	bool has_colors;
@@ -195,6 +200,8 @@ int mesh_weld(const float *positions, uint32_t count, uint32_t *rep);
  * from the origin or at an extreme scale keeps its precision) and scale
  * them into the unit sphere. A degenerate extent leaves the scale at 1. */
 void mesh_fit_positions(const double *world, uint32_t count, float *out);
+/* The centre (fit[0..2]) and scale (fit[3]) mesh_fit_positions uses. */
+void mesh_fit_of(const double *world, uint32_t count, double fit[4]);
 /* The box (lo xyz, hi xyz) of count positions, and with a centre the
  * squared distance of the farthest from it (*r2; 0 without). */
 void mesh_box(const double *world, uint32_t count, const double *center, double box[6], double *r2);

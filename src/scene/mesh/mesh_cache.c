@@ -18,7 +18,7 @@
 
 /* Changed whenever the layout or the preparation changes: an entry of
  * another version is stale. */
-#define CACHE_VERSION 10
+#define CACHE_VERSION 11
 #define CACHE_SUFFIX  ".mkmesh"
 
 static const char cache_magic[8] = {'M', 'K', 'M', 'E', 'S', 'H', '\r', '\n'};

@@ -88,6 +88,7 @@ static const struct mesh_nest range_table = MESH_NEST_TABLE(mesh_range, range_me
 static const struct mesh_nest_member color_members[] = {
     MESH_NEST_MEMBER(mesh, has_colors, MESH_NEST_BOOL),
     MESH_NEST_FLOATS_OF(mesh, vertex_color),
+    MESH_NEST_MEMBER(mesh, fit, MESH_NEST_DOUBLES, .n = 4),
 };
 static const struct mesh_nest color_table = MESH_NEST_TABLE(mesh, color_members, NULL);
 

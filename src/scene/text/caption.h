@@ -45,8 +45,9 @@ struct caption_config {
 };
 
 /* The most pictures of [frame] stops' texts a model has, each drawn as
- * the caption is (state/view.h's FRAME_STOPS at most). */
-#define CAPTION_STOPS 8
+ * the caption is: state/view.h's FRAME_STOPS, then one for each of
+ * state/hotspot.h's HOTSPOTS (content.h checks both). */
+#define CAPTION_STOPS 16
 
 /* The default size, in pixels of the panel. */
 #define CAPTION_SIZE_DEFAULT 28

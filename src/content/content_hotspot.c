@@ -1,0 +1,182 @@
+/* A content's hotspots: its settings' [hotspot.NAME] sections made the
+ * renderer's (render/hotspot_gl.h) on the worker, their points moved
+ * into the mesh's unit sphere by the loader's own fit, and handed to the
+ * renderer with the model. */
+#include "content/content.h"
+#include "util/log.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+/* The loader's centring and scale (mesh.fit); a mesh without one (the
+ * built-in models, already in the unit sphere) is taken as it is. */
+static void fit_of(const struct mesh *m, double centre[3], double *scale)
+{
+	bool known = m->fit[3] > 0 && isfinite(m->fit[3]);
+
+	for (int k = 0; k < 3; k++)
+		centre[k] = known ? m->fit[k] : 0;
+	*scale = known ? m->fit[3] : 1;
+}
+
+/* Which drawn hotspot each stop's picture labels; a stop naming a
+ * hotspot the model lacks is said once a load (it keeps its own view). */
+static void label_stops(struct content *s, const struct content_config *o)
+{
+	struct frame_stop stops[FRAME_STOPS];
+	char err[200];
+	int n = frame_stops_parse(o->frame.stops, stops, FRAME_STOPS, err, sizeof(err));
+
+	for (int i = 0; i < CAPTION_STOPS; i++)
+		s->stop_hotspot[i] = -1;
+	for (int i = 0; i < n; i++) {
+		int at = stops[i].hotspot[0] ? hotspot_find(&o->hotspots, stops[i].hotspot) : -1;
+
+		if (stops[i].hotspot[0] && at < 0)
+			log_err("[frame] stops: stop %d's hotspot=%s: expected the NAME of one of "
+				"the model's [hotspot.NAME] sections; the stop keeps its own view",
+				i + 1, stops[i].hotspot);
+		s->stop_hotspot[i] = at < 0 ? -1 : content_hotspot_drawn(s, at);
+	}
+	for (int i = 0; i < HOTSPOTS; i++)
+		s->stop_hotspot[CONTENT_HOTSPOT_CAPTION + i] = content_hotspot_drawn(s, i);
+}
+
+void content_load_hotspots(struct content *s, const struct content_config *o)
+{
+	double centre[3], scale;
+	int n = 0;
+
+	fit_of(&s->mesh, centre, &scale);
+	for (int i = 0; i < o->hotspots.count && n < CONTENT_HOTSPOTS; i++) {
+		const struct hotspot *h = &o->hotspots.items[i];
+		struct render_hotspot *out = &s->hotspots[n];
+
+		if (!h->has_point) {
+			log_warn(
+			    "[hotspot.%s] node = %s: a node's hotspot is not drawn yet; give it "
+			    "point = X Y Z",
+			    h->name, h->node);
+			continue;
+		}
+		memset(out, 0, sizeof(*out));
+		for (int k = 0; k < 3; k++) {
+			out->point[k] = (float)((h->point[k] - centre[k]) * scale);
+			out->normal[k] = (float)h->normal[k];
+		}
+		out->has_normal = h->has_normal;
+		out->badge = h->look == HOTSPOT_BADGE;
+		out->number = i + 1;
+		memcpy(out->color, h->color, sizeof(out->color));
+		s->hotspot_source[n++] = i;
+	}
+	s->hotspot_count = n;
+	label_stops(s, o);
+}
+
+/* The direction that faces the visitor at hotspot h: its normal,
+ * else from the model's centre to it; after the model's base turn. */
+static void facing_dir(const struct render_hotspot *h, struct quat rest, double out[3])
+{
+	const float *d = h->has_normal ? h->normal : h->point;
+	float m[16];
+
+	mat4_from_quat(m, rest);
+	for (int r = 0; r < 3; r++)
+		out[r] = m[r] * d[0] + m[4 + r] * d[1] + m[8 + r] * d[2];
+}
+
+int content_hotspot_drawn(const struct content *s, int index)
+{
+	for (int k = 0; k < s->hotspot_count; k++)
+		if (s->hotspot_source[k] == index)
+			return k;
+	return -1;
+}
+
+bool content_hotspot_facing(const struct content *s, int index, struct quat rest, double *yaw,
+			    double *pitch)
+{
+	int k = content_hotspot_drawn(s, index);
+	double d[3];
+
+	if (k < 0)
+		return false;
+	facing_dir(&s->hotspots[k], rest, d);
+	hotspot_facing(d, yaw, pitch);
+	return true;
+}
+
+void content_app_frame_at(const struct content *s, const struct content_config *c,
+			  struct app_frame *f, struct quat *rest)
+{
+	content_app_frame(c, f, rest);
+	for (int i = 0; i < f->stop_count; i++) {
+		int at =
+		    f->stops[i].hotspot[0] ? hotspot_find(&c->hotspots, f->stops[i].hotspot) : -1;
+
+		if (at >= 0)
+			content_hotspot_facing(s, at, *rest, &f->stops[i].yaw, &f->stops[i].pitch);
+	}
+	/* next-hotspot's views: each faces its hotspot at the start zoom (a
+	 * node's, not drawn, the start view), its text the hotspot's. */
+	f->hotspot_count = c->hotspots.count;
+	for (int i = 0; i < c->hotspots.count && i < HOTSPOTS; i++) {
+		struct frame_stop *v = &f->stops[FRAME_STOPS + i];
+
+		memset(v, 0, sizeof(*v));
+		v->yaw = f->yaw0, v->pitch = f->pitch0, v->zoom = f->zoom0;
+		content_hotspot_facing(s, i, *rest, &v->yaw, &v->pitch);
+		snprintf(v->text, sizeof(v->text), "%s", hotspot_text(&c->hotspots.items[i], NULL));
+	}
+}
+
+void content_load_hotspot_captions(struct content *s, const struct content_config *o)
+{
+	for (int i = 0; i < o->hotspots.count && i < HOTSPOTS; i++) {
+		struct caption_config c = o->caption;
+		char text[HOTSPOT_TEXT];
+		int ret;
+
+		snprintf(text, sizeof(text), "%s", hotspot_text(&o->hotspots.items[i], NULL));
+		if (!text[0])
+			continue;
+		c.text = text;
+		ret = caption_render_fit(&c, text, &(struct caption_fit){.quiet = true},
+					 &s->stop_caption[CONTENT_HOTSPOT_CAPTION + i], NULL);
+		if (ret && ret != -ENOENT)
+			log_warn("[hotspot.%s] text: not shown (the caption could not draw it)",
+				 o->hotspots.items[i].name);
+	}
+}
+
+int content_show_hotspot(const struct content *s, const struct content_config *c, int number,
+			 struct renderer *r, struct view *v)
+{
+	struct app_frame f;
+	struct quat rest;
+	double yaw, pitch;
+
+	content_app_frame(c, &f, &rest);
+	if (number < 1 || number > c->hotspots.count ||
+	    !content_hotspot_facing(s, number - 1, rest, &yaw, &pitch)) {
+		log_err("--hotspot %d: expected the number of one of the model's %d hotspots with "
+			"a point ([hotspot.NAME] sections, in the order of its files)",
+			number, c->hotspots.count);
+		return -EINVAL;
+	}
+	v->orientation = quat_multiply(quat_from_axis_angle(1, 0, 0, pitch),
+				       quat_multiply(quat_from_axis_angle(0, 1, 0, yaw), rest));
+	renderer_show_stop(r, CONTENT_HOTSPOT_CAPTION + number - 1);
+	return 0;
+}
+
+int content_hotspot_tapped(const struct content *s, const struct renderer *r, const struct view *v,
+			   int width, int height, double fx, double fy)
+{
+	int k = renderer_hotspot_hit(r, v, width, height, fx, fy);
+
+	return k >= 0 && k < s->hotspot_count ? s->hotspot_source[k] + 1 : 0;
+}
