@@ -549,6 +549,7 @@ static int loop_once(struct kiosk *k, int sig_fd)
 	if (k->screen)
 		next = earliest(next, screen_deadline(k->screen, now), CLOCK_NEVER);
 	next = earliest(next, k->rescan_at, service_deadline(&k->service));
+	next = earliest(next, kiosk_content_deadline(k), CLOCK_NEVER);
 	next = earliest(next, kiosk_models_deadline(k->models), metrics_deadline(k->metrics));
 	n = fill_fds(k, fds, sig_fd);
 	note_step(k);

@@ -31,6 +31,7 @@ void option_defaults(struct options *o)
 	/* One thread until the speed-up of several is measured on free cores
 	 * (issue 34): auto is there to try. */
 	o->content.prepare_threads = 1;
+	o->content.coarse_above = 200000;
 	o->content.fit = CONTENT_FIT_DEFAULT;
 	o->content.caption.size = CAPTION_SIZE_DEFAULT;
 	o->content.caption.padding = 12;

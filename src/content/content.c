@@ -8,6 +8,7 @@
 #include "scene/mesh/lod.h"
 #include "scene/mesh/lod_split.h"
 #include "scene/mesh/texture.h"
+#include "util/clock.h"
 #include "util/log.h"
 
 #include <limits.h>
@@ -247,6 +248,7 @@ int content_load(struct content *s, const struct content_config *o, bool strict)
 	int ret;
 
 	memset(s, 0, sizeof(*s));
+	s->began_ns = monotonic_ns();
 	ret = load_the_model(s, o, strict);
 	/* The first model's own matcaps and background, where it names them. */
 	if (!ret)
@@ -272,6 +274,7 @@ int content_load_model(struct content *s, const struct content_config *o, const 
 	int ret;
 
 	memset(s, 0, sizeof(*s));
+	s->began_ns = monotonic_ns();
 	s->model_path = strdup(path);
 	ret = s->model_path ? load_mesh(s, o, path) : -ENOMEM;
 	if (!ret)
@@ -294,6 +297,7 @@ int content_load_model(struct content *s, const struct content_config *o, const 
 static void release_model(struct content *s)
 {
 	mesh_cache_writer_join(s->writer);
+	content_refine_free(s->refine);
 	mesh_packed_release(&s->packed);
 	free(s->play_bytes);
 	mesh_cache_entry_free(s->cached);
@@ -322,6 +326,7 @@ void content_take_model(struct content *shown, struct content *fresh, struct con
 	old->caption = kept.caption;
 	memcpy(old->stop_caption, kept.stop_caption, sizeof(old->stop_caption));
 	old->own = kept.own;
+	old->refine = kept.refine; /* a coarse picture's whole mesh: not wanted now */
 	/* The look's text: fresh's equals kept's where it has none of its own. */
 	old->look = kept.look;
 	*shown = *fresh;
@@ -447,6 +452,10 @@ static int prepare_mesh(struct content *s, const struct content_config *o, int w
 		content_frame(s, o, width, height);
 	if (!ret)
 		content_play_check(s);
+	/* The live kiosk's large model: coarse now, whole later (one fit). */
+	if (!ret && (ret = content_coarse_begin(s, o, displaced ? 0.0 : o->lod_pixels / s->zoom,
+						width, height)))
+		return ret < 0 ? ret : 0;
 	/* No level of detail for a model that plays (content.h). */
 	if (!ret && !s->play)
 		ret =
