@@ -3,7 +3,6 @@
 #include "util/file.h"
 #include "content/model_list.h"
 #include "config/model_settings.h"
-#include "render/framing.h"
 #include "scene/gltf/gltf.h"
 #include "scene/mesh/lod.h"
 #include "scene/mesh/lod_split.h"
@@ -362,49 +361,6 @@ void content_release(struct content *s)
 	memset(s, 0, sizeof(*s));
 }
 
-/* Positions of the prepared mesh as the GPU gets them: the mesh's own, or
- * the packed arrays (float32, or int16 in units of position_scale). */
-static void frame_packed(struct framing *f, const struct mesh_packed *m)
-{
-	const void *a = m->arrays[MESH_POSITIONS];
-	bool int16 = mesh_array_int16(m->format, MESH_POSITIONS);
-
-	for (uint32_t i = 0; a && i < m->vertex_count; i++) {
-		double p[3];
-
-		for (int c = 0; c < 3; c++)
-			p[c] = int16 ? fmax(((const int16_t *)a)[3 * i + c] / 32767.0, -1.0) *
-					   m->position_scale
-				     : ((const float *)a)[3 * i + c];
-		framing_add(f, p);
-	}
-}
-
-/* [scene] fit: the zoom at which this model fills its share of a width x
- * height frame at the start view (render/framing.h). */
-static void content_frame(struct content *s, const struct content_config *o, int width, int height)
-{
-	struct view v = content_view(o);
-	struct framing f;
-
-	framing_begin(&f, &v, width, height);
-	if (s->cached)
-		frame_packed(&f, mesh_cache_entry_mesh(s->cached));
-	else if (s->packed.vertex_count)
-		frame_packed(&f, &s->packed);
-	for (uint32_t i = 0; s->mesh.positions && i < s->mesh.vertex_count; i++) {
-		const float *q = s->mesh.positions + 3 * (size_t)i;
-		double p[3] = {q[0], q[1], q[2]};
-
-		framing_add(&f, p);
-	}
-	s->zoom =
-	    o->zoom > 0 ? o->zoom : framing_zoom(&f, o->fit > 0 ? o->fit : CONTENT_FIT_DEFAULT);
-	log_debug("framing: zoom %.6f (at the start %.2f x %.2f, over a turn %.2f x %.2f of the "
-		  "half-frame)",
-		  s->zoom, f.start_x, f.start_y, f.turn_x, f.turn_y);
-}
-
 /* The model of an entry prepared for another display, parsed again: its
  * key's content follows the bytes parsed now, so the entry written after
  * is of what was parsed, whatever the file became since the lookup. */
@@ -430,7 +386,7 @@ static int prepare_mesh(struct content *s, const struct content_config *o, int w
 	if (content_cache_fits(s, width, height)) {
 		log_info("%s: the prepared mesh from the cache (%u triangles)%s", s->model_path,
 			 s->mesh.index_count / 3, s->play ? ", with its live playback" : "");
-		content_frame(s, o, width, height);
+		content_fit(s, o, width, height);
 		return 0;
 	}
 	if (s->cached) {
@@ -449,7 +405,7 @@ static int prepare_mesh(struct content *s, const struct content_config *o, int w
 	 * pixels as drawn (the zoom of the whole mesh, then of the simplified
 	 * one, which a start from the cache finds too). */
 	if (!ret)
-		content_frame(s, o, width, height);
+		content_fit(s, o, width, height);
 	if (!ret)
 		content_play_check(s);
 	/* The live kiosk's large model: coarse now, whole later (one fit). */
@@ -464,7 +420,7 @@ static int prepare_mesh(struct content *s, const struct content_config *o, int w
 	if (!ret)
 		content_cache_pack(s, width, height);
 	if (!ret)
-		content_frame(s, o, width, height);
+		content_fit(s, o, width, height);
 	return ret;
 }
 

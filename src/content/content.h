@@ -212,6 +212,10 @@ int content_upload_model(struct content *s, struct renderer *r);
 int content_variant_find(const struct content *s, const char *name);
 int content_variant_names(const struct mesh *m, char *buf, size_t n);
 struct view content_view(const struct content_config *c);
+/* [scene] fit: s->zoom, at which s's model fills its share of a width x
+ * height frame at c's start view (render/framing.h): over its entry's or
+ * packed arrays where it has them, and its mesh's own positions. */
+void content_fit(struct content *s, const struct content_config *c, int width, int height);
 /* Draw s's caption and its stops' pictures (content_caption.c), c's
  * [caption] and [frame] stops. A picture that fails is left out (the
  * journal says why), unless strict. */

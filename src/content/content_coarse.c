@@ -4,9 +4,13 @@
  * (scene/mesh/lod_coarse.h) once its fit is known, and that is what the
  * content's first upload shows; a second job of the worker
  * (content/refine_job.h) prepares the whole mesh as a still would, and
- * the loop swaps it in. The fit stays the one of the whole mesh, so
- * nothing moves at the swap. */
+ * the loop swaps it in. Both are framed by the fit of the whole mesh (a
+ * sloppy cut's outline is not the model's); the swap then takes the fit
+ * a still and a start from the cache compute on the prepared mesh, which
+ * its level of detail keeps within its pixel error of the whole one's:
+ * the journal says by how much it moved. */
 #include "content/content.h"
+#include "config/settings.h"
 #include "scene/mesh/lod.h"
 #include "scene/mesh/lod_coarse.h"
 #include "scene/mesh/lod_split.h"
@@ -29,8 +33,9 @@
 
 struct content_refine {
 	/* The model's side of a content: the whole mesh, then prepared and
-	 * packed; its cache key; its cache write, once swapped in. */
+	 * packed, with its fit (zoom); its cache key. */
 	struct content part;
+	struct content_config config; /* the model's settings, for the fit */
 	double pixels;
 	int width, height, threads;
 	uint32_t coarse_triangles;
@@ -69,8 +74,11 @@ int content_coarse_begin(struct content *s, const struct content_config *o, doub
 
 	if (!f)
 		return 0; /* none wanted, or no memory: prepared whole */
-	ret = lod_coarse_mesh(&s->mesh, target, &coarse);
+	ret = content_config_copy(&f->config, o);
+	if (!ret)
+		ret = lod_coarse_mesh(&s->mesh, target, &coarse);
 	if (ret) {
+		content_config_release(&f->config);
 		free(f);
 		return ret == -EINVAL ? 0 : ret;
 	}
@@ -129,6 +137,7 @@ void content_refine_run(struct content_refine *f)
 	if (lod_prepare_mesh_threads(&p->mesh, f->pixels, f->width, f->height, f->threads, NULL))
 		log_warn("the level of detail has no memory: the model is drawn whole");
 	content_cache_pack(p, f->width, f->height);
+	content_fit(p, &f->config, f->width, f->height);
 }
 
 /* The glTF's decoded maps are the material's now (content.c's
@@ -154,7 +163,10 @@ int content_refine_swap(struct content *shown, struct content_refine *f, struct 
 		old->refine = f;
 		return ret;
 	}
+	log_debug("%s: the fit at the swap: zoom %.6f, was %.6f", shown->model_path, p->zoom,
+		  shown->zoom);
 	old->mesh = shown->mesh;
+	shown->zoom = p->zoom;
 	shown->mesh = p->mesh;
 	shown->packed = p->packed;
 	shown->cache_key = p->cache_key;
@@ -175,6 +187,9 @@ void content_refine_free(struct content_refine *f)
 {
 	if (!f)
 		return;
-	content_release(&f->part);
+	/* Never stored: the swap gives the packed mesh to the content shown. */
+	mesh_release(&f->part.mesh);
+	mesh_packed_release(&f->part.packed);
+	content_config_release(&f->config);
 	free(f);
 }
