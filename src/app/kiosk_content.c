@@ -39,24 +39,34 @@ static void reload_ready(void *ctx)
 	}
 }
 
+/* f, prepared, in place of the coarse mesh shown; what goes is released
+ * on the worker. */
+static void swap_refine(struct kiosk *k, struct content_refine *f)
+{
+	struct content old;
+
+	if (content_refine_swap(k->content, f, k->renderer, &old) == 0)
+		kiosk_tell_app(k, APP_DISPLAY_BACK);
+	worker_retire(k->worker, &old);
+}
+
 /* A coarse picture's full level of detail, prepared: swapped in, unless
- * another model was asked for meanwhile (it would show the old model
- * again until the new one is ready); what goes is released on the
- * worker. */
+ * another model was asked for meanwhile. Then it is kept aside, prepared:
+ * the switch drops it with the coarse model (it would show the old model
+ * again until the new one is ready), and one that finds no other model
+ * leaves it to be swapped in without a job (start_refine). */
 static void refine_ready(void *ctx)
 {
 	struct kiosk *k = ctx;
 	struct content_refine *f = refine_job_take(&k->refine);
-	struct content old = {0};
 
-	if (kiosk_models_switching(k->models)) {
-		log_info("%s: its full level of detail is not shown: another model was asked for",
-			 k->content->model_path);
-		old.refine = f;
-	} else if (content_refine_swap(k->content, f, k->renderer, &old) == 0) {
-		kiosk_tell_app(k, APP_DISPLAY_BACK);
+	if (!kiosk_models_switching(k->models)) {
+		swap_refine(k, f);
+		return;
 	}
-	worker_retire(k->worker, &old);
+	log_info("%s: its full level of detail waits: another model was asked for",
+		 k->content->model_path);
+	k->content->refine = f;
 }
 
 void kiosk_matcap_settled(struct kiosk *k, int index)
@@ -146,12 +156,20 @@ static bool start_matcap(struct kiosk *k)
  * share the CPU with the simplification. */
 static bool start_refine(struct kiosk *k)
 {
-	if (!k->content->refine) {
+	struct content_refine *f = k->content->refine;
+
+	if (!f || content_refine_prepared(f)) {
 		k->coarse_frame = -1;
+		k->content->refine = NULL;
+		if (f) /* kept aside by refine_ready: no other model came */
+			swap_refine(k, f);
 		return false;
 	}
-	if (k->coarse_frame < 0)
+	/* Another coarse model swapped in meanwhile: its own frame first. */
+	if (k->coarse_frame < 0 || k->coarse_of != f) {
 		k->coarse_frame = k->frames_drawn;
+		k->coarse_of = f;
+	}
 	if (k->frames_drawn == k->coarse_frame)
 		return false;
 	k->coarse_frame = -1;
@@ -160,9 +178,12 @@ static bool start_refine(struct kiosk *k)
 
 uint64_t kiosk_content_deadline(const struct kiosk *k)
 {
-	bool drawn = k->coarse_frame >= 0 && k->frames_drawn > k->coarse_frame;
+	const struct content_refine *f = k->content->refine;
+	bool drawn = k->coarse_frame >= 0 && k->coarse_of == f && k->frames_drawn > k->coarse_frame;
 
-	return k->content->refine && drawn && !worker_busy(k->worker) ? 0 : CLOCK_NEVER;
+	/* A prepared one (kept aside) is swapped in as soon as the worker is idle. */
+	return f && (drawn || content_refine_prepared(f)) && !worker_busy(k->worker) ? 0
+										     : CLOCK_NEVER;
 }
 
 /* Before the loop sleeps: the next job, when the worker is idle. */

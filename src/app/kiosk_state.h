@@ -120,10 +120,12 @@ struct kiosk {
 	struct matcap_job matcap; /* decoding the image asked for */
 	unsigned matcap_set_id;	  /* bumped when the set or the texture changes under it */
 	/* A coarse picture's full level of detail (content/refine_job.h),
-	 * and frames_drawn when the content shown was first found coarse:
-	 * its refine starts once a frame showed it; -1: none found yet. */
+	 * and frames_drawn when the content shown was first found with
+	 * coarse_of to refine: it starts once a frame showed it (a screen
+	 * asleep draws none: it waits for the wake); -1: none found yet. */
 	struct refine_job refine;
 	long coarse_frame;
+	const struct content_refine *coarse_of;
 	/* The loop thread's longest step, from a wake-up to the next sleep:
 	 * what a page flip or an input may wait for (the bench reads it). */
 	uint64_t woke_ns;

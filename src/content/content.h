@@ -177,8 +177,10 @@ int content_coarse_begin(struct content *s, const struct content_config *o, doub
 /* The refine of s, taken for a job (s->refine left NULL, s still shown
  * coarse); the journal says when the coarse picture came. */
 struct content_refine *content_refine_take(struct content *s);
-/* On the worker: the level of detail and the packing of f's mesh. */
+/* On the worker: the level of detail and the packing of f's mesh; then
+ * it is prepared (a refine put back, to swap in without a job). */
 void content_refine_run(struct content_refine *f);
+bool content_refine_prepared(const struct content_refine *f);
 /* On the loop: f's mesh to the renderer in place of shown's coarse one
  * (the fit stays: it was of the whole mesh), and its cache entry written;
  * old gets what is to be released (the coarse mesh, or f when it does not

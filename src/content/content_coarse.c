@@ -40,6 +40,7 @@ struct content_refine {
 	int width, height, threads;
 	uint32_t coarse_triangles;
 	uint64_t began_ns;
+	bool prepared; /* content_refine_run is done with it */
 };
 
 static double seconds_since(uint64_t ns)
@@ -138,6 +139,12 @@ void content_refine_run(struct content_refine *f)
 		log_warn("the level of detail has no memory: the model is drawn whole");
 	content_cache_pack(p, f->width, f->height);
 	content_fit(p, &f->config, f->width, f->height);
+	f->prepared = true;
+}
+
+bool content_refine_prepared(const struct content_refine *f)
+{
+	return f && f->prepared;
 }
 
 /* The glTF's decoded maps are the material's now (content.c's

@@ -4,7 +4,8 @@
  * that frame is the still's (the content --output prepares, drawn as
  * main.c's render_frames draws it: content_view at the fit's zoom), pixel
  * for pixel: the fit did not move. A next-model press while the full mesh
- * is being prepared: it is dropped, never shown, and the next model comes.
+ * is being prepared: it is dropped, never shown, and the next model comes;
+ * or, when the next one does not load, it is swapped in after all.
  *
  * The threshold is the setting itself ([kiosk] coarse_above = 1000, for
  * a knot of 16384 triangles); the full mesh's preparation is held by the
@@ -53,7 +54,8 @@ struct script {
 	struct input_source base; /* first: the loop hands this back */
 	struct live_kiosk *lk;
 	enum step step;
-	bool press_next; /* the second test: next-model while the full mesh is prepared */
+	bool press_next; /* next-model while the full mesh is prepared */
+	bool comes_back; /* ... and no other model loads: the first one's full mesh comes */
 	const char *gate;
 	const char *first; /* the model shown coarse */
 	uint64_t give_up_ns;
@@ -112,9 +114,9 @@ static bool swapped(struct script *s)
 	const struct content *c = &s->lk->content;
 	bool first = c->model_path && !strcmp(c->model_path, s->first);
 
-	if (s->press_next && first && !c->coarse)
+	if (s->press_next && !s->comes_back && first && !c->coarse)
 		s->stale_full = true;
-	return !c->coarse && !(s->press_next && first);
+	return !c->coarse && !(s->press_next && !s->comes_back && first);
 }
 
 static int script_read(struct input_source *src, uint64_t now, struct app_event *out, int max)
@@ -141,7 +143,10 @@ static int script_read(struct input_source *src, uint64_t now, struct app_event 
 		break;
 	case WAIT_FULL:
 		swapped(s); /* a stale full mesh after the swap counts too */
-		if (kiosk_frames_drawn(s->lk->k) > s->swap_frame) {
+		/* A frame drawn since, or none due: the last one drawn shows
+		 * it (a swap without a job is drawn in the pass that made it). */
+		if (kiosk_frames_drawn(s->lk->k) > s->swap_frame ||
+		    !kiosk_app_state(s->lk->k)->dirty) {
 			read_frame(s, &s->full);
 			s->step = DONE;
 			kill(getpid(), SIGTERM);
@@ -325,11 +330,59 @@ static void next_model_while_coarse(void **state)
 	fixture_done();
 }
 
+/* A folder of the knot and a file that does not load: next-model while
+ * the knot's full mesh is prepared finds no other model, and the knot's
+ * full mesh, kept aside, comes after all (not the coarse one for good). */
+static void next_model_that_fails(void **state)
+{
+	struct script s = {.base = {.name = "coarse failed switch script",
+				    .fd = -1,
+				    .read = script_read,
+				    .deadline = script_deadline,
+				    .destroy = script_destroy},
+			   .press_next = true,
+			   .comes_back = true};
+	struct live_kiosk lk;
+	struct fixture f;
+	struct image still;
+	char knot[96], broken[96];
+	FILE *b;
+
+	(void)state;
+	fixture_make(&f, NULL);
+	snprintf(knot, sizeof(knot), "%s/a-knot.glb", f.model);
+	snprintf(broken, sizeof(broken), "%s/b-broken.glb", f.model);
+	write_knot(knot);
+	b = fopen(broken, "w");
+	assert_non_null(b);
+	fputs("not a glb", b);
+	fclose(b);
+	live_kiosk_open(&lk, f.ini, &s.base, SIZE, true);
+	assert_true(lk.content.coarse);
+	s.lk = &lk;
+	s.gate = f.gate;
+	s.first = knot;
+	assert_int_equal(kiosk_run(lk.k), 0);
+	assert_int_equal(s.step, DONE);
+	assert_string_equal(lk.content.model_path, knot);
+	assert_false(lk.content.coarse);
+	assert_null(lk.content.refine);
+	draw_still(&lk, f.still_cache, &still);
+	assert_true(pixels_apart(&s.coarse, &s.full) > 0);
+	assert_int_equal(pixels_apart(&s.full, &still), 0);
+	image_release(&s.coarse);
+	image_release(&s.full);
+	image_release(&still);
+	live_kiosk_stop(&lk);
+	fixture_done();
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(coarse_then_the_still),
 	    cmocka_unit_test(next_model_while_coarse),
+	    cmocka_unit_test(next_model_that_fails),
 	};
 
 	/* Before the GL driver starts its threads, as main() does. */
