@@ -65,7 +65,7 @@ static void refine_ready(void *ctx)
 		return;
 	}
 	log_info("%s: its full level of detail waits: another model was asked for",
-		 k->content->model_path);
+		 content_name(k->content));
 	k->content->refine = f;
 }
 

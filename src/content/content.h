@@ -188,6 +188,8 @@ bool content_refine_prepared(const struct content_refine *f);
 int content_refine_swap(struct content *shown, struct content_refine *f, struct renderer *r,
 			struct content *old);
 void content_refine_free(struct content_refine *f);
+/* s's model as the journal names it: its path, or "the built-in knot". */
+const char *content_name(const struct content *s);
 /* src/content/content_play.c: the material's preparation (a
  * displacement's subdivision, generated tangents) may give the mesh other
  * vertices than those the poses write, or tangents a feature reads (they

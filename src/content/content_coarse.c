@@ -43,6 +43,12 @@ struct content_refine {
 	bool prepared; /* content_refine_run is done with it */
 };
 
+/* The journal's name of s's model. */
+const char *content_name(const struct content *s)
+{
+	return s->model_path ? s->model_path : "the built-in knot";
+}
+
 static double seconds_since(uint64_t ns)
 {
 	return (double)(monotonic_ns() - ns) / 1e9;
@@ -97,7 +103,7 @@ int content_coarse_begin(struct content *s, const struct content_config *o, doub
 	s->refine = f;
 	s->coarse = true;
 	log_debug("%s: %u triangles, over [kiosk] coarse_above = %d: a coarse picture of %u first",
-		  s->model_path, f->part.mesh.index_count / 3, o->coarse_above,
+		  content_name(s), f->part.mesh.index_count / 3, o->coarse_above,
 		  f->coarse_triangles);
 	return 1;
 }
@@ -108,7 +114,7 @@ struct content_refine *content_refine_take(struct content *s)
 
 	s->refine = NULL;
 	if (f)
-		log_info("%s: coarse picture (%u triangles) after %.2f s", s->model_path,
+		log_info("%s: coarse picture (%u triangles) after %.2f s", content_name(s),
 			 f->coarse_triangles, seconds_since(f->began_ns));
 	return f;
 }
@@ -166,11 +172,11 @@ int content_refine_swap(struct content *shown, struct content_refine *f, struct 
 	if (ret) {
 		log_err("%s: its full level of detail does not fit on the GPU: the coarse picture "
 			"stays",
-			shown->model_path);
+			content_name(shown));
 		old->refine = f;
 		return ret;
 	}
-	log_debug("%s: the fit at the swap: zoom %.6f, was %.6f", shown->model_path, p->zoom,
+	log_debug("%s: the fit at the swap: zoom %.6f, was %.6f", content_name(shown), p->zoom,
 		  shown->zoom);
 	old->mesh = shown->mesh;
 	shown->zoom = p->zoom;
@@ -182,7 +188,7 @@ int content_refine_swap(struct content *shown, struct content_refine *f, struct 
 	memset(p, 0, sizeof(*p));
 	content_cache_store(shown);
 	release_maps(&shown->mesh);
-	log_info("%s: full level of detail (%u triangles) after %.2f s", shown->model_path,
+	log_info("%s: full level of detail (%u triangles) after %.2f s", content_name(shown),
 		 shown->mesh.index_count / 3, seconds_since(f->began_ns));
 	content_refine_free(f);
 	/* The whole mesh's arrays are gone: back to the system. */

@@ -48,7 +48,7 @@ int refine_job_start(struct refine_job *j, struct worker *w, struct content *sho
 	if (ret) {
 		log_err("%s: its full level of detail cannot be prepared (%s): the coarse picture "
 			"stays",
-			shown->model_path, strerror(-ret));
+			content_name(shown), strerror(-ret));
 		refine_job_release(j);
 		return ret;
 	}

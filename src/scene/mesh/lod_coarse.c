@@ -7,14 +7,17 @@
 #include <string.h>
 
 /* Each range's share of `triangles`, by its size, sloppily simplified into
- * idx; the ranges of out follow. Returns the index count. */
+ * idx; the ranges of out follow (a mesh without ranges is one, whole).
+ * Returns the index count. */
 static size_t simplify_ranges(const struct mesh *m, uint32_t triangles, unsigned *idx,
 			      struct mesh_range *ranges)
 {
+	struct mesh_range whole = {.first_index = 0, .index_count = m->index_count};
+	uint32_t count = m->range_count ? m->range_count : 1;
 	size_t at = 0;
 
-	for (uint32_t r = 0; r < m->range_count; r++) {
-		const struct mesh_range *in = &m->ranges[r];
+	for (uint32_t r = 0; r < count; r++) {
+		const struct mesh_range *in = m->range_count ? &m->ranges[r] : &whole;
 		double share = (double)triangles * in->index_count / m->index_count;
 		size_t target =
 		    3 * (size_t)(share > LOD_COARSE_RANGE_MIN ? share : LOD_COARSE_RANGE_MIN);
@@ -85,12 +88,12 @@ int lod_coarse_mesh(const struct mesh *m, uint32_t triangles, struct mesh *out)
 	int ret = -EINVAL;
 
 	memset(out, 0, sizeof(*out));
-	if (!m->index_count || !m->range_count || m->variant_count)
+	if (!m->index_count || m->variant_count)
 		goto out;
 	ret = -ENOMEM;
 	/* Each range may keep its floor above its share: at most all of m. */
 	idx = malloc((size_t)m->index_count * sizeof(unsigned) + 1);
-	ranges = calloc(m->range_count, sizeof(*ranges));
+	ranges = calloc(m->range_count ? m->range_count : 1, sizeof(*ranges));
 	if (!idx || !ranges)
 		goto out;
 	n = simplify_ranges(m, triangles, idx, ranges);
@@ -99,10 +102,13 @@ int lod_coarse_mesh(const struct mesh *m, uint32_t triangles, struct mesh *out)
 		ret = copy_facts(m, out);
 	if (ret)
 		goto out;
-	out->ranges = ranges;
-	out->range_count = m->range_count;
-	ranges = NULL;
-	mesh_range_centers(out);
+	/* None in m: none in out either (the whole mesh is one draw). */
+	if (m->range_count) {
+		out->ranges = ranges;
+		out->range_count = m->range_count;
+		ranges = NULL;
+		mesh_range_centers(out);
+	}
 out:
 	if (ret)
 		mesh_release(out);
