@@ -10,7 +10,7 @@
 # on stderr, and exit status 2.
 set -u
 
-groups="layers unit golden egl program_check mirror_check ortho loaders bad-input not-a-file corpus cli"
+groups="layers unit golden egl program_check mirror_check ortho fit preview loaders bad-input not-a-file corpus cli"
 groups="$groups config_doc baker live metrics install systemd fuzz soak no-camera board hands"
 groups="$groups base_color_check sync tsan systemd-board limits man doc_claims"
 
@@ -86,6 +86,8 @@ needs() {
 	egl) echo "all $TOOLS/mkmodels $TOOLS/imgdiff" ;;
 	program_check | mirror_check | base_color_check) echo "$TOOLS/$1" ;;
 	ortho) echo "all $TOOLS/mkmodels $TOOLS/imgdiff" ;;
+	fit) echo "all $TOOLS/mkmodels $TOOLS/silhouette" ;;
+	preview) echo "all $TOOLS/mkmodels $TOOLS/imgdiff" ;;
 	loaders) echo "all $TOOLS/mkmodels" ;;
 	cli) echo "all asan-kiosk $TOOLS/mkmodels" ;;
 	config_doc | install | systemd | no-camera) echo all ;;
@@ -102,7 +104,7 @@ needs() {
 	fuzz) echo fuzzers ;;
 	soak) echo "$TOOLS/soak" ;;
 	systemd-board) echo all ;;
-	board) echo "all $TOOLS/imgdiff $TOOLS/hues $TOOLS/cec_power $TOOLS/clock_set $TOOLS/touch_inject $TOOLS/mkmodels" ;;
+	board) echo "all $TOOLS/imgdiff $TOOLS/hues $TOOLS/cec_power $TOOLS/clock_set $TOOLS/touch_inject $TOOLS/knob_inject $TOOLS/mkmodels" ;;
 	esac
 }
 

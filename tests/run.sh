@@ -32,6 +32,10 @@ timed test_mirror_check
 timed test_base_color_check
 # 5. A sphere under an orthographic camera reproduces the matcap disk.
 timed test_ortho
+# 5b. A lopsided model's outline centred in the frame and above a caption.
+timed test_fit
+# 5c. --stop and --at: the still of a moment the kiosk would show.
+timed test_preview
 # 6. Loader variants that must work from the command line.
 timed test_loaders
 # 7. Malformed input, through the ASan binary: exit status 1, one error

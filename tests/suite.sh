@@ -177,6 +177,98 @@ test_ortho() {
 	done
 }
 
+# The fit (issue 33): a lopsided model (tests/tools/mkmodels.c: a long body
+# and a tall fin at one end, as a plane from its side) sat off-centre, its
+# box's centre framed rather than its outline. Its silhouette's box is now
+# within 2% of the frame of the room's centre: the whole frame, and the
+# frame less a caption's box at the bottom and at the top (the room's centre
+# read from the kiosk's debug line, in NDC).
+fit_centred() { # NAME [OPTION]...
+	scene=$1
+	shift
+	"$KIOSK" -v --backend $offscreen --size 640x480 --model "$out/models/lopsided.glb" \
+		--output "$out/render/$scene.png" "$@" 2>"$out/render/$scene.log" &&
+		ry=$(sed -n 's/.*framing: zoom .* to (\(.*\), \(.*\)) (over.*/\2/p' \
+			"$out/render/$scene.log" | tail -1) &&
+		rows=$(awk -v r="$ry" 'BEGIN { t = r < 0 ? -r : 0; b = r > 0 ? r : 0;
+			printf "%d %d", t * 480 + 0.5, 480 - b * 480 + 0.5 }') &&
+		# shellcheck disable=SC2086 # two numbers
+		"$TOOLS/silhouette" "$out/render/$scene.png" $rows 0.02
+}
+test_fit() {
+	need_models
+	check "a lopsided model's outline centred in the frame" fit_centred fit-centred
+	check "a lopsided model's outline centred in the room above a caption" fit_centred fit-above-caption \
+		--caption "A lopsided model" --caption-position bottom
+	check "a lopsided model's outline centred in the room below a caption" fit_centred fit-below-caption \
+		--caption "A lopsided model" --caption-position top-left
+}
+
+# --stop N and --at SECONDS (issue 33): an offscreen still of a moment the
+# kiosk would show, through its own app state. The tour resting at its
+# second stop draws, byte for byte, what --stop 2 draws (view and text);
+# two moments of the tour differ as the tour does; a stop the model lacks
+# is refused, naming it; the README's toured picture is what make readme
+# draws.
+preview() { # OUT [OPTION]...
+	png=$1
+	shift
+	"$KIOSK" -q --backend $offscreen --size 160x120 --model "$out/models/lopsided.glb" \
+		--stops '0 0 1 "Front"; 90 10 1.2 "The fin"; 200 -10 0.9 "Behind"' \
+		--stop-seconds 4 --attract-speed 360 --caption Lopsided --caption-drift off \
+		--output "$out/render/$png" "$@"
+}
+# live_at_stop: the live kiosk (offscreen) touring the same stops; its
+# frame (--status) once the tour rests at its first stop is what --stop 1
+# drew (10 s at most for the kiosk to get there). The caption's drift off
+# in both: the live one drifts by the time of day.
+live_at_stop() {
+	run=$out/preview-run
+	rm -rf "$run"
+	mkdir -p "$run"
+	RUNTIME_DIRECTORY=$run "$KIOSK" -q --backend $offscreen --size 160x120 --keyboard none \
+		--model "$out/models/lopsided.glb" \
+		--stops '0 0 1 "Front"; 90 10 1.2 "The fin"; 200 -10 0.9 "Behind"' \
+		--stop-seconds 30 --attract-speed 360 --attract-after 0.2 --caption Lopsided \
+		--caption-drift off 2>"$run/kiosk.log" &
+	pid=$!
+	i=0 seen=1
+	while [ $i -lt 100 ] && [ $seen -ne 0 ]; do
+		sleep 0.1
+		i=$((i + 1))
+		RUNTIME_DIRECTORY=$run "$KIOSK" --status >/dev/null 2>&1 &&
+			"$TOOLS/imgdiff" --tol 8 --share 0.005 "$out/render/stop-1.png" \
+				"$run/frame.png" >/dev/null 2>&1 && seen=0
+	done
+	kill -TERM $pid && wait $pid
+	return $seen
+}
+test_preview() {
+	need_models
+	check "--stop 1 draws" preview stop-1.png --stop 1
+	check "the live kiosk at its tour's first stop shows what --stop 1 drew" live_at_stop
+	check "--stop 2 draws" preview stop-2.png --stop 2
+	check "--at 7.5 (the tour at rest at its second stop) draws" preview at-7.5.png --at 7.5
+	check "--at 7.5 is --stop 2, byte for byte" cmp "$out/render/stop-2.png" \
+		"$out/render/at-7.5.png"
+	check "--at 2 draws" preview at-2.png --at 2
+	check "--at 6 draws" preview at-6.png --at 6
+	check "the start view draws" preview start.png
+	check "two moments of the tour differ, and from the start view" sh -c "
+		! cmp -s $out/render/at-2.png $out/render/at-6.png &&
+		! cmp -s $out/render/at-2.png $out/render/start.png &&
+		! cmp -s $out/render/stop-2.png $out/render/start.png"
+	check "--stop 4 of three stops is refused, naming them" sh -c "
+		! $KIOSK --backend $offscreen --size 64x64 --stops '0 0 1; 90 0 1; 180 0 1' --stop 4 \
+			--output $out/render/stop-4.png 2>$out/render/stop-4.log &&
+		grep -q -- '--stop 4: the model has 3 stops (.frame. stops); expected 1 to 3' \
+			$out/render/stop-4.log"
+	check "the README's toured picture: --at renders" sh tests/readme/tour.sh "$KIOSK" \
+		$offscreen "$out/render/readme-tour.png"
+	check "the README's toured picture is what make readme draws (tests/readme/tour.png)" \
+		imgdiff_golden tests/readme/tour.png "$out/render/readme-tour.png"
+}
+
 # Loader variants that must work from the command line.
 test_loaders() {
 	need_models
@@ -423,6 +515,46 @@ test_cli() {
 	grep -q "^ok every step ran" "$out/config_check.log" ||
 		echo "not ok the scenario stopped early" >>"$out/config_check.log"
 	results check-config "$out/config_check.log"
+
+	# The one precedence (issue 33): --yaw 90 --caption X --background
+	# '#ff0000' beside a NAME.ini that sets all three drew the NAME.ini's
+	# frame, byte for byte; now it draws what the same options draw for
+	# a model without a NAME.ini.
+	cp "$out/models/long.glb" "$out/bad/own.glb"
+	cp "$out/models/long.glb" "$out/bad/bare.glb"
+	printf '[scene]\nyaw = 10\n[caption]\ntext = Vase\n[display]\nbackground = #00ff00\n' \
+		>"$out/bad/own.ini"
+	check "the command line goes over a model's NAME.ini" sh -c "
+		r() { $KIOSK -q --backend $offscreen --size 160x120 --model $out/bad/\$1.glb \
+			--output $out/bad/prec-\$2.png \$3; }
+		r own own '' && r own cli '--yaw 90 --caption X --background #ff0000' &&
+		r bare bare '--yaw 90 --caption X --background #ff0000' &&
+		! cmp -s $out/bad/prec-own.png $out/bad/prec-cli.png &&
+		cmp $out/bad/prec-bare.png $out/bad/prec-cli.png"
+
+	# --check-config -v: every value in effect with its origin, and a
+	# NAME.ini's under the command line's (the README's promise).
+	printf '[scene]\nmodel = own.glb\nfit = 0.6\n' >"$out/bad/verbose.ini"
+	check "--check-config -v names each value's file and line, command line or default" sh -c "
+		$KIOSK --check-config -v --config $out/bad/verbose.ini --yaw 90 \
+			>$out/bad/verbose.out 2>/dev/null &&
+		grep -qx '  .scene. fit = 0.6 ($out/bad/verbose.ini:3)' $out/bad/verbose.out &&
+		grep -qx '  .scene. yaw = 90 (the command line)' $out/bad/verbose.out &&
+		grep -qx '  .scene. pitch = 20 (the default)' $out/bad/verbose.out &&
+		grep -qx '    .scene. yaw = 90 (the command line, over $out/bad/own.ini:2)' \
+			$out/bad/verbose.out &&
+		grep -qx '    .caption. text = Vase ($out/bad/own.ini:4)' $out/bad/verbose.out"
+
+	# --caption auto on a Blender file (its scene is "Scene", as every
+	# Blender file's is) showed "Scene"; now the file's name made
+	# readable: the frame of --caption 'Old radio v2', not of 'Scene'.
+	cp tests/corpus/blender/cube-textured.glb "$out/bad/old_radio-v2.glb"
+	check "--caption auto passes over Blender's 'Scene' for the file's name" sh -c "
+		r() { $KIOSK -q --backend $offscreen --size 320x240 --model $out/bad/old_radio-v2.glb \
+			--output $out/bad/auto-\$1.png --caption \"\$2\"; }
+		r auto auto && r file 'Old radio v2' && r scene Scene &&
+		cmp $out/bad/auto-auto.png $out/bad/auto-file.png &&
+		! cmp -s $out/bad/auto-auto.png $out/bad/auto-scene.png"
 
 	# [scene] matcap_first = auto (the default) with the shipped matcaps: a
 	# coloured model starts on pearl, not gold (which turned its colours

@@ -25,6 +25,8 @@ UNIT_TESTS  += caption import gltf_depth load_guard
 UNIT_TESTS  += ini stranger_settings normals
 UNIT_TESTS  += textures
 UNIT_TESTS  += variants vertex_alpha
+UNIT_TESTS  += precedence model_name
+UNIT_TESTS  += knob visits
 TOOLS_DIR   := $(BUILD)/tools
 ASAN_BUILD  := $(BUILD)/asan
 # MK_TEST_HOOKS: the test hooks (MK_TEST_PREPARE_DELAY_MS, src/app/reload.c)
@@ -105,6 +107,12 @@ $(TOOLS_DIR)/touch_inject: tests/tools/touch_inject.c
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -o $@ $^
 test-tools: $(TOOLS_DIR)/touch_inject
+
+# A uinput rotary knob that turns and presses (tests/e2e/knob-board.sh).
+$(TOOLS_DIR)/knob_inject: tests/tools/knob_inject.c
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -o $@ $^
+test-tools: $(TOOLS_DIR)/knob_inject
 
 # Whether a model with no reference image shows (tests/corpus/run.sh).
 $(TOOLS_DIR)/silhouette: tests/corpus/silhouette.c $(BUILD)/util/image.o $(BUILD)/util/file.o $(BUILD)/util/log.o
@@ -246,6 +254,7 @@ golden: $(KIOSK) test-tools
 # machine with no display (the frame it writes), through the offscreen backend.
 readme: $(KIOSK)
 	./$(KIOSK) -q --backend $(OFFSCREEN_BACKEND) --output tests/readme/first.png
+	sh tests/readme/tour.sh ./$(KIOSK) $(OFFSCREEN_BACKEND) tests/readme/tour.png
 
 .PHONY: unit-tests test-tools asan asan-kiosk asan-unit tsan test unit quick check golden readme
 
@@ -255,6 +264,7 @@ include tests/soak/soak.mk
 bench: $(KIOSK) test-tools
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench.sh
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_startup.sh
+	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_prepare.sh
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_gltf.sh
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_parts.sh
 	KIOSK=./$(KIOSK) sh tests/bench/bench_camera.sh

@@ -12,6 +12,7 @@
 #include "camera/camera_feed.h"
 #include "input/gpio.h"
 #include "input/keyboard.h"
+#include "input/knob_device.h"
 #include "input/touch.h"
 #include "util/clock.h"
 #include "util/folder_watch.h"
@@ -96,11 +97,13 @@ static int open_buttons(struct kiosk *k)
 	return n < 0 ? n : 0;
 }
 
+/* The keyboards and the knobs: evdev devices both, opened again together. */
 static void open_keyboards(struct kiosk *k)
 {
 	struct input_source *in[KIOSK_MAX_INPUTS];
 	int n = keyboard_open(&k->applied.keyboard, in, KIOSK_MAX_INPUTS - k->input_count);
 
+	n += knob_open(&k->applied.knob, in + n, KIOSK_MAX_INPUTS - k->input_count - n);
 	for (int i = 0; i < n; i++)
 		add_input(k, in[i], INPUT_KEYBOARD);
 }
@@ -246,6 +249,7 @@ static int draw(struct kiosk *k, uint64_t now)
 	k->view.orientation = st->orientation;
 	/* Pinching scales the fitted picture ([scene] fit). */
 	k->view.zoom = (float)(st->zoom * (k->content->zoom > 0 ? k->content->zoom : 1.0));
+	content_place_view(k->content, &k->view);
 	/* Not connected, or waiting for the display: stay dirty, the display
 	 * asks for a redraw through dispatch() when it is back. */
 	k->display_absent = true;
@@ -326,8 +330,9 @@ static void reopen_devices(struct kiosk *k, unsigned sections)
 		if (open_buttons(k))
 			log_err("reload: two buttons are one line; running on without buttons");
 	}
-	if (sections & 1u << OPTIONS_KEYBOARD) {
-		log_info("reload: [keyboard] changed: opening the keyboards again");
+	if (sections & (1u << OPTIONS_KEYBOARD | 1u << OPTIONS_KNOB)) {
+		log_info(
+		    "reload: [keyboard] or [knob] changed: opening the keyboards and knobs again");
 		close_inputs(k, INPUT_KEYBOARD);
 		open_keyboards(k);
 	}
@@ -389,6 +394,8 @@ static void read_input(struct kiosk *k, int i, uint64_t now)
 	for (int e = 0; e < n; e++) {
 		struct app_msg m = {.kind = APP_INPUT, .input = ev[e]};
 
+		visits_press(&k->visits, k->inputs[i]->kind, &ev[e],
+			     k->applied.app.attract_after_s);
 		/* Any input wakes a sleeping screen; it also does what it does. */
 		if (k->screen && screen_input(k->screen, now))
 			kiosk_tell_app(k, APP_DISPLAY_BACK);
@@ -410,6 +417,8 @@ static void service_touch(struct kiosk *k, const struct pollfd *fds, uint64_t no
 		if (k->screen && screen_input(k->screen, now))
 			kiosk_tell_app(k, APP_DISPLAY_BACK);
 		m.touch = g[i];
+		visits_touch(&k->visits, &g[i], k->applied.app.long_press,
+			     k->applied.app.attract_after_s);
 		app_apply(k->app, &m);
 	}
 }
@@ -551,6 +560,7 @@ static int loop_once(struct kiosk *k, int sig_fd)
 	next = earliest(next, k->rescan_at, service_deadline(&k->service));
 	next = earliest(next, kiosk_content_deadline(k), CLOCK_NEVER);
 	next = earliest(next, kiosk_models_deadline(k->models), metrics_deadline(k->metrics));
+	visits_observe(&k->visits, now, app_state(k->app)->stop, app_attracting(k->app));
 	n = fill_fds(k, fds, sig_fd);
 	note_step(k);
 	if (poll(fds, (nfds_t)n, poll_timeout_ms(k, next, now)) < 0 && errno != EINTR)

@@ -24,7 +24,8 @@ static void report(const struct kiosk *k, struct status_report *r, char *last_er
 	    .last_error = last_error,
 	    .last_error_at = log_last_error_time(),
 	    .started_at = k->started_at,
-	    .counts = k->counts};
+	    .counts = k->counts,
+	    .visits = &k->visits};
 }
 
 void kiosk_report_status(struct kiosk *k)
@@ -37,7 +38,10 @@ void kiosk_report_status(struct kiosk *k)
 	if (!status_server_accept(k->status))
 		return;
 	report(k, &r, last_error, sizeof(last_error));
-	have = k->frames_drawn > 0 && status_server_wants_frame(k->status) &&
+	/* While the live camera is the matcap the screen shows what it sees:
+	 * no camera frame is ever written to a file, so no frame.png then. */
+	have = k->frames_drawn > 0 && !app_state(k->app)->camera_on &&
+	       status_server_wants_frame(k->status) &&
 	       k->display->read_frame(k->display, &frame) == 0;
 	/* On its plane the caption is not in the frame GL drew: put in. */
 	if (have && k->caption_plane)

@@ -9,6 +9,7 @@
 #define MK_KIOSK_STATE_H
 
 #include "state/app.h"
+#include "state/visits.h"
 #include "content/content.h"
 #include "app/kiosk_models.h"
 #include "app/reload.h"
@@ -107,6 +108,7 @@ struct kiosk {
 	struct status_server *status; /* --status; NULL: not reachable */
 	struct metrics *metrics;      /* [status] metrics; NULL: none */
 	struct status_counts counts;
+	struct visits visits; /* what visitors did, for the metrics and --status */
 	uint64_t started_ns;
 	double started_at;	     /* the wall clock's seconds then, for the metrics */
 	struct touch *touch;	     /* the touchscreens; NULL: off */

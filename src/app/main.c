@@ -5,6 +5,7 @@
 #include "display/display.h"
 #include "util/image.h"
 #include "app/kiosk.h"
+#include "app/preview.h"
 #include "app/signals.h"
 #include "util/log.h"
 #include "config/exit_codes.h"
@@ -19,6 +20,7 @@
 #include "scene/mesh/mesh_cache.h"
 
 #include <errno.h>
+#include <malloc.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -93,7 +95,7 @@ static int render_frames(const struct options *o, const struct content *s, struc
 	struct render_scale *scale =
 	    render_scale_new(&d->gl, o->display.render_scale, d->samples, o->shader_dir);
 	double first = 0;
-	int ret = 0, w, h;
+	int ret = 0, w, h, stop;
 
 	if (!times || !scale) {
 		free(times);
@@ -102,6 +104,11 @@ static int render_frames(const struct options *o, const struct content *s, struc
 	}
 	/* [frame] zoom: the start view's, over the fit's. */
 	v.zoom = (float)(s->zoom * (c->frame.zoom > 0 ? c->frame.zoom : 1.0));
+	content_place_view(s, &v);
+	/* --stop, --at: that moment, and its stop's caption. */
+	if ((o->preview_stop > 0 || o->preview_at >= 0) &&
+	    (ret = preview_moment(o, s, c, &v, &stop)) == 0)
+		renderer_show_stop(r, stop);
 	for (int i = 0; i < o->frames && !ret; i++) {
 		double t = now_ms();
 
@@ -417,6 +424,14 @@ int main(int argc, char **argv)
 	/* The kiosk starts itself again as its camera helper (src/camera/camera.h). */
 	if (argc > 0 && strcmp(argv[0], CAMERA_HELPER_NAME) == 0)
 		return camera_helper_main(CAMERA_HELPER_FD);
+	/* An array of 1 MiB or more is mapped for itself and unmapped when
+	 * freed. glibc's moving threshold would put those under the largest
+	 * one freed so far (a model file's 28 MB) on the heap instead, where
+	 * a cold start's many large arrays in turn (the file, the parse, the
+	 * level of detail's clusters on several threads' arenas) held 10 MB
+	 * more at the peak (issue 34), and a kiosk switching models for
+	 * months gives back what a model freed. */
+	mallopt(M_MMAP_THRESHOLD, 1 << 20);
 	status = options_parse(&opts, argc, argv);
 	log_set_level(opts.log_level);
 	guard_shader_cache();

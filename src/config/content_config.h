@@ -15,6 +15,9 @@
  * leaves it a margin. */
 #define CONTENT_FIT_DEFAULT 0.85
 
+/* Room for a bit per setting of the table (settings.h checks it). */
+#define CONTENT_CLI_BYTES 32
+
 struct content_config {
 	char *model;	    /* a file, folder or list (model_list.h); NULL: the built-in knot */
 	char *model_scene;  /* the glTF scene by index or name; NULL: the file's */
@@ -62,6 +65,10 @@ struct content_config {
 	int coarse_above;
 	double anim_fps;
 	double anim_pause_after;
+	/* Which of the table's settings the command line set (bit i:
+	 * option_defs[i]): a model's NAME.ini does not override them
+	 * (content_config_keep_cli). Plain bits, so that a copy carries them. */
+	unsigned char from_cli[CONTENT_CLI_BYTES];
 };
 
 #endif

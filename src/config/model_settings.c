@@ -22,7 +22,7 @@ static const struct {
     {"scene", "fit"},	     {"scene", "yaw"},		{"scene", "pitch"},
     {"scene", "base_color"}, {"scene", "model_scene"},	{"scene", "lod_pixels"},
     {"scene", "matcap"},     {"scene", "matcap_first"}, {"display", "background"},
-    {"scene", "normals"},    {"caption", NULL},	     {"scene", "variant"},
+    {"scene", "normals"},    {"caption", NULL},		{"scene", "variant"},
 };
 
 #define MODEL_KEYS (sizeof(model_keys) / sizeof(model_keys[0]))
@@ -68,7 +68,31 @@ bool model_settings_path(const char *model, char *out, size_t n)
 	return (size_t)snprintf(out, n, "%.*s.ini", (int)stem, model) < n;
 }
 
-static enum options_status read_with(struct content_config *c, const char *model, bool stick)
+/* Each setting the model's file holds, with its line, on out: in effect,
+ * or under the command line's value (--check-config -v). */
+static void list_set(struct options *o, const char *path, const struct content_config *c, FILE *out)
+{
+	for (size_t i = 0; i < OPTION_DEFS; i++) {
+		const struct option_def *d = &option_defs[i];
+		struct options_origin at = options_origin(o, d);
+		char value[256];
+
+		if (!at.file || !at.line)
+			continue;
+		option_value_text(o, d, value, sizeof(value));
+		if (content_config_from_cli(c, d))
+			fprintf(out, "    [%s] %s = %s (the command line, over %s:%d)\n",
+				options_sections[d->section].name, d->key, value, path, at.line);
+		else
+			fprintf(out, "    [%s] %s = %s (%s:%d)\n",
+				options_sections[d->section].name, d->key, value, path, at.line);
+	}
+}
+
+/* The file over c, then c's command-line settings over the file's: the
+ * command line wins (README: options override the files). */
+static enum options_status read_with(struct content_config *c, const char *model, bool stick,
+				     FILE *out)
 {
 	char path[PATH_MAX], keys[400];
 	struct options_rules rules = {model_settings_allowed, keys, "a model's own file", stick};
@@ -84,7 +108,11 @@ static enum options_status read_with(struct content_config *c, const char *model
 		goto out;
 	keys_text(keys, sizeof(keys));
 	ret = options_read_one(&o, path, &rules);
+	if (ret == OPTIONS_OK && content_config_keep_cli(&o.content, c))
+		ret = OPTIONS_CONFIG;
 	if (ret == OPTIONS_OK) {
+		if (out)
+			list_set(&o, path, c, out);
 		content_config_release(c);
 		*c = o.content;
 		memset(&o.content, 0, sizeof(o.content));
@@ -97,10 +125,16 @@ out:
 
 enum options_status model_settings_read(struct content_config *c, const char *model)
 {
-	return read_with(c, model, false);
+	return read_with(c, model, false, NULL);
 }
 
 enum options_status model_settings_read_stick(struct content_config *c, const char *model)
 {
-	return read_with(c, model, true);
+	return read_with(c, model, true, NULL);
+}
+
+enum options_status model_settings_read_listed(struct content_config *c, const char *model,
+					       bool stick, FILE *out)
+{
+	return read_with(c, model, stick, out);
 }

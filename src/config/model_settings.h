@@ -2,7 +2,8 @@
  * the keys that make sense per model ([frame], [material], some of
  * [scene] with its matcaps, and [display] background), read over
  * kiosk.ini's while that model is shown. One table (model_settings.c)
- * says which keys those are. */
+ * says which keys those are. The one precedence: the command line over
+ * NAME.ini over the drop-ins over kiosk.ini. */
 #ifndef MK_MODEL_SETTINGS_H
 #define MK_MODEL_SETTINGS_H
 
@@ -10,6 +11,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdio.h>
 
 /* Whether a model's own file may hold [section] key. */
 bool model_settings_allowed(const char *section, const char *key);
@@ -23,5 +25,9 @@ enum options_status model_settings_read(struct content_config *c, const char *mo
 /* The same for a USB stick's model: its paths held to a stick's rules
  * (relative, inside its folder, without ".."). */
 enum options_status model_settings_read_stick(struct content_config *c, const char *model);
+/* Either, saying on out each setting the file holds, its value and line,
+ * or that the command line's value is in effect over it. */
+enum options_status model_settings_read_listed(struct content_config *c, const char *model,
+					       bool stick, FILE *out);
 
 #endif

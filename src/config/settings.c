@@ -28,9 +28,10 @@ void option_defaults(struct options *o)
 	o->content.pitch = 20.0;
 	o->content.yaw = -30.0;
 	o->content.lod_pixels = 4.0;
-	/* One thread until the speed-up of several is measured on free cores
-	 * (issue 34): auto is there to try. */
-	o->content.prepare_threads = 1;
+	/* auto: one thread a core (issue 34). A large model is simplified in
+	 * clusters on any count (scene/mesh/lod.h), so more threads cost a
+	 * cluster's memory each (some 9 MB), not a model's. */
+	o->content.prepare_threads = 0;
 	o->content.coarse_above = 200000;
 	o->content.fit = CONTENT_FIT_DEFAULT;
 	o->content.caption.size = CAPTION_SIZE_DEFAULT;
@@ -51,12 +52,16 @@ void option_defaults(struct options *o)
 	o->app.long_press = ACTION_NEXT_MATCAP;
 	o->buttons.debounce_ms = 10;
 	o->buttons.long_press_ms = 800;
+	o->knob.step = radians(15);
+	o->knob.press = ACTION_SELECT;
+	o->knob.long_press = ACTION_NEXT_LANGUAGE;
 	memcpy(o->buttons.buttons, buttons, sizeof(buttons));
 	o->camera.use = CAMERA_FEED_ON;
 	o->camera.width = o->camera.height = 512;
 	o->camera.view = (struct camera_view){0.5, 0.5, 0.5, false};
 	o->camera.stall_s = 3;
 	o->frames = 1;
+	o->preview_at = -1; /* no --at: not a moment of the tour */
 }
 
 /* Strings are kept as char * or const char * (the module configs hold

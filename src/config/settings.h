@@ -13,6 +13,7 @@
 #include "display/display.h"
 #include "input/gpio.h"
 #include "input/keyboard.h"
+#include "input/knob.h"
 #include "input/touch.h"
 #include "state/app.h"
 #include "util/log.h"
@@ -36,6 +37,7 @@ enum options_section {
 	OPTIONS_STATUS,
 	OPTIONS_FRAME,
 	OPTIONS_CAPTION,
+	OPTIONS_KNOB,
 	OPTIONS_SECTIONS
 };
 
@@ -75,6 +77,8 @@ struct options {
 	struct screen_config power;
 	/* [touch]; its gestures' settings are in app */
 	struct touch_config touch;
+	/* [knob] */
+	struct knob_config knob;
 	char *poster;  /* [display] poster */
 	char *include; /* [kiosk] include */
 	char *metrics; /* [status] metrics */
@@ -92,6 +96,10 @@ struct options {
 	bool stats;
 	bool help, version;
 	bool status, check_config;
+	/* --stop N (1 the first; 0: none) and --at SECONDS (< 0: none): the
+	 * moment an offscreen still shows (app/preview.h). */
+	int preview_stop;
+	double preview_at;
 };
 
 /* K_DEGREES: read in degrees, kept in radians. K_LEVEL: a log level by
@@ -118,7 +126,7 @@ struct option_def {
 
 /* The table's length: the compiler refuses an entry more, and
  * tests/unit/test_options.c one less. */
-#define OPTION_DEFS 128
+#define OPTION_DEFS 135
 extern const struct option_def option_defs[OPTION_DEFS];
 
 void option_defaults(struct options *o);
@@ -156,5 +164,14 @@ const char *options_origin_file(struct options *o, const char *file);
 int options_files_read(const struct options *o, const char *const **files);
 /* options_release does this; for a reader that starts over. */
 void options_origins_free(struct options *o);
+/* Whether the command line set d (a setting kept in struct content_config). */
+bool content_config_from_cli(const struct content_config *c, const struct option_def *d);
+/* The one precedence: each setting of dst that the command line set in
+ * cli is cli's again (a model's NAME.ini read over dst does not override
+ * the command line). 0, or -ENOMEM. */
+int content_config_keep_cli(struct content_config *dst, const struct content_config *cli);
+/* d's value in o as a settings file would write it ("45", "top",
+ * "640x480"; a string as it is, "" when none). */
+void option_value_text(const struct options *o, const struct option_def *d, char *buf, size_t n);
 
 #endif

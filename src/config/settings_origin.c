@@ -1,11 +1,17 @@
 /* Where each setting came from: the file and line that set it last, and
  * the files read in order (kiosk.ini, its kiosk.ini.d/ files, the
- * include), so that --check-config and the messages can name them. */
+ * include), so that --check-config and the messages can name them. And
+ * the one precedence: the command line over a model's NAME.ini over the
+ * drop-ins over kiosk.ini (the files' order is the reading's; the command
+ * line's values are marked here and kept over a NAME.ini read later). */
 #include "config/settings.h"
 
 #include <errno.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
+
+_Static_assert(OPTION_DEFS <= 8 * CONTENT_CLI_BYTES, "a bit for every setting");
 
 struct options_origins {
 	char **files; /* each file read, once */
@@ -45,9 +51,55 @@ int options_origin_set(struct options *o, const struct option_def *d, const char
 	struct options_origins *g = origins_of(o);
 	const char *name = file ? options_origin_file(o, file) : "the command line";
 
+	size_t i = (size_t)(d - option_defs);
+
 	if (!g || !name)
 		return -ENOMEM;
-	g->at[d - option_defs] = (struct options_origin){name, file ? line : 0};
+	g->at[i] = (struct options_origin){name, file ? line : 0};
+	if (!file)
+		o->content.from_cli[i / 8] |= (unsigned char)(1u << (i % 8));
+	return 0;
+}
+
+bool content_config_from_cli(const struct content_config *c, const struct option_def *d)
+{
+	size_t i = (size_t)(d - option_defs);
+
+	return c->from_cli[i / 8] & (1u << (i % 8));
+}
+
+/* d's field inside struct content_config, or (size_t)-1 when it is not
+ * in it (a [kiosk] or [buttons] setting). */
+static size_t content_at(const struct option_def *d)
+{
+	size_t at = offsetof(struct options, content);
+
+	if (d->offset < at || d->offset >= at + sizeof(struct content_config))
+		return (size_t)-1;
+	return d->offset - at;
+}
+
+int content_config_keep_cli(struct content_config *dst, const struct content_config *cli)
+{
+	for (size_t i = 0; i < OPTION_DEFS; i++) {
+		const struct option_def *d = &option_defs[i];
+		size_t at = content_at(d);
+		char *old, *s;
+
+		if (at == (size_t)-1 || !content_config_from_cli(cli, d))
+			continue;
+		if (d->kind != K_STRING) { /* WxH: two ints side by side */
+			memcpy((char *)dst + at, (const char *)cli + at,
+			       d->kind == K_SIZE ? 2 * sizeof(int) : d->size);
+			continue;
+		}
+		memcpy(&s, (const char *)cli + at, sizeof(s));
+		if (s && !(s = strdup(s)))
+			return -ENOMEM;
+		memcpy(&old, (char *)dst + at, sizeof(old));
+		free(old);
+		memcpy((char *)dst + at, &s, sizeof(s));
+	}
 	return 0;
 }
 

@@ -26,6 +26,8 @@ const struct options_section_rule options_sections[OPTIONS_SECTIONS] = {
 			"at once; a metrics file no longer named is removed"},
     [OPTIONS_FRAME] = {"frame", OPTIONS_LIVE, NULL, "at once"},
     [OPTIONS_CAPTION] = {"caption", OPTIONS_LIVE, NULL, "at once"},
+    [OPTIONS_KNOB] = {"knob", OPTIONS_REOPEN, NULL,
+		      "at once; the knobs are opened again if this section changed"},
 };
 
 static const char *const backend_names[] = {"auto", "kms", "osmesa", "egl-headless", NULL};
@@ -311,6 +313,12 @@ const struct option_def option_defs[OPTION_DEFS] = {
     {"zoom", 0, OPTION_CLI, NULL, K_DOUBLE, AT(content.zoom), 0.05, 20, 0, NULL, "Z",
      "draw at this scale of the sphere's framing instead of the one [scene] fit chose (logged "
      "at debug), so stills of other views keep one size"},
+    {"stop", 0, OPTION_CLI, NULL, K_INT, AT(preview_stop), 1, 8, 1, NULL, "N",
+     "with --output: draw what the kiosk shows at [frame] stops' Nth stop (1 the first), its "
+     "view and its text, as a visitor's presses leave it"},
+    {"at", 0, OPTION_CLI, NULL, K_DOUBLE, AT(preview_at), 0, 1e7, 0, NULL, "SECONDS",
+     "with --output: draw what the attract tour shows this many seconds after it begins (the "
+     "stops in turn, or the turn), caption and all"},
     {"fit", 0, OPTIONS_SCENE, "fit", K_DOUBLE, AT(content.fit), 0.1, 1, 0, NULL, "SHARE",
      "the share of the frame the model fills at its start view; it stays inside as it turns"},
     {"render-scale", 0, OPTIONS_DISPLAY, "render_scale", K_DOUBLE, AT(display.render_scale), 0.5, 1,
@@ -376,6 +384,17 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "on: the caption moves a few pixels over hours against burn-in; off: it stays"},
     {"logo", 0, OPTIONS_CAPTION, "logo", K_STRING, AT(content.caption.logo), 0, 0, 0, NULL, "FILE",
      "a PNG/JPEG shown at its own size in the caption's box, left of the text"},
+    {"knob", 0, OPTIONS_KNOB, "device", K_STRING, AT(knob.device), 0, 0, 0, NULL, "DEV",
+     "auto (every knob udev finds: REL_DIAL, REL_WHEEL or REL_X, no mouse), none, or one "
+     "/dev/input/eventN"},
+    {"knob-step", 0, OPTIONS_KNOB, "step", K_DEGREES, AT(knob.step), 1, 180, 0, NULL, "DEG",
+     "how far a detent turns the model"},
+    {"knob-turns", 0, OPTIONS_KNOB, "turns", K_CHOICE, AT(knob.turns), 0, 0, 0, knob_turns_names,
+     "WHAT", "what a detent does: model (turns it) or stops (the next or previous stop)"},
+    {"knob-press", 0, OPTIONS_KNOB, "press", K_CHOICE, AT(knob.press), 0, 0, 0, app_action_names,
+     "ACT", "what a press of the knob's key (KEY_ENTER on the knob) does"},
+    {"knob-long-press", 0, OPTIONS_KNOB, "long_press", K_CHOICE, AT(knob.long_press), 0, 0, 0,
+     app_action_names, "ACT", "what a long press of the knob's key does (none: no long press)"},
 };
 
 const char *backend_name(enum backend_kind kind)

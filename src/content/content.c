@@ -32,7 +32,7 @@ struct model_bytes {
  * in *play (posed at 0 s, fitted over its clip); NULL: a still. b: the
  * file's bytes, read by the caller to key the cache with them; the parse
  * reads them, not the file again. */
-static int load_model(const char *path, const struct model_bytes *b, const struct content_config *o,
+static int load_model(const char *path, struct model_bytes *b, const struct content_config *o,
 		      struct mesh *mesh, struct anim_play **play)
 {
 	if (path) {
@@ -50,7 +50,8 @@ static int load_model(const char *path, const struct model_bytes *b, const struc
 					 .loop = o->anim_loop,
 					 .normals = o->normals};
 
-		return b->data ? gltf_load_bytes(path, b->data, b->size, &g, mesh)
+		/* The bytes go once parsed (gltf.h): the caller frees NULL. */
+		return b->data ? gltf_load_bytes_owned(path, &b->data, b->size, &g, mesh)
 			       : gltf_load_options(path, &g, mesh);
 	}
 	return mesh_torus_knot(mesh, KNOT_TUBULAR, KNOT_RADIAL);
@@ -287,6 +288,8 @@ int content_load_model(struct content *s, const struct content_config *o, const 
 		ret = content_load_captions(s, content_settings(s, o), false);
 	if (!ret)
 		content_fit_captions(s, content_settings(s, o), width, height);
+	if (!ret) /* a coarse picture is framed as its whole mesh will be */
+		content_coarse_frame(s, content_settings(s, o), width, height);
 	if (ret)
 		content_release(s);
 	return ret;
@@ -386,7 +389,7 @@ static int prepare_mesh(struct content *s, const struct content_config *o, int w
 	if (content_cache_fits(s, width, height)) {
 		log_info("%s: the prepared mesh from the cache (%u triangles)%s", s->model_path,
 			 s->mesh.index_count / 3, s->play ? ", with its live playback" : "");
-		content_fit(s, o, width, height);
+		content_frame(s, o, width, height);
 		return 0;
 	}
 	if (s->cached) {
@@ -405,7 +408,7 @@ static int prepare_mesh(struct content *s, const struct content_config *o, int w
 	 * pixels as drawn (the zoom of the whole mesh, then of the simplified
 	 * one, which a start from the cache finds too). */
 	if (!ret)
-		content_fit(s, o, width, height);
+		content_frame(s, o, width, height);
 	if (!ret)
 		content_play_check(s);
 	/* The live kiosk's large model: coarse now, whole later (one fit). */
@@ -420,7 +423,7 @@ static int prepare_mesh(struct content *s, const struct content_config *o, int w
 	if (!ret)
 		content_cache_pack(s, width, height);
 	if (!ret)
-		content_fit(s, o, width, height);
+		content_frame(s, o, width, height);
 	return ret;
 }
 
@@ -432,6 +435,8 @@ int content_prepare(struct content *s, const struct content_config *o, int width
 
 	if (!ret)
 		content_fit_captions(s, content_settings(s, o), width, height);
+	if (!ret)
+		content_coarse_frame(s, content_settings(s, o), width, height);
 	return ret;
 }
 

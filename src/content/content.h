@@ -72,6 +72,9 @@ struct content {
 	struct background_spec background; /* its path is NULL once decoded */
 	struct image background_image;	   /* decoded once, when it is an image */
 	double zoom; /* the fit (render/framing.h) on the display prepared for; 0: none */
+	/* The outline's centre at the start view (NDC at zoom 1) and the
+	 * room's the fit puts it at: the frame less the caption's box. */
+	double outline[2], room[2];
 	/* The caption's picture (scene/caption.h), this model's; empty: none.
 	 * Kept after the upload: the overlay plane is filled from it. */
 	struct image caption;
@@ -174,6 +177,10 @@ int content_cache_reopen(struct content *s);
  * variants), or a negative errno. */
 int content_coarse_begin(struct content *s, const struct content_config *o, double pixels,
 			 int width, int height);
+/* On the worker, once s's captions are fitted (content_fit_captions): s's
+ * fit (content_frame) over its whole mesh, not the coarse cut's outline. */
+void content_coarse_frame(struct content *s, const struct content_config *o, int width,
+			  int height);
 /* The refine of s, taken for a job (s->refine left NULL, s still shown
  * coarse); the journal says when the coarse picture came. */
 struct content_refine *content_refine_take(struct content *s);
@@ -216,10 +223,12 @@ int content_upload_model(struct content *s, struct renderer *r);
 int content_variant_find(const struct content *s, const char *name);
 int content_variant_names(const struct mesh *m, char *buf, size_t n);
 struct view content_view(const struct content_config *c);
-/* [scene] fit: s->zoom, at which s's model fills its share of a width x
- * height frame at c's start view (render/framing.h): over its entry's or
- * packed arrays where it has them, and its mesh's own positions. */
-void content_fit(struct content *s, const struct content_config *c, int width, int height);
+/* [scene] fit in a width x height frame less s's caption (content_fit.c):
+ * s's zoom, outline and room. */
+void content_frame(struct content *s, const struct content_config *o, int width, int height);
+/* The outline's centre and the room's of s into v (render_matrices
+ * shifts the one to the other). */
+void content_place_view(const struct content *s, struct view *v);
 /* Draw s's caption and its stops' pictures (content_caption.c), c's
  * [caption] and [frame] stops. A picture that fails is left out (the
  * journal says why), unless strict. */

@@ -4,6 +4,7 @@
  * stop shown: no text is drawn on the frame thread. */
 #include "content/content.h"
 #include "scene/gltf/gltf_name.h"
+#include "scene/text/model_name.h"
 #include "util/log.h"
 
 #include <errno.h>
@@ -14,22 +15,21 @@
 /* The content's stop pictures are indexed as the app state's stops. */
 _Static_assert(CAPTION_STOPS >= FRAME_STOPS, "a picture for every stop");
 
-/* The name "auto" shows: the glTF's title or scene name, else the model
- * file's, without folder and extension (the built-in knot has none).
- * Malloc'd, or NULL. */
+/* The name "auto" shows: the glTF's title or scene name, unless it is
+ * one exporters give every file ("Scene": every Blender file), else the
+ * model file's made readable (the built-in knot has none). Malloc'd, or
+ * NULL. */
 static char *model_name(const char *path, const char *scene)
 {
-	const char *base = path ? strrchr(path, '/') : NULL, *dot;
 	char *named = path ? gltf_model_name(path, scene) : NULL;
 
-	if (named)
+	if (named && !model_name_generic(named))
 		return named;
-
-	base = base ? base + 1 : path;
-	if (!base || !*base)
-		return NULL;
-	dot = strrchr(base, '.');
-	return strndup(base, dot && dot != base ? (size_t)(dot - base) : strlen(base));
+	if (named)
+		log_debug("%s: [caption] text = auto: '%s' names no model, the file's name shown",
+			  path, named);
+	free(named);
+	return model_name_from_file(path);
 }
 
 /* The caption's picture, drawn here on the worker (FreeType and HarfBuzz
@@ -138,6 +138,9 @@ void content_fit_captions(struct content *s, const struct content_config *o, int
 		snprintf(what, sizeof(what), "[frame] stops: stop %d's text", i + 1);
 		fit_picture(&c, f.stops[i].text, what, frame, &s->stop_caption[i]);
 	}
+	/* The model is fitted into the frame less the caption's box, now
+	 * that its size is known. */
+	content_frame(s, o, width, height);
 }
 
 void content_release_captions(struct content *s)

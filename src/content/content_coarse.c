@@ -4,11 +4,12 @@
  * (scene/mesh/lod_coarse.h) once its fit is known, and that is what the
  * content's first upload shows; a second job of the worker
  * (content/refine_job.h) prepares the whole mesh as a still would, and
- * the loop swaps it in. Both are framed by the fit of the whole mesh (a
- * sloppy cut's outline is not the model's); the swap then takes the fit
- * a still and a start from the cache compute on the prepared mesh, which
- * its level of detail keeps within its pixel error of the whole one's:
- * the journal says by how much it moved. */
+ * the loop swaps it in. The coarse picture is framed by the fit of the
+ * whole mesh (a sloppy cut's outline is not the model's:
+ * content_coarse_frame); the swap then takes the fit a still and a start
+ * from the cache compute on the prepared mesh (content_frame, with the
+ * caption's box), which its level of detail keeps within its pixel error
+ * of the whole one's. */
 #include "content/content.h"
 #include "config/settings.h"
 #include "scene/mesh/lod.h"
@@ -35,7 +36,7 @@ struct content_refine {
 	/* The model's side of a content: the whole mesh, then prepared and
 	 * packed, with its fit (zoom); its cache key. */
 	struct content part;
-	struct content_config config; /* the model's settings, for the fit */
+	struct content_config config; /* the model's settings, for the fit at the swap */
 	double pixels;
 	int width, height, threads;
 	uint32_t coarse_triangles;
@@ -108,6 +109,19 @@ int content_coarse_begin(struct content *s, const struct content_config *o, doub
 	return 1;
 }
 
+void content_coarse_frame(struct content *s, const struct content_config *o, int width, int height)
+{
+	struct mesh coarse;
+
+	if (!s->refine)
+		return;
+	coarse = s->mesh;
+	s->mesh = s->refine->part.mesh;
+	content_frame(s, o, width, height);
+	s->refine->part.mesh = s->mesh;
+	s->mesh = coarse;
+}
+
 struct content_refine *content_refine_take(struct content *s)
 {
 	struct content_refine *f = s->refine;
@@ -144,7 +158,6 @@ void content_refine_run(struct content_refine *f)
 	if (lod_prepare_mesh_threads(&p->mesh, f->pixels, f->width, f->height, f->threads, NULL))
 		log_warn("the level of detail has no memory: the model is drawn whole");
 	content_cache_pack(p, f->width, f->height);
-	content_fit(p, &f->config, f->width, f->height);
 	f->prepared = true;
 }
 
@@ -176,16 +189,16 @@ int content_refine_swap(struct content *shown, struct content_refine *f, struct 
 		old->refine = f;
 		return ret;
 	}
-	log_debug("%s: the fit at the swap: zoom %.6f, was %.6f", content_name(shown), p->zoom,
-		  shown->zoom);
 	old->mesh = shown->mesh;
-	shown->zoom = p->zoom;
 	shown->mesh = p->mesh;
 	shown->packed = p->packed;
 	shown->cache_key = p->cache_key;
 	shown->cacheable = p->cacheable;
 	shown->coarse = false;
 	memset(p, 0, sizeof(*p));
+	/* The still's fit: over the packed mesh (a few tens of thousands of
+	 * vertices: what the display shows), with the caption's box. */
+	content_frame(shown, &f->config, f->width, f->height);
 	content_cache_store(shown);
 	release_maps(&shown->mesh);
 	log_info("%s: full level of detail (%u triangles) after %.2f s", content_name(shown),

@@ -26,16 +26,39 @@ enum app_action {
 	ACTION_PLAY_PAUSE,     /* the model's animation stops where it is, or goes on */
 	ACTION_NEXT_ANIMATION, /* its next clip, crossfaded */
 	ACTION_NEXT_VARIANT,   /* its next KHR_materials_variants variant (then its default) */
+	/* The knob's press (or a button's): what the knob points at is taken;
+	 * today the next stop (hotspots, issue 33, step through theirs). */
+	ACTION_SELECT,
+	/* The knob's long press: the next of [caption] languages. Nothing
+	 * yet: the languages' part of issue 33 gives it its meaning. */
+	ACTION_NEXT_LANGUAGE,
 	ACTION_COUNT
 };
 
 /* "none", "turn-left", ... "next-variant", then NULL: the config file's names. */
 extern const char *const app_action_names[ACTION_COUNT + 1];
 
+/* What kind of thing a source is: the visitors' presses are counted per
+ * kind (src/state/visits.h); the order is that of input_kind_names. */
+enum input_kind {
+	INPUT_KIND_OTHER,
+	INPUT_KIND_BUTTON,
+	INPUT_KIND_KEY,
+	INPUT_KIND_TOUCH,
+	INPUT_KIND_KNOB,
+	INPUT_KINDS
+};
+
+/* "other", "button", "key", "touch", "knob": the metrics' source label. */
+extern const char *const input_kind_names[INPUT_KINDS];
+
 struct app_event {
 	uint64_t time_ns; /* CLOCK_MONOTONIC, or the kernel's event timestamp */
 	enum app_action action;
 	bool pressed; /* false: released (ends a held turn) */
+	/* A turn pressed with an angle (radians, > 0): a knob's detent,
+	 * turned that far at once with nothing held and no release. */
+	double angle;
 };
 
 static inline bool app_action_is_turn(enum app_action a)

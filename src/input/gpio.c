@@ -341,6 +341,7 @@ static struct input_source *source_new(const struct gpio_config *c, struct gpio_
 		log_warn("%s: pressed at start-up; it counts once released", g->name);
 	g->chip = w->chip;
 	g->base = (struct input_source){.name = g->name,
+					.kind = INPUT_KIND_BUTTON,
 					.fd = fd,
 					.read = gpio_read,
 					.deadline = gpio_deadline,

@@ -10,6 +10,7 @@
 
 struct input_source {
 	const char *name;
+	enum input_kind kind;
 	int fd; /* -1: timers only */
 	/* Read what is ready (fd readable, or a deadline passed at now_ns):
 	 * up to max events into out. Returns the count, or a negative errno

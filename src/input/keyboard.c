@@ -189,6 +189,7 @@ static int source_new(const char *path, bool must_be, struct input_source **out)
 	k->stamp_now = libevdev_set_clock_id(dev, CLOCK_MONOTONIC) != 0;
 	snprintf(k->name, sizeof(k->name), "keyboard %s (%s)", libevdev_get_name(dev), path);
 	k->base = (struct input_source){.name = k->name,
+					.kind = INPUT_KIND_KEY,
 					.fd = fd,
 					.read = keyboard_read,
 					.deadline = keyboard_deadline,

@@ -41,11 +41,13 @@ int check_model_settings(const struct content_config *cfg, FILE *out, bool stick
 			continue;
 		if (content_config_copy(&own, cfg))
 			return bad + 1;
-		if ((stick ? model_settings_read_stick(&own, path)
-			   : model_settings_read(&own, path)) != OPTIONS_OK)
-			bad++;
-		else if (out)
+		if (out)
 			fprintf(out, "  read %s (the settings of %s)\n", ini, path);
+		/* -v: each of its values, and whether the command line's is
+		 * in effect over it. */
+		if (model_settings_read_listed(
+			&own, path, stick, log_get_level() >= LOG_DEBUG ? out : NULL) != OPTIONS_OK)
+			bad++;
 		content_config_release(&own);
 	}
 	model_list_free(l);
@@ -377,6 +379,23 @@ static void check_caption(struct check *c, const struct caption_config *cap)
 		check_caption_fits(c, cap);
 }
 
+/* -v: every value in effect with where it came from: a file and line,
+ * the command line or the default (the README's promise). */
+static void list_values(const struct check *c)
+{
+	for (size_t i = 0; i < OPTION_DEFS; i++) {
+		const struct option_def *d = &option_defs[i];
+		char value[256], at[PATH_MAX + 16];
+
+		if (d->section == OPTION_CLI)
+			continue;
+		option_value_text(c->o, d, value, sizeof(value));
+		where(c->o, d, at, sizeof(at));
+		fprintf(c->out, "  [%s] %s = %s (%s)\n", options_sections[d->section].name, d->key,
+			value, at);
+	}
+}
+
 static void list_files(struct check *c)
 {
 	const char *const *files;
@@ -401,6 +420,8 @@ int check_config_run(const struct options *o, FILE *out)
 	cfg.anim_strict = true;
 
 	list_files(&c);
+	if (log_get_level() >= LOG_DEBUG)
+		list_values(&c);
 	if (o->include_ignored) {
 		log_err("%s: the settings are not valid: an included file has errors (above)",
 			name);

@@ -102,6 +102,34 @@ static void last_error(FILE *f, const struct status_report *r)
 	label(f, "error", r->last_error, "} 1\n");
 }
 
+/* What visitors did (state/visits.h): kept on the kiosk, said here only. */
+static void visits(FILE *f, const struct visits *v)
+{
+	head(f, "presses_total", "counter",
+	     "Presses by the visitors, per source (button, key, touch, knob) and action (a "
+	     "touch's drag, pinch and tap beside the actions).");
+	for (int s = 0; s < INPUT_KINDS; s++)
+		for (int a = 1; a < VISITS_ACTIONS; a++)
+			if (v->presses[s][a])
+				fprintf(
+				    f,
+				    "matcap_kiosk_presses_total{source=\"%s\",action=\"%s\"} %ld\n",
+				    input_kind_names[s], visits_action_name(a), v->presses[s][a]);
+	head(f, "visits_total", "counter",
+	     "Visits: an input after the kiosk was idle (attract mode, or no input for "
+	     "attract_after).");
+	fprintf(f, "matcap_kiosk_visits_total %ld\n", v->count);
+	head(f, "shown_seconds_total", "counter",
+	     "Seconds shown to the visitors: at each stop (kind stop, name its number from 1), in "
+	     "attract mode (kind attract), and what hotspots and languages count.");
+	for (int i = 0; i < v->slot_count; i++) {
+		fputs("matcap_kiosk_shown_seconds_total{", f);
+		label(f, "kind", v->slots[i].kind, ",");
+		label(f, "name", v->slots[i].name, "} ");
+		fprintf(f, "%.3f\n", v->slots[i].seconds);
+	}
+}
+
 void metrics_write(FILE *f, const struct status_report *r, const char *version, bool up)
 {
 	head(f, "up", "gauge",
@@ -130,6 +158,8 @@ void metrics_write(FILE *f, const struct status_report *r, const char *version, 
 	counter_pair(f, "model_loads_total",
 		     "Models of the folder or list loaded while running: shown, or failed.",
 		     "shown", r->counts.model_loads, "failed", r->counts.model_load_failures);
+	if (r->visits)
+		visits(f, r->visits);
 }
 
 struct metrics *metrics_new(const char *path)

@@ -201,6 +201,32 @@ static void json_string(FILE *f, const char *s)
 	fputc('"', f);
 }
 
+/* What visitors did, as the metrics say it (presses, visits, seconds). */
+static void write_visits(FILE *f, const struct visits *v)
+{
+	const char *sep = "";
+
+	fprintf(f, ",\n  \"visits\": {\"count\": %ld, \"presses\": [", v->count);
+	for (int s = 0; s < INPUT_KINDS; s++)
+		for (int a = 1; a < VISITS_ACTIONS; a++)
+			if (v->presses[s][a]) {
+				fprintf(
+				    f, "%s{\"source\": \"%s\", \"action\": \"%s\", \"count\": %ld}",
+				    sep, input_kind_names[s], visits_action_name(a),
+				    v->presses[s][a]);
+				sep = ", ";
+			}
+	fputs("], \"seconds\": [", f);
+	for (int i = 0; i < v->slot_count; i++) {
+		fprintf(f, "%s{\"kind\": ", i ? ", " : "");
+		json_string(f, v->slots[i].kind);
+		fputs(", \"name\": ", f);
+		json_string(f, v->slots[i].name);
+		fprintf(f, ", \"seconds\": %.3f}", v->slots[i].seconds);
+	}
+	fputs("]}", f);
+}
+
 static void write_json(FILE *f, const struct status_report *r, const char *frame, const char *state)
 {
 	fputs("{\n  \"model\": ", f);
@@ -221,6 +247,8 @@ static void write_json(FILE *f, const struct status_report *r, const char *frame
 	json_string(f, frame);
 	fputs(",\n  \"state\": ", f);
 	json_string(f, state);
+	if (r->visits)
+		write_visits(f, r->visits);
 	fputs("\n}\n", f);
 }
 

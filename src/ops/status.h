@@ -8,6 +8,7 @@
 #ifndef MK_STATUS_H
 #define MK_STATUS_H
 
+#include "state/visits.h"
 #include "util/image.h"
 
 #include <stdbool.h>
@@ -35,6 +36,7 @@ struct status_report {
 	double last_error_at;	/* seconds since the epoch; 0: none */
 	double started_at;	/* seconds since the epoch */
 	struct status_counts counts;
+	const struct visits *visits; /* what visitors did; NULL: nothing */
 };
 
 struct status_server;

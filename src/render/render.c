@@ -580,6 +580,14 @@ void render_matrices(const struct view *v, int width, int height, float modelvie
 			proj[4 * i] *= v->zoom;
 			proj[4 * i + 1] *= v->zoom;
 		}
+	/* The outline's centre, zoomed, to the room's centre: a shift in
+	 * clip space (x += s w), so the zoom is about that centre. */
+	for (int i = 0; i < 4; i++) {
+		float z = v->zoom > 0 ? v->zoom : 1;
+
+		proj[4 * i] += (v->room[0] - z * v->outline[0]) * proj[4 * i + 3];
+		proj[4 * i + 1] += (v->room[1] - z * v->outline[1]) * proj[4 * i + 3];
+	}
 	/* A portrait panel turns the picture, not the scanout, so it works
 	 * with every driver and plane. */
 	mat4_rotate_z(panel, v->rotation);

@@ -19,7 +19,11 @@ struct view {
 	bool ortho;		 /* orthographic: the unit sphere fills the short side */
 	int rotation;		 /* of the panel: 0, 90, 180 or 270 degrees */
 	float zoom;		 /* the picture's scale about its centre; 0 or 1: as fitted */
-	float background[3];	 /* the clear colour, without renderer_set_background */
+	/* The model's outline's centre at the start view, in NDC at zoom 1,
+	 * put at room (the centre of the frame less the caption's box): the
+	 * picture is shifted so (render/framing.h). Both 0: not shifted. */
+	float outline[2], room[2];
+	float background[3]; /* the clear colour, without renderer_set_background */
 };
 
 struct renderer;

@@ -171,6 +171,11 @@ static bool turning(const struct app *a)
 	return false;
 }
 
+bool app_attracting(const struct app *a)
+{
+	return a->attract;
+}
+
 bool app_moving(const struct app *a)
 {
 	return a->attract || a->easing || turning(a);
@@ -347,7 +352,8 @@ static void press(struct app *a, enum app_action action, uint64_t t)
 		break;
 	case ACTION_NEXT_STOP:
 	case ACTION_PREV_STOP:
-		step_stop(a, action == ACTION_NEXT_STOP ? 1 : -1, t);
+	case ACTION_SELECT:
+		step_stop(a, action == ACTION_PREV_STOP ? -1 : 1, t);
 		break;
 	case ACTION_PLAY_PAUSE:
 		st->anim_paused = !st->anim_paused;
@@ -385,13 +391,24 @@ static uint64_t input_at(struct app *a, uint64_t time_ns)
 	return t;
 }
 
+/* A knob's detent: that far at once, with nothing held (no release comes). */
+static void turn_by(struct app *a, enum app_action action, double angle)
+{
+	double by = action == ACTION_TURN_LEFT || action == ACTION_TURN_UP ? -angle : angle;
+	bool yaw = action == ACTION_TURN_LEFT || action == ACTION_TURN_RIGHT;
+
+	turn(a, yaw ? by : 0, yaw ? 0 : by);
+}
+
 static void input(struct app *a, const struct app_event *ev)
 {
 	uint64_t t = input_at(a, ev->time_ns);
 
 	if (ev->action <= ACTION_NONE || ev->action >= ACTION_COUNT)
 		return;
-	if (ev->pressed)
+	if (ev->pressed && app_action_is_turn(ev->action) && ev->angle > 0)
+		turn_by(a, ev->action, ev->angle);
+	else if (ev->pressed)
 		press(a, ev->action, t);
 	else if (app_action_is_turn(ev->action) && a->turns[ev->action - ACTION_TURN_LEFT].held)
 		a->turns[ev->action - ACTION_TURN_LEFT].held--;

@@ -122,6 +122,8 @@ void app_apply(struct app *a, const struct app_msg *m);
 /* Advance the clock: held turns and attract mode move the model. Returns
  * the time at which the state next changes by itself, or CLOCK_NEVER. */
 uint64_t app_advance(struct app *a, uint64_t now_ns);
+/* True in attract mode (what the visitors' counters call idle). */
+bool app_attracting(const struct app *a);
 /* True while the model moves by itself or by a held turn. */
 bool app_moving(const struct app *a);
 

@@ -5,7 +5,11 @@
  * least 1% of the frame, be fitted (its silhouette spans at least 40% of
  * the frame's width or height, centred within a quarter of it), and be
  * shaded (its pixels neither all black nor all one tone). Prints the
- * figures; exits 0 when all hold. */
+ * figures; exits 0 when all hold.
+ *   silhouette FILE.png Y0 Y1 SHARE
+ * The fit's centring (issue 33): the model in the rows Y0 to Y1 alone (the
+ * room a caption leaves), its silhouette's box centred within SHARE of the
+ * frame's width and height of that room's centre. */
 #include "util/image.h"
 
 #include <math.h>
@@ -31,13 +35,13 @@ static int is_model(const uint8_t *p, const uint8_t *bg)
 	return 0;
 }
 
-static struct figures measure(const struct image *img)
+static struct figures measure(const struct image *img, int y0, int y1)
 {
 	const uint8_t *bg = img->rgba;
 	struct figures f = {0, img->width, img->height, -1, -1, 0, 0};
 	double sum = 0, sum2 = 0;
 
-	for (int y = 0; y < img->height; y++)
+	for (int y = y0; y < y1; y++)
 		for (int x = 0; x < img->width; x++) {
 			const uint8_t *p = img->rgba + ((size_t)y * img->width + x) * 4;
 			int l = luma(p);
@@ -56,6 +60,21 @@ static struct figures measure(const struct image *img)
 	return f;
 }
 
+/* The silhouette's box centre against the room's (rows y0 to y1). */
+static int centred(const struct image *img, int y0, int y1, double share)
+{
+	struct figures f = measure(img, y0, y1);
+	double w = img->width, h = img->height;
+	double cx = (f.x0 + f.x1 + 1) / 2.0 / w - 0.5,
+	       cy = ((f.y0 + f.y1 + 1) / 2.0 - (y0 + y1) / 2.0) / h;
+	int ok = f.count > 0 && fabs(cx) <= share && fabs(cy) <= share;
+
+	printf("%s: %dx%d, its box's centre (%+.4f, %+.4f) of the frame from the room's (rows %d "
+	       "to %d)\n",
+	       ok ? "centred" : "not centred", f.x1 - f.x0 + 1, f.y1 - f.y0 + 1, cx, cy, y0, y1);
+	return ok ? 0 : 1;
+}
+
 int main(int argc, char **argv)
 {
 	struct image img;
@@ -63,13 +82,21 @@ int main(int argc, char **argv)
 	double w, h, cx, cy;
 	int ok;
 
-	if (argc != 2) {
-		fprintf(stderr, "usage: silhouette FILE.png\n");
+	if (argc != 2 && argc != 5) {
+		fprintf(stderr, "usage: silhouette FILE.png [Y0 Y1 SHARE]\n");
 		return 2;
 	}
 	if (image_load(argv[1], &img))
 		return 2;
-	f = measure(&img);
+	if (argc == 5) {
+		int y0 = atoi(argv[2]), y1 = atoi(argv[3]);
+
+		ok = y0 >= 0 && y1 <= img.height && y0 < y1 ? !centred(&img, y0, y1, atof(argv[4]))
+							    : 0;
+		image_release(&img);
+		return ok ? 0 : 1;
+	}
+	f = measure(&img, 0, img.height);
 	w = img.width, h = img.height;
 	cx = (f.x0 + f.x1 + 1) / 2.0 / w - 0.5, cy = (f.y0 + f.y1 + 1) / 2.0 / h - 0.5;
 	ok = f.count >= 0.01 * w * h && fmax((f.x1 - f.x0 + 1) / w, (f.y1 - f.y0 + 1) / h) >= 0.4 &&

@@ -25,6 +25,8 @@ shows_hues() { # FILE MIN MAX
 vm_check "libcamera lists vimc's Sensor B (cam --list)" \
 	sh -c 'cam --list 2>/dev/null | grep -q "vimc.0 Sensor B"'
 
+# --status answers in the runtime folder systemd would make.
+mkdir -p /run/matcap-kiosk
 # shellcheck disable=SC2086
 matcap-kiosk --backend kms $scene --stats -v >stats.txt 2>kiosk.log &
 kiosk=$!
@@ -36,6 +38,11 @@ path=$(sed -n 's/.*frames reach the GPU by \(.*\)/\1/p' kiosk.log | head -1)
 vm_check "the log names how frames reach the GPU (${path:-nothing})" test -n "$path"
 wait_until 60 shows_hues camera.png 5 6
 vm_check "the camera's colour bars are on the model" hues camera.png 5 6
+# No camera frame is ever written to a file: --status writes no frame.png.
+matcap-kiosk --status >status.json 2>&1
+vm_check "--status answers while the camera is the matcap" grep -q '"camera": true' status.json
+vm_check "and says \"frame\": null" grep -q '"frame": null' status.json
+vm_check "and no frame.png in the runtime folder" test ! -e /run/matcap-kiosk/frame.png
 
 echo vimc.0 >"$vimc/unbind"
 wait_until 30 grep -Eq "sent no frame|was removed" kiosk.log

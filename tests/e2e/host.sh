@@ -23,7 +23,7 @@ shift
 # The display first, then the buttons and the camera on it.
 [ $# -gt 0 ] || set -- tests/e2e/kms.sh tests/e2e/kms-hotplug.sh tests/e2e/kms-busy.sh \
 	tests/vm/gpio-test.sh tests/e2e/reload-devices.sh tests/e2e/camera.sh tests/e2e/cec.sh tests/e2e/power.sh \
-	tests/e2e/touch.sh tests/e2e/models.sh tests/e2e/hands-board.sh
+	tests/e2e/touch.sh tests/e2e/knob-board.sh tests/e2e/models.sh tests/e2e/hands-board.sh
 kiosk=${KIOSK:-./matcap-kiosk}
 imgdiff=${IMGDIFF:-build/tools/imgdiff}
 mkdir -p "$out/ref"
@@ -78,7 +78,7 @@ for script in "$@"; do
 	# sends the kiosk's CEC messages; clock_set sets the board's clock;
 	# touch_inject is a uinput touchscreen; mkmodels writes the test models.
 	tools=$(dirname "$imgdiff")
-	for b in ${E2E_BINS:-$tools/hues $tools/cec_power $tools/clock_set $tools/touch_inject $tools/mkmodels}; do
+	for b in ${E2E_BINS:-$tools/hues $tools/cec_power $tools/clock_set $tools/touch_inject $tools/knob_inject $tools/mkmodels}; do
 		bins="$bins --bin $b"
 	done
 	# hands-board.sh plugs in USB sticks: ext2 images made here.

@@ -18,6 +18,7 @@ scenes="$scenes knot-iridescence knot-iridescence-ramp knot-detail-map sphere-de
 scenes="$scenes sphere-beetle-gltf sphere-displaced sphere-lit sphere-lit-beside"
 scenes="$scenes sphere-vertex-color sphere-base-map sphere-base-map-off"
 scenes="$scenes background-color background-gradient background-image fit-long fit-long-half"
+scenes="$scenes fit-above-caption preview-stop-2"
 scenes="$scenes parts-textures parts-mask parts-blend parts-leaf parts-normals parts-iridescence"
 scenes="$scenes parts-unlit parts-unlit-shade parts-emissive parts-emissive-sem-vertex parts-specgloss"
 scenes="$scenes parts-emissive-uv1"
@@ -105,6 +106,21 @@ render() {
 	fit-long-half)
 		$k -c matcaps/gold.png --model "$m/long.glb" --fit 0.5 --output "$o"
 		;;
+	# The fit in the room a caption leaves (issue 33): a lopsided model
+	# (a body and a tall fin at one end) centred by its outline at the
+	# start view above a caption at the bottom, not behind it.
+	# --stop 2 (issue 33): the still of the second of three stops, its
+	# view (yaw 90, pitch 10, zoom 1.2) and its text for the caption, as
+	# the kiosk shows it after a visitor's two next-stop presses.
+	preview-stop-2)
+		$k -c matcaps/gold.png --model "$m/lopsided.glb" --caption Lopsided \
+			--stops '0 0 1 "Front"; 90 10 1.2 "The fin"; 200 -10 0.9 "Behind"' \
+			--stop 2 --output "$o"
+		;;
+	fit-above-caption)
+		$k -c matcaps/gold.png --model "$m/lopsided.glb" --caption "A lopsided model" \
+			--caption-position bottom --output "$o"
+		;;
 	# [frame] from the model's own NAME.ini: the long model stood on its
 	# end (up = +x, then a quarter roll), framed as turned (the fit
 	# fills the height); and a start view of yaw, pitch and zoom.
@@ -114,13 +130,15 @@ render() {
 		$k -c matcaps/gold.png --model "$m/long-up.glb" --output "$o"
 		;;
 	# [scene] matcap and [display] background from the model's own
-	# NAME.ini, over the command line's: the pearl matcap on a blue grey,
-	# not the gold one on the default grey.
+	# NAME.ini, over kiosk.ini's: the pearl matcap on a blue grey, not
+	# the gold one on the default grey. (Over kiosk.ini, not the command
+	# line: the command line goes over NAME.ini, test_precedence.)
 	frame-own-look)
 		cp "$m/long.glb" "$m/long-look.glb"
 		printf '[scene]\nmatcap = %s/matcaps/pearl.png\n[display]\nbackground = #304050\n' \
 			"$PWD" >"$m/long-look.ini"
-		$k -c matcaps/gold.png --model "$m/long-look.glb" --output "$o"
+		printf '[scene]\nmatcap = %s/matcaps/gold.png\n' "$PWD" >"$m/look-kiosk.ini"
+		$k --config "$m/look-kiosk.ini" --model "$m/long-look.glb" --output "$o"
 		;;
 	frame-start-view)
 		$k -c matcaps/gold.png --model "$m/long.glb" --start-yaw 60 --start-pitch 45 \

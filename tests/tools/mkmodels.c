@@ -7,7 +7,9 @@
  *                         and flat-shaded, and the 10k and 100k ones without normals
  *   mkmodels DIR --bomb SIDE  only bomb.gltf: four SIDE x SIDE PNGs of one
  *                         colour as its base colour, normal, occlusion and
- *                         film thickness textures (tests/suite.sh) */
+ *                         film thickness textures (tests/suite.sh)
+ *   mkmodels DIR --scan   only knot-1m.glb, the bench's 1M-triangle knot
+ *                         (tests/e2e/limits.sh: a scan's cold start's memory) */
 #include "gltf_morph.h"
 #include "gltf_variants.h"
 #include "gltf_write.h"
@@ -273,6 +275,21 @@ static int write_bench_forms(const char *dir, const struct mesh *k)
 	return bad;
 }
 
+/* The bench's 1M-triangle knot, as write_bench writes it. */
+static int write_scan(const char *dir)
+{
+	struct gltf_write_opts o = {
+	    .index_bytes = 4, .with_normals = 1, .bad_index = -1, .with_uvs = 1};
+	struct mesh k1m;
+	int bad;
+
+	if (mesh_torus_knot(&k1m, 4096, 122))
+		return 1;
+	bad = put(dir, "knot-1m.glb", &k1m, o);
+	mesh_release(&k1m);
+	return bad;
+}
+
 static int write_bench(const char *dir)
 {
 	struct mesh k10, k100, k1m;
@@ -410,6 +427,36 @@ static int write_cube(const char *dir)
 	return bad;
 }
 
+/* The fit's centring (issue 33): a lopsided model, as a plane seen from
+ * its side: a long body and, at one end, a tall thin fin. Its box's and
+ * sphere's centres are far from its outline's at the start view. */
+static int write_lopsided(const char *dir)
+{
+	static const float boxes[2][6] = {{-2, -0.3f, -0.3f, 2, 0.3f, 0.3f},
+					  {1.3f, 0.3f, -0.08f, 2, 1.8f, 0.08f}};
+	struct gltf_write_opts o = {.index_bytes = 2, .bad_index = -1};
+	struct mesh cube, m;
+	int bad = 1;
+
+	if (gltf_test_cube(&cube))
+		return 1;
+	if (!mesh_alloc(&m, 16, 72, false)) {
+		for (uint32_t b = 0; b < 2; b++) {
+			for (uint32_t v = 0; v < 8; v++)
+				for (int k = 0; k < 3; k++)
+					m.positions[(b * 8 + v) * 3 + k] =
+					    cube.positions[v * 3 + k] > 0 ? boxes[b][3 + k]
+									  : boxes[b][k];
+			for (uint32_t i = 0; i < 36; i++)
+				m.indices[b * 36 + i] = cube.indices[i] + b * 8;
+		}
+		bad = put(dir, "lopsided.glb", &m, o);
+		mesh_release(&m);
+	}
+	mesh_release(&cube);
+	return bad;
+}
+
 int main(int argc, char **argv)
 {
 	struct mesh s;
@@ -423,6 +470,8 @@ int main(int argc, char **argv)
 	}
 	if (argc > 3 && strcmp(argv[2], "--bomb") == 0)
 		return write_bomb(argv[1], atoi(argv[3]));
+	if (argc > 2 && strcmp(argv[2], "--scan") == 0)
+		return write_scan(argv[1]);
 	if (mesh_uv_sphere(&s, 128, 64))
 		return 1;
 	bad |= put(argv[1], "sphere.glb", &s, ok);
@@ -459,6 +508,7 @@ int main(int argc, char **argv)
 	o.scenes = "{\"name\":\"one\",\"nodes\":[0]},{\"name\":\"pair\",\"nodes\":[0,1]}";
 	bad |= put(argv[1], "scenes.glb", &s, o);
 	bad |= write_look(argv[1], &s);
+	bad |= write_lopsided(argv[1]);
 	mesh_release(&s);
 	bad |= write_material_models(argv[1]);
 	bad |= parts_models_write(argv[1]);

@@ -165,6 +165,89 @@ static void empty(void **state)
 	assert_float_equal(framing_zoom(&f, FIT), 1.0, 0);
 }
 
+/* A lopsided model (a long body and a tall fin at one end, as a plane from
+ * its side: issue 33), in a room above a caption's band: placed, its
+ * outline at the start view is centred in the room and fills fit of it,
+ * and over a turn it stays inside the room. Before, the box's centre was
+ * framed, and the outline sat off it. */
+#define L_POINTS 16
+
+static void lopsided_corner(int i, double p[3])
+{
+	static const double boxes[2][6] = {{-0.8, -0.12, -0.12, 0.8, 0.12, 0.12},
+					   {0.52, 0.12, -0.03, 0.8, 0.6, 0.03}};
+	const double *b = boxes[i / 8];
+
+	for (int k = 0; k < 3; k++)
+		p[k] = (i >> k) & 1 ? b[3 + k] : b[k];
+}
+
+/* The outline of the points in NDC (lo x, lo y, hi x, hi y) as drawn. */
+static void outline_drawn(const struct view *v, double out[4])
+{
+	float mv[16], proj[16], mvp[16];
+
+	render_matrices(v, 640, 480, mv, proj);
+	mat4_multiply(mvp, proj, mv);
+	out[0] = out[1] = HUGE_VAL;
+	out[2] = out[3] = -HUGE_VAL;
+	for (int i = 0; i < L_POINTS; i++) {
+		double p[3], c[4];
+
+		lopsided_corner(i, p);
+		for (int r = 0; r < 4; r++)
+			c[r] = mvp[r] * p[0] + mvp[4 + r] * p[1] + mvp[8 + r] * p[2] + mvp[12 + r];
+		for (int k = 0; k < 2; k++) {
+			out[k] = fmin(out[k], c[k] / c[3]);
+			out[2 + k] = fmax(out[2 + k], c[k] / c[3]);
+		}
+	}
+}
+
+static void lopsided_in_room(void **state)
+{
+	const struct framing_room room = {0, 0.2, 1, 0.8};
+	struct view v = {.orientation = rest(-30, 20)};
+	struct quat start = v.orientation;
+	double centre[2], o[4], fill, most = 0;
+	struct framing f;
+
+	(void)state;
+	framing_begin(&f, &v, 640, 480);
+	for (int i = 0; i < L_POINTS; i++) {
+		double p[3];
+
+		lopsided_corner(i, p);
+		framing_add(&f, p);
+	}
+	v.zoom = (float)framing_place(&f, FIT, &room, centre);
+	/* Unshifted, the outline is off the frame's centre: the fin lifts it. */
+	outline_drawn(&v, o);
+	assert_true(fabs((o[1] + o[3]) / 2) > 0.05);
+	assert_float_equal((o[1] + o[3]) / 2, v.zoom * centre[1], 1e-3);
+	v.outline[0] = (float)centre[0], v.outline[1] = (float)centre[1];
+	v.room[0] = (float)room.cx, v.room[1] = (float)room.cy;
+	outline_drawn(&v, o);
+	assert_float_equal((o[0] + o[2]) / 2, room.cx, 1e-3);
+	assert_float_equal((o[1] + o[3]) / 2, room.cy, 1e-3);
+	assert_true((o[2] - o[0]) / 2 <= FIT * room.hx + 1e-3);
+	assert_true((o[3] - o[1]) / 2 <= FIT * room.hy + 1e-3);
+	fill = fmax((o[2] - o[0]) / 2 / room.hx, (o[3] - o[1]) / 2 / room.hy);
+	for (int deg = 0; deg < 360; deg++) {
+		v.orientation =
+		    quat_multiply(quat_from_axis_angle(0, 1, 0, deg * M_PI / 180), start);
+		outline_drawn(&v, o);
+		assert_true(o[0] >= -FRAMING_INSIDE - 1e-3 && o[2] <= FRAMING_INSIDE + 1e-3);
+		assert_true(o[1] >= room.cy - FRAMING_INSIDE * room.hy - 1e-3);
+		assert_true(o[3] <= room.cy + FRAMING_INSIDE * room.hy + 1e-3);
+		most = fmax(
+		    most, fmax(fmax(o[2], -o[0]) / FRAMING_INSIDE,
+			       fmax(o[3] - room.cy, room.cy - o[1]) / (FRAMING_INSIDE * room.hy)));
+	}
+	/* The largest such zoom: the fit or the turn holds it, tight. */
+	assert_true(fill > FIT - 0.002 || most > 0.98);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -173,6 +256,7 @@ int main(void)
 	    cmocka_unit_test(cube_at_rest),
 	    cmocka_unit_test(portrait_and_ortho),
 	    cmocka_unit_test(empty),
+	    cmocka_unit_test(lopsided_in_room),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

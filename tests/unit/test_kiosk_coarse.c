@@ -186,6 +186,7 @@ static void draw_still(struct live_kiosk *lk, const char *cache, struct image *o
 	assert_int_equal(content_upload_model(&s, lk->r), 0);
 	v = content_view(content_settings(&s, c));
 	v.zoom = (float)s.zoom;
+	content_place_view(&s, &v);
 	assert_int_equal(lk->d->begin_frame(lk->d), 0);
 	renderer_draw(lk->r, &v, PIXELS, PIXELS);
 	assert_int_equal(lk->d->present(lk->d), 0);

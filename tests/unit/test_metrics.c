@@ -166,6 +166,44 @@ static void test_down_and_builtin(void **state)
 	free(t);
 }
 
+/* What visitors did: presses by source and action, visits, seconds per
+ * slot (a hotspot's name escaped like any label); none of it without
+ * visits in the report. */
+static void test_visits(void **state)
+{
+	struct status_report r = sample;
+	struct visits v = {0};
+	struct app_event ev = {
+	    .time_ns = 1000000000ull, .action = ACTION_TURN_RIGHT, .pressed = true};
+	struct gesture tap = {.kind = GESTURE_TAP, .time_ns = 2000000000ull};
+	static const char *const lines[] = {
+	    "# TYPE matcap_kiosk_presses_total counter",
+	    "matcap_kiosk_presses_total{source=\"knob\",action=\"turn-right\"} 2",
+	    "matcap_kiosk_presses_total{source=\"touch\",action=\"tap\"} 1",
+	    "# TYPE matcap_kiosk_visits_total counter",
+	    "matcap_kiosk_visits_total 1",
+	    "# TYPE matcap_kiosk_shown_seconds_total counter",
+	    "matcap_kiosk_shown_seconds_total{kind=\"stop\",name=\"2\"} 4.500",
+	    "matcap_kiosk_shown_seconds_total{kind=\"hotspot\",name=\"the \\\"valve\\\"\"} 1.250",
+	};
+	char *t = text_of(&r, true);
+
+	(void)state;
+	assert_null(strstr(t, "presses_total"));
+	free(t);
+	visits_press(&v, INPUT_KIND_KNOB, &ev, 30);
+	visits_press(&v, INPUT_KIND_KNOB, &ev, 30);
+	visits_touch(&v, &tap, ACTION_NONE, 30);
+	visit_time_add(&v, "stop", "2", 4.5);
+	visit_time_add(&v, "hotspot", "the \"valve\"", 1.25);
+	r.visits = &v;
+	t = text_of(&r, true);
+	for (size_t i = 0; i < sizeof(lines) / sizeof(lines[0]); i++)
+		if (!has_line(t, lines[i]))
+			fail_msg("missing line: %s\n--- got:\n%s", lines[i], t);
+	free(t);
+}
+
 static void test_escaping(void **state)
 {
 	static const struct {
@@ -314,6 +352,7 @@ int main(void)
 	    cmocka_unit_test(test_content),  cmocka_unit_test(test_down_and_builtin),
 	    cmocka_unit_test(test_escaping), cmocka_unit_test(test_escaped_in_file),
 	    cmocka_unit_test(test_file),     cmocka_unit_test(test_no_folder),
+	    cmocka_unit_test(test_visits),
 	};
 
 	return cmocka_run_group_tests(tests, dir_setup, dir_teardown);

@@ -196,6 +196,37 @@ static void attract_settings(void **state)
 	options_release(&o);
 }
 
+/* [knob]: 15 degrees a detent turning the model, its key selecting and
+ * its long press the next language, by default; each key read. */
+static void knob_settings(void **state)
+{
+	const char *path = write_ini("[knob]\ndevice = /dev/input/event7\nstep = 30\n"
+				     "turns = stops\npress = next-stop\nlong_press = none\n");
+	const char *argv[] = {"mk", "--config", path}, *plain[] = {"mk"};
+	const char *bad[] = {"mk", "--knob-turns", "hotspot-ish"};
+	struct options o;
+
+	(void)state;
+	assert_int_equal(parse(&o, 1, plain), OPTIONS_OK);
+	assert_float_equal(o.knob.step, M_PI / 12, 1e-12);
+	assert_int_equal(o.knob.turns, KNOB_TURNS_MODEL);
+	assert_int_equal(o.knob.press, ACTION_SELECT);
+	assert_int_equal(o.knob.long_press, ACTION_NEXT_LANGUAGE);
+	assert_null(o.knob.device);
+	options_release(&o);
+	assert_int_equal(parse(&o, 3, argv), OPTIONS_OK);
+	assert_string_equal(o.knob.device, "/dev/input/event7");
+	assert_float_equal(o.knob.step, M_PI / 6, 1e-12);
+	assert_int_equal(o.knob.turns, KNOB_TURNS_STOPS);
+	assert_int_equal(o.knob.press, ACTION_NEXT_STOP);
+	assert_int_equal(o.knob.long_press, ACTION_NONE);
+	options_release(&o);
+	unlink(path);
+	assert_int_equal(parse(&o, 3, bad), OPTIONS_USAGE);
+	options_release(&o);
+	assert_int_equal(options_sections[OPTIONS_KNOB].reload, OPTIONS_REOPEN);
+}
+
 /* [kiosk] prepare_threads: auto (0, one a core) by default and in the
  * shipped kiosk.ini, or a whole number from 1 to 16. Its auto is the
  * first word for 0 of a whole number: kept as a double it would zero the
@@ -211,9 +242,9 @@ static void prepare_threads_setting(void **state)
 	struct options o;
 
 	(void)state;
-	/* One thread unless asked (auto is 0). */
+	/* auto (0) unless asked. */
 	assert_int_equal(parse(&o, 1, argv), OPTIONS_OK);
-	assert_int_equal(o.content.prepare_threads, 1);
+	assert_int_equal(o.content.prepare_threads, 0);
 	options_release(&o);
 	assert_int_equal(parse(&o, 3, argv), OPTIONS_OK);
 	assert_int_equal(o.content.prepare_threads, 3);
@@ -520,6 +551,7 @@ int main(void)
 	    cmocka_unit_test(reload_table),
 	    cmocka_unit_test(reload_reopens_what_changed),
 	    cmocka_unit_test(attract_settings),
+	    cmocka_unit_test(knob_settings),
 	    cmocka_unit_test(prepare_threads_setting),
 	    cmocka_unit_test(include_file),
 	    cmocka_unit_test(broken_include_is_ignored),

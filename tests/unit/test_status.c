@@ -72,6 +72,7 @@ static void test_answer(void **state)
 				  .uptime_s = 12.5,
 				  .frames_drawn = 42,
 				  .last_error = "line\none"};
+	struct visits v = {.count = 3};
 	char buf[4096], path[128], file[4096];
 	FILE *f;
 	int fd;
@@ -83,9 +84,17 @@ static void test_answer(void **state)
 	fd = connect_socket();
 	assert_true(fd >= 0);
 	assert_true(status_server_accept(s));
+	/* What visitors did, as the metrics say it. */
+	v.presses[INPUT_KIND_KNOB][ACTION_SELECT] = 2;
+	visit_time_add(&v, "stop", "1", 12.25);
+	r.visits = &v;
 	status_server_answer(s, &r, NULL);
 	read_all(fd, buf, sizeof(buf));
 	close(fd);
+	assert_non_null(strstr(buf,
+			       "\"visits\": {\"count\": 3, \"presses\": [{\"source\": \"knob\", "
+			       "\"action\": \"select\", \"count\": 2}], \"seconds\": [{\"kind\": "
+			       "\"stop\", \"name\": \"1\", \"seconds\": 12.250}]}"));
 	assert_non_null(strstr(buf, "\"model\": \"/srv/a \\\"b\\\".glb\""));
 	assert_non_null(strstr(buf, "\"matcap\": null"));
 	assert_non_null(strstr(buf, "\"power\": \"off\""));

@@ -53,8 +53,10 @@ bool depth_within(const char *name, const uint8_t *data, size_t size)
 	return false;
 }
 
+// owned: the caller's malloc'd bytes (data), freed here once the parser
+// holds its own copy; NULL: the caller keeps them.
 int load_memory(const char *name, const uint8_t *data, size_t size, const char *dir,
-		const struct gltf_options *o, struct mesh *out)
+		const struct gltf_options *o, struct mesh *out, uint8_t **owned)
 {
 	tinygltf::TinyGLTF loader;
 	tinygltf::Model model;
@@ -109,7 +111,42 @@ int load_memory(const char *name, const uint8_t *data, size_t size, const char *
 		log_err("%s: %s", gltf_ext::escape(name).c_str(), gltf_ext::escape(err).c_str());
 		return -EINVAL;
 	}
+	// Parsed: the model holds its buffers, the file's bytes serve nothing
+	// more, and the mesh built next is as large (issue 34: a 1M-triangle
+	// scan's 28 MB file, its parsed buffers and its mesh at once).
+	if (owned) {
+		std::free(*owned);
+		*owned = nullptr;
+	}
 	return gltf_build_mesh(name, model, o, images, out);
+}
+
+} // namespace
+
+namespace
+{
+
+int load_memory_caught(const char *name, const uint8_t *data, size_t size, const char *dir,
+		       const struct gltf_options *o, struct mesh *out, uint8_t **owned)
+{
+	// No exception may cross into C: a model too large for memory, or a
+	// fault inside the parser, is one more error line.
+	try {
+		return load_memory(name, data, size, dir, o, out, owned);
+	} catch (const std::exception &e) {
+		log_err("%s: cannot load: %s", name, e.what());
+	} catch (...) {
+		log_err("%s: cannot load: unexpected fault in the glTF parser", name);
+	}
+	mesh_release(out);
+	return -EINVAL;
+}
+
+std::string folder_of(const char *path)
+{
+	std::string dir = path;
+	size_t slash = dir.rfind('/');
+	return slash == std::string::npos ? "" : dir.substr(0, slash);
 }
 
 } // namespace
@@ -118,17 +155,7 @@ extern "C" int gltf_load_memory_options(const char *name, const uint8_t *data, s
 					const char *dir, const struct gltf_options *o,
 					struct mesh *out)
 {
-	// No exception may cross into C: a model too large for memory, or a
-	// fault inside the parser, is one more error line.
-	try {
-		return load_memory(name, data, size, dir, o, out);
-	} catch (const std::exception &e) {
-		log_err("%s: cannot load: %s", name, e.what());
-	} catch (...) {
-		log_err("%s: cannot load: unexpected fault in the glTF parser", name);
-	}
-	mesh_release(out);
-	return -EINVAL;
+	return load_memory_caught(name, data, size, dir, o, out, nullptr);
 }
 
 extern "C" int gltf_load_memory_textures(const char *name, const uint8_t *data, size_t size,
@@ -161,10 +188,13 @@ extern "C" int gltf_read(const char *path, uint8_t **data, size_t *size)
 extern "C" int gltf_load_bytes(const char *path, const uint8_t *data, size_t size,
 			       const struct gltf_options *o, struct mesh *out)
 {
-	std::string dir = path;
-	size_t slash = dir.rfind('/');
-	dir = slash == std::string::npos ? "" : dir.substr(0, slash);
-	return gltf_load_memory_options(path, data, size, dir.c_str(), o, out);
+	return gltf_load_memory_options(path, data, size, folder_of(path).c_str(), o, out);
+}
+
+extern "C" int gltf_load_bytes_owned(const char *path, uint8_t **data, size_t size,
+				     const struct gltf_options *o, struct mesh *out)
+{
+	return load_memory_caught(path, *data, size, folder_of(path).c_str(), o, out, data);
 }
 
 extern "C" int gltf_load_options(const char *path, const struct gltf_options *o, struct mesh *out)

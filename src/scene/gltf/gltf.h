@@ -40,6 +40,13 @@ int gltf_read(const char *path, uint8_t **data, size_t *size);
  * cache with them parses what it keyed, with the file read once. */
 int gltf_load_bytes(const char *path, const uint8_t *data, size_t size,
 		    const struct gltf_options *o, struct mesh *out);
+/* gltf_load_bytes that frees *data (malloc'd, as gltf_read gives it) and
+ * sets it NULL as soon as the parser holds its own copy, before the mesh
+ * is built: a large model's file, parsed buffers and mesh are not held
+ * all at once. On an error *data may still be there: the caller frees
+ * it (free(NULL) too). */
+int gltf_load_bytes_owned(const char *path, uint8_t **data, size_t size,
+			  const struct gltf_options *o, struct mesh *out);
 
 /* The same from memory (for the fuzzer); external buffers resolve in dir. */
 int gltf_load_memory(const char *name, const uint8_t *data, size_t size, const char *dir,

@@ -176,7 +176,8 @@ static int part_mesh(const struct mesh *m, const unsigned *indices, uint32_t cou
  * `share` triangles unless the error would pass target first, their
  * border locked when options say so: into out (room for count), in m's
  * vertex numbers; *n the count kept, *error the estimate. local: room
- * for m's vertex count. */
+ * for m's vertex count. out may be indices: the part is copied into a
+ * mesh of its own before a result is written. */
 static int simplify_part(const struct mesh *m, const unsigned *indices, uint32_t count,
 			 double share, double target, unsigned options, uint32_t *local,
 			 unsigned *out, size_t *n, float *error)
@@ -208,6 +209,15 @@ static int simplify_part(const struct mesh *m, const unsigned *indices, uint32_t
  * model (or range) is simplified as before, whatever the thread count. */
 #define CLUSTER_MIN_TRIANGLES 16384
 
+/* A part over this many triangles is cut into clusters of at most about
+ * this size whatever the thread count, for memory: meshoptimizer's
+ * simplifier holds some 110 bytes a triangle of its input at once (edge
+ * collapses, adjacency, quadrics), 110 MB for a 1M-triangle scan on top
+ * of the mesh itself, where one cluster holds 7 MB (issue 34: a cold
+ * start's peak). A part up to it is simplified as before. */
+#define CLUSTER_MAX_TRIANGLES 65536
+#define CLUSTERS_MAX	      256
+
 /* The clusters do the bulk, the pass over them joined the rest: a
  * cluster is cut to 1.5 times its share of the count, but by at most 16
  * times, and to half the error budget. A locked border keeps a strip of
@@ -219,13 +229,28 @@ static int simplify_part(const struct mesh *m, const unsigned *indices, uint32_t
 #define CLUSTER_CUT    16.0
 #define CLUSTER_BUDGET 0.5
 
+/* The most triangles one simplifier call was given, in r: what its
+ * memory follows. */
+static void lod_result_part(struct lod_result *r, uint32_t triangles)
+{
+	if (r->largest_part < triangles)
+		r->largest_part = triangles;
+}
+
+/* As many clusters as threads, and at least enough that none is over
+ * CLUSTER_MAX_TRIANGLES; none under CLUSTER_MIN_TRIANGLES. */
 static unsigned cluster_count(int threads, uint32_t index_count)
 {
-	uint32_t most = index_count / 3 / CLUSTER_MIN_TRIANGLES;
+	uint32_t triangles = index_count / 3;
+	uint32_t most = triangles / CLUSTER_MIN_TRIANGLES;
+	uint32_t least = (triangles + CLUSTER_MAX_TRIANGLES - 1) / CLUSTER_MAX_TRIANGLES;
+	uint32_t want = threads > LOD_THREADS_MAX ? LOD_THREADS_MAX : threads > 1 ? threads : 1;
 
-	if (threads > LOD_THREADS_MAX)
-		threads = LOD_THREADS_MAX;
-	return threads > 1 && most > 1 ? (unsigned)threads < most ? (unsigned)threads : most : 1;
+	if (want < least)
+		want = least;
+	if (want > most)
+		want = most;
+	return want > CLUSTERS_MAX ? CLUSTERS_MAX : want > 1 ? want : 1;
 }
 
 /* One part's clusters, simplified side by side: cluster j is the j-th of
@@ -238,9 +263,9 @@ struct cluster_job {
 	unsigned clusters;
 	double share, target;
 	unsigned *out;
-	size_t n[LOD_THREADS_MAX];
-	float error[LOD_THREADS_MAX];
-	int ret[LOD_THREADS_MAX];
+	size_t n[CLUSTERS_MAX];
+	float error[CLUSTERS_MAX];
+	int ret[CLUSTERS_MAX];
 };
 
 static uint32_t cluster_first(const struct cluster_job *c, unsigned j)
@@ -273,27 +298,29 @@ static void cluster_run(void *arg, unsigned j)
  * which. */
 static int simplify_clustered(const struct mesh *m, const unsigned *indices, uint32_t count,
 			      double share, double target, unsigned options, int threads,
-			      unsigned *out, size_t *n, float *error, unsigned *clusters)
+			      unsigned *out, size_t *n, float *error, struct lod_result *r)
 {
 	struct cluster_job *c = calloc(1, sizeof(*c));
-	unsigned *order = malloc((size_t)count * sizeof(unsigned) + 1);
 	uint32_t *local = malloc((size_t)m->vertex_count * sizeof(uint32_t) + 1);
 	uint32_t joined = 0;
 	float first_error = 0.0f, second_error = 0.0f;
-	int ret = c && order && local
-		      ? lod_split_order(indices, count, m->positions, m->vertex_count, order)
-		      : -ENOMEM;
+	/* out holds the ordered triangles, each cluster's result in its own
+	 * run, then the joined pass's, all in place (simplify_part): no copy
+	 * of the part's indices more (12 MB for a 1M-triangle scan). */
+	int ret = c && local ? lod_split_order(indices, count, m->positions, m->vertex_count, out)
+			     : -ENOMEM;
 
 	if (!ret) {
 		*c = (struct cluster_job){.m = m,
-					  .order = order,
+					  .order = out,
 					  .triangles = count / 3,
 					  .clusters = cluster_count(threads, count),
 					  .share = share,
 					  .target = target,
 					  .out = out};
 		lod_pool_run(threads, c->clusters, cluster_run, c);
-		*clusters = *clusters > c->clusters ? *clusters : c->clusters;
+		r->clusters = r->clusters > c->clusters ? r->clusters : c->clusters;
+		lod_result_part(r, (c->triangles + c->clusters - 1) / c->clusters);
 	}
 	for (unsigned j = 0; !ret && j < c->clusters; j++) {
 		ret = c->ret[j];
@@ -304,17 +331,16 @@ static int simplify_clustered(const struct mesh *m, const unsigned *indices, uin
 		joined += (uint32_t)c->n[j];
 		first_error = fmaxf(first_error, c->error[j]);
 	}
-	/* The clusters' result is the input now: order takes it. */
+	/* The clusters' result is the input now, in place. */
 	if (!ret) {
 		log_debug("lod: %u triangles as %u clusters on %d threads, %u joined", count / 3,
 			  c->clusters, threads, joined / 3);
-		memcpy(order, out, (size_t)joined * sizeof(unsigned));
-		ret = simplify_part(m, order, joined, share, fmax(target - first_error, 0.0),
-				    options, local, out, n, &second_error);
+		lod_result_part(r, joined / 3);
+		ret = simplify_part(m, out, joined, share, fmax(target - first_error, 0.0), options,
+				    local, out, n, &second_error);
 	}
 	*error = first_error + second_error;
 	free(c);
-	free(order);
 	free(local);
 	return ret;
 }
@@ -326,7 +352,7 @@ static int simplify_clustered(const struct mesh *m, const unsigned *indices, uin
  * idx gets the ranges one after the other; m's ranges are moved to fit.
  * A large range is cut further on threads (simplify_clustered). */
 static int simplify_ranges(struct mesh *m, double wanted, double target, int threads, unsigned *idx,
-			   size_t *n, float *error, unsigned *clusters)
+			   size_t *n, float *error, struct lod_result *result)
 {
 	uint32_t *local = malloc((size_t)m->vertex_count * sizeof(uint32_t) + 1);
 	uint32_t at = 0;
@@ -342,11 +368,13 @@ static int simplify_ranges(struct mesh *m, double wanted, double target, int thr
 		if (share < g->index_count / 3 && cluster_count(threads, g->index_count) > 1)
 			ret = simplify_clustered(m, m->indices + g->first_index, g->index_count,
 						 share, target, meshopt_SimplifyLockBorder, threads,
-						 idx + at, &k, &e, clusters);
-		else
+						 idx + at, &k, &e, result);
+		else {
+			lod_result_part(result, g->index_count / 3);
 			ret = simplify_part(m, m->indices + g->first_index, g->index_count, share,
 					    target, meshopt_SimplifyLockBorder, local, idx + at, &k,
 					    &e);
+		}
 		if (ret)
 			break;
 		*error = fmaxf(*error, e);
@@ -534,7 +562,7 @@ int lod_prepare_mesh_threads(struct mesh *m, double pixels, int width, int heigh
 	r.wanted = lod_triangles_wanted(m, pixels, width, height);
 	if (m->range_count > 1) {
 		ret = simplify_ranges(m, r.wanted, lod_model_error(pixels, width, height), threads,
-				      idx, &n, &error, &r.clusters);
+				      idx, &n, &error, &r);
 		if (ret)
 			goto out;
 	} else if (r.wanted < n / 3) {
@@ -542,10 +570,11 @@ int lod_prepare_mesh_threads(struct mesh *m, double pixels, int width, int heigh
 
 		if (cluster_count(threads, m->index_count) > 1) {
 			ret = simplify_clustered(m, m->indices, m->index_count, r.wanted, target, 0,
-						 threads, idx, &n, &error, &r.clusters);
+						 threads, idx, &n, &error, &r);
 			if (ret)
 				goto out;
 		} else {
+			lod_result_part(&r, m->index_count / 3);
 			n = simplify(m, r.wanted, target, 0, idx, &error);
 			if (n / 3 > SEAM_SLACK * r.wanted)
 				n = simplify_seamless(m, r.wanted, target, 0, idx, n, &error);

@@ -31,6 +31,9 @@ struct lod_result {
 	double error;	     /* meshoptimizer's estimate, in model units */
 	double error_pixels; /* ... and in pixels at the front of the sphere */
 	unsigned clusters;   /* the most any part was cut into: 1 without threads */
+	/* The most triangles one call of the simplifier was given at once:
+	 * its memory follows them (lod.c's CLUSTER_MAX_TRIANGLES). */
+	uint32_t largest_part;
 };
 
 /* Simplify m in place for a width x height display (pixels <= 0: keep
@@ -50,8 +53,10 @@ int lod_prepare_mesh(struct mesh *m, double pixels, int width, int height,
  * [kiosk] prepare_threads): a part of 32768 triangles or more is cut into spatial clusters
  * simplified side by side, their borders locked, then joined and simplified once more together
  * (lod.c's simplify_clustered). The same error budget, no crack, every range its own; the triangle
- * count within 10% of one thread's. The result depends on the thread count (the cache's key holds
- * it), and 1 is exactly lod_prepare_mesh. */
+ * count within 10% of one thread's. A part over 65536 triangles is cut so on any count, one too:
+ * the simplifier's memory follows what one call is given (issue 34; lod_result.largest_part). The
+ * result depends on the thread count (the cache's key holds it), and 1 is exactly lod_prepare_mesh.
+ */
 int lod_prepare_mesh_threads(struct mesh *m, double pixels, int width, int height, int threads,
 			     struct lod_result *result);
 
