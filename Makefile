@@ -69,14 +69,14 @@ LDLIBS    = $(PKG_LIBS) -lmeshoptimizer -ldl -lm
 # The program's sources, minus app/main.c (tests link the same objects),
 # one folder per layer: each includes only the layers listed after it
 # (tests/tools/layers.sh checks that).
-SRC_APP     := app/kiosk_models app/kiosk app/kiosk_anim app/kiosk_variant app/kiosk_content app/kiosk_report app/reload app/preview \
+SRC_APP     := app/kiosk_models app/kiosk app/kiosk_anim app/kiosk_variant app/kiosk_lang app/kiosk_content app/kiosk_report app/kiosk_remote app/reload app/preview \
 	       app/signals
-SRC_OPS     := ops/check ops/import ops/import_copy ops/import_ini ops/metrics ops/screen ops/service ops/status
+SRC_OPS     := ops/check ops/check_text ops/import ops/import_copy ops/import_ini ops/metrics ops/mqtt ops/mqtt_ha ops/screen ops/service ops/status
 SRC_CONTENT := content/content content/load_guard content/content_cache content/content_look content/content_view content/content_fit content/content_caption content/content_play content/content_deform content/matcap_set content/matcap_job content/model_list \
 	       content/model_loader content/worker
 SRC_CONTENT += content/content_coarse content/refine_job
-SRC_CONFIG  := config/options config/options_file config/model_settings config/settings config/settings_table config/settings_origin config/settings_text
-SRC_STATE   := state/app state/view state/power state/schedule state/visits
+SRC_CONFIG  := config/options config/options_file config/model_settings config/settings config/settings_table config/settings_origin config/settings_text config/lang_text
+SRC_STATE   := state/app state/view state/power state/schedule state/visits state/remote state/lang
 SRC_DISPLAY := display/backlight display/cec display/cec_link display/display display/display_egl display/display_kms display/kms_scale \
 	       display/display_osmesa \
 	       display/drm display/drm_atomic display/drm_legacy display/egl_util display/hotplug \
@@ -88,7 +88,7 @@ SRC_CAMERA  := camera/camera_feed camera/camera_link camera/camera_math camera/c
 SRC_RENDER  := render/background render/bake render/draw_list render/framing render/gl render/poster render/render_scale render/render_caption \
 	       render/caption render/render render/render_draw render/render_live render/render_skin render/render_morph render/render_variant render/shader render/shading
 SRC_SCENE   := scene/mesh/lod scene/mesh/lod_seams scene/mesh/lod_split scene/mesh/material scene/mesh/mesh scene/mesh/mesh_cache scene/mesh/mesh_cache_anim scene/mesh/mesh_cache_nest scene/mesh/mesh_cache_fields scene/mesh/mesh_cache_key scene/mesh/mesh_gen scene/mesh/mesh_pack scene/mesh/subdivide scene/mesh/tangent \
-	       scene/mesh/texture scene/text/caption scene/text/caption_text scene/text/model_name
+	       scene/mesh/texture scene/text/caption scene/text/caption_text scene/text/model_name scene/text/caption_font scene/text/caption_wrap
 SRC_SCENE   += scene/gltf/gltf_json_depth scene/gltf/gltf_features
 SRC_SCENE   += scene/mesh/lod_coarse
 SRC_SCENE   += scene/anim/anim scene/anim/anim_sampler scene/anim/anim_palette scene/anim/anim_play scene/anim/anim_play_gpu scene/anim/anim_play_split scene/anim/anim_play_morph
@@ -275,6 +275,7 @@ install: matcap-kiosk
 	install -d $(DESTDIR)$(DATADIR)/matcaps
 	install -m 0644 matcaps/*.png $(DESTDIR)$(DATADIR)/matcaps/
 	install -D -m 0644 config/kiosk.ini $(DESTDIR)$(DATADIR)/kiosk.ini.example
+	install -D -m 0644 systemd/mqtt.conf $(DESTDIR)$(DATADIR)/mqtt.conf.example
 	install -d $(DESTDIR)$(MANDIR)/man1 $(DESTDIR)$(MANDIR)/man5
 	for p in $(MAN_PAGES); do \
 		sed -e 's|@SYSCONFDIR@|$(SYSCONFDIR)|g' -e 's|@DATADIR@|$(DATADIR)|g' $$p \

@@ -11,7 +11,7 @@
 set -u
 
 groups="layers unit golden egl program_check mirror_check ortho fit preview loaders bad-input not-a-file corpus cli"
-groups="$groups config_doc baker live metrics install systemd fuzz soak no-camera board hands"
+groups="$groups config_doc baker live metrics mqtt install systemd fuzz soak no-camera board hands"
 groups="$groups base_color_check sync tsan systemd-board limits man doc_claims"
 
 unit_names() { (cd tests/unit && ls test_*.c) | sed 's/^test_//; s/\.c$//'; }
@@ -98,7 +98,7 @@ needs() {
 	baker) echo "$BAKE" ;;
 	live) echo "asan-kiosk $TOOLS/mkmodels $TOOLS/notify_listen" ;;
 	tsan) echo "tsan $TOOLS/mkmodels $TOOLS/notify_listen" ;;
-	metrics) echo "asan-kiosk $TOOLS/mkmodels" ;;
+	metrics | mqtt) echo "asan-kiosk $TOOLS/mkmodels" ;;
 	hands) echo "asan-kiosk $TOOLS/mkmodels $TOOLS/imgdiff $TOOLS/notify_listen" ;;
 	sync) echo "asan-kiosk $TOOLS/mkmodels" ;;
 	fuzz) echo fuzzers ;;

@@ -66,6 +66,7 @@ timed test_hands
 timed test_sync
 # 10d. Metrics for Prometheus, scraped from a real node_exporter.
 timed test_metrics
+timed test_mqtt
 # 11. make install honours PREFIX and DESTDIR; the systemd unit, checked
 #     offline.
 timed test_install

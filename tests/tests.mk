@@ -21,12 +21,13 @@ UNIT_TESTS  += status poster file metrics background framing
 UNIT_TESTS  += kiosk_reload kiosk_matcap app_frame model_settings render_scale
 UNIT_TESTS  += kiosk_coarse
 UNIT_TESTS  += anim anim_palette anim_play kiosk_anim anim_frames gltf_bake
-UNIT_TESTS  += caption import gltf_depth load_guard
+UNIT_TESTS  += caption import gltf_depth load_guard caption_wrap lang_text lang kiosk_lang
 UNIT_TESTS  += ini stranger_settings normals
 UNIT_TESTS  += textures
 UNIT_TESTS  += variants vertex_alpha
 UNIT_TESTS  += precedence model_name
 UNIT_TESTS  += knob visits
+UNIT_TESTS  += remote
 TOOLS_DIR   := $(BUILD)/tools
 ASAN_BUILD  := $(BUILD)/asan
 # MK_TEST_HOOKS: the test hooks (MK_TEST_PREPARE_DELAY_MS, src/app/reload.c)

@@ -449,6 +449,7 @@ static int fill_fds(struct kiosk *k, struct pollfd *fds, int sig_fd)
 	fds[FD_TOUCH] = (struct pollfd){.fd = k->touch ? touch_fd(k->touch) : -1, .events = POLLIN};
 	fds[FD_WORKER] = (struct pollfd){.fd = worker_fd(k->worker), .events = POLLIN};
 	kiosk_models_fill_fds(k->models, &fds[FD_MODEL_WATCH]);
+	fds[FD_MQTT] = (struct pollfd){.fd = kiosk_remote_fd(k), .events = POLLIN};
 	for (int i = 0; i < k->input_count; i++)
 		fds[FD_INPUTS + i] = (struct pollfd){.fd = k->inputs[i]->fd, .events = POLLIN};
 	return FD_INPUTS + k->input_count;
@@ -548,9 +549,11 @@ static int loop_once(struct kiosk *k, int sig_fd)
 	kiosk_content_start_jobs(k);
 	next = earliest(next, kiosk_play_animation(k, now, awake(k)), CLOCK_NEVER);
 	kiosk_show_variant(k);
+	kiosk_show_language(k, now);
 	if (app_state(k->app)->dirty && awake(k) && !k->display->waiting && (ret = draw(k, now)))
 		return ret;
 	service_camera(k, 0);
+	kiosk_remote_publish(k);
 	tell_service(k, now);
 	/* Asleep, nothing is drawn: what moves by itself need not wake us. */
 	if (!awake(k))
@@ -561,6 +564,7 @@ static int loop_once(struct kiosk *k, int sig_fd)
 	next = earliest(next, kiosk_content_deadline(k), CLOCK_NEVER);
 	next = earliest(next, kiosk_models_deadline(k->models), metrics_deadline(k->metrics));
 	visits_observe(&k->visits, now, app_state(k->app)->stop, app_attracting(k->app));
+	next = earliest(next, kiosk_remote_deadline(k, now), CLOCK_NEVER);
 	n = fill_fds(k, fds, sig_fd);
 	note_step(k);
 	if (poll(fds, (nfds_t)n, poll_timeout_ms(k, next, now)) < 0 && errno != EINTR)
@@ -585,6 +589,7 @@ static int loop_once(struct kiosk *k, int sig_fd)
 	kiosk_service_matcaps(k, fds, monotonic_ns());
 	service_inputs(k, fds, monotonic_ns());
 	service_touch(k, fds, monotonic_ns());
+	kiosk_remote_service(k, fds[FD_MQTT].revents, monotonic_ns());
 	/* After the inputs: a step to another model starts at once. */
 	kiosk_models_service(k->models, &fds[FD_MODEL_WATCH], monotonic_ns());
 	return 0;
@@ -602,12 +607,14 @@ int kiosk_run(struct kiosk *k)
 	service_init(&k->service, monotonic_ns());
 	k->status = status_server_new();
 	metrics_follow(&k->metrics, k->applied.metrics);
+	kiosk_remote_start(k);
 	while (!(ret = loop_once(k, sig_fd)))
 		;
 	service_stopping();
 	log_info("loop: the longest step between two sleeps took %.1f ms",
 		 (double)k->longest_step_ns / 1e6);
 	kiosk_report_metrics(k, monotonic_ns(), true);
+	kiosk_remote_stop(k);
 	status_server_free(k->status);
 	k->status = NULL;
 	close(sig_fd);

@@ -150,6 +150,11 @@ uint64_t kiosk_models_deadline(const struct kiosk_models *m)
 	return m && !worker_busy(m->p.worker) ? m->rescan_at : CLOCK_NEVER;
 }
 
+int kiosk_models_count(const struct kiosk_models *m)
+{
+	return m && m->list ? model_list_count(m->list) : 0;
+}
+
 /* On the GPU, in place of the model on screen; on failure that one stays. */
 static int show(struct kiosk_models *m, struct content *fresh, int index)
 {

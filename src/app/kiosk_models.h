@@ -48,6 +48,8 @@ void kiosk_models_fill_fds(const struct kiosk_models *m, struct pollfd fds[1]);
  * then not worth its upload. */
 bool kiosk_models_switching(const struct kiosk_models *m);
 uint64_t kiosk_models_deadline(const struct kiosk_models *m);
+/* The models next/prev-model step through; 0 for NULL. */
+int kiosk_models_count(const struct kiosk_models *m);
 /* A file changed, or another model wanted: a job started when the worker
  * is idle (a model prepared is swapped in from the worker's done()). */
 void kiosk_models_service(struct kiosk_models *m, const struct pollfd fds[1], uint64_t now_ns);

@@ -1,8 +1,9 @@
 /* The live loop's state, shared by the files that make up the loop:
  * src/app/kiosk.c (the loop, the devices, a reload applied),
  * src/app/kiosk_content.c (the content worker's jobs) and
- * src/app/kiosk_report.c (what --status and the metrics say) and
- * src/app/kiosk_anim.c (the animation's frames). Nothing
+ * src/app/kiosk_report.c (what --status and the metrics say),
+ * src/app/kiosk_anim.c (the animation's frames) and src/app/kiosk_remote.c
+ * (remote control over MQTT). Nothing
  * else includes it: the rest of the program sees struct kiosk as opaque
  * (src/app/kiosk.h). */
 #ifndef MK_KIOSK_STATE_H
@@ -10,6 +11,8 @@
 
 #include "state/app.h"
 #include "state/visits.h"
+#include "state/remote.h"
+#include "state/lang.h"
 #include "content/content.h"
 #include "app/kiosk_models.h"
 #include "app/reload.h"
@@ -33,6 +36,17 @@
 #include <stdint.h>
 
 struct kiosk_anim; /* app/kiosk_anim.h */
+struct mqtt_link;  /* ops/mqtt.h */
+
+/* The language shown (src/app/kiosk_lang.c): what was last seen of the
+ * app state and the content. */
+struct kiosk_lang {
+	unsigned serial;       /* renderer_mesh_serial when set up */
+	int step;	       /* app_state lang_step seen */
+	double round;	       /* attract mode's tour, seconds a language */
+	bool picked;	       /* a visitor chose one (kept across models) */
+	struct lang_pick pick; /* state/lang.h */
+};
 
 /* The material variant shown (src/app/kiosk_variant.c): what was last
  * applied, to act on changes alone. */
@@ -62,6 +76,7 @@ enum {
 	FD_TOUCH,
 	FD_WORKER,
 	FD_MODEL_WATCH,
+	FD_MQTT,
 	FD_INPUTS
 };
 
@@ -142,6 +157,16 @@ struct kiosk {
 	struct kiosk_anim *anim;  /* the animation player (kiosk_anim.h) */
 	/* The material variant shown (kiosk_variant.h). */
 	struct kiosk_variant variant;
+	/* [mqtt] remote control (kiosk_remote.c). */
+	struct {
+		struct mqtt_link *link;	 /* NULL: off */
+		struct remote_sync sent; /* a leader's last step */
+		bool sent_any;
+		struct remote_sync due; /* a follower's step to show at due.at_ms */
+		bool due_any;
+	} remote;
+	/* The language the texts are shown in (kiosk_lang.c). */
+	struct kiosk_lang lang;
 };
 
 /* A message with no payload to the app state (a frame shown, the display
@@ -162,6 +187,10 @@ uint64_t kiosk_play_animation(struct kiosk *k, uint64_t now, bool awake);
  * and next-variant ask for, shown by the renderer (the draw list's
  * materials changed: no upload); a frame asked for when it changed. */
 void kiosk_show_variant(struct kiosk *k);
+/* src/app/kiosk_lang.c: the language next-language, attract mode and
+ * idle_seconds ask for, its pictures given to the renderer; a frame
+ * asked for when it changed. */
+void kiosk_show_language(struct kiosk *k, uint64_t now);
 /* src/app/kiosk_content.c: the content worker's jobs (reload, matcap,
  * the matcap folder). */
 int kiosk_content_start(struct kiosk *k);
@@ -185,5 +214,15 @@ void kiosk_matcap_settled(struct kiosk *k, int index);
  * clear colour follow. */
 void kiosk_look_changed(void *ctx, unsigned what);
 void kiosk_service_matcaps(struct kiosk *k, const struct pollfd *fds, uint64_t now);
+/* src/app/kiosk_remote.c: [mqtt] remote control, started with the loop
+ * (its settings are [mqtt]'s at the start); commands taken when its fd is
+ * readable, the state published when it changed. */
+void kiosk_remote_start(struct kiosk *k);
+void kiosk_remote_stop(struct kiosk *k);
+int kiosk_remote_fd(const struct kiosk *k);
+void kiosk_remote_service(struct kiosk *k, short revents, uint64_t now);
+void kiosk_remote_publish(struct kiosk *k);
+/* A follower's step due later (CLOCK_MONOTONIC), or CLOCK_NEVER. */
+uint64_t kiosk_remote_deadline(const struct kiosk *k, uint64_t now);
 
 #endif

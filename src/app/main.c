@@ -18,6 +18,7 @@
 #include "render/poster.h"
 #include "render/render_scale.h"
 #include "scene/mesh/mesh_cache.h"
+#include "scene/text/caption_wrap.h"
 
 #include <errno.h>
 #include <malloc.h>
@@ -435,6 +436,7 @@ int main(int argc, char **argv)
 	status = options_parse(&opts, argc, argv);
 	log_set_level(opts.log_level);
 	guard_shader_cache();
+	caption_wrap_init(); /* before the worker's thread wraps a caption */
 	ret = status == OPTIONS_OK ? start(&opts, argv) : parse_failed(status, argc, argv);
 	options_release(&opts);
 	return ret;

@@ -4,6 +4,7 @@
 #ifndef MK_CONTENT_CONFIG_H
 #define MK_CONTENT_CONFIG_H
 
+#include "config/lang_text.h"
 #include "render/shading.h"
 #include "scene/text/caption.h"
 #include "scene/mesh/material.h"
@@ -46,6 +47,9 @@ struct content_config {
 	struct material_config material;
 	struct frame_config frame;     /* [frame]: orientation, start view, limits, stops */
 	struct caption_config caption; /* [caption] */
+	struct lang_texts texts;       /* every KEY[LANG] = text of the files read */
+	char
+	    *lang; /* --lang: the language shown (a code of [caption] languages); NULL: the first */
 	/* Live playback: anim_live is set for the live kiosk (not a
 	 * setting); [scene] animation_fps (0: the display's rate) and
 	 * animation_pause_after (seconds without input; 0: never). */

@@ -256,14 +256,20 @@ static int on_key(void *user, int line, const char *section, const char *key, co
 {
 	struct file_state *st = user;
 	const struct option_def *d = find_key(section, key);
-	char what[256], *resolved = NULL;
+	char what[256], *resolved = NULL, base[64], lang[LANG_CODE_MAX];
 	const char *why = NULL;
+	bool translated = lang_key_split(key, base, sizeof(base), lang, sizeof(lang));
 
 	st->line = line;
 	st->errors++;
-	if (st->rules->allowed && !st->rules->allowed(section, key)) {
+	if (st->rules->allowed && !st->rules->allowed(section, translated ? base : key)) {
 		log_err("%s:%d: [%s] %s cannot be set from %s; it takes %s", st->path, st->line,
 			section, key, st->rules->who, st->rules->allowed_text);
+		return 0;
+	}
+	if (translated) {
+		st->errors -=
+		    !lang_text_read(&st->opts->content.texts, st->path, line, section, key, value);
 		return 0;
 	}
 	if (d && st->rules->stick_paths && names_files(d, value) &&
@@ -403,6 +409,8 @@ static void check_caption(struct file_state *st)
 		log_err("%s:%d: [caption] %s = '%s' is not valid; expected %s%s", st->path, at,
 			keys[i], values[i], i ? "none or " : "", CAPTION_COLOR_EXPECTED);
 	}
+	lang_list_check(c->languages, st->path,
+			st->seen_line[find_key("caption", "languages") - option_defs], &st->errors);
 }
 
 static int frame_line(const struct file_state *st, const char *key)

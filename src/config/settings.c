@@ -96,6 +96,7 @@ void options_release(struct options *o)
 			free(get_string(field_of(o, &option_defs[i])));
 			put_string(field_of(o, &option_defs[i]), NULL);
 		}
+	lang_texts_release(&o->content.texts);
 	options_origins_free(o);
 }
 
@@ -105,6 +106,7 @@ int options_copy(struct options *dst, const struct options *src)
 
 	*dst = *src;
 	dst->origins = NULL;
+	dst->content.texts.count = 0; /* still src's: copied below */
 	for (size_t i = 0; i < OPTION_DEFS; i++)
 		if (option_defs[i].kind == K_STRING)
 			put_string(field_of(dst, &option_defs[i]), NULL);
@@ -120,6 +122,8 @@ int options_copy(struct options *dst, const struct options *src)
 		put_string(field_of(dst, &option_defs[i]), s);
 		ret = s ? 0 : -ENOMEM;
 	}
+	if (!ret)
+		ret = lang_texts_copy(&dst->content.texts, &src->content.texts);
 	if (ret)
 		options_release(dst);
 	return ret;
@@ -147,6 +151,7 @@ void content_config_release(struct content_config *c)
 			free(get_string((char *)c + content_offset(&option_defs[i])));
 			put_string((char *)c + content_offset(&option_defs[i]), NULL);
 		}
+	lang_texts_release(&c->texts);
 }
 
 int content_config_copy(struct content_config *dst, const struct content_config *src)
@@ -169,6 +174,10 @@ int content_config_copy(struct content_config *dst, const struct content_config 
 		put_string((char *)dst + content_offset(&option_defs[i]), s);
 		ret = s ? 0 : -ENOMEM;
 	}
+	if (!ret)
+		ret = lang_texts_copy(&dst->texts, &src->texts);
+	else
+		dst->texts.count = 0; /* still src's: not this copy's to free */
 	if (ret)
 		content_config_release(dst);
 	return ret;
@@ -205,6 +214,9 @@ unsigned options_changed(const struct options *a, const struct options *b)
 			continue;
 		changed |= 1u << d->section;
 	}
+	/* A KEY[LANG] text is [caption]'s or [frame]'s: both apply at once. */
+	if (!lang_texts_same(&a->content.texts, &b->content.texts))
+		changed |= 1u << OPTIONS_CAPTION;
 	return changed;
 }
 

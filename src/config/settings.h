@@ -9,6 +9,7 @@
 
 #include "camera/camera_feed.h"
 #include "config/content_config.h"
+#include "config/mqtt_config.h"
 #include "config/screen_config.h"
 #include "display/display.h"
 #include "input/gpio.h"
@@ -38,6 +39,7 @@ enum options_section {
 	OPTIONS_FRAME,
 	OPTIONS_CAPTION,
 	OPTIONS_KNOB,
+	OPTIONS_MQTT,
 	OPTIONS_SECTIONS
 };
 
@@ -79,6 +81,8 @@ struct options {
 	struct touch_config touch;
 	/* [knob] */
 	struct knob_config knob;
+	/* [mqtt] */
+	struct mqtt_config mqtt;
 	char *poster;  /* [display] poster */
 	char *include; /* [kiosk] include */
 	char *metrics; /* [status] metrics */
@@ -126,7 +130,7 @@ struct option_def {
 
 /* The table's length: the compiler refuses an entry more, and
  * tests/unit/test_options.c one less. */
-#define OPTION_DEFS 135
+#define OPTION_DEFS 144
 extern const struct option_def option_defs[OPTION_DEFS];
 
 void option_defaults(struct options *o);

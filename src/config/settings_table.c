@@ -28,6 +28,7 @@ const struct options_section_rule options_sections[OPTIONS_SECTIONS] = {
     [OPTIONS_CAPTION] = {"caption", OPTIONS_LIVE, NULL, "at once"},
     [OPTIONS_KNOB] = {"knob", OPTIONS_REOPEN, NULL,
 		      "at once; the knobs are opened again if this section changed"},
+    [OPTIONS_MQTT] = {"mqtt", OPTIONS_AT_START, NULL, "at the next start (systemctl restart)"},
 };
 
 static const char *const backend_names[] = {"auto", "kms", "osmesa", "egl-headless", NULL};
@@ -53,6 +54,8 @@ static const char *const drift_names[] = {"off", "on", NULL};
 static const char *const auto_names[] = {"auto", NULL};
 static const char *const up_names[] = {"+y", "-y", "+z", "-z", "+x", "-x", NULL}; /* frame_up */
 static const char *const direction_names[] = {"right", "left", NULL};
+static const char *const yes_no_names[] = {"no", "yes", NULL};
+static const char *const sync_names[] = {"off", "leader", "follower", NULL}; /* enum mqtt_sync */
 
 /* A field's place and size: the size tells a bool from an enum, and the
  * copy, the comparison and the release go by it. */
@@ -364,8 +367,10 @@ const struct option_def option_defs[OPTION_DEFS] = {
      3600, 0, NULL, "S", "attract mode plays the stops in turn, each this long; 0: it turns"},
     {"caption", 0, OPTIONS_CAPTION, "text", K_STRING, AT(content.caption.text), 0, 0, 0, NULL,
      "TEXT",
-     "a caption over the model, UTF-8 (any script; \\n breaks the line); auto: the model's "
-     "name (its glTF title or scene name, else its file's); default: none"},
+     "a caption over the model, UTF-8: wrapped between words to the frame's width (\\n breaks "
+     "the line); a character the font lacks is drawn from an installed font that has it "
+     "(--check-config names those none has); text[de] = gives it in a language; auto: the "
+     "model's name (its glTF title or scene name, else its file's); default: none"},
     {"caption-font", 0, OPTIONS_CAPTION, "font", K_STRING, AT(content.caption.font), 0, 0, 0, NULL,
      "FILE", "a TrueType/OpenType font (default: DejaVu Sans, fonts-dejavu-core)"},
     {"caption-size", 0, OPTIONS_CAPTION, "size", K_DOUBLE, AT(content.caption.size), 6, 400, 0,
@@ -395,6 +400,32 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "ACT", "what a press of the knob's key (KEY_ENTER on the knob) does"},
     {"knob-long-press", 0, OPTIONS_KNOB, "long_press", K_CHOICE, AT(knob.long_press), 0, 0, 0,
      app_action_names, "ACT", "what a long press of the knob's key does (none: no long press)"},
+    {"mqtt-broker", 0, OPTIONS_MQTT, "broker", K_STRING, AT(mqtt.broker), 0, 0, 0, NULL,
+     "HOST[:PORT]",
+     "remote control: the MQTT broker (port 1883, 8883 with tls); default: none, MQTT off"},
+    {"mqtt-topic", 0, OPTIONS_MQTT, "topic", K_STRING, AT(mqtt.topic), 0, 0, 0, NULL, "TOPIC",
+     "the kiosk's topic: commands on TOPIC/command, state on TOPIC/state (default: "
+     "kiosk/HOSTNAME)"},
+    {"mqtt-tls", 0, OPTIONS_MQTT, "tls", K_CHOICE, AT(mqtt.tls), 0, 0, 0, yes_no_names, "yes|no",
+     "TLS to the broker, its certificate checked"},
+    {"mqtt-ca-file", 0, OPTIONS_MQTT, "ca_file", K_STRING, AT(mqtt.ca_file), 0, 0, 0, NULL, "FILE",
+     "the broker's CA certificate, PEM (default: the system's, /etc/ssl/certs)"},
+    {"mqtt-home-assistant", 0, OPTIONS_MQTT, "home_assistant", K_CHOICE, AT(mqtt.home_assistant), 0,
+     0, 0, yes_no_names, "yes|no",
+     "announce the kiosk and its controls to Home Assistant (MQTT discovery)"},
+    {"mqtt-sync", 0, OPTIONS_MQTT, "sync", K_CHOICE, AT(mqtt.sync), 0, 0, 0, sync_names, "ROLE",
+     "kiosks showing one exhibit: the leader publishes the model, matcap and stop it shows "
+     "with the wall-clock time, followers show the same from then; off, leader or follower"},
+    {"mqtt-group", 0, OPTIONS_MQTT, "group", K_STRING, AT(mqtt.group), 0, 0, 0, NULL, "TOPIC",
+     "the topic a leader and its followers share (default: kiosk/group)"},
+    {"caption-languages", 0, OPTIONS_CAPTION, "languages", K_STRING, AT(content.caption.languages),
+     0, 0, 0, NULL, "CODES",
+     "the languages of the texts, in the order shown (e.g. en de fr): KEY[LANG] = gives a text "
+     "in one (text[de] =, [frame] stops[de] = \"A\"; \"B\"), the plain KEY = is the first's "
+     "and stands in for a text missing in another; next-language switches, attract mode shows "
+     "each in turn, the first comes back after idle_seconds"},
+    {"lang", 0, OPTION_CLI, NULL, K_STRING, AT(content.lang), 0, 0, 0, NULL, "CODE",
+     "show the texts in this language of [caption] languages (with --output)"},
 };
 
 const char *backend_name(enum backend_kind kind)

@@ -327,6 +327,7 @@ void content_take_model(struct content *shown, struct content *fresh, struct con
 	old->model_path = kept.model_path;
 	old->caption = kept.caption;
 	memcpy(old->stop_caption, kept.stop_caption, sizeof(old->stop_caption));
+	memcpy(old->lang_spare, kept.lang_spare, sizeof(old->lang_spare));
 	old->own = kept.own;
 	old->refine = kept.refine; /* a coarse picture's whole mesh: not wanted now */
 	/* The look's text: fresh's equals kept's where it has none of its own. */

@@ -81,6 +81,14 @@ struct content {
 	/* The picture of each of [frame] stops' texts, in the caption's
 	 * style; empty: a stop without text (the caption is shown). */
 	struct image stop_caption[CAPTION_STOPS];
+	/* The same of each other language of [caption] languages, drawn
+	 * with these: language lang_shown's are the two above (its slot
+	 * here is empty), so a switch swaps pictures and draws none. */
+	struct content_lang {
+		struct image caption, stop[CAPTION_STOPS];
+	} lang_spare[LANG_MAX];
+	int lang_shown, lang_count; /* lang_count 0: no languages named */
+	int caption_frame[2];	    /* the frame the pictures were laid out in; 0: none yet */
 	struct caption_config caption_place; /* its position, padding, drift; no strings */
 	/* The model's settings: the caller's with its NAME.ini over them
 	 * (config/model_settings.h); NULL: the caller's (the built-in knot). */
@@ -234,13 +242,23 @@ void content_place_view(const struct content *s, struct view *v);
  * journal says why), unless strict. */
 int content_load_captions(struct content *s, const struct content_config *c, bool strict);
 void content_release_captions(struct content *s);
-/* The pictures larger than a width x height panel (turned by c's
- * rotation) drawn again within it, cut with an ellipsis; the journal
- * says what was cut, once a picture. */
+/* The pictures laid out again for a width x height panel (turned by c's
+ * rotation): wrapped to its width, cut with an ellipsis; the journal
+ * says what was cut, once a picture. Once a frame: the same again draws
+ * nothing. */
 void content_fit_captions(struct content *s, const struct content_config *c, int width, int height);
 /* The picture shown at stop (the app state's; -1: none): the stop's, else
- * the caption (empty: nothing). */
+ * the caption (empty: nothing), in the language shown. Its width and
+ * height are the caption's box on screen (padding inside it included,
+ * the margin outside not), its text wrapped to the frame once
+ * content_fit_captions knew the frame: what a fit leaves room for. */
 const struct image *content_caption(const struct content *s, int stop);
+/* Show language lang's pictures (an index of [caption] languages, out of
+ * range: the first), and give them to the renderer: on the loop thread,
+ * an upload of pictures already drawn. 0, or a negative errno after the
+ * journal said so (the renderer then keeps the textures it could not
+ * replace). */
+int content_show_language(struct content *s, struct renderer *r, int lang);
 /* The settings s's model is shown with: its own, else c. */
 const struct content_config *content_settings(const struct content *s,
 					      const struct content_config *c);

@@ -25,14 +25,26 @@ static void frame_packed(struct framing *f, const struct mesh_packed *m)
 	}
 }
 
-/* The tallest caption picture the model shows (its caption, a stop's). */
+/* The tallest of a language's pictures (its caption, a stop's). */
+static int pictures_height(const struct image *caption, const struct image *stops, int h)
+{
+	if (caption->rgba && caption->height > h)
+		h = caption->height;
+	for (int i = 0; i < CAPTION_STOPS; i++)
+		if (stops[i].rgba && stops[i].height > h)
+			h = stops[i].height;
+	return h;
+}
+
+/* The tallest caption picture the model shows, in any of its languages:
+ * a switch of language never moves the model. */
 static int caption_height(const struct content *s)
 {
-	int h = s->caption.rgba ? s->caption.height : 0;
+	int h = pictures_height(&s->caption, s->stop_caption, 0);
 
-	for (int i = 0; i < CAPTION_STOPS; i++)
-		if (s->stop_caption[i].rgba && s->stop_caption[i].height > h)
-			h = s->stop_caption[i].height;
+	for (int l = 0; l < s->lang_count; l++)
+		if (l != s->lang_shown)
+			h = pictures_height(&s->lang_spare[l].caption, s->lang_spare[l].stop, h);
 	return h;
 }
 

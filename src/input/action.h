@@ -29,13 +29,13 @@ enum app_action {
 	/* The knob's press (or a button's): what the knob points at is taken;
 	 * today the next stop (hotspots, issue 33, step through theirs). */
 	ACTION_SELECT,
-	/* The knob's long press: the next of [caption] languages. Nothing
-	 * yet: the languages' part of issue 33 gives it its meaning. */
+	/* The knob's long press (or a button's, a key's): the texts in the
+	 * next of [caption] languages. */
 	ACTION_NEXT_LANGUAGE,
 	ACTION_COUNT
 };
 
-/* "none", "turn-left", ... "next-variant", then NULL: the config file's names. */
+/* "none", "turn-left", ... "next-language", then NULL: the config file's names. */
 extern const char *const app_action_names[ACTION_COUNT + 1];
 
 /* What kind of thing a source is: the visitors' presses are counted per

@@ -39,6 +39,7 @@ static const struct {
     {KEY_PLAYPAUSE, ACTION_PLAY_PAUSE},
     {KEY_A, ACTION_NEXT_ANIMATION},
     {KEY_V, ACTION_NEXT_VARIANT},
+    {KEY_L, ACTION_NEXT_LANGUAGE},
 };
 
 #define N_KEYS (sizeof(keys) / sizeof(keys[0]))

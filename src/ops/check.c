@@ -2,6 +2,7 @@
  * A problem is one line: where the setting came from (file:line), the
  * setting, its value and the loader's own reason. */
 #include "ops/check.h"
+#include "ops/check_text.h"
 #include "config/model_settings.h"
 #include "content/content.h"
 #include "content/model_list.h"
@@ -9,6 +10,7 @@
 #include "render/background.h"
 #include "scene/anim/anim.h"
 #include "scene/text/caption.h"
+#include "state/remote.h"
 #include "state/view.h"
 #include "util/image.h"
 #include "util/log.h"
@@ -25,6 +27,8 @@ struct check {
 	int bad_settings; /* models' own NAME.ini files with errors */
 	int bad_clips;	  /* animations named that a model lacks */
 	int bad_variants; /* material variants named that a model lacks */
+	int bad_mqtt;	  /* [mqtt] broker or topic the client would refuse */
+	int bad_texts;	  /* texts with characters no installed font has */
 };
 
 int check_model_settings(const struct content_config *cfg, FILE *out, bool stick)
@@ -92,6 +96,34 @@ static void found(struct check *c, const char *section, const char *key, const c
 		snprintf(cause, sizeof(cause), "%s", strerror(ret < 0 ? -ret : ret));
 	log_err("%s: [%s] %s = '%s': %s", at, section, key, value, cause);
 	c->bad_files++;
+}
+
+/* [mqtt] as the client reads it at the start (it would run without
+ * remote control), here with the file and line. */
+static void check_mqtt(struct check *c, const struct mqtt_config *m)
+{
+	char host[REMOTE_HOST_MAX + 1], why[200], at[512];
+	int port;
+
+	if (!m->broker || !m->broker[0])
+		return;
+	if (remote_broker_parse(m->broker, host, sizeof(host), &port, 1883, why, sizeof(why))) {
+		where(c->o, def_of("mqtt", "broker"), at, sizeof(at));
+		log_err("%s: [mqtt] broker = %s", at, why);
+		c->bad_mqtt++;
+	}
+	if (m->topic && m->topic[0] && remote_topic_check(m->topic, why, sizeof(why))) {
+		where(c->o, def_of("mqtt", "topic"), at, sizeof(at));
+		log_err("%s: [mqtt] topic = %s", at, why);
+		c->bad_mqtt++;
+	}
+	if (m->sync && m->group && m->group[0] && remote_topic_check(m->group, why, sizeof(why))) {
+		where(c->o, def_of("mqtt", "group"), at, sizeof(at));
+		log_err("%s: [mqtt] group = %s", at, why);
+		c->bad_mqtt++;
+	}
+	if (m->tls && m->ca_file && m->ca_file[0])
+		found(c, "mqtt", "ca_file", m->ca_file, access(m->ca_file, R_OK) ? -errno : 0);
 }
 
 static int load_image(const char *path)
@@ -396,6 +428,15 @@ static void list_values(const struct check *c)
 	}
 }
 
+static int check_texts_at(struct check *c)
+{
+	char caption_at[512], stops_at[512];
+
+	where(c->o, def_of("caption", "text"), caption_at, sizeof(caption_at));
+	where(c->o, def_of("frame", "stops"), stops_at, sizeof(stops_at));
+	return check_texts(c->o, caption_at, stops_at);
+}
+
 static void list_files(struct check *c)
 {
 	const char *const *files;
@@ -439,6 +480,14 @@ int check_config_run(const struct options *o, FILE *out)
 	if (o->content.background && background_names_image(o->content.background))
 		check_image(&c, "display", "background", o->content.background);
 	check_caption(&c, &o->content.caption);
+	check_mqtt(&c, &o->mqtt);
+	if (c.bad_mqtt) {
+		log_err("%s: [mqtt] has %d error%s (above): the kiosk would run without remote "
+			"control",
+			name, c.bad_mqtt, c.bad_mqtt == 1 ? "" : "s");
+		return CHECK_BAD_SETTINGS;
+	}
+	c.bad_texts = check_texts_at(&c);
 	if (c.bad_settings) {
 		log_err("%s: %d model%s own settings file%s errors (above)", name, c.bad_settings,
 			c.bad_settings == 1 ? "'s" : "s'", c.bad_settings == 1 ? " has" : "s have");
@@ -456,6 +505,11 @@ int check_config_run(const struct options *o, FILE *out)
 			"would show its default materials, or at a stop keep the ones shown",
 			name, c.bad_variants, c.bad_variants == 1 ? "" : "s",
 			c.bad_variants == 1 ? "is" : "are", c.bad_variants == 1 ? "" : "s");
+		return CHECK_BAD_SETTINGS;
+	}
+	if (c.bad_texts) {
+		log_err("%s: %d text%s would show empty boxes (above)", name, c.bad_texts,
+			c.bad_texts == 1 ? "" : "s");
 		return CHECK_BAD_SETTINGS;
 	}
 	if (c.bad_files) {

@@ -103,6 +103,16 @@ bool screen_input(struct screen *s, uint64_t now_ns)
 	return !was_on && s->power.on;
 }
 
+bool screen_remote(struct screen *s, bool on, uint64_t now_ns)
+{
+	struct power_clock c = wall_clock(now_ns);
+	bool was_on = s->power.on;
+
+	if (power_remote(&s->power, &c, on) & POWER_CHANGED)
+		apply(s);
+	return !was_on && s->power.on;
+}
+
 bool screen_update(struct screen *s, uint64_t now_ns)
 {
 	struct power_clock c = wall_clock(now_ns);

@@ -21,6 +21,9 @@ void screen_free(struct screen *s);
 /* An input (button, key, touch) at now_ns: it wakes a sleeping screen.
  * Returns true when it did: everything must be drawn again. */
 bool screen_input(struct screen *s, uint64_t now_ns);
+/* Remote control's "screen on" (as an input) or "screen off" (until an
+ * input). Returns true when the screen just woke. */
+bool screen_remote(struct screen *s, bool on, uint64_t now_ns);
 /* Decide again at now_ns and apply a change. Returns true when the screen
  * just woke: everything must be drawn again. */
 bool screen_update(struct screen *s, uint64_t now_ns);

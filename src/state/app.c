@@ -364,6 +364,10 @@ static void press(struct app *a, enum app_action action, uint64_t t)
 	case ACTION_NEXT_VARIANT:
 		st->variant_step++;
 		break;
+	case ACTION_NEXT_LANGUAGE:
+		st->lang_step++;
+		st->dirty = true;
+		break;
 	case ACTION_RESET:
 		home(a);
 		st->mode = a->cfg.mode;

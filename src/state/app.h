@@ -62,6 +62,9 @@ struct app_state {
 	 * shows ([frame] stops' variant=), or NULL. */
 	int variant_step;
 	const char *stop_variant;
+	/* next-language: presses so far (the kiosk steps by the
+	 * difference, state/lang.h). */
+	int lang_step;
 };
 
 enum app_msg_kind {

@@ -19,6 +19,9 @@ static enum power_reason decide(const struct power_state *p, const struct power_
 	bool idle =
 	    p->cfg.blank_after_s > 0 && c->now_ns >= after(p->last_input_ns, p->cfg.blank_after_s);
 
+	if (p->remote_off)
+		return POWER_REMOTE_OFF;
+
 	if (schedule && c->synced && !schedule_on(&p->cfg.schedule, c->wday, c->minute)) {
 		if (p->woken_ns != CLOCK_NEVER && c->now_ns < after(p->woken_ns, wake_s(p)))
 			return POWER_WOKEN;
@@ -33,7 +36,7 @@ static enum power_reason decide(const struct power_state *p, const struct power_
 
 static bool reason_on(enum power_reason r)
 {
-	return r != POWER_SCHEDULED_OFF && r != POWER_IDLE;
+	return r != POWER_SCHEDULED_OFF && r != POWER_IDLE && r != POWER_REMOTE_OFF;
 }
 
 void power_init(struct power_state *p, const struct power_config *cfg, const struct power_clock *c)
@@ -62,9 +65,18 @@ unsigned power_update(struct power_state *p, const struct power_clock *c)
 unsigned power_input(struct power_state *p, const struct power_clock *c)
 {
 	p->last_input_ns = c->now_ns;
+	p->remote_off = false;
 	if (p->cfg.schedule.count && c->synced &&
 	    !schedule_on(&p->cfg.schedule, c->wday, c->minute))
 		p->woken_ns = c->now_ns;
+	return power_update(p, c);
+}
+
+unsigned power_remote(struct power_state *p, const struct power_clock *c, bool on)
+{
+	if (on)
+		return power_input(p, c);
+	p->remote_off = true;
 	return power_update(p, c);
 }
 
@@ -86,6 +98,7 @@ const char *power_reason_name(enum power_reason r)
 	    [POWER_WOKEN] = "woken by an input outside the schedule",
 	    [POWER_SCHEDULED_OFF] = "outside the schedule",
 	    [POWER_IDLE] = "blanked: no input for blank_after",
+	    [POWER_REMOTE_OFF] = "off by remote control until an input or 'screen on'",
 	};
 
 	return (unsigned)r < sizeof(names) / sizeof(names[0]) ? names[r] : "?";

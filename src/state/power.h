@@ -40,7 +40,8 @@ enum power_reason {
 	POWER_NO_CLOCK,	    /* on because the wall clock is not synchronised */
 	POWER_WOKEN,	    /* on outside the schedule: an input woke it */
 	POWER_SCHEDULED_OFF,
-	POWER_IDLE, /* off after blank_after without input */
+	POWER_IDLE,	  /* off after blank_after without input */
+	POWER_REMOTE_OFF, /* off by remote control until an input or "screen on" */
 };
 
 /* What power_update reports, as bits. */
@@ -54,11 +55,15 @@ struct power_state {
 	uint64_t last_input_ns; /* for blank_after; the start counts as input */
 	uint64_t woken_ns;	/* the last input outside the schedule; CLOCK_NEVER */
 	bool said_unsynced;
+	bool remote_off; /* remote control's "screen off" holds */
 };
 
 void power_init(struct power_state *p, const struct power_config *cfg, const struct power_clock *c);
 /* Any input (button, key, touch) at c->now_ns; then power_update. */
 unsigned power_input(struct power_state *p, const struct power_clock *c);
+/* Remote control's "screen on" (an input) or "screen off" (held until
+ * an input); then power_update. */
+unsigned power_remote(struct power_state *p, const struct power_clock *c, bool on);
 /* Where the clocks are now; returns POWER_* bits. */
 unsigned power_update(struct power_state *p, const struct power_clock *c);
 /* The next monotonic time at which idleness changes the state, or

@@ -3,7 +3,11 @@
  * it, each finished (glFinish) and timed, the two kinds taken in turn so
  * that a busy machine slows both alike; the medians and their
  * difference. Its picture (FreeType, HarfBuzz, FriBidi) is drawn once, as
- * the kiosk draws it on the content worker, and timed apart.
+ * the kiosk draws it on the content worker, and timed apart; then the
+ * pictures of a German, a Japanese (its glyphs from the fallback font
+ * fontconfig finds: the first draw asks fontconfig, later ones too, each
+ * drawing has a set of fonts of its own) and a long wrapped caption,
+ * their medians, on the worker's side: none is drawn a frame.
  *   bench_caption BACKEND WxH LOGO [FRAMES]   (BACKEND: osmesa or egl-headless) */
 #include "display/display.h"
 #include "render/caption.h"
@@ -17,6 +21,44 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+
+/* The median of a picture's drawings (the first, fontconfig's start
+ * included, said apart in *first). */
+static double picture_ms(const char *text, double *first)
+{
+	struct caption_config c = {.text = (char *)text, .size = 32, .padding = 12};
+	double t[15];
+	struct image img;
+
+	for (int i = 0; i < 15; i++) {
+		t[i] = bench_now_ms();
+		if (caption_render_fit(&c, NULL, &(struct caption_fit){640, 480, "bench", true},
+				       &img, NULL))
+			return -1;
+		t[i] = bench_now_ms() - t[i];
+		image_release(&img);
+	}
+	*first = t[0];
+	return bench_median(t + 1, 14);
+}
+
+static void pictures(void)
+{
+	static const char *const texts[][2] = {
+	    {"German", "Vase mit gemalter Signatur\\nLeihgabe des Stadtmuseums Köln"},
+	    {"Japanese (fallback)", "江戸時代の伊万里焼の花瓶。\\n有田で焼かれ、長崎から渡った。"},
+	    {"150 characters wrapped",
+	     "A vase with a painted signature under its foot, made in Arita in the 1690s and "
+	     "shipped from Nagasaki to Amsterdam; lent by the city museum for this show."},
+	};
+
+	for (size_t i = 0; i < sizeof(texts) / sizeof(texts[0]); i++) {
+		double first = 0, median = picture_ms(texts[i][1], &first);
+
+		printf("picture at 640x480, size 32, %s: %.2f ms (the first %.2f ms)\n",
+		       texts[i][0], median, first);
+	}
+}
 
 static double frame(struct display *d, const struct caption_gl *cap)
 {
@@ -69,6 +111,7 @@ int main(int argc, char **argv)
 	       "ms: %.3f ms a frame\n",
 	       argv[1], cfg.width, cfg.height, img.width, img.height, t, bench_median(off, n),
 	       bench_median(on, n), bench_median(on, n) - bench_median(off, n));
+	pictures();
 	free(off);
 	free(on);
 	image_release(&img);

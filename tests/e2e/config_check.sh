@@ -156,6 +156,32 @@ cp "$models/sphere.glb" "$dir/elsewhere/cwd.glb"
 case_ command-line-from-cwd 0 "model = cwd.glb (the command line): loads" "$dir/good.ini" $mc \
 	--model cwd.glb
 
+# Every text a visitor reads, in each language (text[de] =), against the
+# fonts installed: Japanese is drawn from Noto CJK (make deps-test), so
+# valid; an emoji DejaVu lacks and an Egyptian hieroglyph (no font of the
+# test packages has either) are each named with their file, line, key,
+# language and the package that has them: empty boxes are not valid.
+w '[caption]\nlanguages = en ja\ntext = Vase\ntext[ja] = 江戸時代の花瓶\n' >"$dir/japanese.ini"
+case_ japanese-caption-valid 0 "japanese.ini: the settings are valid" "$dir/japanese.ini" $mc
+w '[caption]\nlanguages = en de\ntext = A vase \360\237\217\272\ntext[de] = Vase \360\223\200\200\n' >"$dir/boxes.ini"
+w '[frame]\nstops = 0 0 1 "Front"; 90 0 1 "Sign \342\230\272"\n' >>"$dir/boxes.ini"
+case_ emoji-named-with-package 78 \
+	"boxes.ini:3: \[caption\] text: no installed font has 1 of its characters.*U+1F3FA .* (fonts-symbola)" \
+	"$dir/boxes.ini" $mc
+case_ script-named-with-language 78 \
+	"boxes.ini:4: \[caption\] text\[de\]: no installed font has 1 of its characters.*U+13000 .* (fonts-noto-core)" \
+	"$dir/boxes.ini" $mc
+case_ boxes-verdict 78 "boxes.ini: 2 texts would show empty boxes" "$dir/boxes.ini" $mc
+w '[caption]\ntext[deutsch] = Vase\n' >"$dir/badlang.ini"
+case_ not-a-language-code 78 "badlang.ini:2: \[caption\] text\[deutsch\]: 'deutsch' is not a language code" \
+	"$dir/badlang.ini" $mc
+w '[caption]\nlanguages = en fr\ntext = Vase\ntext[de] = Vase\n' >"$dir/unlisted.ini"
+case_ language-not-listed 0 "unlisted.ini:4: \[caption\] text\[de\]: de is not one of \[caption\] languages (en fr): never shown" \
+	"$dir/unlisted.ini" $mc
+w '[scene]\nmodel[de] = x.glb\n' >"$dir/untranslatable.ini"
+case_ key-not-translatable 78 "untranslatable.ini:2: \[scene\] model\[de\]: only the texts a visitor reads" \
+	"$dir/untranslatable.ini" $mc
+
 # Drop-ins: kiosk.ini.d/*.ini in name order after kiosk.ini, a later key
 # overriding (a relative path from the drop-in's own folder); other names
 # are not read; each value names its file.

@@ -93,8 +93,8 @@ step "... one line: 13 of its 20001 lines shown" [ "$(grep -c \
 chars=$(awk 'BEGIN { for (i = 0; i < 100000; i++) printf "x" }')
 run caption-chars --caption "$chars" --output "$dir/caption-chars.png"
 step "a caption of 100,000 characters: the frame is drawn (exit 0)" [ "$status" = 0 ]
-step "... one line: 1 cut at the side" [ "$(grep -c \
-	'does not fit the 640x480 frame: 1 of its 1 lines shown, 1 cut at the side' \
+step "... one line: wrapped between its letters, 13 lines shown, none cut" [ "$(grep -c \
+	'does not fit the 640x480 frame: 13 of its [0-9]* lines shown (the last ends with an ellipsis), 0 cut at the side' \
 	"$dir/caption-chars.log")" = 1 ]
 printf '[caption]\nsize = 400\ntext = A%sA\n' "$(awk 'BEGIN { for (i = 0; i < 89; i++) printf "\\n" }')" \
 	>"$dir/caption.ini"
@@ -134,4 +134,24 @@ if [ -x /usr/bin/time ]; then
 else
 	echo "note no /usr/bin/time: a 1M-triangle scan's cold peak is not measured"
 fi
+# 5. Six languages of nine full-frame pictures each (a caption and eight
+#    stops at size 400): 75 MiB a language at 1920x1080, 450 MiB in all
+#    before the budget; the languages past 64 MiB are left out, said once.
+words=$(awk 'BEGIN { for (i = 0; i < 3000; i++) printf "Wort " }')
+stop=$(awk 'BEGIN { for (i = 0; i < 120; i++) printf "W" }')
+stops=$(awk -v s="$stop" 'BEGIN { for (i = 0; i < 8; i++) printf "%s%d 0 1 \"%s\"", i ? "; " : "", i * 40, s }')
+texts=$(awk -v s="$stop" 'BEGIN { for (i = 0; i < 8; i++) printf "%s\"%s\"", i ? "; " : "", s }')
+{
+	printf '[caption]\nsize = 400\nlanguages = en de fr it es nl\ntext = %s\n' "$words"
+	for l in de fr it es nl; do printf 'text[%s] = %s\n' "$l" "$words"; done
+	printf '[frame]\nstops = %s\n' "$stops"
+	for l in de fr it es nl; do printf 'stops[%s] = %s\n' "$l" "$texts"; done
+} >"$dir/languages.ini"
+"$kiosk" --backend "$backend" --size 1920x1080 -C "$dir/languages.ini" --lang nl \
+	--output "$dir/languages.png" >"$dir/languages.log" 2>&1
+status=$?
+step "six languages of full-frame captions: the frame is drawn (exit 0)" [ "$status" = 0 ]
+step "... one line: the languages past 64 MiB left out" [ "$(grep -c \
+	'\[caption\] languages: only the first 1 are shown; with the next, the captions.* pictures would take more than 64 MiB' \
+	"$dir/languages.log")" = 1 ]
 echo "ok every step ran"

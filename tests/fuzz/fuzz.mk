@@ -14,7 +14,7 @@ FUZZ_CXX     ?= clang++-$(CLANG_VERSION)
 FUZZ_BUILD   := $(BUILD)/fuzz
 FUZZ_SECONDS ?= 20
 FUZZ_JOBS    ?= 1
-FUZZERS      := gltf image config mesh_cache
+FUZZERS      := gltf image config mesh_cache remote
 FUZZ_SANITIZE := -g -O1 -fsanitize=address,undefined -fno-sanitize-recover=all \
 		 -fno-omit-frame-pointer
 

@@ -3,7 +3,7 @@
 # by side as there are CPUs for their FUZZ_JOBS workers), then replays
 # every file of tests/fuzz/regressions once (a crash found once stays
 # fixed).
-#   run.sh [HARNESS]...   gltf, image, config, mesh_cache (all when none is named) Prints one line per step, "ok NAME" or "not ok NAME", with the
+#   run.sh [HARNESS]...   gltf, image, config, mesh_cache, remote (all when none is named) Prints one line per step, "ok NAME" or "not ok NAME", with the
 # figures (runs, seconds, runs per second, corpus size) in NAME.
 # Environment: FUZZ_DIR (the harnesses), FUZZ_SECONDS, FUZZ_JOBS (workers
 # per harness; more than 1 for long runs), FUZZ_OUT (scratch).
@@ -18,7 +18,7 @@ top=$(pwd)
 dir=$(cd "${FUZZ_DIR:-build/fuzz}" && pwd)
 out=$(cd "$out" && pwd)
 export FUZZ_GLTF_DIR="$top/tests/fuzz/corpus/gltf"
-harnesses=${*:-gltf image config mesh_cache}
+harnesses=${*:-gltf image config mesh_cache remote}
 
 # fuzz_one NAME: one harness for FUZZ_SECONDS; its "ok"/"not ok" line goes
 # to its scratch folder's result, printed in order below.

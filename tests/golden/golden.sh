@@ -23,7 +23,7 @@ scenes="$scenes parts-textures parts-mask parts-blend parts-leaf parts-normals p
 scenes="$scenes parts-unlit parts-unlit-shade parts-emissive parts-emissive-sem-vertex parts-specgloss"
 scenes="$scenes parts-emissive-uv1"
 scenes="$scenes variant-blue first-coloured first-uncoloured"
-scenes="$scenes caption-latin caption-rtl caption-logo"
+scenes="$scenes caption-latin caption-rtl caption-logo caption-wrap caption-de caption-ja"
 scenes="$scenes frame-up frame-start-view frame-own-look"
 scenes="$scenes render-scale-half normals-flat normals-smooth"
 scenes="$scenes morph-t1 morph-t3 morph-pingpong skin-t1 nodes-t1.7"
@@ -195,6 +195,28 @@ render() {
 		$k -c matcaps/gold.png --caption-size 16 --caption-position top-right \
 			--caption-color '#ffe8a0' --caption-box '#30206080' \
 			--caption 'כד עתיק (מאה 5)\nمزهرية أثرية' --output "$o"
+		;;
+	# A label longer than the frame is wide: wrapped between words
+	# (UAX #14) into three lines, the box as high as they are.
+	caption-wrap)
+		$k -c matcaps/gold.png --caption-size 16 \
+			--caption 'A museum label that is long enough to wrap over three lines at this width, by words' \
+			--output "$o"
+		;;
+	# One label in three languages (text[de] =, text[ja] =), each drawn
+	# by --lang; the Japanese from Noto Sans CJK, the fallback fontconfig
+	# finds for what DejaVu lacks (fonts-noto-cjk, make deps-test), and
+	# wrapped between its characters.
+	caption-de | caption-ja)
+		cat >"$m/languages.ini" <<-'EOF'
+			[caption]
+			size = 16
+			languages = en de ja
+			text = A vase with a painted signature, lent by the city museum
+			text[de] = Vase mit gemalter Signatur, Leihgabe des Stadtmuseums Köln – Straße
+			text[ja] = 江戸時代の伊万里焼の花瓶。有田で焼かれ、長崎からヨーロッパへ渡った。
+		EOF
+		$k -c matcaps/gold.png --config "$m/languages.ini" --lang "${1#caption-}" --output "$o"
 		;;
 	caption-logo)
 		$k -c matcaps/gold.png --caption-size 16 --caption-position bottom --caption-box none \

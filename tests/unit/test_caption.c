@@ -9,6 +9,7 @@
 #include "render/caption.h"
 #include "render/render.h"
 #include "scene/text/caption.h"
+#include "scene/text/caption_font.h"
 #include "scene/gltf/gltf_name.h"
 #include "util/log.h"
 
@@ -437,7 +438,41 @@ static void hundred_thousand_chars_fit(void **state)
 
 	(void)state;
 	fitted(text, 0, &cut);
-	assert_true(cut.lines == 1 && cut.shown == 1 && cut.cut == 1);
+	/* A word of 100,000 letters wraps between its letters: the lines
+	 * that fit are shown, the last with an ellipsis, none cut at the
+	 * side. */
+	assert_true(cut.shown > 1 && cut.shown < cut.lines && cut.cut == 0);
+	free(text);
+}
+
+/* 100,000 words: every one measured (HarfBuzz shapes a long buffer only
+ * so far; measured whole, the words past it measured nothing and all
+ * fitted the last line), so thousands of lines are counted. */
+static void hundred_thousand_words_measured(void **state)
+{
+	char *text = repeated("Wort ", 100000);
+	struct caption_cut cut;
+
+	(void)state;
+	fitted(text, 0, &cut);
+	assert_true(cut.lines > 10000 && cut.shown > 1 && cut.shown < 20 && cut.cut == 0);
+	free(text);
+}
+
+/* Before the frame is known a long text is laid out in a large panel's
+ * frame, not in IMAGE_MAX_SIDE's: its picture was 8192x8192 (256 MiB)
+ * until it was fitted. */
+static void no_frame_yet_a_panel_sized_picture(void **state)
+{
+	char *text = repeated("x", 100000);
+	struct caption_config c = {.text = text, .padding = 12};
+	struct caption_fit fit = {.quiet = true};
+	struct image img;
+
+	(void)state;
+	assert_int_equal(caption_render_fit(&c, NULL, &fit, &img, NULL), 0);
+	assert_true(img.width <= CAPTION_FRAME_GUESS_W && img.height <= CAPTION_FRAME_GUESS_H);
+	image_release(&img);
 	free(text);
 }
 
@@ -463,6 +498,55 @@ static void lines_that_fit(void **state)
 	assert_int_equal(caption_lines_fit(90, 466, 432), 1);
 }
 
+/* The characters no installed font has, each once, in the order met:
+ * Japanese is drawn from Noto CJK (make deps-test installs it), an emoji
+ * DejaVu lacks and an Egyptian hieroglyph are not (no test package has
+ * them); a variation selector needs no glyph. Each is named with the
+ * package that has it. */
+static void missing_characters(void **state)
+{
+	uint32_t c[4];
+
+	(void)state;
+	assert_int_equal(caption_missing(NULL, "ja", "Vase 花瓶、有田", c, 4), 0);
+	assert_int_equal(caption_missing(NULL, NULL,
+					 "a \xf0\x9f\x8f\xba b \xf0\x9f\x8f\xba "
+					 "\xf0\x93\x80\x80 \xe2\x98\xba\xef\xb8\x8f",
+					 c, 4),
+			 2);
+	assert_int_equal(c[0], 0x1f3fa);
+	assert_int_equal(c[1], 0x13000);
+	/* Past cap: counted, not written. */
+	assert_int_equal(caption_missing(NULL, NULL, "\xf0\x9f\x8f\xba\xf0\x93\x80\x80", c, 1), 2);
+	assert_int_equal(c[0], 0x1f3fa);
+	assert_string_equal(caption_font_package(0x82b1), "fonts-noto-cjk");
+	assert_string_equal(caption_font_package(0xac00), "fonts-noto-cjk");
+	assert_string_equal(caption_font_package(0x1f3fa), "fonts-symbola");
+	assert_string_equal(caption_font_package(0x13000), "fonts-noto-core");
+	assert_string_equal(caption_font_package(0x0915), "fonts-noto-core");
+	/* A font that does not open: said, and an error. */
+	assert_true(caption_missing("/nonexistent.ttf", NULL, "x", c, 4) < 0);
+}
+
+/* A Japanese caption is drawn from the fallback, not as the default
+ * font's boxes: its picture differs from that of other characters the
+ * default font lacks (all the same box), and it is not refused. */
+static void drawn_from_the_fallback(void **state)
+{
+	struct caption_config a = {.text = "花瓶", .size = 24, .box = "none"};
+	struct caption_config b = {
+	    .text = "\xf0\x93\x80\x80\xf0\x93\x80\x80", .size = 24, .box = "none"};
+	struct image ia, ib;
+
+	(void)state;
+	assert_int_equal(caption_render(&a, NULL, &ia), 0);
+	assert_int_equal(caption_render(&b, NULL, &ib), 0);
+	assert_true(ia.width != ib.width || ia.height != ib.height ||
+		    memcmp(ia.rgba, ib.rgba, (size_t)ia.width * ia.height * 4));
+	image_release(&ia);
+	image_release(&ib);
+}
+
 int main(void)
 {
 	const struct CMUnitTest pure[] = {
@@ -477,7 +561,11 @@ int main(void)
 	    cmocka_unit_test(twenty_thousand_lines_fit),
 	    cmocka_unit_test(hundred_thousand_chars_fit),
 	    cmocka_unit_test(a_size_too_large_fits),
+	    cmocka_unit_test(hundred_thousand_words_measured),
+	    cmocka_unit_test(no_frame_yet_a_panel_sized_picture),
 	    cmocka_unit_test(lines_that_fit),
+	    cmocka_unit_test(missing_characters),
+	    cmocka_unit_test(drawn_from_the_fallback),
 	};
 	int failed = cmocka_run_group_tests_name("caption picture", pure, NULL, NULL);
 

@@ -288,6 +288,35 @@ static void table_is_full(void **state)
 	}
 }
 
+/* [mqtt] into struct mqtt_config; no key takes a password (it comes from
+ * systemd's credentials, never kiosk.ini in clear). */
+static void mqtt_section(void **state)
+{
+	const char *path =
+	    write_ini("[mqtt]\nbroker = 127.0.0.1:1884\ntopic = kiosk/hall\n"
+		      "tls = yes\nca_file = /etc/ssl/ca.pem\nhome_assistant = yes\n"
+		      "sync = follower\ngroup = kiosk/wall\n");
+	const char *argv[] = {"mk", "--config", path};
+	struct options o;
+
+	(void)state;
+	assert_int_equal(parse(&o, 3, argv), 0);
+	assert_string_equal(o.mqtt.broker, "127.0.0.1:1884");
+	assert_string_equal(o.mqtt.topic, "kiosk/hall");
+	assert_true(o.mqtt.tls);
+	assert_string_equal(o.mqtt.ca_file, "/etc/ssl/ca.pem");
+	assert_true(o.mqtt.home_assistant);
+	assert_int_equal(o.mqtt.sync, MQTT_SYNC_FOLLOWER);
+	assert_string_equal(o.mqtt.group, "kiosk/wall");
+	options_release(&o);
+	unlink(path);
+	/* write_ini's path is one buffer: argv[2] names the new file. */
+	write_ini("[mqtt]\npassword = secret\n");
+	assert_int_not_equal(parse(&o, 3, argv), 0);
+	options_release(&o);
+	unlink(path);
+}
+
 static void shipped_example_parses(void **state)
 {
 	const char *argv[] = {"mk", "--config", "config/kiosk.ini"};
@@ -438,6 +467,7 @@ static void reload_table(void **state)
 	assert_int_equal(options_sections[OPTIONS_KEYBOARD].reload, OPTIONS_REOPEN);
 	assert_int_equal(options_sections[OPTIONS_MATERIAL].reload, OPTIONS_LIVE);
 	assert_int_equal(options_sections[OPTIONS_CAMERA].reload, OPTIONS_REOPEN);
+	assert_int_equal(options_sections[OPTIONS_MQTT].reload, OPTIONS_AT_START);
 	for (int i = 0; i < OPTIONS_SECTIONS; i++)
 		assert_non_null(options_sections[i].says);
 	assert_int_equal(changed_by("--size=100x100"), BIT(OPTIONS_DISPLAY));
@@ -545,6 +575,7 @@ int main(void)
 	    cmocka_unit_test(shipped_example_parses),
 	    cmocka_unit_test(table_is_full),
 	    cmocka_unit_test(sections_into_module_configs),
+	    cmocka_unit_test(mqtt_section),
 	    cmocka_unit_test(module_defaults),
 	    cmocka_unit_test(copy_is_deep),
 	    cmocka_unit_test(content_copy_is_deep),

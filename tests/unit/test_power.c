@@ -155,12 +155,47 @@ static void test_whole_week(void **state)
 	assert_int_equal(on, 20); /* minutes 0-9 and 30-39 */
 }
 
+/* Remote control's "screen off" (MQTT): off at once, held against the
+ * schedule and the idle timer (no deadline wakes it), until an input or
+ * "screen on"; "screen on" outside the schedule wakes it as an input. */
+static void test_remote_off_and_on(void **state)
+{
+	struct power_config cfg;
+	struct power_state p;
+	struct power_clock c = at(9 * 60, 0, true); /* Monday 09:00, inside */
+
+	(void)state;
+	config(&cfg, "Mon-Fri 08:00-20:00", 300);
+	power_init(&p, &cfg, &c);
+	assert_true(p.on);
+	assert_int_equal(power_remote(&p, &c, false), POWER_CHANGED);
+	assert_false(p.on);
+	assert_int_equal(p.reason, POWER_REMOTE_OFF);
+	assert_int_equal(power_deadline(&p), CLOCK_NEVER);
+	c = at(10 * 60, 0, true); /* an hour on, still inside: still off */
+	assert_int_equal(power_update(&p, &c), 0);
+	assert_false(p.on);
+	assert_int_equal(power_input(&p, &c), POWER_CHANGED); /* a visitor's touch */
+	assert_true(p.on);
+	assert_int_equal(p.reason, POWER_SCHEDULED_ON);
+	assert_int_equal(power_remote(&p, &c, false), POWER_CHANGED);
+	assert_int_equal(power_remote(&p, &c, true), POWER_CHANGED);
+	assert_true(p.on);
+	c = at(21 * 60, 0, true); /* 21:00, outside: off by the schedule */
+	power_update(&p, &c);
+	assert_false(p.on);
+	assert_int_equal(power_remote(&p, &c, true), POWER_CHANGED);
+	assert_int_equal(p.reason, POWER_WOKEN);
+	assert_string_equal(power_reason_name(POWER_REMOTE_OFF),
+			    "off by remote control until an input or 'screen on'");
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_always_on),		cmocka_unit_test(test_blank_after_idle),
 	    cmocka_unit_test(test_schedule_and_waking), cmocka_unit_test(test_unsynchronised_clock),
-	    cmocka_unit_test(test_whole_week),
+	    cmocka_unit_test(test_whole_week),		cmocka_unit_test(test_remote_off_and_on),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -7,6 +7,11 @@
 #include <stdint.h>
 #include <string.h>
 
+int caption_size(const struct caption_config *c)
+{
+	return (int)((c->size > 0 ? c->size : CAPTION_SIZE_DEFAULT) + 0.5);
+}
+
 bool caption_wanted(const struct caption_config *c)
 {
 	return (c->text && *c->text) || (c->logo && *c->logo);

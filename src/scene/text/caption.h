@@ -37,6 +37,11 @@ struct caption_config {
 	int padding; /* pixels inside the box, and from the screen's edge */
 	enum caption_position position;
 	bool drift; /* move a few pixels over hours against burn-in */
+	/* Not a setting: the language of text (a BCP 47 code such as "ja",
+	 * from [caption] languages), for its line breaks and its fallback
+	 * font's glyphs; NULL: none said. */
+	const char *lang;
+	char *languages; /* [caption] languages: "en de fr", the first shown first */
 };
 
 /* The most pictures of [frame] stops' texts a model has, each drawn as
@@ -45,6 +50,9 @@ struct caption_config {
 
 /* The default size, in pixels of the panel. */
 #define CAPTION_SIZE_DEFAULT 28
+
+/* The size c asks for, in whole pixels. */
+int caption_size(const struct caption_config *c);
 
 /* Whether c shows anything (a text or a logo). */
 bool caption_wanted(const struct caption_config *c);
@@ -64,8 +72,14 @@ char *caption_text(const struct caption_config *c, const char *name);
 int caption_render(const struct caption_config *c, const char *name, struct image *out);
 
 /* Where a caption must fit, and who says so when it does not. */
+/* The frame a caption is laid out in before the display's is known: a
+ * large panel's. Wrapped within IMAGE_MAX_SIDE instead, a long text made
+ * a picture of 8192x8192 (256 MiB) before it was fitted. */
+#define CAPTION_FRAME_GUESS_W 1920
+#define CAPTION_FRAME_GUESS_H 1080
+
 struct caption_fit {
-	int width, height; /* the frame (turned for the panel); 0: IMAGE_MAX_SIDE */
+	int width, height; /* the frame (turned for the panel); 0: CAPTION_FRAME_GUESS_* */
 	const char *what;  /* the journal's name for the text, e.g. "[caption] text" */
 	bool quiet;	   /* a draw for a frame not known yet: nothing said */
 };

@@ -1,29 +1,28 @@
-/* The caption's picture: each line split into runs of one direction by
+/* The caption's picture: each paragraph broken into lines that fit
+ * (caption_wrap.c), each line split into runs of one direction by
  * FriBidi (Unicode's bidi algorithm, brackets included), the runs put in
- * visual order, each shaped by HarfBuzz (kerning, ligatures, Arabic
+ * visual order, each cut where its characters need another font
+ * (caption_font.c), shaped by HarfBuzz (kerning, ligatures, Arabic
  * joining) and drawn by FreeType, over the box, beside the logo. */
 #include "scene/text/caption.h"
-#include "util/file.h"
+#include "scene/text/caption_font.h"
+#include "scene/text/caption_wrap.h"
 #include "util/log.h"
 
 #include <errno.h>
 #include <fribidi.h>
-#include <ft2build.h>
-#include FT_FREETYPE_H
-#include <hb-ft.h>
-#include <hb.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-/* No font is this large (Noto Sans CJK is 20 MB); read whole into memory. */
-#define CAPTION_FONT_MAX (64 << 20)
-
 struct glyph {
 	unsigned id;
-	long x, y; /* 26.6 pixels from the line's start on its baseline, y up */
-	long pen;  /* 26.6: where its advance starts (a cut line ends here) */
+	int font;     /* caption_fonts' index */
+	int cluster;  /* the code point it came from, in the text shaped */
+	long x, y;    /* 26.6 pixels from the line's start on its baseline, y up */
+	long pen;     /* 26.6: where its advance starts (a cut line ends here) */
+	long advance; /* 26.6 */
 };
 
 struct line {
@@ -37,7 +36,7 @@ struct run {
 	FriBidiLevel level;
 };
 
-static int push(struct line *l, unsigned id, long x, long y, long pen)
+static int push(struct line *l, struct glyph g)
 {
 	if (l->n == l->cap) {
 		size_t cap = l->cap ? l->cap * 2 : 32;
@@ -48,13 +47,14 @@ static int push(struct line *l, unsigned id, long x, long y, long pen)
 		l->g = g;
 		l->cap = cap;
 	}
-	l->g[l->n++] = (struct glyph){id, x, y, pen};
+	l->g[l->n++] = g;
 	return 0;
 }
 
-/* HarfBuzz gives a right-to-left run's glyphs in visual order already. */
-static int shape_run(hb_font_t *font, const uint32_t *u, int len, const struct run *r,
-		     struct line *l)
+/* One piece of a run in one font. HarfBuzz gives a right-to-left
+ * piece's glyphs in visual order already. */
+static int shape_piece(const struct caption_fonts *fonts, int fi, const uint32_t *u, int len,
+		       int start, int end, bool rtl, struct line *l)
 {
 	hb_buffer_t *b = hb_buffer_create();
 	const hb_glyph_info_t *info;
@@ -62,20 +62,72 @@ static int shape_run(hb_font_t *font, const uint32_t *u, int len, const struct r
 	unsigned n;
 	int ret = 0;
 
-	hb_buffer_add_utf32(b, u, len, (unsigned)r->start, r->end - r->start);
-	hb_buffer_set_direction(b, r->level & 1 ? HB_DIRECTION_RTL : HB_DIRECTION_LTR);
+	hb_buffer_add_utf32(b, u, len, (unsigned)start, end - start);
+	hb_buffer_set_direction(b, rtl ? HB_DIRECTION_RTL : HB_DIRECTION_LTR);
 	hb_buffer_guess_segment_properties(b);
-	hb_shape(font, b, NULL, 0);
+	hb_shape(caption_fonts_hb(fonts, fi), b, NULL, 0);
 	info = hb_buffer_get_glyph_infos(b, &n);
 	pos = hb_buffer_get_glyph_positions(b, &n);
 	for (unsigned i = 0; i < n && !ret; i++) {
-		ret = push(l, info[i].codepoint, l->width + pos[i].x_offset, pos[i].y_offset,
-			   l->width);
+		ret = push(l, (struct glyph){info[i].codepoint, fi, (int)info[i].cluster,
+					     l->width + pos[i].x_offset, pos[i].y_offset, l->width,
+					     pos[i].x_advance});
 		l->width += pos[i].x_advance;
 	}
 	if (!hb_buffer_allocation_successful(b))
 		ret = -ENOMEM;
 	hb_buffer_destroy(b);
+	return ret;
+}
+
+static bool is_mark(uint32_t c)
+{
+	hb_unicode_general_category_t g =
+	    hb_unicode_general_category(hb_unicode_funcs_get_default(), c);
+
+	return g == HB_UNICODE_GENERAL_CATEGORY_NON_SPACING_MARK ||
+	       g == HB_UNICODE_GENERAL_CATEGORY_SPACING_MARK ||
+	       g == HB_UNICODE_GENERAL_CATEGORY_ENCLOSING_MARK;
+}
+
+/* The font of c after a character in font prev: a joiner, a variation
+ * selector or a mark that font has stays with its letter; a character
+ * no font has is the caption's own font's box. */
+static int font_of(struct caption_fonts *fonts, uint32_t c, int prev)
+{
+	int fi;
+
+	if (prev >= 0 && (caption_char_invisible(c) ||
+			  (is_mark(c) && FT_Get_Char_Index(caption_fonts_face(fonts, prev), c))))
+		return prev;
+	fi = caption_fonts_pick(fonts, c);
+	return fi < 0 ? 0 : fi;
+}
+
+/* A run of one direction, cut where the font changes; a right-to-left
+ * run's pieces go right to left. */
+static int shape_run(struct caption_fonts *fonts, const uint32_t *u, int len, const struct run *r,
+		     struct line *l)
+{
+	int n = r->end - r->start, ret = 0;
+	int *fi = malloc((size_t)(n > 0 ? n : 1) * sizeof(*fi));
+	bool rtl = r->level & 1;
+
+	if (!fi)
+		return -ENOMEM;
+	for (int i = 0; i < n; i++)
+		fi[i] = font_of(fonts, u[r->start + i], i ? fi[i - 1] : -1);
+	for (int k = 0; k < n && !ret;) {
+		/* The k-th code point from the run's visual start. */
+		int a = rtl ? n - 1 - k : k, b = a;
+
+		while (rtl ? b > 0 && fi[b - 1] == fi[a] : b + 1 < n && fi[b + 1] == fi[a])
+			b += rtl ? -1 : 1;
+		ret = shape_piece(fonts, fi[a], u, len, r->start + (rtl ? b : a),
+				  r->start + (rtl ? a : b) + 1, rtl, l);
+		k += (rtl ? a - b : b - a) + 1;
+	}
+	free(fi);
 	return ret;
 }
 
@@ -120,21 +172,19 @@ static int split_runs(const FriBidiLevel *lv, int len, struct run *runs)
 	return n;
 }
 
-/* One line of UTF-8 (bytes long, no line break): its paragraph direction
- * from its first strong letter, as a reader expects. */
-static int shape_line(hb_font_t *font, const char *utf8, int bytes, struct line *l)
+/* One line of code points (no line break): its paragraph direction from
+ * its first strong letter, as a reader expects. */
+static int shape_line(struct caption_fonts *fonts, const uint32_t *u, int len, struct line *l)
 {
-	uint32_t *u = malloc(((size_t)bytes + 1) * sizeof(*u));
-	FriBidiCharType *types = malloc(((size_t)bytes + 1) * sizeof(*types));
-	FriBidiBracketType *brackets = malloc(((size_t)bytes + 1) * sizeof(*brackets));
-	FriBidiLevel *lv = malloc(((size_t)bytes + 1) * sizeof(*lv));
-	struct run *runs = malloc(((size_t)bytes + 1) * sizeof(*runs));
+	FriBidiCharType *types = malloc(((size_t)len + 1) * sizeof(*types));
+	FriBidiBracketType *brackets = malloc(((size_t)len + 1) * sizeof(*brackets));
+	FriBidiLevel *lv = malloc(((size_t)len + 1) * sizeof(*lv));
+	struct run *runs = malloc(((size_t)len + 1) * sizeof(*runs));
 	FriBidiParType dir = FRIBIDI_PAR_ON;
-	int len, n, ret = -ENOMEM;
+	int n, ret = -ENOMEM;
 
-	if (!u || !types || !brackets || !lv || !runs)
+	if (!types || !brackets || !lv || !runs)
 		goto out;
-	len = (int)fribidi_charset_to_unicode(FRIBIDI_CHAR_SET_UTF8, utf8, bytes, u);
 	fribidi_get_bidi_types(u, len, types);
 	fribidi_get_bracket_types(u, len, types, brackets);
 	ret = -EINVAL;
@@ -144,9 +194,8 @@ static int shape_line(hb_font_t *font, const char *utf8, int bytes, struct line 
 	reorder_runs(runs, n);
 	ret = 0;
 	for (int i = 0; i < n && !ret; i++)
-		ret = shape_run(font, u, len, &runs[i], l);
+		ret = shape_run(fonts, u, len, &runs[i], l);
 out:
-	free(u);
 	free(types);
 	free(brackets);
 	free(lv);
@@ -163,10 +212,11 @@ static void blend(uint8_t *px, const unsigned char c[4], unsigned cover)
 	px[3] = (uint8_t)(a + px[3] * (255 - a) / 255);
 }
 
-static void draw_glyphs(FT_Face face, const struct line *l, long x, long base,
+static void draw_glyphs(const struct caption_fonts *fonts, const struct line *l, long x, long base,
 			const unsigned char color[4], struct image *img)
 {
 	for (size_t i = 0; i < l->n; i++) {
+		FT_Face face = caption_fonts_face(fonts, l->g[i].font);
 		FT_GlyphSlot s;
 		long gx, gy;
 
@@ -219,6 +269,7 @@ int caption_lines_fit(int lines, long line_h, long max_h)
  * or only ended with one when `more` (lines were left out below). */
 static int ellipsize(hb_font_t *font, struct line *l, long max, bool more)
 {
+	long step;
 	hb_codepoint_t id = 0;
 	int dots = 1;
 	long ell;
@@ -237,42 +288,123 @@ static int ellipsize(hb_font_t *font, struct line *l, long max, bool more)
 		k--;
 	l->width = k < l->n ? l->g[k].pen : l->width;
 	l->n = k;
+	step = ell / dots;
 	for (int i = 0; i < dots && !ret; i++) {
-		ret = push(l, id, l->width, 0, l->width);
-		l->width += ell / dots;
+		ret = push(l, (struct glyph){id, 0, -1, l->width, 0, l->width, step});
+		l->width += step;
 	}
 	return ret;
 }
 
-/* The lines that fit max_h pixels, each cut to max_w: only those kept are
- * shaped (a text of 20,000 lines is a few). */
-static int shape_text(hb_font_t *font, FT_Face face, const char *text, long max_w, long max_h,
-		      struct layout *lay)
+/* Code points shaped at once to measure: HarfBuzz stops shaping a
+ * buffer past a budget of operations (its defence against hostile
+ * text), and the rest would measure nothing and fit one line. */
+#define MEASURE_CHUNK 2048
+
+/* Where a chunk from start ends: at a blank near the budget, so that a
+ * word is shaped whole (kerning, Arabic joining), else at the budget. */
+static int chunk_end(const uint32_t *u, int start, int len)
+{
+	int end = start + MEASURE_CHUNK;
+
+	if (end >= len)
+		return len;
+	for (int i = end; i > end - MEASURE_CHUNK / 8; i--)
+		if (u[i - 1] == ' ')
+			return i;
+	return end;
+}
+
+/* Each code point's advance in the paragraph u (26.6): the glyphs of
+ * its cluster, shaped a chunk at a time. */
+static int advances(struct caption_fonts *fonts, const uint32_t *u, int len, long *adv)
 {
 	int ret = 0;
 
+	for (int i = 0; i < len; i++)
+		adv[i] = 0;
+	for (int start = 0, end; start < len && !ret; start = end) {
+		struct line l = {0};
+
+		end = chunk_end(u, start, len);
+		ret = shape_line(fonts, u + start, end - start, &l);
+		for (size_t i = 0; !ret && i < l.n; i++)
+			if (l.g[i].cluster >= 0 && l.g[i].cluster < end - start)
+				adv[start + l.g[i].cluster] += l.g[i].advance;
+		free(l.g);
+	}
+	return ret;
+}
+
+/* One paragraph (bytes of UTF-8, no '\n') wrapped into max_w, its lines
+ * that fit the room shaped into lay's free lines, all of them counted. */
+static int wrap_paragraph(struct caption_fonts *fonts, const char *lang, const char *utf8,
+			  int bytes, long max_w, int room, struct layout *lay)
+{
+	uint32_t *u = malloc(((size_t)bytes + 1) * sizeof(*u));
+	long *adv = malloc(((size_t)bytes + 1) * sizeof(*adv));
+	struct caption_span *spans = malloc(((size_t)room + 1) * sizeof(*spans));
+	int len, n, ret = -ENOMEM;
+
+	if (!u || !adv || !spans)
+		goto out;
+	len = (int)fribidi_charset_to_unicode(FRIBIDI_CHAR_SET_UTF8, utf8, bytes, u);
+	ret = advances(fonts, u, len, adv);
+	n = ret ? 0 : caption_wrap(u, adv, len, lang, max_w, spans, room);
+	if (n < 0)
+		ret = n;
+	if (!ret && !n)
+		spans[n++] = (struct caption_span){0, 0, 0}; /* an empty line */
+	for (int i = 0; !ret && i < n && i < room; i++) {
+		struct line *l = &lay->lines[lay->count++];
+
+		ret = shape_line(fonts, u + spans[i].start, spans[i].end - spans[i].start, l);
+	}
+	lay->cut.lines += ret ? 0 : n;
+out:
+	free(u);
+	free(adv);
+	free(spans);
+	return ret;
+}
+
+/* The lines that fit max_h pixels, the text wrapped to max_w: only the
+ * paragraphs with lines kept are shaped (a text of 20,000 lines is a
+ * few), the others counted a line each. */
+static int shape_text(struct caption_fonts *fonts, const char *lang, const char *text, long max_w,
+		      long max_h, struct layout *lay)
+{
+	FT_Face face = caption_fonts_face(fonts, 0);
+	int ret = 0, fit;
+
 	lay->line_h = (face->size->metrics.height + 63) / 64;
 	lay->ascender = (face->size->metrics.ascender + 63) / 64;
-	lay->cut.lines = 1;
-	for (const char *p = text; *p; p++)
-		lay->cut.lines += *p == '\n';
-	lay->count = caption_lines_fit(lay->cut.lines, lay->line_h, max_h);
-	lay->cut.shown = lay->count;
-	lay->lines = calloc((size_t)lay->count, sizeof(*lay->lines));
+	fit = caption_lines_fit(INT32_MAX, lay->line_h, max_h);
+	lay->lines = calloc((size_t)fit, sizeof(*lay->lines));
 	if (!lay->lines)
 		return -ENOMEM;
-	for (int i = 0; i < lay->count && !ret; i++) {
+	while (!ret) {
 		const char *end = strchr(text, '\n');
 		int bytes = end ? (int)(end - text) : (int)strlen(text);
+
+		if (lay->count < fit)
+			ret = wrap_paragraph(fonts, lang, text, bytes, (max_w - 1) * 64,
+					     fit - lay->count, lay);
+		else
+			lay->cut.lines++;
+		if (!end)
+			break;
+		text = end + 1;
+	}
+	lay->cut.shown = lay->count;
+	for (int i = 0; i < lay->count && !ret; i++) {
+		struct line *l = &lay->lines[i];
 		bool more = i == lay->count - 1 && lay->count < lay->cut.lines;
 
-		ret = shape_line(font, text, bytes, &lay->lines[i]);
-		lay->cut.cut += lay->lines[i].width > (max_w - 1) * 64;
-		if (!ret)
-			ret = ellipsize(font, &lay->lines[i], (max_w - 1) * 64, more);
-		if (lay->lines[i].width / 64 + 1 > lay->text_w)
-			lay->text_w = lay->lines[i].width / 64 + 1;
-		text = end ? end + 1 : text + bytes;
+		lay->cut.cut += l->width > (max_w - 1) * 64;
+		ret = ellipsize(caption_fonts_hb(fonts, 0), l, (max_w - 1) * 64, more);
+		if (l->width / 64 + 1 > lay->text_w)
+			lay->text_w = l->width / 64 + 1;
 	}
 	return ret;
 }
@@ -296,8 +428,8 @@ static void fill(struct image *img, const unsigned char c[4])
 }
 
 /* Text right of the logo, each line aligned to the caption's side. */
-static int compose(const struct caption_config *c, FT_Face face, const struct layout *lay,
-		   const struct image *logo, struct image *out)
+static int compose(const struct caption_config *c, const struct caption_fonts *fonts,
+		   const struct layout *lay, const struct image *logo, struct image *out)
 {
 	unsigned char color[4] = {255, 255, 255, 255}, box[4] = {0, 0, 0, 153};
 	long text_h = lay->count ? lay->count * lay->line_h : 0;
@@ -342,66 +474,9 @@ static int compose(const struct caption_config *c, FT_Face face, const struct la
 			x = x0 + lay->text_w - w;
 		else if (c->position == CAPTION_BOTTOM || c->position == CAPTION_TOP)
 			x = x0 + (lay->text_w - w) / 2;
-		draw_glyphs(face, &lay->lines[i], x, y0 + i * lay->line_h + lay->ascender, color,
+		draw_glyphs(fonts, &lay->lines[i], x, y0 + i * lay->line_h + lay->ascender, color,
 			    out);
 	}
-	return 0;
-}
-
-/* FreeType calls it as the face is done: the bytes it was made from. */
-static void font_data_free(void *object)
-{
-	free(((FT_Face)object)->generic.data);
-}
-
-/* Read here (util/file.h), not opened by FreeType by path: a FIFO there
- * would block its open, and a device node is opened before any check. The
- * bytes live as long as the face (its generic finalizer frees them). */
-static FT_Error font_face(FT_Library lib, const char *path, FT_Face *face)
-{
-	unsigned char *data;
-	size_t size;
-	int ret = file_read_all(path, CAPTION_FONT_MAX, &data, &size);
-	FT_Error e;
-
-	if (ret && file_refusal(ret))
-		log_err("[caption] font %s: %s", path, file_refusal(ret));
-	else if (ret == -EFBIG)
-		log_err("[caption] font %s: larger than %d MiB", path, CAPTION_FONT_MAX >> 20);
-	else if (ret)
-		log_err("[caption] font %s: cannot open it: %s", path, strerror(-ret));
-	if (ret)
-		return FT_Err_Cannot_Open_Resource;
-	e = FT_New_Memory_Face(lib, data, (FT_Long)size, 0, face);
-	if (e) {
-		free(data);
-		return e;
-	}
-	(*face)->generic.data = data;
-	(*face)->generic.finalizer = font_data_free;
-	return 0;
-}
-
-static int open_font(const struct caption_config *c, FT_Library *lib, FT_Face *face)
-{
-	const char *path = c->font ? c->font : CAPTION_FONT_DEFAULT;
-	double size = c->size > 0 ? c->size : CAPTION_SIZE_DEFAULT;
-	FT_Error e;
-
-	if (FT_Init_FreeType(lib))
-		return -ENOMEM;
-	e = font_face(*lib, path, face);
-	if (!e)
-		e = FT_Set_Pixel_Sizes(*face, 0, (FT_UInt)(size + 0.5));
-	/* FT_Err_Cannot_Open_Resource: font_face said why. */
-	if (e == FT_Err_Unknown_File_Format)
-		log_err("[caption] font %s: not a font file FreeType reads; expected TrueType or "
-			"OpenType",
-			path);
-	else if (e && e != FT_Err_Cannot_Open_Resource)
-		log_err("[caption] font %s: FreeType error %d", path, e);
-	if (e)
-		return -EINVAL;
 	return 0;
 }
 
@@ -411,8 +486,9 @@ static int open_font(const struct caption_config *c, FT_Library *lib, FT_Face *f
 static void text_room(const struct caption_config *c, const struct caption_fit *fit,
 		      const struct image *logo, bool text, long room[2])
 {
-	long frame[2] = {fit && fit->width > 0 ? fit->width - 2L * c->padding : IMAGE_MAX_SIDE,
-			 fit && fit->height > 0 ? fit->height - 2L * c->padding : IMAGE_MAX_SIDE};
+	long frame[2] = {
+	    (fit && fit->width > 0 ? fit->width : CAPTION_FRAME_GUESS_W) - 2L * c->padding,
+	    (fit && fit->height > 0 ? fit->height : CAPTION_FRAME_GUESS_H) - 2L * c->padding};
 	long gap = logo->width && text ? c->padding : 0;
 
 	for (int k = 0; k < 2; k++) {
@@ -426,16 +502,17 @@ static void text_room(const struct caption_config *c, const struct caption_fit *
  * then the largest that fits one, down to CAPTION_SIZE_FLOOR. Returns the
  * size used. */
 #define CAPTION_SIZE_FLOOR 8
-static int fit_size(const struct caption_config *c, FT_Face face, long room_h)
+static int fit_size(const struct caption_config *c, struct caption_fonts *fonts, long room_h)
 {
 	int size = (int)((c->size > 0 ? c->size : CAPTION_SIZE_DEFAULT) + 0.5);
+	FT_Face face = caption_fonts_face(fonts, 0);
 	long line_h = (face->size->metrics.height + 63) / 64;
 
 	if (line_h <= room_h || size <= CAPTION_SIZE_FLOOR)
 		return size;
 	size = (int)((long)size * room_h / line_h);
 	size = size < CAPTION_SIZE_FLOOR ? CAPTION_SIZE_FLOOR : size;
-	FT_Set_Pixel_Sizes(face, 0, (FT_UInt)size);
+	caption_fonts_set_size(fonts, size);
 	return size;
 }
 
@@ -464,9 +541,7 @@ int caption_render_fit(const struct caption_config *c, const char *name,
 	char *text = caption_text(c, name);
 	struct image logo = {0};
 	struct layout lay = {0};
-	FT_Library lib = NULL;
-	FT_Face face = NULL;
-	hb_font_t *font = NULL;
+	struct caption_fonts *fonts = NULL;
 	long room[2];
 	int ret = 0, size;
 
@@ -478,29 +553,23 @@ int caption_render_fit(const struct caption_config *c, const char *name,
 	if (c->logo && *c->logo)
 		ret = image_load(c->logo, &logo);
 	if (!ret)
-		ret = open_font(c, &lib, &face);
+		ret = caption_fonts_new(c->font, caption_size(c), c->lang, &fonts);
 	if (!ret && text) {
 		text_room(c, fit, &logo, true, room);
-		size = fit_size(c, face, room[1]);
-		font = hb_ft_font_create_referenced(face);
-		ret = font ? shape_text(font, face, text, room[0], room[1], &lay) : -ENOMEM;
+		size = fit_size(c, fonts, room[1]);
+		ret = shape_text(fonts, c->lang, text, room[0], room[1], &lay);
 		if (ret)
 			log_err("[caption] text: cannot shape it: %s", strerror(-ret));
 		else
 			say_cut(c, fit, size, &lay.cut);
 	}
 	if (!ret)
-		ret = compose(c, face, &lay, &logo, out);
+		ret = compose(c, fonts, &lay, &logo, out);
 	if (cut)
 		*cut = lay.cut;
 out:
 	layout_release(&lay);
-	if (font)
-		hb_font_destroy(font);
-	if (face)
-		FT_Done_Face(face);
-	if (lib)
-		FT_Done_FreeType(lib);
+	caption_fonts_free(fonts);
 	image_release(&logo);
 	free(text);
 	return ret;
