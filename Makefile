@@ -74,6 +74,7 @@ SRC_APP     := app/kiosk_models app/kiosk app/kiosk_anim app/kiosk_variant app/k
 SRC_OPS     := ops/check ops/check_text ops/import ops/import_copy ops/import_ini ops/metrics ops/mqtt ops/mqtt_ha ops/screen ops/service ops/status
 SRC_CONTENT := content/content content/load_guard content/content_cache content/content_look content/content_view content/content_fit content/content_caption content/content_hotspot content/content_play content/content_deform content/matcap_set content/matcap_job content/model_list \
 	       content/model_loader content/worker
+SRC_CONTENT += content/content_coarse content/refine_job
 SRC_CONFIG  := config/options config/options_file config/model_settings config/settings config/settings_table config/settings_origin config/settings_text config/lang_text config/hotspot_settings
 SRC_STATE   := state/app state/view state/power state/schedule state/visits state/remote state/lang state/hotspot
 SRC_DISPLAY := display/backlight display/cec display/cec_link display/display display/display_egl display/display_kms display/kms_scale \
@@ -89,6 +90,7 @@ SRC_RENDER  := render/background render/bake render/draw_list render/framing ren
 SRC_SCENE   := scene/mesh/lod scene/mesh/lod_seams scene/mesh/lod_split scene/mesh/material scene/mesh/mesh scene/mesh/mesh_cache scene/mesh/mesh_cache_anim scene/mesh/mesh_cache_nest scene/mesh/mesh_cache_fields scene/mesh/mesh_cache_key scene/mesh/mesh_gen scene/mesh/mesh_pack scene/mesh/subdivide scene/mesh/tangent \
 	       scene/mesh/texture scene/text/caption scene/text/caption_text scene/text/model_name scene/text/caption_font scene/text/caption_wrap
 SRC_SCENE   += scene/gltf/gltf_json_depth scene/gltf/gltf_features
+SRC_SCENE   += scene/mesh/lod_coarse
 SRC_SCENE   += scene/anim/anim scene/anim/anim_sampler scene/anim/anim_palette scene/anim/anim_play scene/anim/anim_play_gpu scene/anim/anim_play_split scene/anim/anim_play_morph
 SRC_UTIL    := util/file util/folder_watch util/image util/ini util/log util/math3d
 LIB_C  := $(SRC_APP) $(SRC_OPS) $(SRC_CONTENT) $(SRC_CONFIG) $(SRC_STATE) $(SRC_DISPLAY) $(SRC_INPUT) $(SRC_CAMERA) $(SRC_RENDER) $(SRC_SCENE) $(SRC_UTIL)

@@ -486,6 +486,27 @@ test_cli() {
 		! grep -qE 'Sanitizer|runtime error' $out/bad/gpio.log &&
 		grep -q 'button left: GPIO chip nosuchchip not found.*line GPIO17' $out/bad/gpio.log"
 
+	# [kiosk] coarse_above (issue 34): a still (--output) is drawn whole, no
+	# coarse step; the live kiosk shows the built-in knot (16384 triangles,
+	# over 1000) coarse first, then whole, and the journal says both, in order.
+	check "--output draws the full mesh only, with coarse_above under the model's triangles" sh -c "
+		XDG_CACHE_HOME=$out/bad/coarse-cache $KIOSK --backend $offscreen --size 64x64 \
+			--coarse-above 1000 --output $out/bad/coarse-still.png 2>$out/bad/coarse-still.log &&
+		grep -q 'lod: 16384 -> ' $out/bad/coarse-still.log &&
+		! grep -qE 'coarse picture|full level of detail' $out/bad/coarse-still.log"
+	check "the live kiosk: a coarse picture, then the full level of detail, both timed" sh -c "
+		ASAN_OPTIONS=detect_leaks=0 $ASAN_KIOSK --backend $offscreen --size 64x64 --keyboard none \
+			--camera off --coarse-above 1000 2>$out/bad/coarse-live.log & p=\$!; i=0
+		until grep -q 'full level of detail' $out/bad/coarse-live.log || [ \$i -gt 600 ]; do
+			sleep 0.1; i=\$((i+1)); done
+		kill -TERM \$p; wait \$p
+		c=\$(grep -n 'the built-in knot: coarse picture ([0-9]* triangles) after [0-9.]* s' \
+			$out/bad/coarse-live.log | cut -d: -f1)
+		f=\$(grep -n 'the built-in knot: full level of detail ([0-9]* triangles) after [0-9.]* s' \
+			$out/bad/coarse-live.log | cut -d: -f1)
+		[ -n \"\$c\" ] && [ -n \"\$f\" ] && [ \"\$c\" -lt \"\$f\" ] &&
+		! grep -qE 'Sanitizer|runtime error' $out/bad/coarse-live.log"
+
 	# --check-config's cases as a user meets them (tests/e2e/config_check.sh):
 	# each file named loaded, 0/78/66, the paths rules, kiosk.ini.d/.
 	need_models

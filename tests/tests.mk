@@ -19,6 +19,7 @@ UNIT_TESTS  += touch_device app_touch
 UNIT_TESTS  += model_list gltf_words settings_files
 UNIT_TESTS  += status poster file metrics background framing
 UNIT_TESTS  += kiosk_reload kiosk_matcap app_frame model_settings render_scale
+UNIT_TESTS  += kiosk_coarse
 UNIT_TESTS  += anim anim_palette anim_play kiosk_anim anim_frames gltf_bake
 UNIT_TESTS  += caption import gltf_depth load_guard caption_wrap lang_text lang kiosk_lang
 UNIT_TESTS  += ini stranger_settings normals

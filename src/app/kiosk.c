@@ -567,7 +567,7 @@ static int loop_once(struct kiosk *k, int sig_fd)
 	next = earliest(next, k->rescan_at, service_deadline(&k->service));
 	next = earliest(next, kiosk_models_deadline(k->models), metrics_deadline(k->metrics));
 	visits_observe(&k->visits, now, app_state(k->app)->stop, app_attracting(k->app));
-	next = earliest(next, kiosk_remote_deadline(k, now), CLOCK_NEVER);
+	next = earliest(next, kiosk_content_deadline(k), kiosk_remote_deadline(k, now));
 	n = fill_fds(k, fds, sig_fd);
 	note_step(k);
 	if (poll(fds, (nfds_t)n, poll_timeout_ms(k, next, now)) < 0 && errno != EINTR)

@@ -3,7 +3,8 @@
  * changed) becomes a job when the worker is idle, and a job done is
  * uploaded here, on the loop thread, where GL is. Model switches are the
  * worker's jobs too (kiosk_models.c, started after the inputs). One job
- * at a time: here, before the loop sleeps, a reload first, then a matcap,
+ * at a time: here, before the loop sleeps, a coarse picture's full level
+ * of detail first, then a reload, then a matcap,
  * then the release of what was swapped out (content/worker.h). */
 #include "app/kiosk_state.h"
 #include "util/clock.h"
@@ -38,6 +39,36 @@ static void reload_ready(void *ctx)
 	}
 }
 
+/* f, prepared, in place of the coarse mesh shown; what goes is released
+ * on the worker. */
+static void swap_refine(struct kiosk *k, struct content_refine *f)
+{
+	struct content old;
+
+	if (content_refine_swap(k->content, f, k->renderer, &old) == 0)
+		kiosk_tell_app(k, APP_DISPLAY_BACK);
+	worker_retire(k->worker, &old);
+}
+
+/* A coarse picture's full level of detail, prepared: swapped in, unless
+ * another model was asked for meanwhile. Then it is kept aside, prepared:
+ * the switch drops it with the coarse model (it would show the old model
+ * again until the new one is ready), and one that finds no other model
+ * leaves it to be swapped in without a job (start_refine). */
+static void refine_ready(void *ctx)
+{
+	struct kiosk *k = ctx;
+	struct content_refine *f = refine_job_take(&k->refine);
+
+	if (!kiosk_models_switching(k->models)) {
+		swap_refine(k, f);
+		return;
+	}
+	log_info("%s: its full level of detail waits: another model was asked for",
+		 content_name(k->content));
+	k->content->refine = f;
+}
+
 void kiosk_matcap_settled(struct kiosk *k, int index)
 {
 	k->shown_matcap.set_id = k->matcap_set_id;
@@ -67,6 +98,8 @@ int kiosk_content_start(struct kiosk *k)
 {
 	reload_job_init(&k->reload, reload_ready, k);
 	matcap_job_init(&k->matcap, matcap_ready, k);
+	refine_job_init(&k->refine, refine_ready, k);
+	k->coarse_frame = -1;
 	k->worker = worker_new();
 	return k->worker ? 0 : -ENOMEM;
 }
@@ -77,6 +110,7 @@ void kiosk_content_stop(struct kiosk *k)
 	k->worker = NULL;
 	reload_job_release(&k->reload);
 	matcap_job_release(&k->matcap);
+	refine_job_release(&k->refine);
 }
 
 void kiosk_content_reload(struct kiosk *k)
@@ -117,10 +151,45 @@ static bool start_matcap(struct kiosk *k)
 	return false;
 }
 
+/* A coarse picture's whole model, once a frame showed it: the first frame
+ * (its programs compiled, a software rasteriser on every core) does not
+ * share the CPU with the simplification. */
+static bool start_refine(struct kiosk *k)
+{
+	struct content_refine *f = k->content->refine;
+
+	if (!f || content_refine_prepared(f)) {
+		k->coarse_frame = -1;
+		k->content->refine = NULL;
+		if (f) /* kept aside by refine_ready: no other model came */
+			swap_refine(k, f);
+		return false;
+	}
+	/* Another coarse model swapped in meanwhile: its own frame first. */
+	if (k->coarse_frame < 0 || k->coarse_of != f) {
+		k->coarse_frame = k->frames_drawn;
+		k->coarse_of = f;
+	}
+	if (k->frames_drawn == k->coarse_frame)
+		return false;
+	k->coarse_frame = -1;
+	return refine_job_start(&k->refine, k->worker, k->content) == 0;
+}
+
+uint64_t kiosk_content_deadline(const struct kiosk *k)
+{
+	const struct content_refine *f = k->content->refine;
+	bool drawn = k->coarse_frame >= 0 && k->coarse_of == f && k->frames_drawn > k->coarse_frame;
+
+	/* A prepared one (kept aside) is swapped in as soon as the worker is idle. */
+	return f && (drawn || content_refine_prepared(f)) && !worker_busy(k->worker) ? 0
+										     : CLOCK_NEVER;
+}
+
 /* Before the loop sleeps: the next job, when the worker is idle. */
 void kiosk_content_start_jobs(struct kiosk *k)
 {
-	if (worker_busy(k->worker))
+	if (worker_busy(k->worker) || start_refine(k))
 		return;
 	if (k->reload_wanted)
 		start_reload(k);

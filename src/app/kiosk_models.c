@@ -140,6 +140,11 @@ void kiosk_models_fill_fds(const struct kiosk_models *m, struct pollfd fds[1])
 	    (struct pollfd){.fd = m && m->watch ? folder_watch_fd(m->watch) : -1, .events = POLLIN};
 }
 
+bool kiosk_models_switching(const struct kiosk_models *m)
+{
+	return m && (m->reload >= 0 || app_state(m->p.app)->model != m->asked);
+}
+
 uint64_t kiosk_models_deadline(const struct kiosk_models *m)
 {
 	return m && !worker_busy(m->p.worker) ? m->rescan_at : CLOCK_NEVER;

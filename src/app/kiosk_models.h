@@ -43,6 +43,10 @@ void kiosk_models_free(struct kiosk_models *m);
  * prepared is told through the worker's. */
 void kiosk_models_fill_fds(const struct kiosk_models *m, struct pollfd fds[1]);
 /* When it must be serviced with nothing to read; CLOCK_NEVER: not. */
+/* Another model was asked for (a step, a file that arrived or changed)
+ * and is not started yet: a coarse picture's full level of detail is
+ * then not worth its upload. */
+bool kiosk_models_switching(const struct kiosk_models *m);
 uint64_t kiosk_models_deadline(const struct kiosk_models *m);
 /* The models next/prev-model step through; 0 for NULL. */
 int kiosk_models_count(const struct kiosk_models *m);

@@ -17,6 +17,7 @@
 #include "app/kiosk_models.h"
 #include "app/reload.h"
 #include "content/matcap_job.h"
+#include "content/refine_job.h"
 #include "content/worker.h"
 #include "ops/metrics.h"
 #include "ops/service.h"
@@ -135,6 +136,13 @@ struct kiosk {
 	long reload_frames;	  /* frames_drawn when the reload started */
 	struct matcap_job matcap; /* decoding the image asked for */
 	unsigned matcap_set_id;	  /* bumped when the set or the texture changes under it */
+	/* A coarse picture's full level of detail (content/refine_job.h),
+	 * and frames_drawn when the content shown was first found with
+	 * coarse_of to refine: it starts once a frame showed it (a screen
+	 * asleep draws none: it waits for the wake); -1: none found yet. */
+	struct refine_job refine;
+	long coarse_frame;
+	const struct content_refine *coarse_of;
 	/* The loop thread's longest step, from a wake-up to the next sleep:
 	 * what a page flip or an input may wait for (the bench reads it). */
 	uint64_t woke_ns;
@@ -190,6 +198,9 @@ void kiosk_content_stop(struct kiosk *k);
 void kiosk_content_reload(struct kiosk *k);
 /* Before the loop sleeps: the next job, when the worker is idle. */
 void kiosk_content_start_jobs(struct kiosk *k);
+/* When a job is due with nothing to wake the loop (a coarse picture
+ * drawn: its refine); CLOCK_NEVER: none. */
+uint64_t kiosk_content_deadline(const struct kiosk *k);
 /* A job done is handed on. True when a reload's content was uploaded:
  * the loop then applies its settings (kiosk.c; the devices may be new)
  * and tells systemd the reload is over (service_reloading). */

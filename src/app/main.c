@@ -332,6 +332,7 @@ static int show(struct options *o, char **argv, enum exit_code *display_code)
 		posters = show_poster(o, display);
 	o->content.anim_live = is_live(o) && o->content.anim_time < 0;
 	o->content.crash_memory = is_live(o);
+	o->content.coarse_first = is_live(o);
 	if (!ret)
 		ret = after_display(o, live, &content);
 	if (!ret)

@@ -90,6 +90,7 @@ int reload_start(struct reload_job *j, struct worker *w, int argc, char **argv, 
 	/* A reload is the live kiosk's: its animation plays (main.c). */
 	j->fresh.content.anim_live = j->fresh.content.anim_time < 0;
 	j->fresh.content.crash_memory = true;
+	j->fresh.content.coarse_first = true;
 	j->width = width;
 	j->height = height;
 	j->ret = -EINPROGRESS;

@@ -66,6 +66,11 @@ struct content_config {
 	 * state folder first, so that one that kills the process is passed
 	 * over after the restart (content/load_guard.h). */
 	bool crash_memory;
+	/* The live kiosk (not a setting): a large model prepared from scratch
+	 * is shown coarse first (content/content_coarse.c); [kiosk]
+	 * coarse_above: above how many triangles (0: never). A still never. */
+	bool coarse_first;
+	int coarse_above;
 	double anim_fps;
 	double anim_pause_after;
 	/* Which of the table's settings the command line set (bit i:

@@ -32,6 +32,7 @@ void option_defaults(struct options *o)
 	 * clusters on any count (scene/mesh/lod.h), so more threads cost a
 	 * cluster's memory each (some 9 MB), not a model's. */
 	o->content.prepare_threads = 0;
+	o->content.coarse_above = 200000;
 	o->content.fit = CONTENT_FIT_DEFAULT;
 	o->content.caption.size = CAPTION_SIZE_DEFAULT;
 	o->content.caption.padding = 12;

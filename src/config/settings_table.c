@@ -286,6 +286,10 @@ const struct option_def option_defs[OPTION_DEFS] = {
     {"include", 0, OPTIONS_KIOSK, "include", K_STRING, AT(include), 0, 0, 0, NULL, "FILE",
      "a second INI file read over this one and its .d/ files where it exists (a USB stick's, "
      "from --import)"},
+    {"coarse-above", 0, OPTIONS_KIOSK, "coarse_above", K_INT, AT(content.coarse_above), 0, 1e9, 1,
+     NULL, "N",
+     "a live model of more than N triangles, not in the cache, is shown coarse first, then whole; "
+     "0: never"},
     {"status", 0, OPTION_CLI, NULL, K_FLAG, AT(status), 0, 0, 0, NULL, NULL,
      "ask the running kiosk for its frame (PNG) and state (JSON), print the JSON, exit"},
     {"check-config", 0, OPTION_CLI, NULL, K_FLAG, AT(check_config), 0, 0, 0, NULL, NULL,

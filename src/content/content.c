@@ -3,11 +3,11 @@
 #include "util/file.h"
 #include "content/model_list.h"
 #include "config/model_settings.h"
-#include "render/framing.h"
 #include "scene/gltf/gltf.h"
 #include "scene/mesh/lod.h"
 #include "scene/mesh/lod_split.h"
 #include "scene/mesh/texture.h"
+#include "util/clock.h"
 #include "util/log.h"
 
 #include <limits.h>
@@ -248,6 +248,7 @@ int content_load(struct content *s, const struct content_config *o, bool strict)
 	int ret;
 
 	memset(s, 0, sizeof(*s));
+	s->began_ns = monotonic_ns();
 	ret = load_the_model(s, o, strict);
 	/* The first model's own matcaps and background, where it names them. */
 	if (!ret)
@@ -277,6 +278,7 @@ int content_load_model(struct content *s, const struct content_config *o, const 
 	int ret;
 
 	memset(s, 0, sizeof(*s));
+	s->began_ns = monotonic_ns();
 	s->model_path = strdup(path);
 	ret = s->model_path ? load_mesh(s, o, path) : -ENOMEM;
 	if (!ret)
@@ -294,6 +296,8 @@ int content_load_model(struct content *s, const struct content_config *o, const 
 		content_load_hotspots(s, content_settings(s, o));
 	if (!ret)
 		content_load_hotspot_captions(s, content_settings(s, o));
+	if (!ret) /* a coarse picture is framed as its whole mesh will be */
+		content_coarse_frame(s, content_settings(s, o), width, height);
 	if (ret)
 		content_release(s);
 	return ret;
@@ -303,6 +307,7 @@ int content_load_model(struct content *s, const struct content_config *o, const 
 static void release_model(struct content *s)
 {
 	mesh_cache_writer_join(s->writer);
+	content_refine_free(s->refine);
 	mesh_packed_release(&s->packed);
 	free(s->play_bytes);
 	mesh_cache_entry_free(s->cached);
@@ -332,6 +337,7 @@ void content_take_model(struct content *shown, struct content *fresh, struct con
 	memcpy(old->stop_caption, kept.stop_caption, sizeof(old->stop_caption));
 	memcpy(old->lang_spare, kept.lang_spare, sizeof(old->lang_spare));
 	old->own = kept.own;
+	old->refine = kept.refine; /* a coarse picture's whole mesh: not wanted now */
 	/* The look's text: fresh's equals kept's where it has none of its own. */
 	old->look = kept.look;
 	*shown = *fresh;
@@ -414,6 +420,10 @@ static int prepare_mesh(struct content *s, const struct content_config *o, int w
 		content_frame(s, o, width, height);
 	if (!ret)
 		content_play_check(s);
+	/* The live kiosk's large model: coarse now, whole later (one fit). */
+	if (!ret && (ret = content_coarse_begin(s, o, displaced ? 0.0 : o->lod_pixels / s->zoom,
+						width, height)))
+		return ret < 0 ? ret : 0;
 	/* No level of detail for a model that plays (content.h). */
 	if (!ret && !s->play)
 		ret =
@@ -434,6 +444,8 @@ int content_prepare(struct content *s, const struct content_config *o, int width
 
 	if (!ret)
 		content_fit_captions(s, content_settings(s, o), width, height);
+	if (!ret)
+		content_coarse_frame(s, content_settings(s, o), width, height);
 	return ret;
 }
 

@@ -19,6 +19,7 @@
 #include <stdbool.h>
 
 struct content;
+struct content_refine; /* content_coarse.c: a coarse picture's full level of detail, to come */
 
 /* How a content that plays is posed a frame (src/content/content_deform.c):
  * chosen once a model, at upload (content_play_upload, which says which
@@ -123,6 +124,14 @@ struct content {
 	struct anim_play_split *play_split;
 	struct content_look look; /* what matcaps and background came from */
 	unsigned own_look;	  /* CONTENT_OWN_*: set by content_load_model */
+	/* A large model prepared from scratch for the live kiosk: mesh is a
+	 * coarse stand-in (coarse), and refine holds the whole mesh until a
+	 * job prepares it (content_refine_take) and the loop swaps it in
+	 * (content_refine_swap). began_ns: when its load began (the
+	 * journal's times). */
+	struct content_refine *refine;
+	bool coarse;
+	uint64_t began_ns;
 };
 
 /* strict: every file the settings name must load (a one-shot render is
@@ -181,6 +190,35 @@ bool content_cache_fits(const struct content *s, int width, int height);
 void content_cache_pack(struct content *s, int width, int height);
 void content_cache_store(struct content *s);
 int content_cache_reopen(struct content *s);
+/* src/content/content_coarse.c: the live kiosk's first picture of a large
+ * model before its level of detail (config: coarse_first and [kiosk]
+ * coarse_above). content_coarse_begin, from content_prepare once the fit
+ * is known, on the full mesh: its mesh becomes the coarse stand-in and
+ * s->refine the rest of the preparation; 1 when it did, 0 when the model
+ * is prepared whole as before (a still, small, animated, displaced, with
+ * variants), or a negative errno. */
+int content_coarse_begin(struct content *s, const struct content_config *o, double pixels,
+			 int width, int height);
+/* On the worker, once s's captions are fitted (content_fit_captions): s's
+ * fit (content_frame) over its whole mesh, not the coarse cut's outline. */
+void content_coarse_frame(struct content *s, const struct content_config *o, int width,
+			  int height);
+/* The refine of s, taken for a job (s->refine left NULL, s still shown
+ * coarse); the journal says when the coarse picture came. */
+struct content_refine *content_refine_take(struct content *s);
+/* On the worker: the level of detail and the packing of f's mesh; then
+ * it is prepared (a refine put back, to swap in without a job). */
+void content_refine_run(struct content_refine *f);
+bool content_refine_prepared(const struct content_refine *f);
+/* On the loop: f's mesh to the renderer in place of shown's coarse one
+ * (the fit stays: it was of the whole mesh), and its cache entry written;
+ * old gets what is to be released (the coarse mesh, or f when it does not
+ * fit on the GPU: the coarse one stays). */
+int content_refine_swap(struct content *shown, struct content_refine *f, struct renderer *r,
+			struct content *old);
+void content_refine_free(struct content_refine *f);
+/* s's model as the journal names it: its path, or "the built-in knot". */
+const char *content_name(const struct content *s);
 /* src/content/content_play.c: the material's preparation (a
  * displacement's subdivision, generated tangents) may give the mesh other
  * vertices than those the poses write, or tangents a feature reads (they

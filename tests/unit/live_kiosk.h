@@ -1,7 +1,8 @@
 /* A live kiosk for a unit test (kiosk_run, as main() runs it): a config
  * file's options, its content loaded, prepared and uploaded on a 32x32
  * display (OSMesa, else EGL surfaceless), and the test's script its one
- * input source. Shared by test_kiosk_reload.c and test_kiosk_matcap.c. */
+ * input source. Shared by test_kiosk_reload.c, test_kiosk_matcap.c and
+ * test_kiosk_coarse.c (its own size, a coarse picture first). */
 #ifndef MK_TEST_LIVE_KIOSK_H
 #define MK_TEST_LIVE_KIOSK_H
 
@@ -15,7 +16,9 @@
 
 #include <setjmp.h>
 #include <stdarg.h>
+#include <stdbool.h>
 #include <stddef.h>
+#include <stdio.h>
 #include <string.h>
 #include <cmocka.h>
 
@@ -39,16 +42,22 @@ static inline void live_kiosk_sphere(const char *path)
 	mesh_release(&m);
 }
 
-/* The kiosk of the config file ini, ready to run, src its input. */
-static inline void live_kiosk_start(struct live_kiosk *lk, char *ini, struct input_source *src)
+/* The kiosk of the config file ini on a size ("WxH") display, ready to
+ * run, src its input; coarse: a large model prepared from scratch is
+ * shown coarse first, as main() sets it for the live kiosk
+ * (content_config.coarse_first). */
+static inline void live_kiosk_open(struct live_kiosk *lk, char *ini, struct input_source *src,
+				   char *size, bool coarse)
 {
-	char *argv[] = {"matcap-kiosk", "--backend", "osmesa",	 "--size", "32x32", "--config", ini,
-			"--keyboard",	"none",	     "--camera", "off",	   "-q",    NULL};
-	struct display_config cfg = {.width = 32, .height = 32};
+	char *argv[] = {"matcap-kiosk", "--backend", "osmesa",	 "--size", size, "--config", ini,
+			"--keyboard",	"none",	     "--camera", "off",	   "-q", NULL};
+	struct display_config cfg = {0};
 	struct kiosk_parts parts = {.content = &lk->content, .options = &lk->o, .argv = lk->argv};
 
+	assert_int_equal(sscanf(size, "%dx%d", &cfg.width, &cfg.height), 2);
 	memcpy(lk->argv, argv, sizeof(argv));
 	assert_int_equal(options_parse(&lk->o, 12, lk->argv), OPTIONS_OK);
+	lk->o.content.coarse_first = coarse;
 	assert_int_equal(content_load(&lk->content, &lk->o.content, true), 0);
 #ifdef MK_HAVE_OSMESA
 	lk->d = display_osmesa_new(&cfg);
@@ -67,6 +76,12 @@ static inline void live_kiosk_start(struct live_kiosk *lk, char *ini, struct inp
 	lk->k = kiosk_new(&parts, 0);
 	assert_non_null(lk->k);
 	assert_int_equal(kiosk_add_input(lk->k, src), 0);
+}
+
+/* The same on a 32x32 display, each model prepared whole. */
+static inline void live_kiosk_start(struct live_kiosk *lk, char *ini, struct input_source *src)
+{
+	live_kiosk_open(lk, ini, src, "32x32", false);
 }
 
 /* All but the display, left open: OSMesa leaks a fixed few hundred bytes
