@@ -25,12 +25,13 @@ static void frame_packed(struct framing *f, const struct mesh_packed *m)
 	}
 }
 
-/* The tallest of a language's pictures (its caption, a stop's). */
+/* The tallest of a language's pictures in the caption's band (its
+ * caption, a stop's); a hotspot's text goes beside its badge, not there. */
 static int pictures_height(const struct image *caption, const struct image *stops, int h)
 {
 	if (caption->rgba && caption->height > h)
 		h = caption->height;
-	for (int i = 0; i < CAPTION_STOPS; i++)
+	for (int i = 0; i < CONTENT_HOTSPOT_CAPTION; i++)
 		if (stops[i].rgba && stops[i].height > h)
 			h = stops[i].height;
 	return h;
