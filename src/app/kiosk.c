@@ -566,7 +566,7 @@ static int loop_once(struct kiosk *k, int sig_fd)
 		next = earliest(next, screen_deadline(k->screen, now), CLOCK_NEVER);
 	next = earliest(next, k->rescan_at, service_deadline(&k->service));
 	next = earliest(next, kiosk_models_deadline(k->models), metrics_deadline(k->metrics));
-	visits_observe(&k->visits, now, app_state(k->app)->stop, app_attracting(k->app));
+	kiosk_observe_visits(k, now);
 	next = earliest(next, kiosk_content_deadline(k), kiosk_remote_deadline(k, now));
 	n = fill_fds(k, fds, sig_fd);
 	note_step(k);

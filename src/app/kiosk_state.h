@@ -48,6 +48,14 @@ struct kiosk_lang {
 	struct lang_pick pick; /* state/lang.h */
 };
 
+/* The names the visitor counters give what is shown (kiosk_visits.c),
+ * read once a model (or settings) is uploaded, not every turn of the loop. */
+struct kiosk_seen {
+	unsigned serial;				    /* renderer_mesh_serial when read */
+	char hotspot[FRAME_STOPS + HOTSPOTS][HOTSPOT_NAME]; /* each stop's; "": none */
+	char lang[LANG_MAX][LANG_CODE_MAX];		    /* [caption] languages' codes */
+};
+
 /* The material variant shown (src/app/kiosk_variant.c): what was last
  * applied, to act on changes alone. */
 struct kiosk_variant {
@@ -167,6 +175,7 @@ struct kiosk {
 	} remote;
 	/* The language the texts are shown in (kiosk_lang.c). */
 	struct kiosk_lang lang;
+	struct kiosk_seen seen; /* kiosk_visits.c */
 };
 
 /* A message with no payload to the app state (a frame shown, the display
@@ -191,6 +200,9 @@ void kiosk_show_variant(struct kiosk *k);
  * idle_seconds ask for, its pictures given to the renderer; a frame
  * asked for when it changed. */
 void kiosk_show_language(struct kiosk *k, uint64_t now);
+/* src/app/kiosk_visits.c: what is shown at now (the stop, the hotspot,
+ * the language, attract mode) to the visitor counters. */
+void kiosk_observe_visits(struct kiosk *k, uint64_t now);
 /* src/app/kiosk_content.c: the content worker's jobs (reload, matcap,
  * the matcap folder). */
 int kiosk_content_start(struct kiosk *k);

@@ -1,5 +1,7 @@
 #include "state/visits.h"
 
+#include "state/view.h"
+
 #include <stdio.h>
 #include <string.h>
 
@@ -54,8 +56,9 @@ double visits_seconds(const struct visits *v, const char *kind, const char *name
 }
 
 /* The time since the last observation to what was shown, up to t. A
- * stop counts while a visitor is there: attract mode's tour is attract
- * mode's time. */
+ * stop, a hotspot and a language count while a visitor is there: attract
+ * mode's tour of them is attract mode's time. A hotspot's view is no
+ * stop the curator wrote: its time is the hotspot's alone. */
 static void account(struct visits *v, uint64_t t)
 {
 	char name[16];
@@ -67,10 +70,16 @@ static void account(struct visits *v, uint64_t t)
 	v->observed_ns = t;
 	if (v->attract) {
 		visit_time_add(v, "attract", "", s);
-	} else if (v->stop > 0) {
+		return;
+	}
+	if (v->stop > 0 && v->stop <= FRAME_STOPS) {
 		snprintf(name, sizeof(name), "%d", v->stop);
 		visit_time_add(v, "stop", name, s);
 	}
+	if (v->hotspot[0])
+		visit_time_add(v, "hotspot", v->hotspot, s);
+	if (v->lang[0])
+		visit_time_add(v, "language", v->lang, s);
 }
 
 /* Any input: a visit begins when the kiosk was idle; attract mode ends. */
@@ -129,11 +138,13 @@ void visits_touch(struct visits *v, const struct gesture *g, enum app_action lon
 		v->presses[INPUT_KIND_TOUCH][action]++;
 }
 
-void visits_observe(struct visits *v, uint64_t now_ns, int stop, bool attract)
+void visits_observe(struct visits *v, uint64_t now_ns, const struct visit_view *w)
 {
 	account(v, now_ns);
 	if (!v->observed_ns)
 		v->observed_ns = now_ns;
-	v->stop = stop + 1;
-	v->attract = attract;
+	v->stop = w->stop + 1;
+	v->attract = w->attract;
+	snprintf(v->hotspot, sizeof(v->hotspot), "%s", w->hotspot ? w->hotspot : "");
+	snprintf(v->lang, sizeof(v->lang), "%s", w->lang ? w->lang : "");
 }

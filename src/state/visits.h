@@ -8,9 +8,11 @@
  * Counted: presses per action and source (button, key, touch, knob);
  * visits (an input after the kiosk was idle: in attract mode, or no input
  * for idle_s); and seconds per (kind, name) slot: each stop a visitor is
- * at ("stop", "1" for the first), attract mode ("attract", ""), and what
- * other parts feed through visit_time_add (hotspots, languages). A zeroed
- * struct visits is an empty one. */
+ * at ("stop", "1" for the first), each hotspot a visitor stepped to or a
+ * stop turned to ("hotspot", its NAME), the language shown to a visitor
+ * ("language", its code), attract mode ("attract", ""; its tour of stops
+ * and languages is attract mode's time), and what other parts feed
+ * through visit_time_add. A zeroed struct visits is an empty one. */
 #ifndef MK_VISITS_H
 #define MK_VISITS_H
 
@@ -35,6 +37,16 @@ struct visit_slot {
 	double seconds;
 };
 
+/* What the kiosk shows, for visits_observe. */
+struct visit_view {
+	/* The app's stop (-1: none); FRAME_STOPS + i is hotspot i's view
+	 * (next-hotspot, a tap on a badge): its hotspot's time, no stop's. */
+	int stop;
+	bool attract;
+	const char *hotspot; /* the hotspot whose text is shown; NULL or "": none */
+	const char *lang;    /* the language's code shown; NULL or "": none named */
+};
+
 struct visits {
 	long presses[INPUT_KINDS][VISITS_ACTIONS];
 	long count; /* visits */
@@ -44,7 +56,9 @@ struct visits {
 	uint64_t observed_ns;
 	int stop; /* observed + 1: 0 none, so that zeroed is "none" */
 	bool attract;
-	bool touch_moving; /* a drag or pinch counted, not yet ended */
+	char hotspot[VISITS_NAME]; /* observed; "": none */
+	char lang[VISITS_NAME];	   /* observed; "": none */
+	bool touch_moving;	   /* a drag or pinch counted, not yet ended */
 	struct visit_slot slots[VISITS_SLOTS];
 	int slot_count;
 	double dropped_s; /* seconds of slots that did not fit */
@@ -60,9 +74,9 @@ void visits_press(struct visits *v, enum input_kind kind, const struct app_event
  * tap is reset, a long press long_press. */
 void visits_touch(struct visits *v, const struct gesture *g, enum app_action long_press,
 		  double idle_s);
-/* What the kiosk shows at now_ns: stop (-1: none) and attract mode. The
- * time since the last call goes to what was shown then. */
-void visits_observe(struct visits *v, uint64_t now_ns, int stop, bool attract);
+/* What the kiosk shows at now_ns. The time since the last call goes to
+ * what was shown then. */
+void visits_observe(struct visits *v, uint64_t now_ns, const struct visit_view *w);
 /* seconds more at (kind, name): for hotspots, languages and the like.
  * 0, or -1 when there is no room (the time is in dropped_s). */
 int visit_time_add(struct visits *v, const char *kind, const char *name, double seconds);

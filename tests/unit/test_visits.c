@@ -2,6 +2,7 @@
  * time at stops, idle, attract mode) and the counts and seconds it must
  * give, to the nanosecond the script says. */
 #include "state/visits.h"
+#include "state/view.h"
 
 #include <setjmp.h>
 #include <stdarg.h>
@@ -22,6 +23,13 @@ static void press(struct visits *v, enum input_kind kind, uint64_t t, enum app_a
 	visits_press(v, kind, &ev, 30);
 }
 
+static void observe(struct visits *v, uint64_t t, int stop, bool attract)
+{
+	struct visit_view w = {.stop = stop, .attract = attract};
+
+	visits_observe(v, t, &w);
+}
+
 static void gesture(struct visits *v, uint64_t t, enum gesture_kind kind)
 {
 	struct gesture g = {.kind = kind, .time_ns = t};
@@ -37,22 +45,22 @@ static void a_scripted_visit(void **unused)
 	struct visits v = {0};
 
 	(void)unused;
-	visits_observe(&v, 1 * S, -1, false);
+	observe(&v, 1 * S, -1, false);
 	for (int i = 0; i < 3; i++)
 		press(&v, INPUT_KIND_KNOB, (2 + i) * S, ACTION_TURN_RIGHT);
 	press(&v, INPUT_KIND_KNOB, 5 * S, ACTION_SELECT);
-	visits_observe(&v, 5 * S, 0, false);
-	visits_observe(&v, 15 * S, 0, false);
+	observe(&v, 5 * S, 0, false);
+	observe(&v, 15 * S, 0, false);
 	press(&v, INPUT_KIND_KEY, 25 * S, ACTION_NEXT_STOP);
-	visits_observe(&v, 25 * S, 1, false);
+	observe(&v, 25 * S, 1, false);
 	for (int i = 0; i < 4; i++)
 		gesture(&v, 35 * S + i, GESTURE_DRAG);
 	gesture(&v, 35 * S + 4, GESTURE_END);
-	visits_observe(&v, 40 * S, 1, false);
-	visits_observe(&v, 100 * S, 1, true); /* attract from 100 s */
-	visits_observe(&v, 130 * S, -1, true);
+	observe(&v, 40 * S, 1, false);
+	observe(&v, 100 * S, 1, true); /* attract from 100 s */
+	observe(&v, 130 * S, -1, true);
 	gesture(&v, 160 * S, GESTURE_TAP);
-	visits_observe(&v, 161 * S, -1, false);
+	observe(&v, 161 * S, -1, false);
 
 	assert_int_equal(v.presses[INPUT_KIND_KNOB][ACTION_TURN_RIGHT], 3);
 	assert_int_equal(v.presses[INPUT_KIND_KNOB][ACTION_SELECT], 1);
@@ -117,12 +125,50 @@ static void generic_slots(void **unused)
 	assert_float_equal(v.dropped_s, 2, 1e-12);
 }
 
+static void show(struct visits *v, uint64_t t, int stop, const char *hotspot, const char *lang)
+{
+	struct visit_view w = {.stop = stop, .hotspot = hotspot, .lang = lang};
+
+	visits_observe(v, t, &w);
+}
+
+/* The issue's visit with languages and hotspots: en shown 10 s, the
+ * visitor steps to hotspot 1's view (FRAME_STOPS + 1: "valve") for 5 s,
+ * switches to de, 7 s more there, back to stop 1 (which turns to
+ * "signature") for 3 s; then attract mode's tour of languages and stops
+ * (40 s) is attract's alone. A hotspot's view is no stop: no stop "10". */
+static void time_per_language_and_hotspot(void **unused)
+{
+	struct visits v = {0};
+	struct visit_view tour = {.stop = 0, .attract = true, .hotspot = "signature", .lang = "fr"};
+	char name[16];
+
+	(void)unused;
+	show(&v, 1 * S, -1, NULL, "en");
+	show(&v, 11 * S, FRAME_STOPS + 1, "valve", "en");
+	show(&v, 16 * S, FRAME_STOPS + 1, "valve", "de");
+	show(&v, 23 * S, 0, "signature", "de");
+	visits_observe(&v, 26 * S, &tour);
+	visits_observe(&v, 66 * S, &tour);
+
+	assert_float_equal(visits_seconds(&v, "language", "en"), 15, 1e-9);
+	assert_float_equal(visits_seconds(&v, "language", "de"), 10, 1e-9);
+	assert_float_equal(visits_seconds(&v, "language", "fr"), 0, 0);
+	assert_float_equal(visits_seconds(&v, "hotspot", "valve"), 12, 1e-9);
+	assert_float_equal(visits_seconds(&v, "hotspot", "signature"), 3, 1e-9);
+	assert_float_equal(visits_seconds(&v, "stop", "1"), 3, 1e-9);
+	snprintf(name, sizeof(name), "%d", FRAME_STOPS + 2);
+	assert_float_equal(visits_seconds(&v, "stop", name), 0, 0);
+	assert_float_equal(visits_seconds(&v, "attract", ""), 40, 1e-9);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(a_scripted_visit),
 	    cmocka_unit_test(visits_start_after_idle),
 	    cmocka_unit_test(generic_slots),
+	    cmocka_unit_test(time_per_language_and_hotspot),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);
