@@ -10,7 +10,12 @@
 # to the stops both ways (the yaw of each, the reference at the first);
 # then a scripted visit (four detents, a press of the knob, a wait at the
 # stop, idle until attract mode, a detent) and the counters of the
-# metrics file equal what the script did. Ends with "vm: N passed, N failed".
+# metrics file equal what the script did; and the issue's visit with two
+# languages (en de) and a GPIO button (gpio-sim) bound to next-language:
+# a press of the knob, a wait, the button, idle until attract mode; the
+# counters in the metrics file and in --status's state.json equal what
+# the script did: the presses per action and source, one visit, seconds
+# in both languages and in attract mode. Ends with "vm: N passed, N failed".
 set -u
 . /repo/tests/e2e/lib.sh
 
@@ -118,6 +123,59 @@ vm_check "seconds at the first stop (the press went there)" \
 	prom_positive 'matcap_kiosk_shown_seconds_total{kind="stop",name="1"}'
 vm_check "seconds in attract mode" \
 	prom_positive 'matcap_kiosk_shown_seconds_total{kind="attract",name=""}'
+
+# ---- the issue's visit: press, wait, switch language by a button, idle
+# state_has TEXT: --status's state.json (the running kiosk's) holds it.
+state_has() { grep -qF -- "$1" state.json; }
+# state_positive KIND NAME: its seconds in state.json are > 0.
+state_positive() {
+	tr '{' '\n' <state.json | grep -F "\"kind\": \"$1\", \"name\": \"$2\"" |
+		sed -n 's/.*"seconds": \([0-9.]*\).*/\1/p' | awk '{ v = $1 } END { exit !(v > 0) }'
+}
+chip=$(gpiosim_make langbutton 1 GPIO22)
+sys=$(gpiosim_sysfs langbutton)
+echo pull-up >"$sys/sim_gpio0/pull"
+click() { echo pull-down >"$sys/sim_gpio0/pull"; sleep 0.2; echo pull-up >"$sys/sim_gpio0/pull"; }
+rm -f "$PROM"
+kiosk_start l.log --display-mode 800x600 --stops "$STOPS" --attract-after 5 --metrics "$PROM" \
+	--caption Knot --caption-languages "en de" --gpio-chip "$chip" --button-left none \
+	--button-right none --button-select GPIO22 --select-press next-language \
+	--select-long-press none
+vm_check "the languages' kiosk: the first frame" \
+	wait_log 90 l.log "ready: the first frame is on the screen"
+knob_do press
+sleep 1
+click
+# Idle: attract mode 5 s after the button, some seconds of it.
+sleep 9
+vm_check "--status answers during attract mode" sh -c 'matcap-kiosk --status >state.json 2>&1'
+vm_check "state.json: the button's next-language press" \
+	state_has '{"source": "button", "action": "next-language", "count": 1}'
+vm_check "state.json: the knob's press" \
+	state_has '{"source": "knob", "action": "select", "count": 1}'
+vm_check "state.json: one visit" state_has '"visits": {"count": 1,'
+vm_check "state.json: seconds in en" state_positive language en
+vm_check "state.json: seconds in de" state_positive language de
+vm_check "state.json: seconds in attract mode" state_positive attract ""
+kiosk_stop TERM
+vm_check "the languages' kiosk wrote its metrics at the stop" prom_has "matcap_kiosk_up 0"
+vm_check "the button counted: presses_total{button, next-language} 1" \
+	prom_has 'matcap_kiosk_presses_total{source="button",action="next-language"} 1'
+vm_check "the knob's press counted: presses_total{knob, select} 1" \
+	prom_has 'matcap_kiosk_presses_total{source="knob",action="select"} 1'
+vm_check "nothing else was pressed" \
+	test "$(grep -c '^matcap_kiosk_presses_total{' "$PROM")" = 2
+vm_check "one visit (the button was the same visitor)" prom_has "matcap_kiosk_visits_total 1"
+vm_check "seconds in en (from the press to the button)" \
+	prom_positive 'matcap_kiosk_shown_seconds_total{kind="language",name="en"}'
+vm_check "seconds in de (from the button to attract mode)" \
+	prom_positive 'matcap_kiosk_shown_seconds_total{kind="language",name="de"}'
+vm_check "seconds at the first stop (the knob's press went there)" \
+	prom_positive 'matcap_kiosk_shown_seconds_total{kind="stop",name="1"}'
+vm_check "seconds in attract mode after the idle" \
+	prom_positive 'matcap_kiosk_shown_seconds_total{kind="attract",name=""}'
+vm_check "no language has seconds beyond the two" \
+	test "$(grep -c '^matcap_kiosk_shown_seconds_total{kind="language"' "$PROM")" = 2
 echo quit >"$FIFO"
 wait "$IPID"
 vm_summary
