@@ -32,8 +32,15 @@ BUILD   ?= build
 # libOSMesa is opened with dlopen and libGLESv2 is never linked: every gl*
 # call goes through the table in src/render/gl.c (the README, "How it is put
 # together"). Their headers are still found through pkg-config.
+# Debian 12's libunibreak-dev (1.1) is not multiarch: its .pc and .so lie
+# in /usr/lib, where a cross pkg-config (dpkg-buildpackage -a, the
+# sysroots) never looks, so it is linked by name there; the cross linker
+# and the loader both search /usr/lib. Debian 13's has a .pc pkg-config finds.
+UNIBREAK_PC  := $(shell $(PKG_CONFIG) --exists libunibreak && echo libunibreak)
+UNIBREAK_LIB := $(if $(UNIBREAK_PC),,-lunibreak)
 PKGS_LINK    := egl gbm libdrm libudev libpng libturbojpeg libwebp tinygltf libsystemd libgpiod libevdev \
-		libcamera draco freetype2 harfbuzz fribidi fontconfig libunibreak libmosquitto
+		libcamera draco freetype2 harfbuzz fribidi fontconfig libmosquitto \
+		$(UNIBREAK_PC)
 # Mesa 25.1 and later have no OSMesa: without its headers the osmesa
 # backend is left out (OSMESA=0 leaves it out by hand) and offscreen
 # rendering, the tests' included, goes through egl-headless.
@@ -64,7 +71,7 @@ ALL_CFLAGS   = -std=c11 -D_GNU_SOURCE -D_FILE_OFFSET_BITS=64 $(OPT) $(WARN) -Isr
 ALL_CXXFLAGS = -std=c++17 -D_FILE_OFFSET_BITS=64 $(OPT) $(WARN) -Isrc $(PKG_CFLAGS) $(CXXFLAGS)
 # meshoptimizer (Debian's 0.18) ships no .pc file; it is C++, and the link
 # already brings libstdc++.
-LDLIBS    = $(PKG_LIBS) -lmeshoptimizer -ldl -lm
+LDLIBS    = $(PKG_LIBS) $(UNIBREAK_LIB) -lmeshoptimizer -ldl -lm
 
 # The program's sources, minus app/main.c (tests link the same objects),
 # one folder per layer: each includes only the layers listed after it
