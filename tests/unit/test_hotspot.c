@@ -76,9 +76,9 @@ static void test_find_and_next(void **state)
 	assert_int_equal(hotspot_next(s.count, 0), 1);
 	assert_int_equal(hotspot_next(s.count, 2), 0);		  /* wraps */
 	assert_int_equal(hotspot_next(s.count, -FRAME_STOPS), 0); /* from a stop */
-	assert_string_equal(hotspot_text(&s.items[0], NULL), "");
+	assert_string_equal(hotspot_text(&s.items[0], NULL, NULL), "");
 	strcpy(s.items[0].text, "The painter's signature");
-	assert_string_equal(hotspot_text(&s.items[0], "de"), "The painter's signature");
+	assert_string_equal(hotspot_text(&s.items[0], "de", NULL), "The painter's signature");
 }
 
 /* dir turned as the view turns the model: pitch about x after yaw about
