@@ -272,10 +272,6 @@ void content_load_hotspots(struct content *s, const struct content_config *c);
  * worker in each language drawn (stop_caption[CONTENT_HOTSPOT_CAPTION + i]
  * and each lang_spare's): a language switch swaps them with the rest. */
 void content_load_hotspot_captions(struct content *s, const struct content_config *c);
-/* Stop index's text in lang (else first) when the stop names a hotspot
- * and has no text of its own: its hotspot's, malloc'd; else NULL. */
-char *content_hotspot_stop_text(const struct content_config *c, int index, const char *lang,
-				const char *first);
 /* The codes of c's [caption] languages; their count, 0: none named
  * (content_caption.c). */
 int content_languages(const struct content_config *c, char codes[LANG_MAX][LANG_CODE_MAX]);

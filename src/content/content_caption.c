@@ -57,6 +57,23 @@ static struct caption_config caption_in(const struct content_config *o,
 	return c;
 }
 
+/* Stop index's text in lang (else first) when the stop names a hotspot
+ * and has no text of its own: its hotspot's, malloc'd; else NULL. */
+static char *hotspot_stop_text(const struct content_config *o, int index, const char *lang,
+			       const char *first)
+{
+	struct frame_stop stops[FRAME_STOPS];
+	char err[200];
+	int n = frame_stops_parse(o->frame.stops, stops, FRAME_STOPS, err, sizeof(err)), at = -1;
+	const char *t = "";
+
+	if (index >= 0 && index < n && !stops[index].text[0] && stops[index].hotspot[0])
+		at = hotspot_find(&o->hotspots, stops[index].hotspot);
+	if (at >= 0)
+		t = hotspot_text(&o->hotspots.items[at], lang, first);
+	return *t ? strdup(t) : NULL;
+}
+
 /* Stop i's text in l: the translated [frame] stops[l]'s i-th, else the
  * first language's, else its hotspot's in l (a stop at a hotspot without
  * a text of its own), else the stop's own. Malloc'd or NULL (the own). */
@@ -69,7 +86,7 @@ static char *stop_text_in(const struct content_config *o, char codes[LANG_MAX][L
 	if (!own && n && (t = lang_text_get(&o->texts, "frame", "stops", codes[0], NULL)))
 		own = lang_stop_text(t, i);
 	if (!own && n)
-		own = content_hotspot_stop_text(o, i, codes[l], codes[0]);
+		own = hotspot_stop_text(o, i, codes[l], codes[0]);
 	return own;
 }
 

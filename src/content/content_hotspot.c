@@ -148,21 +148,6 @@ void content_app_frame_at(const struct content *s, const struct content_config *
 	}
 }
 
-char *content_hotspot_stop_text(const struct content_config *o, int index, const char *lang,
-				const char *first)
-{
-	struct frame_stop stops[FRAME_STOPS];
-	char err[200];
-	int n = frame_stops_parse(o->frame.stops, stops, FRAME_STOPS, err, sizeof(err)), at = -1;
-	const char *t = "";
-
-	if (index >= 0 && index < n && !stops[index].text[0] && stops[index].hotspot[0])
-		at = hotspot_find(&o->hotspots, stops[index].hotspot);
-	if (at >= 0)
-		t = hotspot_text(&o->hotspots.items[at], lang, first);
-	return *t ? strdup(t) : NULL;
-}
-
 /* Hotspot i's text in language l of the n codes (none named: its own)
  * drawn into its picture's slot of l. */
 static void load_text(struct content *s, const struct content_config *o,

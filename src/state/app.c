@@ -283,7 +283,7 @@ static void step_stop(struct app *a, int step, uint64_t t)
 /* The next hotspot's view (stops[FRAME_STOPS + i]); select's: else the next stop. */
 static void step_hotspot(struct app *a, bool select, uint64_t t)
 {
-	int k = hotspot_step(&a->cfg.frame, a->state.stop, select);
+	int k = app_frame_hotspot_step(&a->cfg.frame, a->state.stop, select);
 
 	if (k >= 0)
 		to_stop(a, k, t, a->cfg.turn_speed);

@@ -1,6 +1,5 @@
 /* Hotspots' pure decisions (state/hotspot.h): no GL, no file, no clock. */
 #include "state/hotspot.h"
-#include "state/view.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -156,17 +155,6 @@ int hotspot_next(int count, int current)
 	if (count <= 0)
 		return -1;
 	return current < 0 || current + 1 >= count ? 0 : current + 1;
-}
-
-int hotspot_step(const struct app_frame *f, int shown, bool select)
-{
-	int n = f->stop_count;
-
-	if (f->hotspot_count > 0) /* a hotspot is what a visitor's press is for */
-		return FRAME_STOPS + hotspot_next(f->hotspot_count, shown - FRAME_STOPS);
-	if (!select || n < 1)
-		return -1;
-	return shown < 0 || shown >= n ? 0 : (shown + 1) % n;
 }
 
 /* Yaw about y first brings dir into the y-z plane in front (x = 0, z > 0),

@@ -80,14 +80,6 @@ int hotspot_find(const struct hotspot_set *s, const char *name);
  * of count, wrapping; -1 when there is none. */
 int hotspot_next(int count, int current);
 
-/* The view next-hotspot (select: the select action, the knob's press)
- * glides to from the one shown (app_state.stop: a stop, FRAME_STOPS + i
- * hotspot i's view, -1 none), as an index of f->stops: the next
- * hotspot's view when the model has hotspots, else for select the next
- * of its stops, as next-stop does; -1: none. */
-struct app_frame;
-int hotspot_step(const struct app_frame *f, int shown, bool select);
-
 /* The app's yaw and pitch (radians; the view turns the model by
  * pitch about x after yaw about y, content_view's order) that bring the
  * direction dir (in the model's frame after its base turn: the normal

@@ -330,13 +330,13 @@ static void select_steps_hotspots(void **state)
 	app_free(a);
 
 	cfg.frame.stop_count = 0; /* neither: the view stays */
-	assert_int_equal(hotspot_step(&cfg.frame, -1, true), -1);
+	assert_int_equal(app_frame_hotspot_step(&cfg.frame, -1, true), -1);
 	cfg.frame.hotspot_count = 2; /* next-hotspot never steps a stop */
-	assert_int_equal(hotspot_step(&cfg.frame, 1, false), FRAME_STOPS);
+	assert_int_equal(app_frame_hotspot_step(&cfg.frame, 1, false), FRAME_STOPS);
 	cfg.frame.hotspot_count = 0;
 	cfg.frame.stop_count = 2;
-	assert_int_equal(hotspot_step(&cfg.frame, 0, false), -1);
-	assert_int_equal(hotspot_step(&cfg.frame, FRAME_STOPS, true), 0);
+	assert_int_equal(app_frame_hotspot_step(&cfg.frame, 0, false), -1);
+	assert_int_equal(app_frame_hotspot_step(&cfg.frame, FRAME_STOPS, true), 0);
 }
 
 /* A tap says where it was (a badge is hit-tested there). */
