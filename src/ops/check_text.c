@@ -126,6 +126,11 @@ int check_hotspot_texts(const struct content_config *c, const struct hotspot_set
 				 h->langs[l].line);
 			bad += check_one(c->caption.font, where, what, h->langs[l].lang,
 					 h->langs[l].text);
+			if (!listed(first, n > 0 ? n : 0, h->langs[l].lang))
+				log_warn("%s: %s: %s is not one of [caption] languages (%s): never "
+					 "shown",
+					 where, what, h->langs[l].lang,
+					 n > 0 ? c->caption.languages : "none named");
 		}
 	}
 	return bad;

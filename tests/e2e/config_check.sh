@@ -82,6 +82,11 @@ w '[caption]\nlanguages = en de\n[hotspot.mark]\npoint = 0 1 0\ntext = Mark\ntex
 case_ hotspot-text-boxes 78 \
 	"vase.ini:6: \[hotspot.mark\] text\[de\]: no installed font has 1 of its characters.*U+13000 .* (fonts-noto-core)" \
 	"$dir/own.ini" $mc
+w '[caption]\nlanguages = en fr\n[hotspot.mark]\npoint = 0 1 0\ntext = Mark\ntext[de] = Zeichen\n' \
+	>"$dir/own/vase.ini"
+case_ hotspot-language-not-listed 0 \
+	"vase.ini:6: \[hotspot.mark\] text\[de\]: de is not one of \[caption\] languages (en fr): never shown" \
+	"$dir/own.ini" $mc
 
 # The animations the settings name, against the model's clips (two in
 # BoxAnimated, the first named "open" here): a clip it lacks is a bad
