@@ -243,8 +243,35 @@ live_at_stop() {
 	kill -TERM $pid && wait $pid
 	return $seen
 }
+# hot_lang LANG TEXT_LINES... : --hotspot 1 of the lopsided model (its
+# own NAME.ini: [caption] languages = en de and the hotspot's texts as
+# given) drawn in LANG into render/hot-LANG-N.png, N counting the runs.
+hot_lang_n=0
+hot_lang() {
+	lang=$1
+	shift
+	hot_lang_n=$((hot_lang_n + 1))
+	mkdir -p "$out/hot-lang"
+	cp "$out/models/lopsided.glb" "$out/hot-lang/fin.glb"
+	printf '%s\n' '[caption]' 'languages = en de' '[hotspot.fin]' 'point = 0.5 0.5 0.5' \
+		'look = badge' "$@" >"$out/hot-lang/fin.ini"
+	"$KIOSK" -q --backend $offscreen --size 160x120 --model "$out/hot-lang/fin.glb" \
+		--caption-drift off --hotspot 1 --lang "$lang" \
+		--output "$out/render/hot-$lang-$hot_lang_n.png"
+}
 test_preview() {
 	need_models
+	# A hotspot's text[de] (issue 33): --hotspot 1 --lang de shows the
+	# German, not the English; the same picture as a hotspot whose only
+	# text is the German (a language without text[LANG] shows the first's).
+	check "--hotspot 1 --lang en draws" hot_lang en 'text = The fin' 'text[de] = Die Flosse'
+	check "--hotspot 1 --lang de draws" hot_lang de 'text = The fin' 'text[de] = Die Flosse'
+	check "--hotspot 1 --lang de draws the plain text where no text[de]" hot_lang de \
+		'text = Die Flosse'
+	check "a hotspot's text[de] shows in German: not the English" sh -c \
+		"! cmp -s $out/render/hot-en-1.png $out/render/hot-de-2.png"
+	check "a hotspot's text[de] shows in German: the German text, byte for byte" \
+		cmp "$out/render/hot-de-2.png" "$out/render/hot-de-3.png"
 	check "--stop 1 draws" preview stop-1.png --stop 1
 	check "the live kiosk at its tour's first stop shows what --stop 1 drew" live_at_stop
 	check "--stop 2 draws" preview stop-2.png --stop 2

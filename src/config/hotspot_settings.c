@@ -2,8 +2,10 @@
  * values through state/hotspot.c's words, and the checks a hotspot needs
  * whole (a point or a node, not both). */
 #include "config/hotspot_settings.h"
+#include "config/lang_text.h"
 #include "util/log.h"
 
+#include <errno.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -11,6 +13,9 @@
 
 static const char *const hotspot_keys[] = {"point", "node", "normal", "text", "look", "color"};
 #define KEYS (int)(sizeof(hotspot_keys) / sizeof(hotspot_keys[0]))
+
+_Static_assert(HOTSPOT_LANGS == LANG_MAX && HOTSPOT_LANG_CODE == LANG_CODE_MAX,
+	       "a hotspot's text in every language [caption] languages may name");
 
 bool hotspot_settings_section(const char *section)
 {
@@ -90,14 +95,50 @@ static int set_value(struct hotspot *h, int k, const char *value, char *err, siz
 	}
 }
 
+/* text[LANG] = value: the text in LANG (lang_text.h's one form). 0, or
+ * -1 with err saying what was expected. */
+static int set_translation(struct hotspot *h, const char *base, const char *lang, const char *value,
+			   int line, char *err, size_t n)
+{
+	char codes[LANG_MAX][LANG_CODE_MAX], why[128];
+	int ret;
+
+	if (strcmp(base, "text")) {
+		snprintf(err, n, "only text takes a [LANG], e.g. text[de] = Die Signatur");
+		return -1;
+	}
+	if (lang_list_parse(lang, codes, why, sizeof(why)) != 1 || strcmp(codes[0], lang)) {
+		snprintf(err, n,
+			 "'%s' is not a language code; expected one such as de, fr or pt-BR", lang);
+		return -1;
+	}
+	ret = hotspot_set_text(h, lang, value, line);
+	if (ret == -EEXIST)
+		snprintf(err, n, "text[%s] is set again", lang);
+	else if (ret == -ENOSPC)
+		snprintf(err, n, "expected at most %d languages", HOTSPOT_LANGS);
+	else if (ret)
+		snprintf(err, n, "expected a short text (at most %d bytes)", HOTSPOT_TEXT - 1);
+	return ret ? -1 : 0;
+}
+
 void hotspot_settings_key(struct hotspot_read *rd, const char *path, int line, const char *section,
 			  const char *key, const char *value)
 {
 	int i = pending_of(rd, path, line, section + strlen(PREFIX)), k;
-	char err[200];
+	char err[200], base[16], lang[LANG_CODE_MAX + 8];
 
 	if (i < 0)
 		return;
+	if (lang_key_split(key, base, sizeof(base), lang, sizeof(lang))) {
+		if (set_translation(&rd->pending.items[i], base, lang, value, line, err,
+				    sizeof(err))) {
+			log_err("%s:%d: [%s] %s = '%s': %s; this hotspot is not shown", path, line,
+				section, key, value, err);
+			rd->bad[i] = true;
+		}
+		return;
+	}
 	for (k = 0; k < KEYS && strcmp(hotspot_keys[k], key); k++)
 		;
 	if (k == KEYS) {

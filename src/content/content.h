@@ -201,8 +201,7 @@ int content_coarse_begin(struct content *s, const struct content_config *o, doub
 			 int width, int height);
 /* On the worker, once s's captions are fitted (content_fit_captions): s's
  * fit (content_frame) over its whole mesh, not the coarse cut's outline. */
-void content_coarse_frame(struct content *s, const struct content_config *o, int width,
-			  int height);
+void content_coarse_frame(struct content *s, const struct content_config *o, int width, int height);
 /* The refine of s, taken for a job (s->refine left NULL, s still shown
  * coarse); the journal says when the coarse picture came. */
 struct content_refine *content_refine_take(struct content *s);
@@ -270,8 +269,15 @@ void content_fit_captions(struct content *s, const struct content_config *c, int
  * sphere (content_hotspot.c); on the worker, after the mesh. */
 void content_load_hotspots(struct content *s, const struct content_config *c);
 /* Each hotspot's text as the caption would show it, drawn here on the
- * worker (stop_caption[CONTENT_HOTSPOT_CAPTION + i]). */
+ * worker in each language drawn (stop_caption[CONTENT_HOTSPOT_CAPTION + i]
+ * and each lang_spare's): a language switch swaps them with the rest. */
 void content_load_hotspot_captions(struct content *s, const struct content_config *c);
+/* The codes of c's [caption] languages; their count, 0: none named
+ * (content_caption.c). */
+int content_languages(const struct content_config *c, char codes[LANG_MAX][LANG_CODE_MAX]);
+/* Language l's stop and hotspot pictures: the shown slots for the
+ * language shown, else its spare ones. */
+struct image *content_stop_slots(struct content *s, int l);
 /* The offscreen still of the settings' hotspot number (1, 2, ...): v
  * turned to face it (rest: the model's base turn), its text shown
  * (renderer_show_stop). -EINVAL after logging when s has no such hotspot. */

@@ -37,7 +37,7 @@ static char *model_name(const char *path, const char *scene)
 /* The languages of c ([caption] languages), at least one (NULL: none
  * named); the count. A list that does not parse was refused with its
  * file and line when it was read. */
-static int languages(const struct content_config *c, char codes[LANG_MAX][LANG_CODE_MAX])
+int content_languages(const struct content_config *c, char codes[LANG_MAX][LANG_CODE_MAX])
 {
 	char err[128];
 	int n = lang_list_parse(c->caption.languages, codes, err, sizeof(err));
@@ -57,8 +57,26 @@ static struct caption_config caption_in(const struct content_config *o,
 	return c;
 }
 
+/* Stop index's text in lang (else first) when the stop names a hotspot
+ * and has no text of its own: its hotspot's, malloc'd; else NULL. */
+static char *hotspot_stop_text(const struct content_config *o, int index, const char *lang,
+			       const char *first)
+{
+	struct frame_stop stops[FRAME_STOPS];
+	char err[200];
+	int n = frame_stops_parse(o->frame.stops, stops, FRAME_STOPS, err, sizeof(err)), at = -1;
+	const char *t = "";
+
+	if (index >= 0 && index < n && !stops[index].text[0] && stops[index].hotspot[0])
+		at = hotspot_find(&o->hotspots, stops[index].hotspot);
+	if (at >= 0)
+		t = hotspot_text(&o->hotspots.items[at], lang, first);
+	return *t ? strdup(t) : NULL;
+}
+
 /* Stop i's text in l: the translated [frame] stops[l]'s i-th, else the
- * first language's, else the stop's own. Malloc'd or NULL (the own). */
+ * first language's, else its hotspot's in l (a stop at a hotspot without
+ * a text of its own), else the stop's own. Malloc'd or NULL (the own). */
 static char *stop_text_in(const struct content_config *o, char codes[LANG_MAX][LANG_CODE_MAX],
 			  int n, int l, int i)
 {
@@ -67,6 +85,8 @@ static char *stop_text_in(const struct content_config *o, char codes[LANG_MAX][L
 
 	if (!own && n && (t = lang_text_get(&o->texts, "frame", "stops", codes[0], NULL)))
 		own = lang_stop_text(t, i);
+	if (!own && n)
+		own = hotspot_stop_text(o, i, codes[l], codes[0]);
 	return own;
 }
 
@@ -76,7 +96,7 @@ static struct image *caption_slot(struct content *s, int l)
 	return l == s->lang_shown ? &s->caption : &s->lang_spare[l].caption;
 }
 
-static struct image *stop_slots(struct content *s, int l)
+struct image *content_stop_slots(struct content *s, int l)
 {
 	return l == s->lang_shown ? s->stop_caption : s->lang_spare[l].stop;
 }
@@ -120,7 +140,7 @@ static int load_stops(struct content *s, const struct content_config *o,
 		c.text = own ? own : f.stops[i].text;
 		ret = c.text[0]
 			  ? caption_render_fit(&c, c.text, &(struct caption_fit){.quiet = true},
-					       &stop_slots(s, l)[i], NULL)
+					       &content_stop_slots(s, l)[i], NULL)
 			  : 0;
 		free(own);
 		if (ret && ret != -ENOENT && strict)
@@ -203,7 +223,7 @@ static void within_budget(struct content *s, int drawn)
 int content_load_captions(struct content *s, const struct content_config *o, bool strict)
 {
 	char codes[LANG_MAX][LANG_CODE_MAX];
-	int n = languages(o, codes), ret = 0;
+	int n = content_languages(o, codes), ret = 0;
 
 	s->caption_place = (struct caption_config){.padding = o->caption.padding,
 						   .position = o->caption.position,
@@ -264,7 +284,7 @@ static void fit_language(struct content *s, const struct content_config *o,
 
 		c.text = own ? own : f.stops[i].text;
 		snprintf(what, sizeof(what), "[frame] stops: stop %d's text", i + 1);
-		fit_picture(&c, c.text, what, frame, &stop_slots(s, l)[i]);
+		fit_picture(&c, c.text, what, frame, &content_stop_slots(s, l)[i]);
 		free(own);
 	}
 }
@@ -273,7 +293,7 @@ void content_fit_captions(struct content *s, const struct content_config *o, int
 {
 	int frame[2] = {o->rotation % 180 ? height : width, o->rotation % 180 ? width : height};
 	char codes[LANG_MAX][LANG_CODE_MAX];
-	int n = languages(o, codes);
+	int n = content_languages(o, codes);
 
 	/* Drawn for this frame already: a caption is laid out once a frame. */
 	if (width <= 0 || height <= 0 ||

@@ -8,6 +8,7 @@
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* The loader's centring and scale (mesh.fit); a mesh without one (the
@@ -109,9 +110,22 @@ bool content_hotspot_facing(const struct content *s, int index, struct quat rest
 	return true;
 }
 
+/* The first of c's languages into lang, or NULL when none is named. */
+static const char *first_language(const struct content_config *c, char lang[LANG_CODE_MAX])
+{
+	char codes[LANG_MAX][LANG_CODE_MAX];
+
+	if (!content_languages(c, codes))
+		return NULL;
+	memcpy(lang, codes[0], LANG_CODE_MAX);
+	return lang;
+}
+
 void content_app_frame_at(const struct content *s, const struct content_config *c,
 			  struct app_frame *f, struct quat *rest)
 {
+	char lang[LANG_CODE_MAX];
+
 	content_app_frame(c, f, rest);
 	for (int i = 0; i < f->stop_count; i++) {
 		int at =
@@ -129,27 +143,43 @@ void content_app_frame_at(const struct content *s, const struct content_config *
 		memset(v, 0, sizeof(*v));
 		v->yaw = f->yaw0, v->pitch = f->pitch0, v->zoom = f->zoom0;
 		content_hotspot_facing(s, i, *rest, &v->yaw, &v->pitch);
-		snprintf(v->text, sizeof(v->text), "%s", hotspot_text(&c->hotspots.items[i], NULL));
+		snprintf(v->text, sizeof(v->text), "%s",
+			 hotspot_text(&c->hotspots.items[i], NULL, first_language(c, lang)));
 	}
+}
+
+/* Hotspot i's text in language l of the n codes (none named: its own)
+ * drawn into its picture's slot of l. */
+static void load_text(struct content *s, const struct content_config *o,
+		      char codes[LANG_MAX][LANG_CODE_MAX], int n, int l, int i)
+{
+	const struct hotspot *h = &o->hotspots.items[i];
+	struct caption_config c = o->caption;
+	char text[HOTSPOT_TEXT];
+	int ret;
+
+	snprintf(text, sizeof(text), "%s",
+		 hotspot_text(h, n ? codes[l] : NULL, n ? codes[0] : NULL));
+	if (!text[0])
+		return;
+	c.text = text;
+	c.lang = n ? codes[l] : NULL;
+	ret = caption_render_fit(&c, text, &(struct caption_fit){.quiet = true},
+				 &content_stop_slots(s, l)[CONTENT_HOTSPOT_CAPTION + i], NULL);
+	if (ret && ret != -ENOENT)
+		log_warn("[hotspot.%s] text%s%s%s: not shown (the caption could not draw it)",
+			 h->name, n ? "[" : "", n ? codes[l] : "", n ? "]" : "");
 }
 
 void content_load_hotspot_captions(struct content *s, const struct content_config *o)
 {
-	for (int i = 0; i < o->hotspots.count && i < HOTSPOTS; i++) {
-		struct caption_config c = o->caption;
-		char text[HOTSPOT_TEXT];
-		int ret;
+	char codes[LANG_MAX][LANG_CODE_MAX];
+	int n = content_languages(o, codes);
 
-		snprintf(text, sizeof(text), "%s", hotspot_text(&o->hotspots.items[i], NULL));
-		if (!text[0])
-			continue;
-		c.text = text;
-		ret = caption_render_fit(&c, text, &(struct caption_fit){.quiet = true},
-					 &s->stop_caption[CONTENT_HOTSPOT_CAPTION + i], NULL);
-		if (ret && ret != -ENOENT)
-			log_warn("[hotspot.%s] text: not shown (the caption could not draw it)",
-				 o->hotspots.items[i].name);
-	}
+	/* lang_count: the languages drawn within the pictures' budget. */
+	for (int l = 0; l < (n && s->lang_count ? s->lang_count : 1); l++)
+		for (int i = 0; i < o->hotspots.count && i < HOTSPOTS; i++)
+			load_text(s, o, codes, n, l, i);
 }
 
 int content_show_hotspot(const struct content *s, const struct content_config *c, int number,

@@ -45,6 +45,6 @@ void content_app_frame(const struct content_config *c, struct app_frame *f, stru
 
 		if (at >= 0 && !f->stops[i].text[0])
 			snprintf(f->stops[i].text, sizeof(f->stops[i].text), "%s",
-				 hotspot_text(&c->hotspots.items[at], NULL));
+				 hotspot_text(&c->hotspots.items[at], NULL, NULL));
 	}
 }

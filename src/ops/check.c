@@ -54,6 +54,10 @@ int check_model_settings(const struct content_config *cfg, FILE *out, bool stick
 			OPTIONS_OK ||
 		    own.hotspots.dropped > cfg->hotspots.dropped)
 			bad++;
+		/* Its hotspots' texts against the fonts (--check-config's; an
+		 * import from a stick takes texts as they are). */
+		else if (!stick && check_hotspot_texts(&own, &cfg->hotspots, ini))
+			bad++;
 		content_config_release(&own);
 	}
 	model_list_free(l);

@@ -43,7 +43,7 @@ static void list_chars(const uint32_t *c, int n, int count, char *buf, size_t si
 }
 
 /* One text: said when a character has no font; 1 then, else 0. */
-static int check_one(const struct options *o, const char *where, const char *what, const char *lang,
+static int check_one(const char *font, const char *where, const char *what, const char *lang,
 		     const char *text)
 {
 	uint32_t c[SHOWN];
@@ -52,7 +52,7 @@ static int check_one(const struct options *o, const char *where, const char *wha
 
 	if (!text || !*text || !strcmp(text, "auto"))
 		return 0;
-	n = caption_missing(o->content.caption.font, lang, text, c, SHOWN);
+	n = caption_missing(font, lang, text, c, SHOWN);
 	if (n <= 0)
 		return 0; /* a font that does not open is said by the caption's check */
 	list_chars(c, n < SHOWN ? n : SHOWN, n, list, sizeof(list));
@@ -81,18 +81,57 @@ int check_texts(const struct options *o, const char *caption_at, const char *sto
 	const char *lang = n > 0 ? first[0] : NULL;
 	int bad = 0;
 
-	bad += check_one(o, caption_at, "[caption] text", lang, c->caption.text);
-	bad += check_one(o, stops_at, "[frame] stops", lang, c->frame.stops);
+	bad += check_one(c->caption.font, caption_at, "[caption] text", lang, c->caption.text);
+	bad += check_one(c->caption.font, stops_at, "[frame] stops", lang, c->frame.stops);
 	for (int i = 0; i < t->count; i++) {
 		snprintf(what, sizeof(what), "[%s] %s[%s]",
 			 !strcmp(t->e[i].key, "caption.text") ? "caption" : "frame",
 			 !strcmp(t->e[i].key, "caption.text") ? "text" : "stops", t->e[i].lang);
-		bad += check_one(o, t->e[i].origin ? t->e[i].origin : "the settings", what,
-				 t->e[i].lang, t->e[i].value);
+		bad += check_one(c->caption.font, t->e[i].origin ? t->e[i].origin : "the settings",
+				 what, t->e[i].lang, t->e[i].value);
 		if (!listed(first, n > 0 ? n : 0, t->e[i].lang))
 			log_warn("%s: %s: %s is not one of [caption] languages (%s): never shown",
 				 t->e[i].origin ? t->e[i].origin : "the settings", what,
 				 t->e[i].lang, n > 0 ? c->caption.languages : "none named");
+	}
+	return bad + check_hotspot_texts(c, NULL, NULL);
+}
+
+/* Whether h is one of skip's, the same in every field. */
+static bool checked(const struct hotspot_set *skip, const struct hotspot *h)
+{
+	int at = skip ? hotspot_find(skip, h->name) : -1;
+
+	return at >= 0 && !memcmp(&skip->items[at], h, sizeof(*h));
+}
+
+int check_hotspot_texts(const struct content_config *c, const struct hotspot_set *skip,
+			const char *path)
+{
+	char first[LANG_MAX][LANG_CODE_MAX], err[128], what[128], where[512];
+	int n = lang_list_parse(c->caption.languages, first, err, sizeof(err)), bad = 0;
+
+	for (int i = 0; i < c->hotspots.count; i++) {
+		const struct hotspot *h = &c->hotspots.items[i];
+
+		if (checked(skip, h))
+			continue;
+		snprintf(what, sizeof(what), "[hotspot.%s] text", h->name);
+		snprintf(where, sizeof(where), "%s:%d", path ? path : "the settings", h->line);
+		bad += check_one(c->caption.font, where, what, n > 0 ? first[0] : NULL, h->text);
+		for (int l = 0; l < h->lang_count; l++) {
+			snprintf(what, sizeof(what), "[hotspot.%s] text[%s]", h->name,
+				 h->langs[l].lang);
+			snprintf(where, sizeof(where), "%s:%d", path ? path : "the settings",
+				 h->langs[l].line);
+			bad += check_one(c->caption.font, where, what, h->langs[l].lang,
+					 h->langs[l].text);
+			if (!listed(first, n > 0 ? n : 0, h->langs[l].lang))
+				log_warn("%s: %s: %s is not one of [caption] languages (%s): never "
+					 "shown",
+					 where, what, h->langs[l].lang,
+					 n > 0 ? c->caption.languages : "none named");
+		}
 	}
 	return bad;
 }

@@ -12,4 +12,10 @@
  * text and [frame] stops came from (file:line). */
 int check_texts(const struct options *o, const char *caption_at, const char *stops_at);
 
+/* The same of c's hotspots' texts (text and text[LANG]) but those of
+ * skip (checked with the file they came from), said at path:line (NULL:
+ * "the settings"); how many. */
+int check_hotspot_texts(const struct content_config *c, const struct hotspot_set *skip,
+			const char *path);
+
 #endif

@@ -280,13 +280,13 @@ static void step_stop(struct app *a, int step, uint64_t t)
 	to_stop(a, k, t, a->cfg.turn_speed);
 }
 
-/* The next hotspot's view (stops[FRAME_STOPS + i]), after the one shown. */
-static void step_hotspot(struct app *a, uint64_t t)
+/* The next hotspot's view (stops[FRAME_STOPS + i]); select's: else the next stop. */
+static void step_hotspot(struct app *a, bool select, uint64_t t)
 {
-	int n = a->cfg.frame.hotspot_count, k = a->state.stop - FRAME_STOPS;
+	int k = app_frame_hotspot_step(&a->cfg.frame, a->state.stop, select);
 
-	if (n > 0)
-		to_stop(a, FRAME_STOPS + hotspot_next(n, k), t, a->cfg.turn_speed);
+	if (k >= 0)
+		to_stop(a, k, t, a->cfg.turn_speed);
 }
 
 /* Attract mode from t: the stops in turn, or home (no snap) and then the
@@ -364,11 +364,11 @@ static void press(struct app *a, enum app_action action, uint64_t t)
 		break;
 	case ACTION_NEXT_STOP:
 	case ACTION_PREV_STOP:
-	case ACTION_SELECT:
 		step_stop(a, action == ACTION_PREV_STOP ? -1 : 1, t);
 		break;
+	case ACTION_SELECT: /* the knob's press: the hotspots where there are any */
 	case ACTION_NEXT_HOTSPOT:
-		step_hotspot(a, t);
+		step_hotspot(a, action == ACTION_SELECT, t);
 		break;
 	case ACTION_PLAY_PAUSE:
 		st->anim_paused = !st->anim_paused;

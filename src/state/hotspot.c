@@ -2,15 +2,49 @@
 #include "state/hotspot.h"
 
 #include <ctype.h>
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
-const char *hotspot_text(const struct hotspot *h, const char *lang)
+/* h's own text[lang], or NULL. */
+static const char *text_in(const struct hotspot *h, const char *lang)
 {
-	(void)lang; /* one text for now; text[LANG] is read here when it comes */
-	return h ? h->text : "";
+	for (int i = 0; lang && i < h->lang_count; i++)
+		if (!strcasecmp(h->langs[i].lang, lang) && h->langs[i].text[0])
+			return h->langs[i].text;
+	return NULL;
+}
+
+const char *hotspot_text(const struct hotspot *h, const char *lang, const char *first)
+{
+	const char *t;
+
+	if (!h)
+		return "";
+	if (!(t = text_in(h, lang)) && !(t = text_in(h, first)))
+		t = h->text;
+	return t;
+}
+
+int hotspot_set_text(struct hotspot *h, const char *lang, const char *text, int line)
+{
+	struct hotspot_lang *l;
+
+	for (int i = 0; i < h->lang_count; i++)
+		if (!strcasecmp(h->langs[i].lang, lang))
+			return -EEXIST;
+	if (h->lang_count >= HOTSPOT_LANGS)
+		return -ENOSPC;
+	if (strlen(text) >= sizeof(l->text))
+		return -E2BIG;
+	l = &h->langs[h->lang_count++];
+	snprintf(l->lang, sizeof(l->lang), "%s", lang);
+	snprintf(l->text, sizeof(l->text), "%s", text);
+	l->line = line;
+	return 0;
 }
 
 void hotspot_init(struct hotspot *h, const char *name, int line)

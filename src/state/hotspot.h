@@ -17,6 +17,10 @@
 #define HOTSPOT_NAME 32
 #define HOTSPOT_NODE 64
 #define HOTSPOT_TEXT 160
+/* Languages a hotspot's text[LANG] may be given in, and a code's bytes:
+ * config/lang_text.h's LANG_MAX and LANG_CODE_MAX (checked there). */
+#define HOTSPOT_LANGS	  6
+#define HOTSPOT_LANG_CODE 16
 
 enum hotspot_look { HOTSPOT_DOT, HOTSPOT_BADGE };
 
@@ -30,8 +34,15 @@ struct hotspot {
 	bool has_normal;  /* else only the depth hides it, nothing fades it */
 	double normal[3]; /* unit length */
 	enum hotspot_look look;
-	float color[4]; /* straight RGBA, 0..1 */
-	char text[HOTSPOT_TEXT];
+	float color[4];		 /* straight RGBA, 0..1 */
+	char text[HOTSPOT_TEXT]; /* text = : the first language's */
+	/* text[LANG] = : the same in other languages, in the order read. */
+	struct hotspot_lang {
+		char lang[HOTSPOT_LANG_CODE];
+		char text[HOTSPOT_TEXT];
+		int line;
+	} langs[HOTSPOT_LANGS];
+	int lang_count;
 	int line; /* of its first key (the reader says no section line), for the journal */
 };
 
@@ -44,10 +55,15 @@ struct hotspot_set {
 	int dropped;
 };
 
-/* A hotspot's text: the one accessor every reader goes through (the
- * languages' text[LANG] are a change here alone). lang: NULL or a code;
- * "" where it has none. */
-const char *hotspot_text(const struct hotspot *h, const char *lang);
+/* A hotspot's text: the one accessor every reader goes through. Its
+ * text[lang], else its text[first] (the first of [caption] languages),
+ * else its plain text (lang_text_get's order for the caption); "" where
+ * it has none. lang, first: NULL or a code, matched without case. */
+const char *hotspot_text(const struct hotspot *h, const char *lang, const char *first);
+/* Set h's text in lang (a code the caller checked). 0; -EEXIST when
+ * lang is set already, -ENOSPC when HOTSPOT_LANGS are, -E2BIG when the
+ * text is longer than HOTSPOT_TEXT - 1 bytes. */
+int hotspot_set_text(struct hotspot *h, const char *lang, const char *text, int line);
 
 /* A value's words. 0, or -1 with err saying what was expected. */
 int hotspot_parse_vec3(const char *value, double out[3], char *err, size_t n);

@@ -295,3 +295,14 @@ double attract_path_at(const struct attract_path *p, double t, double *speed)
 	*speed = p->amplitude * p->omega * cos(p->phase + p->omega * t);
 	return p->centre + p->amplitude * sin(p->phase + p->omega * t);
 }
+
+int app_frame_hotspot_step(const struct app_frame *f, int shown, bool select)
+{
+	int n = f->stop_count;
+
+	if (f->hotspot_count > 0) /* a hotspot is what a visitor's press is for */
+		return FRAME_STOPS + hotspot_next(f->hotspot_count, shown - FRAME_STOPS);
+	if (!select || n < 1)
+		return -1;
+	return shown < 0 || shown >= n ? 0 : (shown + 1) % n;
+}

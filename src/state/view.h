@@ -72,6 +72,13 @@ struct app_frame {
 	double stop_seconds;
 };
 
+/* The view next-hotspot (select: the select action, the knob's press)
+ * glides to from the one shown (app_state.stop: a stop, FRAME_STOPS + i
+ * hotspot i's view, -1 none), as an index of f->stops: the next
+ * hotspot's view when the model has hotspots, else for select the next
+ * of its stops, as next-stop does; -1: none. */
+int app_frame_hotspot_step(const struct app_frame *f, int shown, bool select);
+
 void frame_config_defaults(struct frame_config *f);
 /* The model's turn before everything (up, then orientation). 0, or -1
  * with err naming what is wrong. */

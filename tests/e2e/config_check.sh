@@ -74,6 +74,19 @@ case_ model-settings 0 "read $dir/own/vase.ini (the settings of $dir/own/vase.gl
 w '[frame]\nyaw = 10\n\n[kiosk]\nattract_after = 5\n' >"$dir/own/vase.ini"
 case_ model-settings-bad-key 78 "vase.ini:5: \[kiosk\] attract_after cannot be set from a model's own file" \
 	"$dir/own.ini" $mc
+# A hotspot's text[LANG] in the model's own file, against the fonts: an
+# Egyptian hieroglyph (no test package's font has it) named with the
+# file, the line, the hotspot, the language and the package.
+w '[caption]\nlanguages = en de\n[hotspot.mark]\npoint = 0 1 0\ntext = Mark\ntext[de] = Zeichen \360\223\200\200\n' \
+	>"$dir/own/vase.ini"
+case_ hotspot-text-boxes 78 \
+	"vase.ini:6: \[hotspot.mark\] text\[de\]: no installed font has 1 of its characters.*U+13000 .* (fonts-noto-core)" \
+	"$dir/own.ini" $mc
+w '[caption]\nlanguages = en fr\n[hotspot.mark]\npoint = 0 1 0\ntext = Mark\ntext[de] = Zeichen\n' \
+	>"$dir/own/vase.ini"
+case_ hotspot-language-not-listed 0 \
+	"vase.ini:6: \[hotspot.mark\] text\[de\]: de is not one of \[caption\] languages (en fr): never shown" \
+	"$dir/own.ini" $mc
 
 # The animations the settings name, against the model's clips (two in
 # BoxAnimated, the first named "open" here): a clip it lacks is a bad

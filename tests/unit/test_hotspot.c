@@ -76,9 +76,9 @@ static void test_find_and_next(void **state)
 	assert_int_equal(hotspot_next(s.count, 0), 1);
 	assert_int_equal(hotspot_next(s.count, 2), 0);		  /* wraps */
 	assert_int_equal(hotspot_next(s.count, -FRAME_STOPS), 0); /* from a stop */
-	assert_string_equal(hotspot_text(&s.items[0], NULL), "");
+	assert_string_equal(hotspot_text(&s.items[0], NULL, NULL), "");
 	strcpy(s.items[0].text, "The painter's signature");
-	assert_string_equal(hotspot_text(&s.items[0], "de"), "The painter's signature");
+	assert_string_equal(hotspot_text(&s.items[0], "de", NULL), "The painter's signature");
 }
 
 /* dir turned as the view turns the model: pitch about x after yaw about
@@ -282,6 +282,63 @@ static void next_hotspot_steps(void **state)
 	app_free(a);
 }
 
+/* select (the knob's press) at second s; the view it chose. */
+static int select_at(struct app *a, int s)
+{
+	app_apply(a, &(struct app_msg){.kind = APP_INPUT,
+				       .input = {.time_ns = (uint64_t)s * 1000000000ull,
+						 .action = ACTION_SELECT,
+						 .pressed = true}});
+	return app_state(a)->stop;
+}
+
+/* The knob's press (select) steps through a model's hotspots, each its
+ * view and text, wrapping; a model without hotspots, its stops as
+ * before; neither, nothing. */
+static void select_steps_hotspots(void **state)
+{
+	struct app_config cfg = {.turn_speed = M_PI / 2, .rest = {1, 0, 0, 0}};
+	struct app *a;
+
+	(void)state;
+	cfg.frame.zoom0 = 1;
+	cfg.frame.stop_count = 2;
+	cfg.frame.stops[0] = (struct frame_stop){.yaw = 0.5, .pitch = 0, .zoom = 1};
+	cfg.frame.stops[1] = (struct frame_stop){.yaw = 1.5, .pitch = 0, .zoom = 1};
+	cfg.frame.hotspot_count = 2;
+	cfg.frame.stops[FRAME_STOPS] = (struct frame_stop){.yaw = 1.0, .pitch = 0.2, .zoom = 1};
+	strcpy(cfg.frame.stops[FRAME_STOPS].text, "The rim");
+	cfg.frame.stops[FRAME_STOPS + 1] = (struct frame_stop){.yaw = -1.0, .pitch = 0, .zoom = 1};
+	strcpy(cfg.frame.stops[FRAME_STOPS + 1].text, "The foot");
+	a = app_new(&cfg, 1, 0);
+	assert_non_null(a);
+	assert_int_equal(select_at(a, 1), FRAME_STOPS);
+	assert_string_equal(app_state(a)->stop_text, "The rim");
+	app_advance(a, 10ull * 1000000000ull);
+	assert_true(fabs(app_state(a)->yaw - 1.0) < 1e-6 && fabs(app_state(a)->pitch - 0.2) < 1e-6);
+	assert_int_equal(select_at(a, 11), FRAME_STOPS + 1);
+	assert_string_equal(app_state(a)->stop_text, "The foot");
+	assert_int_equal(select_at(a, 12), FRAME_STOPS); /* wraps */
+	app_free(a);
+
+	cfg.frame.hotspot_count = 0; /* no hotspots: the stops, as next-stop */
+	a = app_new(&cfg, 1, 0);
+	assert_non_null(a);
+	assert_int_equal(select_at(a, 1), 0);
+	assert_int_equal(select_at(a, 2), 1);
+	assert_int_equal(select_at(a, 3), 0);
+	app_free(a);
+
+	cfg.frame.stop_count = 0; /* neither: the view stays */
+	assert_int_equal(app_frame_hotspot_step(&cfg.frame, -1, true), -1);
+	cfg.frame.hotspot_count = 2; /* next-hotspot never steps a stop */
+	assert_int_equal(app_frame_hotspot_step(&cfg.frame, 1, false), FRAME_STOPS);
+	cfg.frame.hotspot_count = 0;
+	cfg.frame.stop_count = 2;
+	assert_int_equal(app_frame_hotspot_step(&cfg.frame, 0, false), -1);
+	assert_int_equal(app_frame_hotspot_step(&cfg.frame, FRAME_STOPS, true), 0);
+}
+
 /* A tap says where it was (a badge is hit-tested there). */
 static void tap_has_its_place(void **state)
 {
@@ -312,6 +369,7 @@ int main(void)
 	    cmocka_unit_test(stop_words),
 	    cmocka_unit_test(stop_faces_its_hotspot),
 	    cmocka_unit_test(next_hotspot_steps),
+	    cmocka_unit_test(select_steps_hotspots),
 	    cmocka_unit_test(tap_has_its_place),
 	};
 

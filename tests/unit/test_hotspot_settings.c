@@ -59,7 +59,7 @@ static void good_hotspots(void **state)
 	assert_string_equal(h->name, "signature");
 	assert_true(h->has_point && h->point[1] == 0.5 && h->point[2] == -0.2);
 	assert_true(h->has_normal && h->normal[2] == -1);
-	assert_string_equal(hotspot_text(h, NULL), "The painter's signature ; 1780");
+	assert_string_equal(hotspot_text(h, NULL, NULL), "The painter's signature ; 1780");
 	assert_int_equal(h->look, HOTSPOT_BADGE);
 	assert_true(h->color[0] == 1 && fabsf(h->color[3] - 128 / 255.0f) < 1e-6f);
 	assert_int_equal(h->line, 5); /* its first key */
@@ -122,6 +122,46 @@ static void bad_hotspots(void **state)
 		"cup.ini:7: unknown key 'size' in [hotspot.bad]; expected one of: point, node");
 	one_bad("point = 0 0 1\npoint = 0 0 2",
 		"cup.ini:7: [hotspot.bad] point is set again (first on line 6)");
+	/* text[LANG]: a code as [caption] languages takes, once, text alone. */
+	one_bad("point = 0 0 1\ntext[d e] = Zeichen",
+		"cup.ini:7: [hotspot.bad] text[d e] = 'Zeichen': 'd e' is not a language code");
+	one_bad("point = 0 0 1\ntext[1x] = Zeichen",
+		"cup.ini:7: [hotspot.bad] text[1x] = 'Zeichen': '1x' is not a language code; "
+		"expected one such as de");
+	one_bad("point = 0 0 1\ntext[de] = A\ntext[DE] = B",
+		"cup.ini:8: [hotspot.bad] text[DE] = 'B': text[DE] is set again");
+	one_bad("point = 0 0 1\nlook[de] = badge",
+		"cup.ini:7: [hotspot.bad] look[de] = 'badge': only text takes a [LANG]");
+}
+
+/* text[LANG] = beside text = : each language's own, a missing one the
+ * first language's, else the plain text (lang_text_get's order). */
+static void texts_per_language(void **state)
+{
+	struct options o;
+	char m[256];
+	const struct hotspot *h;
+
+	(void)state;
+	option_defaults(&o);
+	write_file("urn.ini", "[caption]\nlanguages = en de fr\n[hotspot.mark]\npoint = 0 1 0\n"
+			      "text = The mark\ntext[de] = Das Zeichen\n[hotspot.foot]\n"
+			      "point = 0 -1 0\ntext[en] = The foot\ntext[fr] = Le pied\n");
+	model(m, sizeof(m), "urn.glb");
+	assert_int_equal(model_settings_read(&o.content, m), OPTIONS_OK);
+	assert_int_equal(o.content.hotspots.count, 2);
+	assert_int_equal(o.content.hotspots.dropped, 0);
+	h = &o.content.hotspots.items[0];
+	assert_string_equal(hotspot_text(h, "de", "en"), "Das Zeichen");
+	assert_string_equal(hotspot_text(h, "DE", "en"), "Das Zeichen");
+	assert_string_equal(hotspot_text(h, "fr", "en"), "The mark"); /* the first's */
+	assert_string_equal(hotspot_text(h, "en", "en"), "The mark");
+	assert_int_equal(h->langs[0].line, 6);
+	h = &o.content.hotspots.items[1];
+	assert_string_equal(hotspot_text(h, "fr", "en"), "Le pied");
+	assert_string_equal(hotspot_text(h, "de", "en"), "The foot"); /* text[en], no plain */
+	assert_string_equal(hotspot_text(h, NULL, NULL), "");
+	options_release(&o);
 }
 
 static void bad_name_and_too_many(void **state)
@@ -196,9 +236,8 @@ static int teardown(void **state)
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
-	    cmocka_unit_test(good_hotspots),
-	    cmocka_unit_test(bad_hotspots),
-	    cmocka_unit_test(bad_name_and_too_many),
+	    cmocka_unit_test(good_hotspots),	  cmocka_unit_test(bad_hotspots),
+	    cmocka_unit_test(texts_per_language), cmocka_unit_test(bad_name_and_too_many),
 	    cmocka_unit_test(model_over_kiosk),
 	};
 

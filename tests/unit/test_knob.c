@@ -244,7 +244,8 @@ static void a_detent_turns_the_app_by_the_step(void **unused)
 	app_free(a);
 }
 
-/* select steps the stops (next-stop) until hotspots give it its own. */
+/* select steps the stops (next-stop) on a model without hotspots (with
+ * them, the hotspots: test_hotspot's select_steps_hotspots). */
 static void select_steps_the_stops(void **unused)
 {
 	struct app *a = new_app(true);
