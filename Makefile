@@ -94,7 +94,7 @@ SRC_CAMERA  := camera/camera_feed camera/camera_link camera/camera_math camera/c
 	       camera/camera_texture
 SRC_RENDER  := render/background render/bake render/draw_list render/framing render/gl render/poster render/render_scale render/render_caption \
 	       render/caption render/hotspot_gl render/render_hotspot render/render render/render_draw render/render_live render/render_skin render/render_morph render/render_variant render/shader render/shading
-SRC_SCENE   := scene/mesh/lod scene/mesh/lod_seams scene/mesh/lod_split scene/mesh/material scene/mesh/mesh scene/mesh/mesh_cache scene/mesh/mesh_cache_anim scene/mesh/mesh_cache_nest scene/mesh/mesh_cache_fields scene/mesh/mesh_cache_key scene/mesh/mesh_gen scene/mesh/mesh_pack scene/mesh/subdivide scene/mesh/tangent \
+SRC_SCENE   := scene/mesh/lod scene/mesh/lod_seams scene/mesh/lod_split scene/mesh/material scene/mesh/mesh scene/mesh/mesh_cache scene/mesh/mesh_cache_anim scene/mesh/mesh_cache_nest scene/mesh/mesh_cache_fields scene/mesh/mesh_cache_key scene/mesh/mesh_gen scene/mesh/mesh_node scene/mesh/mesh_pack scene/mesh/subdivide scene/mesh/tangent \
 	       scene/mesh/texture scene/text/caption scene/text/caption_text scene/text/model_name scene/text/caption_font scene/text/caption_wrap
 SRC_SCENE   += scene/gltf/gltf_json_depth scene/gltf/gltf_features
 SRC_SCENE   += scene/mesh/lod_coarse

@@ -416,11 +416,12 @@ static size_t collect(const struct mesh_nest *t, const struct mesh_nest **all, s
 static void every_field_is_in_the_cache_table(void **state)
 {
 	const struct mesh_nest *all[16] = {mesh_cache_table(MESH_CACHE_MATERIAL),
-					   mesh_cache_table(MESH_CACHE_RANGE)};
-	size_t n = collect(mesh_cache_anim_table(), all, 2), caught = 0, big = 0;
+					   mesh_cache_table(MESH_CACHE_RANGE),
+					   mesh_cache_table(MESH_CACHE_NODE)};
+	size_t n = collect(mesh_cache_anim_table(), all, 3), caught = 0, big = 0;
 
 	(void)state;
-	assert_int_equal(n, 10); /* material, range and the rig's eight */
+	assert_int_equal(n, 11); /* material, range, node and the rig's eight */
 	for (size_t t = 0; t < n; t++) {
 		const char *hole = table_hole(all[t]->members, all[t]->member_count, all[t]->size);
 		struct mesh_nest_member less[64];
@@ -457,6 +458,9 @@ static void every_field_is_in_the_cache_table(void **state)
 	assert_int_equal(mesh_nest_min_bytes(mesh_cache_table(MESH_CACHE_RANGE)), 6 * 4);
 	assert_int_equal(mesh_nest_min_bytes(mesh_cache_table(MESH_CACHE_MATERIAL)), 44 * 4);
 	assert_int_equal(mesh_nest_min_bytes(mesh_cache_table(MESH_CACHE_COLORS)), 5 * 4 + 4 * 8);
+	/* A named node (a hotspot's node = NAME): its name's 64 bytes, its
+	 * index and its origin's 3 doubles. */
+	assert_int_equal(mesh_nest_min_bytes(mesh_cache_table(MESH_CACHE_NODE)), 64 + 4 + 3 * 8);
 }
 
 static void the_directory_is_named_as_systemd_and_xdg_say(void **state)

@@ -513,6 +513,33 @@ void finish_materials(const Builder &b, tinygltf::Model &m, const struct gltf_op
 			    images, out);
 }
 
+// The named nodes a hotspot may name (mesh.h, struct mesh_node): their
+// world origins at the pose baked (a still's --time pose is in pose).
+void keep_nodes(const tinygltf::Model &m, const Pose &pose, const std::string &shown,
+		struct mesh *out)
+{
+	size_t left_out = 0;
+	out->node_count = 0;
+	for (size_t i = 0; i < m.nodes.size() && i < pose.worlds.size(); i++) {
+		const std::string &name = m.nodes[i].name;
+		if (name.empty())
+			continue;
+		if (out->node_count == MESH_NODES || !mesh_node_name_ok(name.c_str())) {
+			left_out++;
+			continue;
+		}
+		struct mesh_node *n = &out->nodes[out->node_count++];
+		std::snprintf(n->name, sizeof(n->name), "%s", name.c_str());
+		n->index = (uint32_t)i;
+		for (int k = 0; k < 3; k++)
+			n->origin[k] = pose.worlds[i].m[12 + k];
+	}
+	if (left_out)
+		log_info("%s: %zu named nodes left out for hotspots (past the first %d, or not "
+			 "printable UTF-8 shorter than %d bytes)",
+			 shown.c_str(), left_out, MESH_NODES, MESH_NODE_NAME);
+}
+
 } // namespace
 
 int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_options *o,
@@ -564,6 +591,8 @@ int gltf_build_mesh(const char *name, tinygltf::Model &m, const struct gltf_opti
 		log_err("%s: %s", shown.c_str(), gltf_ext::escape(b.error).c_str());
 	if (ret == 0)
 		finish_materials(b, m, o, images, out);
+	if (ret == 0)
+		keep_nodes(m, pose, shown, out);
 	if (ret == 0 && o->play)
 		*o->play = play.release();
 	gltf_keep_colors(out,

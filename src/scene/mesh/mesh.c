@@ -362,6 +362,8 @@ int mesh_copy_factors(struct mesh *to, const struct mesh *from)
 	to->has_colors = from->has_colors;
 	memcpy(to->fit, from->fit, sizeof(to->fit));
 	memcpy(to->vertex_color, from->vertex_color, sizeof(to->vertex_color));
+	to->node_count = from->node_count;
+	memcpy(to->nodes, from->nodes, sizeof(to->nodes));
 	to->materials = n ? malloc(n * sizeof(*to->materials)) : NULL;
 	to->material_count = 0;
 	if (n && !to->materials)

@@ -78,6 +78,21 @@ struct mesh_range {
 	float center[3];
 };
 
+/* A named node of the file, for a hotspot that names it ([hotspot.NAME]
+ * node = NAME): the first MESH_NODES named nodes, their names printable
+ * UTF-8 of at most MESH_NODE_NAME - 1 bytes (others are left out, said
+ * by the loader), so that a hotspot follows its node without the file. */
+#define MESH_NODES     32
+#define MESH_NODE_NAME 64
+struct mesh_node {
+	char name[MESH_NODE_NAME];
+	/* Into the file's nodes: mesh_anim's and anim_play's worlds. */
+	uint32_t index;
+	/* Its world origin (its world matrix's translation) in the file's
+	 * coordinates at the pose the mesh was baked at (rest, or --time). */
+	double origin[3];
+};
+
 struct mesh {
 	uint32_t vertex_count;
 	uint32_t index_count; /* three per triangle */
@@ -142,6 +157,9 @@ struct mesh {
 	 * vertices appended after it as not flat) */
 	uint8_t *flat;
 	uint32_t flat_count;
+	/* The named nodes (inline: a copy of the struct copies them). */
+	uint32_t node_count;
+	struct mesh_node nodes[MESH_NODES];
 };
 
 int mesh_alloc(struct mesh *m, uint32_t vertex_count, uint32_t index_count, bool with_uvs);
@@ -161,7 +179,8 @@ void mesh_range_centers(struct mesh *m);
 void mesh_material_release(struct mesh_material *mat);
 /* Whether the material holds a decoded image (any of its maps). */
 bool mesh_material_decoded(const struct mesh_material *mat);
-/* to's materials and colour facts (has_colors, vertex_color) from
+/* to's materials, colour facts (has_colors, vertex_color), fit and named
+ * nodes from
  * from's, their images left out (to's own materials array is not freed
  * first). Returns 0 or -ENOMEM. */
 int mesh_copy_factors(struct mesh *to, const struct mesh *from);
@@ -182,6 +201,11 @@ unsigned mesh_images_decoded(const struct mesh *m);
  * has colors_by_material: rgb its base colour factor, a 1 (as struct mesh
  * colors without COLOR_0). */
 void mesh_material_vertex_color(const struct mesh_material *mat, float rgba[4]);
+/* Whether s is a name a struct mesh_node keeps: non-empty, valid UTF-8
+ * without control characters, shorter than MESH_NODE_NAME bytes. */
+bool mesh_node_name_ok(const char *s);
+/* The node called name, or NULL. */
+const struct mesh_node *mesh_node_find(const struct mesh *m, const char *name);
 /* The index of the variant named `name` (exact), or -1. */
 int mesh_variant_find(const struct mesh *m, const char *name);
 /* The material range r draws with in variant v (-1: the file's default). */

@@ -18,7 +18,7 @@
 
 /* Changed whenever the layout or the preparation changes: an entry of
  * another version is stale. */
-#define CACHE_VERSION 11
+#define CACHE_VERSION 12
 #define CACHE_SUFFIX  ".mkmesh"
 
 static const char cache_magic[8] = {'M', 'K', 'M', 'E', 'S', 'H', '\r', '\n'};
@@ -35,6 +35,7 @@ struct cache_header {
 	float position_scale;
 	uint32_t range_count, material_count;
 	uint32_t width, height;
+	uint32_t node_count, unused; /* the named nodes' records (mesh.h's MESH_NODES at most) */
 	uint64_t payload_size, payload_hash;
 	/* The live playback's section (mesh_cache_anim.c) at the payload's
 	 * end, in bytes; 0: a still. */
@@ -68,7 +69,8 @@ static uint64_t record_bytes(const struct cache_header *h)
 	return (uint64_t)mesh_nest_min_bytes(mesh_cache_table(MESH_CACHE_COLORS)) +
 	       (uint64_t)h->material_count *
 		   mesh_nest_min_bytes(mesh_cache_table(MESH_CACHE_MATERIAL)) +
-	       (uint64_t)h->range_count * mesh_nest_min_bytes(mesh_cache_table(MESH_CACHE_RANGE));
+	       (uint64_t)h->range_count * mesh_nest_min_bytes(mesh_cache_table(MESH_CACHE_RANGE)) +
+	       (uint64_t)h->node_count * mesh_nest_min_bytes(mesh_cache_table(MESH_CACHE_NODE));
 }
 
 /* The payload's layout: each present array, then the indices, then the
@@ -101,7 +103,8 @@ static bool header_sane(const struct cache_header *h, size_t size)
 	       !(h->arrays >> MESH_ARRAYS) && h->index_count % 3 == 0 && h->index_count &&
 	       h->vertex_count && h->position_scale > 0.0f && h->position_scale <= 1e30f &&
 	       h->range_count <= h->index_count / 3 && h->material_count <= h->index_count / 3 &&
-	       h->anim_size <= size && (h->range_count == 0) == (h->material_count == 0);
+	       h->anim_size <= size && (h->range_count == 0) == (h->material_count == 0) &&
+	       h->node_count <= MESH_NODES;
 }
 
 /* One record of table t into obj; what is wrong said at its place,
@@ -134,6 +137,9 @@ static int read_records(const struct cache_header *h, const void *data, size_t s
 		read_record(&g, MESH_CACHE_RANGE, &materials->ranges[r], "ranges", r);
 	if (g.ok && h->range_count && ranges.at != h->index_count)
 		mesh_nest_fail(&g, "ranges", "they leave indices uncovered");
+	for (uint32_t k = 0; g.ok && k < h->node_count; k++)
+		read_record(&g, MESH_CACHE_NODE, &materials->nodes[k], "nodes", k);
+	materials->node_count = g.ok ? h->node_count : 0;
 	if (g.ok)
 		return 0;
 	log_warn("a cache entry's records are refused at %s", g.why);
@@ -339,6 +345,8 @@ static bool write_records(const struct cache_header *h, const struct mesh_packed
 				&materials->materials[k]);
 	for (uint32_t r = 0; r < h->range_count; r++)
 		mesh_nest_write(&b, mesh_cache_table(MESH_CACHE_RANGE), &m->ranges[r]);
+	for (uint32_t k = 0; k < h->node_count; k++)
+		mesh_nest_write(&b, mesh_cache_table(MESH_CACHE_NODE), &materials->nodes[k]);
 	ok = !b.failed && b.size == record_bytes(h);
 	if (ok)
 		memcpy(to, b.data, b.size);
@@ -395,6 +403,7 @@ static void fill_header(struct cache_header *h, const struct mesh_cache_key *key
 	for (int a = 0; a < MESH_ARRAYS; a++)
 		h->arrays |= m->arrays[a] ? 1u << a : 0;
 	h->position_scale = m->position_scale;
+	h->node_count = materials->node_count < MESH_NODES ? materials->node_count : MESH_NODES;
 	/* Ranges and their materials come together, or neither. */
 	if (m->range_count && materials->material_count) {
 		h->range_count = m->range_count;

@@ -141,9 +141,9 @@ void mesh_cache_writer_join(struct mesh_cache_writer *w);
 /* The member tables (scene/mesh/mesh_cache_nest.h) of the records an
  * entry keeps (src/scene/mesh/mesh_cache_fields.c): each field of struct
  * mesh_material and struct mesh_range, and struct mesh's colour facts
- * (has_colors, vertex_color), stored as 32-bit words, checked when read,
- * or NONE: named, not stored. */
-enum mesh_cache_table { MESH_CACHE_MATERIAL, MESH_CACHE_RANGE, MESH_CACHE_COLORS };
+ * (has_colors, vertex_color), and each named node (struct mesh_node),
+ * stored as 32-bit words, checked when read, or NONE: named, not stored. */
+enum mesh_cache_table { MESH_CACHE_MATERIAL, MESH_CACHE_RANGE, MESH_CACHE_COLORS, MESH_CACHE_NODE };
 struct mesh_nest;
 const struct mesh_nest *mesh_cache_table(enum mesh_cache_table t);
 /* What the range table's check reads against (the reader's ctx): the

@@ -92,8 +92,27 @@ static const struct mesh_nest_member color_members[] = {
 };
 static const struct mesh_nest color_table = MESH_NEST_TABLE(mesh, color_members, NULL);
 
+/* A named node: its name as the loader kept it (mesh_node_name_ok: it
+ * reaches the journal), its index and origin. */
+static const char *node_check(void *o, void *ctx)
+{
+	const struct mesh_node *n = o;
+
+	(void)ctx;
+	return mesh_node_name_ok(n->name) ? NULL : "its name is not printable UTF-8";
+}
+
+static const struct mesh_nest_member node_members[] = {
+    MESH_NEST_MEMBER(mesh_node, name, MESH_NEST_CHARS, .n = MESH_NODE_NAME),
+    MESH_NEST_MEMBER(mesh_node, index, MESH_NEST_U32),
+    MESH_NEST_MEMBER(mesh_node, origin, MESH_NEST_DOUBLES, .n = 3),
+};
+static const struct mesh_nest node_table = MESH_NEST_TABLE(mesh_node, node_members, node_check);
+
 const struct mesh_nest *mesh_cache_table(enum mesh_cache_table t)
 {
+	if (t == MESH_CACHE_NODE)
+		return &node_table;
 	if (t == MESH_CACHE_RANGE)
 		return &range_table;
 	if (t == MESH_CACHE_COLORS)

@@ -128,6 +128,9 @@ static void write_member(struct mesh_nest_out *b, const struct mesh_nest_member 
 	case MESH_NEST_DOUBLES:
 		put_bytes(b, at, (size_t)m->n * 8);
 		return;
+	case MESH_NEST_CHARS:
+		put_bytes(b, at, m->n);
+		return;
 	case MESH_NEST_U32:
 	case MESH_NEST_INT:
 	case MESH_NEST_ENUM:
@@ -157,6 +160,8 @@ size_t mesh_nest_min_bytes(const struct mesh_nest *t)
 
 		if (m->kind == MESH_NEST_FLOATS || m->kind == MESH_NEST_DOUBLES)
 			n += (size_t)m->n * (m->kind == MESH_NEST_FLOATS ? 4 : 8);
+		else if (m->kind == MESH_NEST_CHARS)
+			n += ((size_t)m->n + 3) & ~(size_t)3;
 		else if (m->kind == MESH_NEST_STRUCT)
 			n += mesh_nest_min_bytes(m->sub);
 		else if (m->kind >= MESH_NEST_F32S)
@@ -315,6 +320,10 @@ static bool read_member(struct mesh_nest_in *g, const struct mesh_nest_member *m
 		return true;
 	case MESH_NEST_STRING:
 		return read_string(g, m, at);
+	case MESH_NEST_CHARS:
+		if (get_bytes(g, at, m->n) && !memchr(at, 0, m->n))
+			return mesh_nest_fail(g, m->name, "no NUL within its bytes");
+		return g->ok;
 	case MESH_NEST_STRUCT:
 		return read_struct(g, m, at);
 	default:

@@ -29,6 +29,7 @@ enum mesh_nest_kind {
 	MESH_NEST_INTS,	   /* int *: count() */
 	MESH_NEST_STRUCTS, /* count() structs of sub, their count the member at count_at */
 	MESH_NEST_STRUCT,  /* a pointer to one struct of sub */
+	MESH_NEST_CHARS,   /* char[n] in the struct: a string cut to fit, NUL within n */
 };
 
 struct mesh_nest;
