@@ -256,6 +256,7 @@ static void pose_now(struct kiosk_anim *a, struct content *c, struct renderer *r
 		a->fade_ns = 0;
 	}
 	c->play_ops->pose(c, r, shown);
+	content_hotspots_follow(c, r);
 }
 
 /* Until the next frame: the cap's period, or longer while every clip

@@ -191,7 +191,9 @@ int hotspot_settings_finish(struct hotspot_read *rd, const char *path, struct ho
 			dropped++;
 			continue;
 		}
-		set->items[at < 0 ? set->count++ : at] = *h;
+		at = at < 0 ? set->count++ : at;
+		set->items[at] = *h;
+		snprintf(set->items[at].file, sizeof(set->items[at].file), "%s", path);
 	}
 	return dropped;
 }

@@ -100,6 +100,9 @@ struct content {
 	/* Its hotspots as the renderer draws them (content_hotspot.c). */
 	struct render_hotspot hotspots[CONTENT_HOTSPOTS];
 	int hotspot_source[CONTENT_HOTSPOTS]; /* each one's index in the settings' set */
+	/* The file's node each follows (node = NAME), -1: a point; a model
+	 * that plays moves it each frame (content_hotspots_follow). */
+	int hotspot_node[CONTENT_HOTSPOTS];
 	int hotspot_count;
 	/* The drawn hotspot each stop's picture labels (-1: none): a stop's
 	 * hotspot=NAME, and next-hotspot's views after FRAME_STOPS. */
@@ -268,6 +271,10 @@ void content_fit_captions(struct content *s, const struct content_config *c, int
 /* s's hotspots from c's [hotspot.NAME] sections, in the mesh's unit
  * sphere (content_hotspot.c); on the worker, after the mesh. */
 void content_load_hotspots(struct content *s, const struct content_config *c);
+/* A playing model's node hotspots moved to the pose just drawn (its
+ * play's node worlds, after play_ops->pose) and handed to r: a few
+ * matrix reads, no allocation, on the loop thread. */
+void content_hotspots_follow(struct content *s, struct renderer *r);
 /* Each hotspot's text as the caption would show it, drawn here on the
  * worker in each language drawn (stop_caption[CONTENT_HOTSPOT_CAPTION + i]
  * and each lang_spare's): a language switch swaps them with the rest. */

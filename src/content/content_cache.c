@@ -148,6 +148,8 @@ void content_cache_pack(struct content *s, int width, int height)
 	shell.materials = s->mesh.materials, shell.material_count = s->mesh.material_count;
 	shell.has_colors = s->mesh.has_colors;
 	memcpy(shell.fit, s->mesh.fit, sizeof(shell.fit));
+	shell.node_count = s->mesh.node_count;
+	memcpy(shell.nodes, s->mesh.nodes, sizeof(shell.nodes));
 	memcpy(shell.vertex_color, s->mesh.vertex_color, sizeof(shell.vertex_color));
 	s->mesh.materials = NULL, s->mesh.material_count = 0;
 	mesh_release(&s->mesh);

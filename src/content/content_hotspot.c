@@ -45,9 +45,31 @@ static void label_stops(struct content *s, const struct content_config *o)
 		s->stop_hotspot[CONTENT_HOTSPOT_CAPTION + i] = content_hotspot_drawn(s, i);
 }
 
+/* Where hotspot h is in the file's coordinates: its point, or its node's
+ * origin at the pose the mesh was baked at (*node: the node's index, else
+ * -1); false (said: the file, the line, the name) when the model has no
+ * node of that name, and the hotspot is not drawn. */
+static bool where_of(const struct content *s, const struct hotspot *h, double at[3], int *node)
+{
+	const struct mesh_node *n = h->has_point ? NULL : mesh_node_find(&s->mesh, h->node);
+
+	*node = n ? (int)n->index : -1;
+	if (!h->has_point && !n) {
+		log_err("%s:%d: [hotspot.%s] node = %s: the model %s has no node of that name "
+			"(expected the name of one of its %u named nodes); this hotspot is not "
+			"shown",
+			h->file, h->line, h->name, h->node, s->model_path ? s->model_path : "",
+			s->mesh.node_count);
+		return false;
+	}
+	for (int k = 0; k < 3; k++)
+		at[k] = n ? n->origin[k] : h->point[k];
+	return true;
+}
+
 void content_load_hotspots(struct content *s, const struct content_config *o)
 {
-	double centre[3], scale;
+	double centre[3], scale, at[3];
 	int n = 0;
 
 	fit_of(&s->mesh, centre, &scale);
@@ -55,16 +77,11 @@ void content_load_hotspots(struct content *s, const struct content_config *o)
 		const struct hotspot *h = &o->hotspots.items[i];
 		struct render_hotspot *out = &s->hotspots[n];
 
-		if (!h->has_point) {
-			log_warn(
-			    "[hotspot.%s] node = %s: a node's hotspot is not drawn yet; give it "
-			    "point = X Y Z",
-			    h->name, h->node);
+		if (!where_of(s, h, at, &s->hotspot_node[n]))
 			continue;
-		}
 		memset(out, 0, sizeof(*out));
 		for (int k = 0; k < 3; k++) {
-			out->point[k] = (float)((h->point[k] - centre[k]) * scale);
+			out->point[k] = (float)((at[k] - centre[k]) * scale);
 			out->normal[k] = (float)h->normal[k];
 		}
 		out->has_normal = h->has_normal;
@@ -75,6 +92,26 @@ void content_load_hotspots(struct content *s, const struct content_config *o)
 	}
 	s->hotspot_count = n;
 	label_stops(s, o);
+}
+
+void content_hotspots_follow(struct content *s, struct renderer *r)
+{
+	const struct anim_play *p = s->play;
+	bool moved = false;
+
+	for (int k = 0; p && p->worlds && k < s->hotspot_count; k++) {
+		int node = s->hotspot_node[k];
+
+		if (node < 0 || (size_t)node >= p->anim->node_count)
+			continue;
+		/* The play's worlds are the file's; its fit is the drawn mesh's. */
+		for (int c = 0; c < 3; c++)
+			s->hotspots[k].point[c] =
+			    (float)((p->worlds[node][12 + c] - p->center[c]) * p->scale);
+		moved = true;
+	}
+	if (moved)
+		renderer_set_hotspots(r, s->hotspots, s->hotspot_count, s->stop_hotspot);
 }
 
 /* The direction that faces the visitor at hotspot h: its normal,
@@ -134,8 +171,9 @@ void content_app_frame_at(const struct content *s, const struct content_config *
 		if (at >= 0)
 			content_hotspot_facing(s, at, *rest, &f->stops[i].yaw, &f->stops[i].pitch);
 	}
-	/* next-hotspot's views: each faces its hotspot at the start zoom (a
-	 * node's, not drawn, the start view), its text the hotspot's. */
+	/* next-hotspot's views: each faces its hotspot at the start zoom (one
+	 * not drawn, a node the model lacks: the start view), its text the
+	 * hotspot's. */
 	f->hotspot_count = c->hotspots.count;
 	for (int i = 0; i < c->hotspots.count && i < HOTSPOTS; i++) {
 		struct frame_stop *v = &f->stops[FRAME_STOPS + i];

@@ -17,6 +17,7 @@
 #define HOTSPOT_NAME 32
 #define HOTSPOT_NODE 64
 #define HOTSPOT_TEXT 160
+#define HOTSPOT_FILE 160
 /* Languages a hotspot's text[LANG] may be given in, and a code's bytes:
  * config/lang_text.h's LANG_MAX and LANG_CODE_MAX (checked there). */
 #define HOTSPOT_LANGS	  6
@@ -44,6 +45,9 @@ struct hotspot {
 	} langs[HOTSPOT_LANGS];
 	int lang_count;
 	int line; /* of its first key (the reader says no section line), for the journal */
+	/* The file it was read from (cut to fit), for an error found only
+	 * once the model is loaded (a node the model lacks). */
+	char file[HOTSPOT_FILE];
 };
 
 /* Fixed arrays: a settings struct copied by assignment copies it whole. */
