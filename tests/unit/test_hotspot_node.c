@@ -222,6 +222,44 @@ static void follows_its_node(void **state)
 	rig_close(&g);
 }
 
+/* The live kiosk: the model plays, and each frame's pose (kiosk_anim.c:
+ * play_ops->pose, then content_hotspots_follow) moves the dot with the
+ * tip, to where the --time still of the same moment has it. */
+static void follows_its_node_while_playing(void **state)
+{
+	struct rig g;
+	struct content s;
+	struct anim_pose *pose;
+	double p[3];
+
+	(void)state;
+	rig_open(&g);
+	add_hotspot(&g.o, "tip", "tip", NULL);
+	g.o.content.anim_live = true;
+	g.o.content.anim_time = -1;
+	load(&g, &s);
+	assert_non_null(s.play);
+	assert_non_null(s.play_ops);
+	assert_int_equal(s.hotspot_count, 1);
+	pose = anim_pose_new(s.play->anim);
+	assert_non_null(pose);
+	for (int i = 0; i <= 4; i++) {
+		double t = i / 4.0;
+		char what[32];
+
+		anim_pose_rest(s.play->anim, pose);
+		anim_pose_apply(s.play->anim, &s.play->anim->clips[0], t, pose);
+		s.play_ops->pose(&s, g.r, pose);
+		content_hotspots_follow(&s, g.r);
+		tip_at(t, p);
+		snprintf(what, sizeof(what), "playing, %.2f s", t);
+		drawn_at(&g, &s, p, what);
+	}
+	anim_pose_free(pose);
+	content_release(&s);
+	rig_close(&g);
+}
+
 static void unknown_node_is_said(void **state)
 {
 	struct rig g;
@@ -253,6 +291,7 @@ int main(void)
 {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(follows_its_node),
+	    cmocka_unit_test(follows_its_node_while_playing),
 	    cmocka_unit_test(unknown_node_is_said),
 	};
 
