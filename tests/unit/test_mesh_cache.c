@@ -219,6 +219,55 @@ static void a_resealed_entry_is_still_checked(void **state)
 	free(data);
 }
 
+/* A model's named nodes (a hotspot's node = NAME) read back as written;
+ * a name that is not printable UTF-8, or fills its bytes without a NUL,
+ * is refused with its place, checksums resealed over it. */
+static void named_nodes_read_back_and_bad_names_are_refused(void **state)
+{
+	struct fixture *f = *state;
+	struct mesh_cache_entry *e;
+	size_t size, node_bytes = mesh_nest_min_bytes(mesh_cache_table(MESH_CACHE_NODE));
+	unsigned char *data;
+	char log[512];
+
+	f->mesh.node_count = 2;
+	snprintf(f->mesh.nodes[0].name, MESH_NODE_NAME, "arm");
+	snprintf(f->mesh.nodes[1].name, MESH_NODE_NAME,
+		 "Ventil \xc3\xb6"
+		 "ffnet");
+	f->mesh.nodes[1].index = 7;
+	f->mesh.nodes[1].origin[0] = 1.5, f->mesh.nodes[1].origin[2] = -2;
+	assert_int_equal(
+	    mesh_cache_write(f->dir, &f->key, &f->packed, &f->mesh, MESH_CACHE_MAX_BYTES), 0);
+	assert_int_equal(mesh_cache_open(f->dir, &f->key, &e), 0);
+	assert_int_equal(mesh_cache_entry_materials(e)->node_count, 2);
+	assert_memory_equal(mesh_cache_entry_materials(e)->nodes, f->mesh.nodes,
+			    2 * sizeof(struct mesh_node));
+	mesh_cache_entry_free(e);
+	data = read_entry(f, &size);
+	/* The nodes' records end the records, which end the payload (8-aligned). */
+	size_t records = mesh_nest_min_bytes(mesh_cache_table(MESH_CACHE_COLORS)) +
+			 2 * mesh_nest_min_bytes(mesh_cache_table(MESH_CACHE_MATERIAL)) +
+			 2 * mesh_nest_min_bytes(mesh_cache_table(MESH_CACHE_RANGE)) +
+			 2 * node_bytes;
+	size_t node1 = size - ((records + 7) & ~(size_t)7) + records - node_bytes;
+
+	data[node1 + 3] = 0x07; /* a control character inside */
+	assert_int_equal(parse_logged(data, size, log, sizeof(log)), -EBADMSG);
+	assert_non_null(strstr(log, "at nodes[1]: its name is not printable UTF-8"));
+	data[node1 + 3] = 0xc3; /* half a character */
+	data[node1 + 4] = 'x';
+	assert_int_equal(parse_logged(data, size, log, sizeof(log)), -EBADMSG);
+	assert_non_null(strstr(log, "at nodes[1]: its name is not printable UTF-8"));
+	memset(data + node1, 'a', MESH_NODE_NAME);
+	assert_int_equal(parse_logged(data, size, log, sizeof(log)), -EBADMSG);
+	assert_non_null(strstr(log, "nodes[1].name: no NUL within its bytes"));
+	data[node1 + MESH_NODE_NAME - 1] = 0;
+	assert_int_equal(parse_logged(data, size, log, sizeof(log)), 0);
+	free(data);
+	f->mesh.node_count = 0;
+}
+
 static void another_key_or_version_is_a_miss(void **state)
 {
 	struct fixture *f = *state;
@@ -511,6 +560,8 @@ int main(void)
 	    cmocka_unit_test_setup_teardown(the_key_follows_the_bytes, setup, teardown),
 	    cmocka_unit_test(the_directory_is_named_as_systemd_and_xdg_say),
 	    cmocka_unit_test(every_field_is_in_the_cache_table),
+	    cmocka_unit_test_setup_teardown(named_nodes_read_back_and_bad_names_are_refused, setup,
+					    teardown),
 	    cmocka_unit_test(a_nearly_full_disk_is_full),
 	};
 
