@@ -169,7 +169,7 @@ static void load(struct rig *g, struct content *s)
 static void drawn_at(struct rig *g, const struct content *s, const double p[3], const char *what)
 {
 	struct view v = content_view(&g->o.content);
-	double want[2], got[2];
+	double want[2], got[2] = {0, 0};
 	struct image f;
 
 	v.zoom = (float)s->zoom;
