@@ -28,13 +28,15 @@ CROSS_COMMA  := ,
 CROSS_SUDO   := $(if $(filter 0,$(shell id -u)),,sudo)
 
 # What the program, its unit tests and the offscreen renders link or open:
-# DEBIAN_PACKAGES' libraries, less the virtual board, clang and the tools.
+# DEBIAN_PACKAGES' libraries, less the virtual board, clang and the tools;
+# Noto CJK as make deps-test brings it: a caption's fallback font (the
+# Japanese golden, test_caption's fallback cases) is found in the sysroot.
 CROSS_PACKAGES := libc6 libstdc++6 libgcc-s1 libubsan1 libegl-dev libgles-dev libosmesa6-dev \
 	libosmesa6 libgbm-dev libdrm-dev libtinygltf-dev nlohmann-json3-dev libpng-dev \
 	libturbojpeg0-dev libwebp-dev libcmocka-dev libudev-dev libsystemd-dev libgpiod-dev \
 	libevdev-dev libcamera-dev libmeshoptimizer-dev libdraco-dev zlib1g-dev \
 	libfreetype-dev libharfbuzz-dev libfribidi-dev fonts-dejavu-core \
-	libfontconfig-dev libunibreak-dev libmosquitto-dev
+	libfontconfig-dev libunibreak-dev libmosquitto-dev fonts-noto-cjk
 CROSS_HOST_PACKAGES := gcc-$(CROSS_TRIPLET) g++-$(CROSS_TRIPLET) qemu-user-static mmdebstrap \
 	pkg-config make
 
