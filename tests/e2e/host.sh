@@ -42,18 +42,17 @@ ref knot-800x600 800x600
 cp /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf "$out/ref/"
 ref knot-1024x768-caption 1024x768 --caption 'Amphora,\nכד' \
 	--caption-font "$out/ref/DejaVuSans.ttf" --caption-drift off
+# The caption on an overlay plane (kms.sh): the model's frame is fitted
+# above the caption's box and holds no caption; an invisible caption of
+# the same size is that frame.
+ref knot-1024x768-caption-room 1024x768 --caption 'Amphora,\nכד' \
+	--caption-font "$out/ref/DejaVuSans.ttf" --caption-color '#00000000' --caption-box '#00000000'
 ref knot-1024x768-half 1024x768 --render-scale 0.5
-# A drag turns the model and keeps the scale [scene] fit chose at the start
-# view (pitch 20): the turned references are drawn at that scale.
-fit_zoom() { # SIZE [ARGS]...
-	size=$1
-	shift
-	$kiosk -v --backend $offscreen --size "$size" --matcap matcaps/gold.png --lod-pixels 0 "$@" \
-		--output "$out/zoom.png" 2>&1 | sed -n 's/.*framing: zoom \([0-9.]*\).*/\1/p' | head -n 1
-}
-ref knot-800x600-pitch65 800x600 --pitch 65 --zoom "$(fit_zoom 800x600)"
-ref knot-800x600-rot90-pitch65 800x600 --rotate 90 --pitch 65 \
-	--zoom "$(fit_zoom 800x600 --rotate 90)"
+# The fit (its zoom and the outline's centring) is the start view's, so
+# the turned picture is a stop at pitch 65 of the start yaw: --stop draws
+# it as the kiosk would after the drag.
+ref knot-800x600-pitch65 800x600 --stops '-30 65 1' --stop 1
+ref knot-800x600-rot90-pitch65 800x600 --rotate 90 --stops '-30 65 1' --stop 1
 # antialias = 4 (kms.sh): multisampled by EGL headless, on llvmpipe too.
 $kiosk -q --backend egl-headless --size 1024x768 --matcap matcaps/gold.png --lod-pixels 0 \
 	--antialias 4 --output "$out/ref/knot-1024x768-aa4.png" ||

@@ -46,7 +46,7 @@ vm_check "reload with new [buttons] and [keyboard] is done" wait_until 120 reloa
 vm_check "... it says it opens the buttons again" \
 	grep -q "reload: \[buttons\] changed: opening the buttons again" kiosk.log
 vm_check "... and the keyboards" \
-	grep -q "reload: \[keyboard\] changed: opening the keyboards again" kiosk.log
+	grep -q "reload: \[keyboard\] or \[knob\] changed: opening the keyboards and knobs again" kiosk.log
 vm_check "GPIO17 is given back" sh -c "gpioinfo $c $chip | grep -q '\"GPIO17\"' &&
 	! gpioinfo $c $chip | grep '\"GPIO17\"' | grep -q matcap-kiosk"
 vm_check "GPIO5 is the left button now" held_by_kiosk GPIO5
@@ -62,7 +62,7 @@ kill -HUP $kpid
 vm_check "a reload with the same sections is done" wait_until 120 reloads_done 2
 vm_check "... and opens nothing again" sh -c "
 	[ \$(grep -c 'opening the buttons again' kiosk.log) = 1 ] &&
-	[ \$(grep -c 'opening the keyboards again' kiosk.log) = 1 ]"
+	[ \$(grep -c 'opening the keyboards and knobs again' kiosk.log) = 1 ]"
 vm_check "GPIO5 is still the left button" held_by_kiosk GPIO5
 vm_check "still running" kill -0 $kpid
 kill -TERM $kpid
