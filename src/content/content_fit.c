@@ -89,6 +89,10 @@ void content_frame(struct content *s, const struct content_config *o, int width,
 	s->zoom = framing_place(&f, o->fit > 0 ? o->fit : CONTENT_FIT_DEFAULT, &room, s->outline);
 	s->room[0] = room.cx;
 	s->room[1] = room.cy;
+	if (width > 0 && height > 0) /* in the unit render_matrices divides out */
+		s->outline[0] *= framing_aspect_unit(
+		    v.ortho, v.rotation == 90 || v.rotation == 270 ? (double)height / width
+								     : (double)width / height);
 	if (o->zoom > 0) /* --zoom: that scale, about the frame's centre as before */
 		s->zoom = o->zoom, s->outline[0] = s->outline[1] = s->room[1] = 0;
 	log_debug("framing: zoom %.6f, the outline's centre (%.3f, %.3f) to (%.3f, %.3f) (over a "
