@@ -90,9 +90,9 @@ void content_frame(struct content *s, const struct content_config *o, int width,
 	s->room[0] = room.cx;
 	s->room[1] = room.cy;
 	if (width > 0 && height > 0) /* in the unit render_matrices divides out */
-		s->outline[0] *= framing_aspect_unit(
-		    v.ortho, v.rotation == 90 || v.rotation == 270 ? (double)height / width
-								     : (double)width / height);
+		s->outline[0] *= sphere_fit_x_unit(v.ortho, v.rotation == 90 || v.rotation == 270
+								? (double)height / width
+								: (double)width / height);
 	if (o->zoom > 0) /* --zoom: that scale, about the frame's centre as before */
 		s->zoom = o->zoom, s->outline[0] = s->outline[1] = s->room[1] = 0;
 	log_debug("framing: zoom %.6f, the outline's centre (%.3f, %.3f) to (%.3f, %.3f) (over a "

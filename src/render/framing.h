@@ -66,13 +66,4 @@ double framing_zoom(const struct framing *f, double fit);
 double framing_place(const struct framing *f, double fit, const struct framing_room *room,
 		     double outline[2]);
 
-/* The outline centre's x in NDC shrinks as the frame widens (x / (tan *
- * aspect) in perspective; ortho, past a square). Kept times this unit it
- * is the same on a frame of any aspect, so a display plugged in after the
- * start (framed for 1920x1080 until then) still centres the model. */
-static inline double framing_aspect_unit(bool ortho, double aspect)
-{
-	return ortho ? (aspect > 1 ? aspect : 1) : aspect;
-}
-
 #endif

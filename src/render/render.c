@@ -2,7 +2,6 @@
 #include "render/render_priv.h"
 #include "util/log.h"
 #include "render/draw_list.h"
-#include "render/framing.h"
 #include "render/shader.h"
 #include "scene/anim/anim_palette.h"
 #include "scene/mesh/texture.h"
@@ -584,10 +583,10 @@ void render_matrices(const struct view *v, int width, int height, float modelvie
 		}
 	/* The outline's centre, zoomed, to the room's centre: a shift in
 	 * clip space (x += s w), so the zoom is about that centre; its x is
-	 * kept in framing_aspect_unit, this frame's aspect divided out. */
+	 * kept in sphere_fit_x_unit, this frame's aspect divided out. */
 	for (int i = 0; i < 4; i++) {
 		float z = v->zoom > 0 ? v->zoom : 1;
-		double ox = v->outline[0] / framing_aspect_unit(v->ortho, fit.aspect);
+		double ox = v->outline[0] / sphere_fit_x_unit(v->ortho, fit.aspect);
 
 		proj[4 * i] += (float)(v->room[0] - z * ox) * proj[4 * i + 3];
 		proj[4 * i + 1] += (v->room[1] - z * v->outline[1]) * proj[4 * i + 3];

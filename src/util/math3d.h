@@ -36,6 +36,15 @@ struct sphere_fit {
 };
 
 void sphere_fit_init(struct sphere_fit *f, double aspect);
+/* The outline centre's x in NDC shrinks as the frame widens (x / (tan *
+ * aspect) in perspective; ortho, past a square). Kept times this unit it
+ * is the same on a frame of any aspect, so a display plugged in after the
+ * start (framed for 1920x1080 until then) still centres the model. */
+static inline double sphere_fit_x_unit(bool ortho, double aspect)
+{
+	return ortho ? (aspect > 1 ? aspect : 1) : aspect;
+}
+
 /* Perspective, or orthographic where the unit sphere fills the short
  * side; depth from just before the sphere to just behind it. */
 void sphere_fit_projection(const struct sphere_fit *f, bool ortho, float m[16]);

@@ -225,8 +225,8 @@ static void lopsided_in_room(void **state)
 	outline_drawn(&v, o);
 	assert_true(fabs((o[1] + o[3]) / 2) > 0.05);
 	assert_float_equal((o[1] + o[3]) / 2, v.zoom * centre[1], 1e-3);
-	/* The view keeps x in framing_aspect_unit (render_matrices divides it out). */
-	v.outline[0] = (float)(centre[0] * framing_aspect_unit(false, 640.0 / 480.0));
+	/* The view keeps x in sphere_fit_x_unit (render_matrices divides it out). */
+	v.outline[0] = (float)(centre[0] * sphere_fit_x_unit(false, 640.0 / 480.0));
 	v.outline[1] = (float)centre[1];
 	v.room[0] = (float)room.cx, v.room[1] = (float)room.cy;
 	outline_drawn(&v, o);
