@@ -67,10 +67,13 @@ static int line_break(const uint32_t *u, const long *adv, const char *brks, int 
 		tail = blank(u[i]) ? tail + adv[i] : 0;
 		if (w - tail > max)
 			break;
-		if (brks[i] != LINEBREAK_MUSTBREAK && brks[i] != LINEBREAK_ALLOWBREAK)
+		/* The text's end ends a line whatever libunibreak says of it
+		 * (1.1 says must-break there, Debian 13's 6.1 need not). */
+		if (i < len - 1 && brks[i] != LINEBREAK_MUSTBREAK &&
+		    brks[i] != LINEBREAK_ALLOWBREAK)
 			continue;
 		ok = i + 1;
-		if (brks[i] == LINEBREAK_MUSTBREAK)
+		if (i == len - 1 || brks[i] == LINEBREAK_MUSTBREAK)
 			break;
 	}
 	return ok > start ? ok : by_characters(u, adv, start, len, max);
