@@ -17,9 +17,13 @@ offscreen=${OFFSCREEN_BACKEND:-osmesa}
 # other triangles and the silhouette moves by a pixel in places: up to 2.5%
 # of the pixels. With the same triangles Mesa 25 draws them as Mesa 22 does,
 # so only there, and only on the knots (the knot-* scenes, and background-*,
-# caption-* and render-scale-* drawn with the knot in front), 3% may differ.
+# caption-* and render-scale-* drawn with the knot in front), 4% may differ:
+# the fit centres the outline of those triangles (issue 33), so the other
+# triangles also move the whole knot by a fraction of a pixel (measured in
+# the Debian 13 root: knot-detail-map 3.03%, render-scale-half 3.00%, the
+# rest under 3%).
 knot_share=0.005
-grep -q '^#define MESHOPTIMIZER_VERSION 180 ' /usr/include/meshoptimizer.h || knot_share=0.03
+grep -q '^#define MESHOPTIMIZER_VERSION 180 ' /usr/include/meshoptimizer.h || knot_share=0.04
 rm -rf "$out"
 mkdir -p "$out/models" "$out/render" "$out/bad"
 MODELS=$out/models
