@@ -14,6 +14,7 @@
 #include "config/settings.h"
 #include "content/content.h"
 #include "gltf_write.h"
+#include "hotspot_fixture.h"
 #include "render/render.h"
 #include "scene/mesh/mesh.h"
 #include "util/image.h"
@@ -78,26 +79,6 @@ static void reference(const double p[3], double out[2])
 	depth = dist - q[2];
 	out[0] = W / 2.0 + f * q[0] / depth * H / 2.0;
 	out[1] = H / 2.0 - f * q[1] / depth * H / 2.0;
-}
-
-/* The centre of the green dot's pixels, and how many there are. */
-static int dot_centre(const struct image *f, double out[2])
-{
-	double sx = 0, sy = 0;
-	int n = 0;
-
-	for (int y = 0; y < f->height; y++)
-		for (int x = 0; x < f->width; x++) {
-			const uint8_t *p = f->rgba + ((size_t)y * (size_t)f->width + (size_t)x) * 4;
-
-			if (p[1] > 200 && p[0] < 60 && p[2] < 60) {
-				sx += x + 0.5, sy += y + 0.5;
-				n++;
-			}
-		}
-	if (n)
-		out[0] = sx / n, out[1] = sy / n;
-	return n;
 }
 
 static void add_hotspot(struct options *o, const char *name, const char *node, const double *p)

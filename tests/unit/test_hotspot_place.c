@@ -13,6 +13,7 @@
 #include "config/settings.h"
 #include "content/content.h"
 #include "gltf_write.h"
+#include "hotspot_fixture.h"
 #include "render/render.h"
 #include "scene/mesh/mesh.h"
 #include "util/image.h"
@@ -73,34 +74,11 @@ static void reference(const double p[3], double yaw_deg, double out[2])
 	out[1] = H / 2.0 - f * q[1] / depth * H / 2.0;
 }
 
-/* The centre of the green dot's pixels (its ring and edge left out by
- * the colour), and how many there are. */
-static int dot_centre(const struct image *f, double out[2])
-{
-	double sx = 0, sy = 0;
-	int n = 0;
-
-	for (int y = 0; y < f->height; y++)
-		for (int x = 0; x < f->width; x++) {
-			const uint8_t *p = f->rgba + ((size_t)y * (size_t)f->width + (size_t)x) * 4;
-
-			if (p[1] > 200 && p[0] < 60 && p[2] < 60) {
-				sx += x + 0.5, sy += y + 0.5;
-				n++;
-			}
-		}
-	if (n) {
-		out[0] = sx / n;
-		out[1] = sy / n;
-	}
-	return n;
-}
-
 /* The dot's drawn centre at yaw against the reference. */
 static void at_yaw(struct display *d, struct renderer *r, struct content *s, struct options *o,
 		   const double p[3], double yaw)
 {
-	double want[2], got[2];
+	double want[2], got[2] = {0, 0};
 	struct image f;
 	struct view v;
 
@@ -210,7 +188,7 @@ static void drawn_at_its_projection(void **state)
 	{
 		struct image f;
 		struct view v;
-		double got[2];
+		double got[2] = {0, 0};
 
 		o.content.yaw = 180;
 		v = content_view(&o.content);
