@@ -59,7 +59,7 @@ while IFS="|" read -r label model clip kopt; do
 				fail=1
 				continue
 			}
-			query="model=models/$model&t=$t&clip=$clip&fit=$fit&zoom=${zoom:-1}"
+			query="model=models/$model&t=$t&clip=$clip&fit=$fit&zoom=${zoom:-1}$shift"
 		elif awk -v t="$t" 'BEGIN { exit !(t + 0 == 0) }'; then
 			pose=rest
 			# shellcheck disable=SC2086
@@ -67,7 +67,7 @@ while IFS="|" read -r label model clip kopt; do
 				fail=1
 				continue
 			}
-			query="model=models/$model&zoom=${zoom:-1}"
+			query="model=models/$model&zoom=${zoom:-1}$shift"
 		else
 			printf '%-18s %6s %-5s %7s %8s  %s\n' "$label" "$t" - - - "not drawn: the kiosk has no --time"
 			continue

@@ -51,7 +51,7 @@ while IFS='|' read -r name model share kopt query tmodel; do
 		fail=1
 		continue
 	}
-	three "$name" "model=models/${tmodel:-$model}$query&zoom=${zoom:-1}" || {
+	three "$name" "model=models/${tmodel:-$model}$query&zoom=${zoom:-1}$shift" || {
 		fail=1
 		continue
 	}

@@ -85,4 +85,11 @@ kiosk() {
 		return 1
 	}
 	zoom=$(sed -n 's/.*framing: zoom \([0-9.]*\).*/\1/p' "$out/$name-kiosk.log")
+	# The fit's shift of the outline's centre to the room's (clip space,
+	# x += s w; render_matrices): its x is logged in sphere_fit_x_unit,
+	# the frame's aspect divided out here.
+	shift=$(sed -n "s/.*framing: zoom \([0-9.]*\), the outline's centre (\([-0-9.]*\), \([-0-9.]*\)) to (\([-0-9.]*\), \([-0-9.]*\)).*/\1 \2 \3 \4 \5/p" \
+		"$out/$name-kiosk.log" | tail -n 1 |
+		awk -v size="$size" '{ split(size, wh, "x"); a = wh[1] / wh[2];
+			printf "&sx=%.6f&sy=%.6f", $4 - $1 * $2 / a, $5 - $1 * $3 }')
 }

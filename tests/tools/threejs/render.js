@@ -38,6 +38,8 @@ const baseColor = (q.get('basecolor') || 'auto') !== 'off';
 // [scene] fit's scale of the picture, as the kiosk logged it: three.js's
 // camera zoom scales the frustum exactly as the kiosk's clip space.
 const zoom = parseFloat(q.get('zoom') || '1');
+const shiftX = parseFloat(q.get('sx') || '0');
+const shiftY = parseFloat(q.get('sy') || '0');
 const time = q.has('t') ? parseFloat(q.get('t')) : null;
 const fitMode = q.get('fit') || (time === null ? 'pose' : 'clip');
 const variant = q.get('variant');
@@ -296,6 +298,13 @@ async function main() {
 	camera.position.set(0, 0, dist);
 	camera.zoom = zoom;
 	camera.updateProjectionMatrix();
+	// The kiosk's fit centres the model's outline: x += sx w, y += sy w.
+	const e = camera.projectionMatrix.elements;
+	for (let j = 0; j < 4; j++) {
+		e[4 * j] += shiftX * e[4 * j + 3];
+		e[4 * j + 1] += shiftY * e[4 * j + 3];
+	}
+	camera.projectionMatrixInverse.copy(camera.projectionMatrix).invert();
 
 	orderBlended(scene, camera);
 	renderer.render(scene, camera);
