@@ -40,6 +40,13 @@ QEMU_SET_ENV=$guest_env
 # user's ~/.cache (where one stage's entries were another's warm start).
 XDG_CACHE_HOME=$PWD/$out/cache
 export QEMU_LD_PREFIX QEMU_SET_ENV XDG_CACHE_HOME
+# fontconfig's system cache: the sysroot's own, made afresh each run.
+# Where the sysroot has no /var/cache/fontconfig, qemu-user opens the
+# host's, and the 32-bit entries (le32d8) an earlier armhf run wrote there
+# for other fonts still pass fontconfig's check, as the sysroot's folders
+# keep the dates their packages gave them: the Noto CJK fallback went unseen.
+rm -rf "$sysroot/var/cache/fontconfig"
+mkdir -p "$sysroot/var/cache/fontconfig"
 # Each program through qemu, under the name golden.sh calls it by.
 wrap() { # NAME BINARY
 	printf '#!/bin/sh\nexec %s %s "$@"\n' "$qemu" "$PWD/$2" >"$out/bin/$1"
