@@ -188,6 +188,11 @@ static inline void kiosk_tell_app(struct kiosk *k, enum app_msg_kind kind)
 
 	app_apply(k->app, &m);
 }
+
+/* src/app/kiosk_caption.c: the caption over the frame just drawn (before the
+ * present), and when it next drifts or must be tested on a plane. */
+void kiosk_caption_draw(struct kiosk *k);
+uint64_t kiosk_caption_deadline(struct kiosk *k, uint64_t now);
 /* src/app/kiosk_anim.c: the animation's pose at now, a frame asked for
  * when it changed; returns when the next frame is due (CLOCK_NEVER:
  * none). */
