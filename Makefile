@@ -83,7 +83,7 @@ SRC_CONTENT := content/content content/load_guard content/content_cache content/
 	       content/model_loader content/worker
 SRC_CONTENT += content/content_coarse content/refine_job
 SRC_CONFIG  := config/options config/options_file config/model_settings config/settings config/settings_table config/settings_origin config/settings_text config/lang_text config/hotspot_settings
-SRC_STATE   := state/app state/view state/power state/schedule state/visits state/remote state/lang state/hotspot
+SRC_STATE   := state/app state/app_pose state/steps state/view state/power state/schedule state/visits state/remote state/lang state/hotspot
 SRC_DISPLAY := display/backlight display/cec display/cec_link display/display display/display_egl display/display_kms display/kms_scale \
 	       display/display_osmesa \
 	       display/drm display/drm_atomic display/drm_legacy display/egl_util display/hotplug \

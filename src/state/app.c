@@ -1,4 +1,5 @@
 #include "state/app.h"
+#include "state/app_priv.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -7,111 +8,17 @@
 /* While something moves, redraw at about the display's rate. */
 #define FRAME_NS 16666667ull
 
-/* One direction of turning. A press turns from its time on; the turn
- * lasts while any source holds it, and at least until until_ns, so a tap
- * shorter than a frame still turns turn_step, smoothly. */
-struct app_turn {
-	int held;	   /* sources holding it (a key and a button may both) */
-	uint64_t until_ns; /* the tap's minimum end */
-};
-
-struct app {
-	struct app_state state;
-	struct app_config cfg;
-	int matcap_count;	  /* image matcaps that next/prev cycle through */
-	bool camera_available;	  /* found by the camera feed, not by the settings */
-	bool camera_resume;	  /* show the camera when it is (back) there */
-	bool attract;		  /* turning by itself */
-	uint64_t attract_ns;	  /* its turn is drawn up to then */
-	uint64_t model_at;	  /* attract mode steps to the next model then */
-	int model_count;	  /* models that next/prev-model cycle through */
-	uint64_t now_ns;	  /* the last time the state was advanced to */
-	struct app_turn turns[4]; /* left, right, up, down */
-	/* A glide to a view (home before attract's turn, a stop): yaw,
-	 * pitch, zoom from (from, v0) to (to, v1) over ease_s from ease_ns;
-	 * then attract mode's path, when it is attract's. */
-	bool easing;
-	uint64_t ease_ns;
-	double ease_s, from[3], v0[3], to[3], v1[3];
-	struct attract_path path;
-	bool touring;	  /* attract mode plays the stops */
-	uint64_t stop_at; /* attract mode's next stop then */
-};
-
-static double clampd(double x, double lo, double hi)
-{
-	return x < lo ? lo : x > hi ? hi : x;
-}
-
-/* A frame left zero (a test's config) limits nothing. */
-static void frame_normalise(struct app_frame *f)
-{
-	if (!(f->zoom0 > 0))
-		f->zoom0 = 1.0;
-	if (!(f->zoom_min > 0))
-		f->zoom_min = APP_ZOOM_MIN;
-	if (!(f->zoom_max > 0))
-		f->zoom_max = APP_ZOOM_MAX;
-	if (f->direction == 0)
-		f->direction = 1.0;
-	if (!f->yaw_limited)
-		f->yaw_min = -INFINITY, f->yaw_max = INFINITY;
-	if (!f->pitch_limited)
-		f->pitch_min = -INFINITY, f->pitch_max = INFINITY;
-}
-
-/* The orientation of yaw and pitch: yaw about the model's vertical, then
- * the tilt towards the viewer, after the model's own turn. An angle with
- * no limits is kept within one turn, so a million turns lose no
- * precision. */
-static void pose(struct app *a, double yaw, double pitch, double zoom)
-{
-	const struct app_frame *f = &a->cfg.frame;
-
-	if (!f->yaw_limited)
-		yaw = remainder(yaw, 2 * M_PI);
-	if (!f->pitch_limited)
-		pitch = remainder(pitch, 2 * M_PI);
-	a->state.yaw = clampd(yaw, f->yaw_min, f->yaw_max);
-	a->state.pitch = clampd(pitch, f->pitch_min, f->pitch_max);
-	a->state.zoom = clampd(zoom, f->zoom_min, f->zoom_max);
-	a->state.orientation = quat_normalize(
-	    quat_multiply(quat_from_axis_angle(1, 0, 0, a->state.pitch),
-			  quat_multiply(quat_from_axis_angle(0, 1, 0, a->state.yaw), a->cfg.rest)));
-	a->state.dirty = true;
-}
-
-static void set_stop(struct app *a, int stop)
-{
-	a->state.stop = stop;
-	a->state.stop_text =
-	    stop >= 0 && a->cfg.frame.stops[stop].text[0] ? a->cfg.frame.stops[stop].text : NULL;
-	a->state.stop_animation = stop >= 0 && a->cfg.frame.stops[stop].animation[0]
-				      ? a->cfg.frame.stops[stop].animation
-				      : NULL;
-	a->state.stop_variant = stop >= 0 && a->cfg.frame.stops[stop].variant[0]
-				    ? a->cfg.frame.stops[stop].variant
-				    : NULL;
-}
-
-static void home(struct app *a)
-{
-	const struct app_frame *f = &a->cfg.frame;
-
-	a->easing = false;
-	set_stop(a, -1);
-	pose(a, f->yaw0, f->pitch0, f->zoom0);
-}
+static uint64_t advance(struct app *a, uint64_t now_ns);
 
 static void init(struct app *a, const struct app_config *cfg, int matcap_count, uint64_t now_ns)
 {
 	memset(a, 0, sizeof(*a));
 	a->cfg = *cfg;
-	frame_normalise(&a->cfg.frame);
+	app_frame_normalise(&a->cfg.frame);
 	a->matcap_count = matcap_count;
-	home(a);
+	app_home(a);
 	a->state.mode = cfg->mode;
-	a->state.last_input_ns = now_ns;
+	a->state.last_input_ns = cfg->shared_clock ? 0 : now_ns;
 	a->state.dirty = true;
 	a->state.model_step = 1;
 	a->model_count = 1;
@@ -125,7 +32,7 @@ struct app *app_new(const struct app_config *cfg, int matcap_count, uint64_t now
 	struct app *a = malloc(sizeof(*a));
 
 	if (a)
-		init(a, cfg, matcap_count, now_ns);
+		init(a, cfg, matcap_count, now_ns + (uint64_t)cfg->clock_offset_ns);
 	return a;
 }
 
@@ -144,7 +51,7 @@ const struct app_state *app_state(const struct app *a)
 static void turn(struct app *a, double yaw, double pitch)
 {
 	a->easing = false;
-	pose(a, a->state.yaw + yaw, a->state.pitch + pitch, a->state.zoom);
+	app_pose(a, a->state.yaw + yaw, a->state.pitch + pitch, a->state.zoom);
 }
 
 /* Seconds that one direction turned within [from, to]. */
@@ -231,45 +138,6 @@ static void step_model(struct app *a, int step)
 	a->state.model_step = step;
 }
 
-/* Glide from the pose now to (yaw, pitch, zoom), from rest, arriving at
- * yaw speed v1: the longer the way at speed, the longer the glide. An
- * unlimited yaw takes the short way round. */
-static void ease_to(struct app *a, uint64_t t, const double to[3], double v1, double speed)
-{
-	const struct app_state *st = &a->state;
-	double d;
-
-	memcpy(a->to, to, sizeof(a->to));
-	if (!a->cfg.frame.yaw_limited)
-		a->to[0] = st->yaw + remainder(to[0] - st->yaw, 2 * M_PI);
-	a->from[0] = st->yaw;
-	a->from[1] = st->pitch;
-	a->from[2] = st->zoom;
-	memset(a->v0, 0, sizeof(a->v0));
-	memset(a->v1, 0, sizeof(a->v1));
-	a->v1[0] = v1;
-	d = fmax(fmax(fabs(a->to[0] - a->from[0]), fabs(a->to[1] - a->from[1])),
-		 fabs(log(a->to[2] / a->from[2])));
-	a->ease_s = d > 1e-9 ? clampd(2 * d / (speed > 0 ? speed : M_PI / 4), 0.5, 4) : 0;
-	a->ease_ns = t;
-	a->easing = true;
-}
-
-static double ease_speed(const struct app *a)
-{
-	return a->cfg.attract_speed > 0 ? a->cfg.attract_speed : a->cfg.turn_speed;
-}
-
-static void to_stop(struct app *a, int k, uint64_t t, double speed)
-{
-	const struct frame_stop *s = &a->cfg.frame.stops[k];
-	double to[3] = {s->yaw, s->pitch, s->zoom};
-
-	set_stop(a, k);
-	ease_to(a, t, to, 0, speed);
-	a->state.dirty = true;
-}
-
 static void step_stop(struct app *a, int step, uint64_t t)
 {
 	int n = a->cfg.frame.stop_count, k = a->state.stop;
@@ -277,7 +145,7 @@ static void step_stop(struct app *a, int step, uint64_t t)
 	if (n < 1)
 		return;
 	k = k < 0 || k >= n ? (step > 0 ? 0 : n - 1) : ((k + step) % n + n) % n;
-	to_stop(a, k, t, a->cfg.turn_speed);
+	app_to_stop(a, k, t, a->cfg.turn_speed);
 }
 
 /* The next hotspot's view (stops[FRAME_STOPS + i]); select's: else the next stop. */
@@ -286,7 +154,7 @@ static void step_hotspot(struct app *a, bool select, uint64_t t)
 	int k = app_frame_hotspot_step(&a->cfg.frame, a->state.stop, select);
 
 	if (k >= 0)
-		to_stop(a, k, t, a->cfg.turn_speed);
+		app_to_stop(a, k, t, a->cfg.turn_speed);
 }
 
 /* Attract mode from t: the stops in turn, or home (no snap) and then the
@@ -297,42 +165,23 @@ static void attract_begin(struct app *a, uint64_t t)
 	double to[3] = {f->yaw0, f->pitch0, f->zoom0}, v;
 
 	a->attract_ns = t;
+	a->attract_from = t;
 	a->touring = f->stop_count > 0 && f->stop_seconds > 0;
 	if (a->touring) {
-		to_stop(a,
-			a->state.stop < 0 || a->state.stop >= f->stop_count
-			    ? 0
-			    : (a->state.stop + 1) % f->stop_count,
-			t, ease_speed(a));
+		app_to_stop(a,
+			    a->state.stop < 0 || a->state.stop >= f->stop_count
+				? 0
+				: (a->state.stop + 1) % f->stop_count,
+			    t, app_ease_speed(a));
 		a->stop_at = t + (uint64_t)(f->stop_seconds * 1e9);
 		return;
 	}
-	set_stop(a, -1);
+	app_set_stop(a, -1);
 	if (!f->yaw_limited)
 		to[0] = a->state.yaw + remainder(to[0] - a->state.yaw, 2 * M_PI);
 	attract_path_make(&a->path, f, to[0], a->cfg.attract_speed);
 	attract_path_at(&a->path, 0, &v);
-	ease_to(a, t, to, v, ease_speed(a));
-}
-
-/* The pose at now: on the glide, then (attract mode's) on the path. */
-static void glide(struct app *a, uint64_t now)
-{
-	double t = now > a->ease_ns ? (double)(now - a->ease_ns) * 1e-9 : 0, v, p[3];
-
-	if (t < a->ease_s) {
-		for (int i = 0; i < 3; i++)
-			p[i] = ease_at(a->from[i], a->v0[i], a->to[i], a->v1[i], a->ease_s, t, &v);
-		pose(a, p[0], p[1], p[2]);
-		return;
-	}
-	if (a->attract && !a->touring) {
-		pose(a, attract_path_at(&a->path, t - a->ease_s, &v), a->to[1], a->to[2]);
-		return;
-	}
-	if (a->easing)
-		pose(a, a->to[0], a->to[1], a->to[2]);
-	a->easing = false;
+	app_ease_to(a, t, to, v, app_ease_speed(a));
 }
 
 static void press(struct app *a, enum app_action action, uint64_t t)
@@ -384,7 +233,7 @@ static void press(struct app *a, enum app_action action, uint64_t t)
 		st->dirty = true;
 		break;
 	case ACTION_RESET:
-		home(a);
+		app_home(a);
 		st->mode = a->cfg.mode;
 		for (int i = 0; i < 4; i++)
 			a->turns[i].until_ns = 0; /* a tap's remainder would undo it */
@@ -399,9 +248,10 @@ static void press(struct app *a, enum app_action action, uint64_t t)
  * runs to it, and attract mode stops where it is. Returns that time. */
 static uint64_t input_at(struct app *a, uint64_t time_ns)
 {
-	uint64_t t = time_ns > a->now_ns ? time_ns : a->now_ns;
+	uint64_t t = app_clock(a, time_ns);
 
-	app_advance(a, t);
+	t = t > a->now_ns ? t : a->now_ns;
+	advance(a, t);
 	if (t > a->state.last_input_ns)
 		a->state.last_input_ns = t;
 	if (a->attract)
@@ -436,13 +286,13 @@ static void input(struct app *a, const struct app_event *ev)
 static void zoom(struct app *a, double scale)
 {
 	const struct app_frame *f = &a->cfg.frame;
-	double z = clampd(a->state.zoom * scale, f->zoom_min, f->zoom_max);
+	double z = app_clampd(a->state.zoom * scale, f->zoom_min, f->zoom_max);
 
 	/* At a bound a pinch changes nothing, and nothing is drawn. */
 	if (!(scale > 0) || z == a->state.zoom)
 		return;
 	a->easing = false;
-	pose(a, a->state.yaw, a->state.pitch, z);
+	app_pose(a, a->state.yaw, a->state.pitch, z);
 }
 
 /* A drag turns about the viewer's axes as the arrows do: right is right
@@ -462,7 +312,7 @@ static void touch(struct app *a, const struct gesture *g)
 		break;
 	case GESTURE_TAP: /* on a badge: that hotspot's view */
 		if (g->badge > 0 && g->badge <= a->cfg.frame.hotspot_count)
-			to_stop(a, FRAME_STOPS + g->badge - 1, t, a->cfg.turn_speed);
+			app_to_stop(a, FRAME_STOPS + g->badge - 1, t, a->cfg.turn_speed);
 		break;
 	case GESTURE_DOUBLE_TAP:
 		press(a, ACTION_RESET, t);
@@ -503,6 +353,23 @@ static uint64_t next_change(const struct app *a)
 	return at > a->now_ns ? at : a->now_ns;
 }
 
+/* On a shared clock, the stops due by now counted on their grid: the one
+ * before the last reached (a glide is shorter than a stop), the last
+ * glided to from there, from its time. */
+static void tour_due(struct app *a, uint64_t now_ns, uint64_t every)
+{
+	int count = a->cfg.frame.stop_count;
+	uint64_t n = steps_due(&a->stop_at, now_ns, every);
+	int last = (int)(((uint64_t)a->state.stop + n) % (uint64_t)count);
+	const struct frame_stop *s = &a->cfg.frame.stops[(last + count - 1) % count];
+
+	if (n == 1)
+		app_glide(a, a->stop_at - every);
+	else
+		app_pose(a, s->yaw, s->pitch, s->zoom);
+	app_to_stop(a, last, a->stop_at - every, app_ease_speed(a));
+}
+
 /* Attract mode's pose, at most attract_fps times a second: the
  * display's every vblank would cost a kiosk nobody watches its CPU for
  * nothing. The pose is a function of the time, so the rate changes no
@@ -511,18 +378,21 @@ static void attract_move(struct app *a, uint64_t now_ns)
 {
 	uint64_t every = (uint64_t)(a->cfg.frame.stop_seconds * 1e9);
 
-	if (a->touring && now_ns >= a->stop_at) {
-		glide(a, a->stop_at); /* the stop reached, then on from there */
-		to_stop(a, (a->state.stop + 1) % a->cfg.frame.stop_count, a->stop_at,
-			ease_speed(a));
+	if (a->touring && now_ns >= a->stop_at && a->cfg.shared_clock) {
+		tour_due(a, now_ns, every);
+	} else if (a->touring && now_ns >= a->stop_at) {
+		app_glide(a, a->stop_at); /* the stop reached, then on from there */
+		app_to_stop(a, (a->state.stop + 1) % a->cfg.frame.stop_count, a->stop_at,
+			    app_ease_speed(a));
 		a->stop_at += every;
 		if (a->stop_at <= now_ns)
 			a->stop_at = now_ns + every;
 	}
 	if (now_ns < a->attract_ns + attract_period(a))
 		return;
-	glide(a, now_ns);
-	a->attract_ns = now_ns;
+	app_glide(a, now_ns);
+	/* On a shared clock the frames fall on its grid, alike everywhere. */
+	a->attract_ns = a->cfg.shared_clock ? steps_floor(now_ns, attract_period(a)) : now_ns;
 }
 
 /* Attract mode shows every model in turn, one each attract_model_s. */
@@ -532,13 +402,19 @@ static void attract_models(struct app *a, uint64_t now_ns)
 
 	if (!every || a->model_count < 2 || now_ns < a->model_at)
 		return;
+	if (a->cfg.shared_clock) { /* every step counted, as on every kiosk */
+		step_model(
+		    a, (int)(steps_due(&a->model_at, now_ns, every) % (uint64_t)a->model_count));
+		a->state.model_step = 1;
+		return;
+	}
 	step_model(a, 1);
 	a->model_at += every;
 	if (a->model_at <= now_ns) /* asleep meanwhile: no catching up */
 		a->model_at = now_ns + every;
 }
 
-uint64_t app_advance(struct app *a, uint64_t now_ns)
+static uint64_t advance(struct app *a, uint64_t now_ns)
 {
 	uint64_t prev = a->now_ns, at;
 	const struct app_turn *t = a->turns;
@@ -554,16 +430,30 @@ uint64_t app_advance(struct app *a, uint64_t now_ns)
 		turn(a, yaw, pitch);
 	if (!a->attract && !any_held(a) && at <= now_ns) {
 		a->attract = true;
-		attract_begin(a, at > prev ? at : prev);
+		/* A shared clock's schedule starts when it is due, not when
+		 * this kiosk looked. */
+		attract_begin(a, at > prev || a->cfg.shared_clock ? at : prev);
 		a->model_at = a->attract_ns + (uint64_t)(a->cfg.attract_model_s * 1e9);
 	}
 	if (a->attract) {
 		attract_move(a, now_ns);
 		attract_models(a, now_ns);
 	} else if (a->easing) {
-		glide(a, now_ns);
+		app_glide(a, now_ns);
 	}
 	return next_change(a);
+}
+
+uint64_t app_clock(const struct app *a, uint64_t now_ns)
+{
+	return now_ns + (uint64_t)a->cfg.clock_offset_ns;
+}
+
+uint64_t app_advance(struct app *a, uint64_t now_ns)
+{
+	uint64_t next = advance(a, app_clock(a, now_ns));
+
+	return next == CLOCK_NEVER ? next : next - (uint64_t)a->cfg.clock_offset_ns;
 }
 
 static void set_camera_available(struct app *a, bool available)
@@ -621,10 +511,26 @@ static void reload(struct app *a, const struct app_config *cfg, int matcap_count
 	bool camera_on = a->state.camera_on, available = a->camera_available;
 	bool resume = a->camera_resume;
 
-	init(a, cfg, matcap_count, now_ns);
+	init(a, cfg, matcap_count, now_ns + (uint64_t)cfg->clock_offset_ns);
 	a->camera_available = available;
 	a->camera_resume = resume;
 	a->state.camera_on = camera_on && available;
+}
+
+int64_t app_set_clock(struct app *a, int64_t offset_ns)
+{
+	int64_t step = offset_ns - a->cfg.clock_offset_ns;
+	int models = a->model_count;
+	struct app_config cfg;
+
+	a->cfg.clock_offset_ns = offset_ns;
+	cfg = a->cfg;
+	if (!a->cfg.shared_clock || (step < APP_CLOCK_STEP_NS && step > -APP_CLOCK_STEP_NS))
+		return 0;
+	/* The others stepped too, or this one was wrong: from the epoch again. */
+	reload(a, &cfg, a->matcap_count, a->now_ns - (uint64_t)(offset_ns - step));
+	a->model_count = models;
+	return step;
 }
 
 /* Another model is shown: its own frame, from its start view. Attract
@@ -636,9 +542,14 @@ static void frame(struct app *a, const struct app_frame *f, struct quat rest,
 	a->cfg.rest = rest;
 	a->cfg.mode = mode;
 	a->state.mode = mode;
-	frame_normalise(&a->cfg.frame);
-	home(a);
-	if (a->attract)
+	app_frame_normalise(&a->cfg.frame);
+	app_home(a);
+	now_ns += (uint64_t)a->cfg.clock_offset_ns;
+	/* On a shared clock the model's tour keeps attract mode's start:
+	 * another kiosk loaded the model sooner or later. */
+	if (a->attract && a->cfg.shared_clock)
+		attract_begin(a, a->attract_from);
+	else if (a->attract)
 		attract_begin(a, now_ns > a->now_ns ? now_ns : a->now_ns);
 }
 
@@ -673,17 +584,4 @@ void app_apply(struct app *a, const struct app_msg *m)
 		frame(a, m->frame.frame, m->frame.rest, m->frame.mode, m->frame.now_ns);
 		break;
 	}
-}
-
-int app_variant_step(int shown, int count, int steps)
-{
-	int n = count + 1; /* every variant, and the default */
-	int at;
-
-	if (count <= 0)
-		return -1;
-	if (shown < -1 || shown >= count)
-		shown = -1;
-	at = ((shown + 1 + steps) % n + n) % n;
-	return at - 1;
 }
