@@ -9,7 +9,7 @@
 #                      purpose (then look at them)
 #   make bench         speed figures (printed, never asserted); make report
 
-UNIT_TESTS  := options mesh image gltf gltf_ext shading app button content service
+UNIT_TESTS  := options mesh image gltf gltf_ext shading app app_clock button content service
 UNIT_TESTS  += tangent subdivide material mesh_cache mesh_cache_content
 UNIT_TESTS  += camera_math camera_proto camera_texture
 UNIT_TESTS  += stability fp16 lod lod_threads

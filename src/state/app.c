@@ -370,6 +370,21 @@ static void tour_due(struct app *a, uint64_t now_ns, uint64_t every)
 	app_to_stop(a, last, a->stop_at - every, app_ease_speed(a));
 }
 
+/* The same on a shared clock: the pose is that of the last frame of its
+ * grid, so it is the same whenever a kiosk looks. */
+static void attract_move_shared(struct app *a, uint64_t now_ns, uint64_t every)
+{
+	uint64_t at = steps_floor(now_ns, attract_period(a));
+	bool stepped = a->touring && now_ns >= a->stop_at;
+
+	if (stepped)
+		tour_due(a, now_ns, every);
+	if (at <= a->attract_ns && !stepped)
+		return;
+	app_glide(a, at);
+	a->attract_ns = at > a->attract_ns ? at : a->attract_ns;
+}
+
 /* Attract mode's pose, at most attract_fps times a second: the
  * display's every vblank would cost a kiosk nobody watches its CPU for
  * nothing. The pose is a function of the time, so the rate changes no
@@ -378,9 +393,11 @@ static void attract_move(struct app *a, uint64_t now_ns)
 {
 	uint64_t every = (uint64_t)(a->cfg.frame.stop_seconds * 1e9);
 
-	if (a->touring && now_ns >= a->stop_at && a->cfg.shared_clock) {
-		tour_due(a, now_ns, every);
-	} else if (a->touring && now_ns >= a->stop_at) {
+	if (a->cfg.shared_clock) {
+		attract_move_shared(a, now_ns, every);
+		return;
+	}
+	if (a->touring && now_ns >= a->stop_at) {
 		app_glide(a, a->stop_at); /* the stop reached, then on from there */
 		app_to_stop(a, (a->state.stop + 1) % a->cfg.frame.stop_count, a->stop_at,
 			    app_ease_speed(a));
@@ -391,8 +408,7 @@ static void attract_move(struct app *a, uint64_t now_ns)
 	if (now_ns < a->attract_ns + attract_period(a))
 		return;
 	app_glide(a, now_ns);
-	/* On a shared clock the frames fall on its grid, alike everywhere. */
-	a->attract_ns = a->cfg.shared_clock ? steps_floor(now_ns, attract_period(a)) : now_ns;
+	a->attract_ns = now_ns;
 }
 
 /* Attract mode shows every model in turn, one each attract_model_s. */
