@@ -76,7 +76,7 @@ LDLIBS    = $(PKG_LIBS) $(UNIBREAK_LIB) -lmeshoptimizer -ldl -lm
 # The program's sources, minus app/main.c (tests link the same objects),
 # one folder per layer: each includes only the layers listed after it
 # (tests/tools/layers.sh checks that).
-SRC_APP     := app/kiosk_models app/kiosk app/kiosk_anim app/kiosk_variant app/kiosk_lang app/kiosk_caption app/kiosk_visits app/kiosk_content app/kiosk_report app/kiosk_remote app/reload app/preview \
+SRC_APP     := app/kiosk_models app/kiosk app/kiosk_anim app/kiosk_variant app/kiosk_lang app/kiosk_caption app/kiosk_clock app/kiosk_visits app/kiosk_content app/kiosk_report app/kiosk_remote app/reload app/preview \
 	       app/signals
 SRC_OPS     := ops/check ops/check_text ops/import ops/import_copy ops/import_ini ops/metrics ops/mqtt ops/mqtt_ha ops/screen ops/service ops/status
 SRC_CONTENT := content/content content/load_guard content/content_cache content/content_look content/content_view content/content_fit content/content_caption content/content_hotspot content/content_play content/content_deform content/matcap_set content/matcap_job content/model_list \

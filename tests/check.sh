@@ -12,7 +12,7 @@ set -u
 
 groups="layers unit golden egl program_check mirror_check ortho fit preview loaders bad-input not-a-file corpus cli"
 groups="$groups config_doc baker live metrics mqtt install systemd fuzz soak no-camera board hands"
-groups="$groups base_color_check sync tsan systemd-board limits man doc_claims"
+groups="$groups base_color_check sync in-step tsan systemd-board limits man doc_claims"
 
 unit_names() { (cd tests/unit && ls test_*.c) | sed 's/^test_//; s/\.c$//'; }
 golden_names() { (cd tests/golden && ls ./*.png) | sed 's|^\./||; s/\.png$//'; }
@@ -101,6 +101,7 @@ needs() {
 	metrics | mqtt) echo "asan-kiosk $TOOLS/mkmodels" ;;
 	hands) echo "asan-kiosk $TOOLS/mkmodels $TOOLS/imgdiff $TOOLS/notify_listen" ;;
 	sync) echo "asan-kiosk $TOOLS/mkmodels" ;;
+	in-step) echo asan-kiosk ;;
 	fuzz) echo fuzzers ;;
 	soak) echo "$TOOLS/soak" ;;
 	systemd-board) echo all ;;

@@ -64,6 +64,8 @@ timed test_live
 timed test_hands
 # 10c. Content by sync: rsync and Syncthing's temporary names.
 timed test_sync
+# 10c'. Kiosks in step on a shared clock: two live kiosks, one moment.
+timed test_in_step
 # 10d. Metrics for Prometheus, scraped from a real node_exporter.
 timed test_metrics
 timed test_mqtt

@@ -827,6 +827,19 @@ test_sync() {
 	results sync "$out/sync.log" "$out/sync/kiosk.log"
 }
 
+# Kiosks in step (tests/e2e/in-step.sh): two live kiosks on a shared
+# clock draw the same pose at every moment both drew, after a reload of
+# one and a press shared over MQTT too (the ASan build); the times they
+# presented each moment are printed.
+test_in_step() {
+	sh tests/e2e/in-step.sh "$ASAN_KIOSK" "$out/in-step" >"$out/in-step.log" 2>&1
+	grep -q "^ok every step ran" "$out/in-step.log" ||
+		echo "not ok the scenario stopped early" >>"$out/in-step.log"
+	grep '^#' "$out/in-step.log" | sed 's/^# /NOTE in-step: /'
+	grep -v '^#' "$out/in-step.log" >"$out/in-step.results"
+	results in-step "$out/in-step.results" "$out/in-step/b.log"
+}
+
 # make install honours PREFIX and DESTDIR.
 test_install() {
 	check "make install" sh -c "make -s install DESTDIR=$PWD/$out/stage PREFIX=/usr SYSCONFDIR=/etc >/dev/null &&

@@ -151,7 +151,7 @@ static void log_latency(struct kiosk *k, uint64_t last_input_ns)
 		return;
 	k->input_drawn_ns = last_input_ns;
 	log_debug("frame %ld presented %.1f ms after the input", k->frames_drawn,
-		  (double)(monotonic_ns() - k->input_drawn_ns) / 1e6);
+		  (double)(app_clock(k->app, monotonic_ns()) - k->input_drawn_ns) / 1e6);
 }
 
 static int draw(struct kiosk *k, uint64_t now)
@@ -190,6 +190,7 @@ static int draw(struct kiosk *k, uint64_t now)
 		return ret;
 	}
 	k->frames_drawn++;
+	kiosk_clock_presented(k);
 	kiosk_tell_app(k, APP_FRAME_SHOWN);
 	log_latency(k, st->last_input_ns);
 	return 0;
@@ -220,6 +221,7 @@ static int configure(struct kiosk *k, uint64_t now_ns)
 	k->view = content_view(shown);
 	content_app_frame_at(k->content, shown, &cfg.frame, &cfg.rest);
 	cfg.mode = shown->mode;
+	cfg.clock_offset_ns = kiosk_clock_offset(k);
 	if (k->app)
 		app_apply(k->app, &m);
 	else
@@ -455,11 +457,12 @@ static void note_step(struct kiosk *k)
 static int loop_once(struct kiosk *k, int sig_fd)
 {
 	struct pollfd fds[FD_INPUTS + KIOSK_MAX_INPUTS];
-	uint64_t now = monotonic_ns();
-	uint64_t next =
-	    earliest(app_advance(k->app, now), kiosk_caption_deadline(k, now), CLOCK_NEVER);
+	uint64_t now = monotonic_ns(), next;
 	enum signals_seen sig = SIGNALS_NONE;
 	int n, ret;
+
+	kiosk_follow_clock(k);
+	next = earliest(app_advance(k->app, now), kiosk_caption_deadline(k, now), CLOCK_NEVER);
 
 	service_screen(k, now);
 	kiosk_content_start_jobs(k);

@@ -7,6 +7,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* 2020-01-01 on the shared clock: a loop's phase counts from there, well
+ * within anim_clock_seek's exact range. */
+#define SHARED_EPOCH_NS (1577836800ull * 1000000000ull)
+
 struct kiosk_anim {
 	const struct anim_play *play; /* the content's it was set up for */
 	unsigned serial;	      /* the renderer's mesh it was set up for */
@@ -23,6 +27,7 @@ struct kiosk_anim {
 	uint64_t due_ns;		 /* the next frame */
 	uint64_t fade_ns;		 /* a crossfade started then; 0: none */
 	bool held;			 /* the clock stood still: it goes on from the next step */
+	uint64_t shared_ns;		 /* the shared clock now ([kiosk] clock); 0: its own */
 	char stop_clip[FRAME_STOP_CLIP]; /* the stop's clip last seen; "": none */
 	bool stop_warned;		 /* a stop named a clip this model lacks: said */
 	/* The file set up for and its shape (its playback may be freed by
@@ -82,9 +87,15 @@ static void start_clip(struct kiosk_anim *a, const struct content_config *cfg, i
 	size_t k, end;
 
 	a->clip = clip;
-	for (playing(a, &k, &end); k < end; k++)
+	for (playing(a, &k, &end); k < end; k++) {
 		anim_clock_init(&a->clocks[k], m->clips[k].duration, (enum anim_loop)cfg->anim_loop,
 				cfg->anim_speed > 0 ? cfg->anim_speed : 1.0);
+		/* On a shared clock a loop is where every kiosk's is: at its
+		 * time since 2020 (a once clip plays from its start). */
+		if (a->shared_ns > SHARED_EPOCH_NS && cfg->anim_loop != ANIM_ONCE)
+			anim_clock_seek(&a->clocks[k],
+					(double)(a->shared_ns - SHARED_EPOCH_NS) / 1e9);
+	}
 	a->last_ns = a->due_ns = now;
 }
 
@@ -311,6 +322,7 @@ bool kiosk_anim_step(struct kiosk_anim *a, struct content *c, struct renderer *r
 	double fps = in->config->anim_fps;
 
 	*next = CLOCK_NEVER;
+	a->shared_ns = in->shared_ns;
 	if (fresh)
 		set_up(a, c, r, in, now);
 	if (a->clip < 0)
@@ -361,14 +373,16 @@ uint64_t kiosk_play_animation(struct kiosk *k, uint64_t now, bool awake)
 {
 	const struct app_state *st = app_state(k->app);
 	const struct content_config *cfg = content_settings(k->content, &k->applied.content);
-	uint64_t input = st->last_input_ns > k->started_ns ? st->last_input_ns : k->started_ns;
-	double idle = (double)(now > input ? now - input : 0) / 1e9;
+	uint64_t started = app_clock(k->app, k->started_ns), t = app_clock(k->app, now);
+	uint64_t input = st->last_input_ns > started ? st->last_input_ns : started;
+	double idle = (double)(t > input ? t - input : 0) / 1e9;
 	struct kiosk_anim_input in = {
 	    .running = awake && (cfg->anim_pause_after <= 0 || idle < cfg->anim_pause_after),
 	    .paused = st->anim_paused,
 	    .clip_step = st->anim_step,
 	    .stop_clip = st->stop_animation,
-	    .config = cfg};
+	    .config = cfg,
+	    .shared_ns = k->applied.app.shared_clock ? t : 0};
 	uint64_t next;
 
 	/* A flip pending: its end wakes the loop, which poses then. */

@@ -30,6 +30,9 @@ struct kiosk_anim_input {
 	 * crossfaded, from when the stop is reached; NULL: none. */
 	const char *stop_clip;
 	const struct content_config *config; /* the content's settings */
+	/* [kiosk] clock = shared: the state's clock now (CLOCK_REALTIME,
+	 * ns), where a looping clip's phase is taken from; 0: its own. */
+	uint64_t shared_ns;
 };
 
 struct kiosk_anim *kiosk_anim_new(void);

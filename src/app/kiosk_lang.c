@@ -39,7 +39,8 @@ void kiosk_show_language(struct kiosk *k, uint64_t now)
 {
 	struct kiosk_lang *kl = &k->lang;
 	const struct app_state *st = app_state(k->app);
-	double idle = now > st->last_input_ns ? (double)(now - st->last_input_ns) / 1e9 : 0;
+	uint64_t t = app_clock(k->app, now); /* the state's clock: a shared one's tour */
+	double idle = t > st->last_input_ns ? (double)(t - st->last_input_ns) / 1e9 : 0;
 	int shown;
 
 	if (kl->serial != renderer_mesh_serial(k->renderer))

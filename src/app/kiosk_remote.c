@@ -160,6 +160,10 @@ static void service_step(struct kiosk *k, uint64_t now)
 	else if (k->remote.due.at_ms > wall)
 		return;
 	k->remote.due_any = false;
+	/* On a shared clock the step is taken at the leader's time, so that
+	 * attract mode comes back on both together. */
+	if (k->applied.app.shared_clock)
+		now = k->remote.due.at_ms * 1000000ull - (uint64_t)k->clock_offset;
 	follow(k, &k->remote.due, now);
 }
 
@@ -199,6 +203,14 @@ static void lead(struct kiosk *k)
 	struct remote_sync s = {wall_ms(), kiosk_models_count(k->models) ? st->model : -1,
 				st->matcap, st->stop};
 
+	/* On a shared clock every kiosk follows attract mode by itself: a
+	 * step is sent for a press, with the press's time. */
+	if (k->applied.app.shared_clock) {
+		if (st->last_input_ns == k->remote.sent_input_ns)
+			return;
+		k->remote.sent_input_ns = st->last_input_ns;
+		s.at_ms = st->last_input_ns / 1000000ull;
+	}
 	if (k->remote.sent_any && s.model == k->remote.sent.model &&
 	    s.matcap == k->remote.sent.matcap && s.stop == k->remote.sent.stop)
 		return;

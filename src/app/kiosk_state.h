@@ -154,6 +154,7 @@ struct kiosk {
 	/* The loop thread's longest step, from a wake-up to the next sleep:
 	 * what a page flip or an input may wait for (the bench reads it). */
 	uint64_t woke_ns;
+	int64_t clock_offset; /* [kiosk] clock = shared: CLOCK_REALTIME less CLOCK_MONOTONIC */
 	uint64_t longest_step_ns;
 	/* The same, from a reload's start to the first step after its
 	 * upload; logged then (the figure of issue 22 on the board). */
@@ -170,6 +171,7 @@ struct kiosk {
 		struct mqtt_link *link;	 /* NULL: off */
 		struct remote_sync sent; /* a leader's last step */
 		bool sent_any;
+		uint64_t sent_input_ns; /* on a shared clock: the press it followed */
 		struct remote_sync due; /* a follower's step to show at due.at_ms */
 		bool due_any;
 	} remote;
@@ -193,6 +195,13 @@ static inline void kiosk_tell_app(struct kiosk *k, enum app_msg_kind kind)
  * present), and when it next drifts or must be tested on a plane. */
 void kiosk_caption_draw(struct kiosk *k);
 uint64_t kiosk_caption_deadline(struct kiosk *k, uint64_t now);
+/* src/app/kiosk_clock.c: the offset of the app state's clock from the
+ * loop's (CLOCK_MONOTONIC): 0 on its own clock, CLOCK_REALTIME's on a
+ * shared one. Follow it on every pass (a step is said in the journal);
+ * a frame presented on a shared clock is logged at debug level. */
+int64_t kiosk_clock_offset(const struct kiosk *k);
+void kiosk_follow_clock(struct kiosk *k);
+void kiosk_clock_presented(struct kiosk *k);
 /* src/app/kiosk_anim.c: the animation's pose at now, a frame asked for
  * when it changed; returns when the next frame is due (CLOCK_NEVER:
  * none). */

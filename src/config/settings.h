@@ -131,7 +131,7 @@ struct option_def {
 
 /* The table's length: the compiler refuses an entry more, and
  * tests/unit/test_options.c one less. */
-#define OPTION_DEFS 145
+#define OPTION_DEFS 146
 extern const struct option_def option_defs[OPTION_DEFS];
 
 void option_defaults(struct options *o);

@@ -34,6 +34,7 @@ const struct options_section_rule options_sections[OPTIONS_SECTIONS] = {
 static const char *const backend_names[] = {"auto", "kms", "osmesa", "egl-headless", NULL};
 static const char *const mode_names[] = {"normal", "view", "sem-vertex", "sem-fragment", NULL};
 static const char *const busy_names[] = {"wait", "exit", NULL}; /* exit_when_busy */
+static const char *const clock_names[] = {"own", "shared", NULL}; /* app.shared_clock */
 static const char *const kms_api_names[] = {"auto", "atomic", "legacy", NULL};
 static const char *const active_names[] = {"low", "high", NULL};
 static const char *const bias_names[] = {"pull-up", "pull-down", "disable", "as-is", NULL};
@@ -290,6 +291,10 @@ const struct option_def option_defs[OPTION_DEFS] = {
      NULL, "N",
      "a live model of more than N triangles, not in the cache, is shown coarse first, then whole; "
      "0: never"},
+    {"clock", 0, OPTIONS_KIOSK, "clock", K_CHOICE, AT(app.shared_clock), 0, 0, 0, clock_names,
+     "CLOCK",
+     "own, or shared: what moves by itself follows the wall clock, so kiosks whose clocks chrony "
+     "keeps together move in step"},
     {"status", 0, OPTION_CLI, NULL, K_FLAG, AT(status), 0, 0, 0, NULL, NULL,
      "ask the running kiosk for its frame (PNG) and state (JSON), print the JSON, exit"},
     {"check-config", 0, OPTION_CLI, NULL, K_FLAG, AT(check_config), 0, 0, 0, NULL, NULL,

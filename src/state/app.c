@@ -257,6 +257,7 @@ static uint64_t input_at(struct app *a, uint64_t time_ns)
 	if (a->attract)
 		a->easing = false; /* attract's glide stops where it is */
 	a->attract = false;
+	a->state.pose_ns = 0;
 	return t;
 }
 
@@ -382,6 +383,7 @@ static void attract_move_shared(struct app *a, uint64_t now_ns, uint64_t every)
 	if (at <= a->attract_ns && !stepped)
 		return;
 	app_glide(a, at);
+	a->state.pose_ns = at;
 	a->attract_ns = at > a->attract_ns ? at : a->attract_ns;
 }
 

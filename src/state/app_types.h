@@ -50,6 +50,9 @@ struct app_state {
 	double zoom;		/* the picture's scale about its centre: 1 at rest */
 	bool dirty;		/* something changed since the last frame drawn */
 	uint64_t last_input_ns; /* on the state's clock (app_clock) */
+	/* On a shared clock in attract mode: the moment of its grid the pose
+	 * is of (alike on every kiosk); else 0. */
+	uint64_t pose_ns;
 	int model;		/* the model wanted, an index into the model list */
 	int model_step;		/* +1 or -1: the way the last step went, for passing over */
 	double yaw, pitch;	/* radians: orientation is pitch x yaw x rest */
