@@ -53,10 +53,10 @@ struct app_state {
 	/* On a shared clock in attract mode: the moment of its grid the pose
 	 * is of (alike on every kiosk); else 0. */
 	uint64_t pose_ns;
-	int model;		/* the model wanted, an index into the model list */
-	int model_step;		/* +1 or -1: the way the last step went, for passing over */
-	double yaw, pitch;	/* radians: orientation is pitch x yaw x rest */
-	int stop;		/* the guided stop shown or eased to; -1: none */
+	int model;	   /* the model wanted, an index into the model list */
+	int model_step;	   /* +1 or -1: the way the last step went, for passing over */
+	double yaw, pitch; /* radians: orientation is pitch x yaw x rest */
+	int stop;	   /* the guided stop shown or eased to; -1: none */
 	/* That stop's text (for a caption), or NULL; owned by the app, valid
 	 * until the next message. */
 	const char *stop_text;
