@@ -3,6 +3,7 @@
  * idle_seconds. The pictures of every language were drawn on the
  * worker; a change here swaps and uploads them (content_show_language). */
 #include "app/kiosk_state.h"
+#include "util/log.h"
 
 #include <math.h>
 
@@ -55,6 +56,11 @@ void kiosk_show_language(struct kiosk *k, uint64_t now)
 	shown = lang_pick_shown(&kl->pick, idle, k->applied.app.attract_after_s, kl->round);
 	if (shown == k->content->lang_shown)
 		return;
-	if (!content_show_language(k->content, k->renderer, shown))
+	if (!content_show_language(k->content, k->renderer, shown)) {
+		char codes[LANG_MAX][LANG_CODE_MAX];
+
+		if (shown < content_languages(content_settings(k->content, &k->applied.content), codes))
+			log_info("language: %s shown", codes[shown]);
 		kiosk_tell_app(k, APP_DISPLAY_BACK);
+	}
 }

@@ -8,6 +8,7 @@
 #include "util/clock.h"
 #include "util/log.h"
 
+#include <strings.h>
 #include <time.h>
 
 /* A leader's clock further ahead than this is not waited for: shown at
@@ -67,6 +68,26 @@ static void screen(struct kiosk *k, bool on, uint64_t now)
 		kiosk_tell_app(k, APP_DISPLAY_BACK);
 }
 
+/* language TAG: as many next-language presses as reach it among the
+ * model's [caption] languages (tags compared as BCP 47 does, whatever
+ * the case). */
+static void language(struct kiosk *k, const char *tag, uint64_t now)
+{
+	char codes[LANG_MAX][LANG_CODE_MAX];
+	int n = content_languages(content_settings(k->content, &k->applied.content), codes), i = 0;
+
+	while (i < n && strcasecmp(codes[i], tag))
+		i++;
+	if (i == n) {
+		log_warn("mqtt: 'language %s': not one of this model's [caption] languages (%d "
+			 "named); ignored",
+			 tag, n);
+		return;
+	}
+	for (int p = presses_to(i + 1, k->lang.pick.chosen, n); p > 0; p--)
+		press(k, ACTION_NEXT_LANGUAGE, now);
+}
+
 static void apply(struct kiosk *k, const struct remote_cmd *c, uint64_t now)
 {
 	const struct app_state *st = app_state(k->app);
@@ -86,9 +107,7 @@ static void apply(struct kiosk *k, const struct remote_cmd *c, uint64_t now)
 		press(k, ACTION_NEXT_VARIANT, now);
 		break;
 	case REMOTE_LANGUAGE:
-		/* No action picks a language yet: accepted, said, and left. */
-		log_warn("mqtt: 'language %s': this kiosk has no languages to choose from; ignored",
-			 c->language);
+		language(k, c->language, now);
 		break;
 	case REMOTE_SCREEN:
 		screen(k, c->on, now);

@@ -93,6 +93,10 @@ cat >"$dir/kiosk.ini" <<EOF
 model = $dir/models
 [frame]
 stops = 0 0 1 "front"; 90 0 1 "side"; 180 0 1 "back"
+[caption]
+text = Vase
+text[de] = Die Vase
+languages = en de
 [mqtt]
 broker = 127.0.0.1:$port
 topic = $topic
@@ -136,8 +140,13 @@ step "screen on" until_true state_has '"screen":"on"'
 pub "variant next"
 step "variant next: taken" until_true logged "mqtt: variant next"
 pub "language de"
-step "language de: taken, and said to have no language to choose" until_true \
-	logged "'language de': this kiosk has no languages to choose from"
+step "language de: shows de, the model's second language" until_true \
+	logged "language: de shown"
+pub "language fr"
+step "language fr: not one of the model's languages, said and ignored" until_true \
+	logged "'language fr': not one of this model's [caption] languages (2 named); ignored"
+pub "language en"
+step "language en: back to the first" until_true logged "language: en shown"
 pub "reload"
 step "reload: the settings read again" until_true logged "reload: done"
 
