@@ -29,6 +29,7 @@ UNIT_TESTS  += precedence model_name
 UNIT_TESTS  += knob visits
 UNIT_TESTS  += remote
 UNIT_TESTS  += hotspot hotspot_settings hotspot_place hotspot_node
+UNIT_TESTS  += wall
 TOOLS_DIR   := $(BUILD)/tools
 ASAN_BUILD  := $(BUILD)/asan
 # MK_TEST_HOOKS: the test hooks (MK_TEST_PREPARE_DELAY_MS, src/app/reload.c)

@@ -389,13 +389,33 @@ static int reload_model(struct content *s, const struct content_config *o)
 	return ret;
 }
 
+/* A wall's screen magnifies the model as the whole wall does: its level
+ * of detail is judged at the wall's pixels per unit, and kept in the cache
+ * under the wall's size (kw x kh: width x height with no wall). */
+static double wall_density(const struct content_config *o, int width, int height, int *kw, int *kh)
+{
+	bool quarter = o->rotation == 90 || o->rotation == 270;
+	struct wall_slice w;
+
+	*kw = width;
+	*kh = height;
+	wall_slice_turned(&o->wall, o->rotation, width, height, &w);
+	if (w.whole)
+		return 1.0;
+	*kw = (int)lround(quarter ? w.height : w.width);
+	*kh = (int)lround(quarter ? w.width : w.height);
+	return sphere_fit_pixels_per_unit(*kw, *kh) / sphere_fit_pixels_per_unit(width, height);
+}
+
 static int prepare_mesh(struct content *s, const struct content_config *o, int width, int height)
 {
 	bool displaced = s->material.features & MATERIAL_DISPLACEMENT;
-	int ret = 0;
+	int ret = 0, kw, kh;
+	double density;
 
 	o = content_settings(s, o);
-	if (content_cache_fits(s, width, height)) {
+	density = wall_density(o, width, height, &kw, &kh);
+	if (content_cache_fits(s, kw, kh)) {
 		log_info("%s: the prepared mesh from the cache (%u triangles)%s", s->model_path,
 			 s->mesh.index_count / 3, s->play ? ", with its live playback" : "");
 		content_frame(s, o, width, height);
@@ -421,16 +441,16 @@ static int prepare_mesh(struct content *s, const struct content_config *o, int w
 	if (!ret)
 		content_play_check(s);
 	/* The live kiosk's large model: coarse now, whole later (one fit). */
-	if (!ret && (ret = content_coarse_begin(s, o, displaced ? 0.0 : o->lod_pixels / s->zoom,
-						width, height)))
+	if (!ret && (ret = content_coarse_begin(
+			 s, o, displaced ? 0.0 : o->lod_pixels / s->zoom / density, width, height)))
 		return ret < 0 ? ret : 0;
 	/* No level of detail for a model that plays (content.h). */
 	if (!ret && !s->play)
-		ret =
-		    lod_prepare_mesh_threads(&s->mesh, displaced ? 0.0 : o->lod_pixels / s->zoom,
-					     width, height, lod_threads(o->prepare_threads), NULL);
+		ret = lod_prepare_mesh_threads(
+		    &s->mesh, displaced ? 0.0 : o->lod_pixels / s->zoom / density, width, height,
+		    lod_threads(o->prepare_threads), NULL);
 	if (!ret)
-		content_cache_pack(s, width, height);
+		content_cache_pack(s, kw, kh);
 	if (!ret)
 		content_frame(s, o, width, height);
 	return ret;

@@ -565,11 +565,13 @@ int renderer_set_mode(struct renderer *r, enum shading_mode mode, bool ortho)
 void render_matrices(const struct view *v, int width, int height, float modelview[16],
 		     float projection[16])
 {
-	bool quarter = v->rotation == 90 || v->rotation == 270;
-	float rot[16], move[16], proj[16], panel[16];
+	float rot[16], move[16], proj[16], panel[16], crop[16];
+	struct wall_slice slice;
 	struct sphere_fit fit;
 
-	sphere_fit_init(&fit, quarter ? (double)height / width : (double)width / height);
+	/* The camera frames the whole wall (one screen when there is none). */
+	wall_slice_turned(&v->wall, v->rotation, width, height, &slice);
+	sphere_fit_init(&fit, slice.aspect);
 	mat4_from_quat(rot, v->orientation);
 	mat4_translate(move, 0, 0, -fit.distance);
 	mat4_multiply(modelview, move, rot);
@@ -590,6 +592,11 @@ void render_matrices(const struct view *v, int width, int height, float modelvie
 
 		proj[4 * i] += (float)(v->room[0] - z * ox) * proj[4 * i + 3];
 		proj[4 * i + 1] += (v->room[1] - z * v->outline[1]) * proj[4 * i + 3];
+	}
+	/* A wall's screen shows its slice of that one frustum: off-axis. */
+	if (!slice.whole) {
+		wall_crop(&slice, crop);
+		mat4_multiply(proj, crop, proj);
 	}
 	/* A portrait panel turns the picture, not the scanout, so it works
 	 * with every driver and plane. */
