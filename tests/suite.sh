@@ -263,6 +263,46 @@ hot_lang() {
 		--caption-drift off --hotspot 1 --lang "$lang" \
 		--output "$out/render/hot-$lang-$hot_lang_n.png"
 }
+# [wall] (issue 36): a wall's slices join without a seam. The whole wall
+# drawn as one picture, and each screen's slice drawn alone (its own
+# process, as each kiosk of a wall) and put side by side by
+# tests/tools/stitch, agree within the golden images' tolerance; rows count
+# from the top. A position outside the wall is said with its line, and the
+# whole picture is drawn, byte for byte the one without a wall.
+wall_seam() { # COLUMNS ROWS
+	_k="$KIOSK -q --backend $offscreen -c matcaps/gold.png"
+	_w=$out/render/wall-$1x$2
+	$_k --size $((160 * $1))x$((120 * $2)) --output "$_w-whole.png" || return 1
+	set -- "$1" "$2"
+	for _y in $(seq 1 "$2"); do
+		for _x in $(seq 1 "$1"); do
+			$_k --size 160x120 --wall-columns "$1" --wall-rows "$2" \
+				--wall-position "$_x,$_y" --output "$_w-$_x-$_y.png" || return 1
+			set -- "$@" "$_w-$_x-$_y.png"
+		done
+	done
+	_c=$1 _r=$2
+	shift 2
+	"$TOOLS/stitch" "$_w-stitched.png" "$_c" "$_r" 0 0 "$@" &&
+		"$TOOLS/imgdiff" --tol 8 --share 0.005 "$_w-whole.png" "$_w-stitched.png" &&
+		! cmp -s "$_w-1-1.png" "$_w-2-1.png"
+}
+wall_outside() {
+	printf '[wall]\ncolumns = 2\nposition = 3,1\n' >"$out/wall-outside.ini"
+	"$KIOSK" --backend $offscreen --config "$out/wall-outside.ini" -c matcaps/gold.png \
+		--size 160x120 --output "$out/render/wall-outside.png" 2>"$out/wall-outside.log" &&
+		grep -q "wall-outside.ini:3: \[wall\] position = 3,1 is outside the wall of 2 columns and 1 rows; expected COLUMN,ROW from 1,1 (top left) to 2,1" "$out/wall-outside.log" &&
+		"$KIOSK" -q --backend $offscreen -c matcaps/gold.png --size 160x120 \
+			--output "$out/render/wall-none.png" &&
+		cmp "$out/render/wall-outside.png" "$out/render/wall-none.png" &&
+		! "$KIOSK" --config "$out/wall-outside.ini" --check-config >/dev/null 2>&1
+}
+test_wall_seam() {
+	check "a wall of 2x1: the slices, side by side, are the whole picture" wall_seam 2 1
+	check "a wall of 2x2: the slices, side by side, are the whole picture" wall_seam 2 2
+	check "a position outside the wall: said with its line, the whole picture drawn" wall_outside
+}
+
 test_preview() {
 	need_models
 	# A hotspot's text[de] (issue 33): --hotspot 1 --lang de shows the

@@ -394,16 +394,9 @@ static int reload_model(struct content *s, const struct content_config *o)
  * under the wall's size (kw x kh: width x height with no wall). */
 static double wall_density(const struct content_config *o, int width, int height, int *kw, int *kh)
 {
-	bool quarter = o->rotation == 90 || o->rotation == 270;
-	struct wall_slice w;
-
-	*kw = width;
-	*kh = height;
-	wall_slice_turned(&o->wall, o->rotation, width, height, &w);
-	if (w.whole)
+	wall_pixels(&o->wall, o->rotation, width, height, kw, kh);
+	if (*kw == width && *kh == height)
 		return 1.0;
-	*kw = (int)lround(quarter ? w.height : w.width);
-	*kh = (int)lround(quarter ? w.width : w.height);
 	return sphere_fit_pixels_per_unit(*kw, *kh) / sphere_fit_pixels_per_unit(width, height);
 }
 

@@ -331,10 +331,13 @@ bool matcap_filter_mipmaps(enum matcap_filter filter, int side, int width, int h
 	return 2.0 * sphere_fit_pixels_per_unit(width, height) <= (double)side;
 }
 
-void render_matcap_choose_filter(struct renderer *r, const int vp[4])
+void render_matcap_choose_filter(struct renderer *r, const struct view *v, const int vp[4])
 {
-	bool mip = r->matcap_mippable &&
-		   matcap_filter_mipmaps(r->matcap_filter, r->matcap_side, vp[2], vp[3]);
+	int w, h; /* a wall's screen shows the model as large as the wall does */
+	bool mip;
+
+	wall_pixels(&v->wall, v->rotation, vp[2], vp[3], &w, &h);
+	mip = r->matcap_mippable && matcap_filter_mipmaps(r->matcap_filter, r->matcap_side, w, h);
 
 	if (mip == r->matcap_mipmapped || r->matcap_override)
 		return;

@@ -179,7 +179,7 @@ static void draw_with(struct renderer *r, int side, const struct view *v, const 
 	struct draw_state st = {.culled = true, .mv = mv, .proj = proj, .nm = nm};
 
 	gl->Viewport(vp[0], vp[1], vp[2], vp[3]);
-	render_matcap_choose_filter(r, vp);
+	render_matcap_choose_filter(r, v, vp);
 	render_matrices(v, vp[2], vp[3], mv, proj);
 	draw_list_sort_blended(&r->list, mv);
 	/* The model-view is a rotation and a translation: its upper 3x3 is

@@ -85,6 +85,16 @@ void wall_slice_turned(const struct wall_layout *w, int rotation, int width, int
 	wall_slice(w, quarter ? height : width, quarter ? width : height, out, why, sizeof(why));
 }
 
+void wall_pixels(const struct wall_layout *w, int rotation, int width, int height, int *ww, int *wh)
+{
+	bool quarter = rotation == 90 || rotation == 270;
+	struct wall_slice s;
+
+	wall_slice_turned(w, rotation, width, height, &s);
+	*ww = s.whole ? width : (int)lround(quarter ? s.height : s.width);
+	*wh = s.whole ? height : (int)lround(quarter ? s.width : s.height);
+}
+
 void wall_crop(const struct wall_slice *s, float m[16])
 {
 	double w = s->rect[2] - s->rect[0], h = s->rect[3] - s->rect[1];

@@ -47,6 +47,12 @@ int wall_slice(const struct wall_layout *w, int width, int height, struct wall_s
  * said why when they were read). */
 void wall_slice_turned(const struct wall_layout *w, int rotation, int width, int height,
 		       struct wall_slice *out);
+/* The whole wall's size in pixels at this frame's density, in the
+ * frame's own axes (before the panel's turn), rounded: width x height
+ * with no wall. What judges how large the model is drawn (the level of
+ * detail, the matcap's filter) must see the wall, not one screen. */
+void wall_pixels(const struct wall_layout *w, int rotation, int width, int height, int *ww,
+		 int *wh);
 /* The off-axis crop: the matrix that maps the slice's rectangle onto
  * [-1, 1]^2 (x' = (2x - (x0 + x1)) / (x1 - x0), the same for y), to
  * multiply after the wall's projection. */
