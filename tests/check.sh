@@ -88,7 +88,7 @@ needs() {
 	ortho) echo "all $TOOLS/mkmodels $TOOLS/imgdiff" ;;
 	fit) echo "all $TOOLS/mkmodels $TOOLS/silhouette" ;;
 	preview) echo "all $TOOLS/mkmodels $TOOLS/imgdiff" ;;
-	wall_seam) echo "all $TOOLS/imgdiff $TOOLS/stitch" ;;
+	wall_seam) echo "all $TOOLS/mkmodels $TOOLS/imgdiff $TOOLS/stitch" ;;
 	loaders) echo "all $TOOLS/mkmodels" ;;
 	cli) echo "all asan-kiosk $TOOLS/mkmodels" ;;
 	config_doc | install | systemd | no-camera) echo all ;;

@@ -267,16 +267,29 @@ hot_lang() {
 # drawn as one picture, and each screen's slice drawn alone (its own
 # process, as each kiosk of a wall) and put side by side by
 # tests/tools/stitch, agree within the golden images' tolerance; rows count
-# from the top. A position outside the wall is said with its line, and the
+# from the top. The background too: a gradient from the wall's top to its
+# bottom, a picture covering the whole wall (the golden backdrop). A
+# position outside the wall is said with its line, and the
 # whole picture is drawn, byte for byte the one without a wall.
-wall_seam() { # COLUMNS ROWS
-	_k="$KIOSK -q --backend $offscreen -c matcaps/gold.png"
+wall_kiosk() { # OPTION...: a still, on $_bg when set
+	if [ -n "$_bg" ]; then
+		"$KIOSK" -q --backend $offscreen -c matcaps/gold.png --background "$_bg" "$@"
+	else
+		"$KIOSK" -q --backend $offscreen -c matcaps/gold.png "$@"
+	fi
+}
+wall_seam() { # COLUMNS ROWS [OPTION]...: the background's
 	_w=$out/render/wall-$1x$2
-	$_k --size $((160 * $1))x$((120 * $2)) --output "$_w-whole.png" || return 1
+	_bg=
+	if [ $# -gt 2 ]; then
+		_w=$_w-$3
+		_bg=$4
+	fi
+	wall_kiosk --size $((160 * $1))x$((120 * $2)) --output "$_w-whole.png" || return 1
 	set -- "$1" "$2"
 	for _y in $(seq 1 "$2"); do
 		for _x in $(seq 1 "$1"); do
-			$_k --size 160x120 --wall-columns "$1" --wall-rows "$2" \
+			wall_kiosk --size 160x120 --wall-columns "$1" --wall-rows "$2" \
 				--wall-position "$_x,$_y" --output "$_w-$_x-$_y.png" || return 1
 			set -- "$@" "$_w-$_x-$_y.png"
 		done
@@ -300,6 +313,11 @@ wall_outside() {
 test_wall_seam() {
 	check "a wall of 2x1: the slices, side by side, are the whole picture" wall_seam 2 1
 	check "a wall of 2x2: the slices, side by side, are the whole picture" wall_seam 2 2
+	check "a wall of 2x2: one gradient behind it, not one a screen" wall_seam 2 2 \
+		gradient '#f2ead8, #5a4a3a'
+	need_models
+	check "a wall of 3x1: one picture behind it, not one a screen" wall_seam 3 1 \
+		image "$out/models/backdrop.png"
 	check "a position outside the wall: said with its line, the whole picture drawn" wall_outside
 }
 

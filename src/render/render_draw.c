@@ -225,7 +225,10 @@ void renderer_draw(struct renderer *r, const struct view *v, int width, int heig
 	int vp[4] = {0, 0, width, height};
 
 	if (r->background) {
-		background_draw(r->background, width, height, v->rotation);
+		struct wall_slice s;
+
+		wall_slice_turned(&v->wall, v->rotation, width, height, &s);
+		background_draw_slice(r->background, &s, v->rotation);
 	} else {
 		gl->ClearColor(v->background[0], v->background[1], v->background[2], 1.0f);
 		gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
