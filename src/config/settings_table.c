@@ -444,8 +444,8 @@ const struct option_def option_defs[OPTION_DEFS] = {
      NULL, "COLUMN,ROW",
      "this screen's place in the wall, from 1,1 at the top left (2,1: the second across); "
      "outside the wall: the whole picture, said in the journal"},
-    {"wall-bezel", 0, OPTIONS_WALL, "bezel", K_DOUBLE, AT(content.wall.bezel), 0, 200, 0, NULL,
-     "MM",
+    {"wall-bezel", 0, OPTIONS_WALL, "bezel", K_DOUBLE, AT(content.wall.bezel), 0, WALL_BEZEL_MAX, 0,
+     NULL, "MM",
      "millimetres of dark frame between two screens' pictures, both frames together: "
      "the picture goes on behind it (needs screen_size)"},
     {"wall-screen-size", 0, OPTIONS_WALL, "screen_size", K_SIZE, AT(content.wall.screen_w), 1, 5000,

@@ -35,8 +35,8 @@ static bool layout_valid(const struct wall_layout *w, char *why, size_t n)
 			 w->column, w->row, w->columns, w->rows, w->columns, w->rows);
 		return false;
 	}
-	if (!(w->bezel >= 0 && w->bezel <= 1000)) {
-		snprintf(why, n, "bezel %g mm; expected 0 to 1000", w->bezel);
+	if (!(w->bezel >= 0 && w->bezel <= WALL_BEZEL_MAX)) {
+		snprintf(why, n, "bezel %g mm; expected 0 to %d", w->bezel, WALL_BEZEL_MAX);
 		return false;
 	}
 	return true;

@@ -10,7 +10,8 @@
 #include <stdbool.h>
 #include <stddef.h>
 
-#define WALL_MAX 16 /* columns or rows */
+#define WALL_MAX       16  /* columns or rows */
+#define WALL_BEZEL_MAX 200 /* millimetres */
 
 /* The layout as the settings give it. Zeroed, or 1x1: no wall (the whole
  * picture on this screen). */

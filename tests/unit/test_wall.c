@@ -139,6 +139,16 @@ static void position_outside_refused(void **state)
 	}
 	assert_non_null(strstr((wall_slice(&bad[0], 640, 480, &s, why, sizeof(why)), why),
 			       "outside the wall of 2 columns and 1 rows"));
+	/* A bezel the settings would refuse, were they bypassed: no NaN
+	 * reaches the projection. */
+	for (int i = 0; i < 3; i++) {
+		struct wall_layout w = layout(2, 1, 1, 1);
+
+		w.bezel = i == 0 ? NAN : i == 1 ? INFINITY : -1;
+		w.screen_w = w.screen_h = 100;
+		assert_int_equal(wall_slice(&w, 640, 480, &s, why, sizeof(why)), -EINVAL);
+		assert_true(s.whole && s.aspect == 640.0 / 480);
+	}
 }
 
 /* A point through render_matrices: in the whole wall's picture (2W x H,
