@@ -268,35 +268,26 @@ hot_lang() {
 # process, as each kiosk of a wall) and put side by side by
 # tests/tools/stitch, agree within the golden images' tolerance; rows count
 # from the top. The background too: a gradient from the wall's top to its
-# bottom, a picture covering the whole wall (the golden backdrop). A
-# position outside the wall is said with its line, and the
-# whole picture is drawn, byte for byte the one without a wall.
-wall_kiosk() { # OPTION...: a still, on $_bg when set
-	if [ -n "$_bg" ]; then
-		"$KIOSK" -q --backend $offscreen -c matcaps/gold.png --background "$_bg" "$@"
-	else
-		"$KIOSK" -q --backend $offscreen -c matcaps/gold.png "$@"
-	fi
-}
-wall_seam() { # COLUMNS ROWS [OPTION]...: the background's
-	_w=$out/render/wall-$1x$2
-	_bg=
-	if [ $# -gt 2 ]; then
-		_w=$_w-$3
-		_bg=$4
-	fi
-	wall_kiosk --size $((160 * $1))x$((120 * $2)) --output "$_w-whole.png" || return 1
-	set -- "$1" "$2"
-	for _y in $(seq 1 "$2"); do
-		for _x in $(seq 1 "$1"); do
-			wall_kiosk --size 160x120 --wall-columns "$1" --wall-rows "$2" \
-				--wall-position "$_x,$_y" --output "$_w-$_x-$_y.png" || return 1
-			set -- "$@" "$_w-$_x-$_y.png"
+# bottom, a picture covering the whole wall (the golden backdrop); and what
+# is judged by the pixels a model covers (the matcap's filter, a
+# displacement's subdivision) is judged on the wall. A position outside the
+# wall is said with its line, and the whole picture is drawn, byte for
+# byte the one without a wall.
+wall_seam() { # NAME COLUMNS ROWS [OPTION]...: the options of every still
+	_w=$out/render/wall-$1 _c=$2 _r=$3
+	shift 3
+	_k="$KIOSK -q --backend $offscreen -c matcaps/gold.png"
+	$_k --size $((160 * _c))x$((120 * _r)) "$@" --output "$_w-whole.png" || return 1
+	_shots=""
+	for _y in $(seq 1 "$_r"); do
+		for _x in $(seq 1 "$_c"); do
+			$_k --size 160x120 --wall-columns "$_c" --wall-rows "$_r" \
+				--wall-position "$_x,$_y" "$@" --output "$_w-$_x-$_y.png" || return 1
+			_shots="$_shots $_w-$_x-$_y.png"
 		done
 	done
-	_c=$1 _r=$2
-	shift 2
-	"$TOOLS/stitch" "$_w-stitched.png" "$_c" "$_r" 0 0 "$@" &&
+	# shellcheck disable=SC2086 # one word per picture (no blanks in $out)
+	"$TOOLS/stitch" "$_w-stitched.png" "$_c" "$_r" 0 0 $_shots &&
 		"$TOOLS/imgdiff" --tol 8 --share 0.005 "$_w-whole.png" "$_w-stitched.png" &&
 		! cmp -s "$_w-1-1.png" "$_w-2-1.png"
 }
@@ -311,13 +302,16 @@ wall_outside() {
 		! "$KIOSK" --config "$out/wall-outside.ini" --check-config >/dev/null 2>&1
 }
 test_wall_seam() {
-	check "a wall of 2x1: the slices, side by side, are the whole picture" wall_seam 2 1
-	check "a wall of 2x2: the slices, side by side, are the whole picture" wall_seam 2 2
-	check "a wall of 2x2: one gradient behind it, not one a screen" wall_seam 2 2 \
-		gradient '#f2ead8, #5a4a3a'
 	need_models
-	check "a wall of 3x1: one picture behind it, not one a screen" wall_seam 3 1 \
-		image "$out/models/backdrop.png"
+	check "a wall of 2x1: the slices, side by side, are the whole picture" wall_seam 2x1 2 1
+	check "a wall of 2x2: the slices, side by side, are the whole picture" wall_seam 2x2 2 2
+	check "a wall of 2x2: one gradient behind it, not one a screen" wall_seam 2x2-gradient 2 2 \
+		--background '#f2ead8, #5a4a3a'
+	check "a wall of 3x1: one picture behind it, not one a screen" wall_seam 3x1-image 3 1 \
+		--background "$out/models/backdrop.png"
+	check "a wall of 2x2: a displaced model subdivided for the wall, not a screen" \
+		wall_seam 2x2-displaced 2 2 --model "$out/models/sphere-coarse.glb" \
+		--displacement-map "$out/models/height.png" --displacement-scale 0.15
 	check "a position outside the wall: said with its line, the whole picture drawn" wall_outside
 }
 

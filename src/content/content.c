@@ -390,8 +390,9 @@ static int reload_model(struct content *s, const struct content_config *o)
 }
 
 /* A wall's screen magnifies the model as the whole wall does: its level
- * of detail is judged at the wall's pixels per unit, and kept in the cache
- * under the wall's size (kw x kh: width x height with no wall). */
+ * of detail and its displacement's subdivision are judged at the wall's
+ * pixels per unit, and kept in the cache under the wall's size (kw x kh:
+ * width x height with no wall). */
 static double wall_density(const struct content_config *o, int width, int height, int *kw, int *kh)
 {
 	wall_pixels(&o->wall, o->rotation, width, height, kw, kh);
@@ -425,7 +426,7 @@ static int prepare_mesh(struct content *s, const struct content_config *o, int w
 		ret = reload_model(s, o);
 	}
 	if (!ret)
-		ret = material_prepare_mesh(&s->material, &s->mesh, width, height);
+		ret = material_prepare_mesh(&s->material, &s->mesh, kw, kh);
 	/* The fit magnifies the picture: the level of detail judges its
 	 * pixels as drawn (the zoom of the whole mesh, then of the simplified
 	 * one, which a start from the cache finds too). */
