@@ -301,6 +301,17 @@ wall_outside() {
 		cmp "$out/render/wall-outside.png" "$out/render/wall-none.png" &&
 		! "$KIOSK" --config "$out/wall-outside.ini" --check-config >/dev/null 2>&1
 }
+# A wall of two portrait panels side by side ([display] rotation = 90):
+# the viewer's columns are the buffers' rows, the right screen's on top.
+wall_portrait() {
+	_k="$KIOSK -q --backend $offscreen -c matcaps/gold.png --rotate 90"
+	_w=$out/render/wall-portrait
+	$_k --size 160x240 --output "$_w-whole.png" &&
+		$_k --size 160x120 --wall-columns 2 --wall-position 1,1 --output "$_w-1-1.png" &&
+		$_k --size 160x120 --wall-columns 2 --wall-position 2,1 --output "$_w-2-1.png" &&
+		"$TOOLS/stitch" "$_w-stitched.png" 1 2 0 0 "$_w-2-1.png" "$_w-1-1.png" &&
+		"$TOOLS/imgdiff" --tol 8 --share 0.005 "$_w-whole.png" "$_w-stitched.png"
+}
 test_wall_seam() {
 	need_models
 	check "a wall of 2x1: the slices, side by side, are the whole picture" wall_seam 2x1 2 1
@@ -312,6 +323,8 @@ test_wall_seam() {
 	check "a wall of 2x2: a displaced model subdivided for the wall, not a screen" \
 		wall_seam 2x2-displaced 2 2 --model "$out/models/sphere-coarse.glb" \
 		--displacement-map "$out/models/height.png" --displacement-scale 0.15
+	check "a wall of two portrait panels: the slices, stacked as the buffers turn, are the whole" \
+		wall_portrait
 	check "a position outside the wall: said with its line, the whole picture drawn" wall_outside
 }
 
