@@ -323,6 +323,12 @@ test_wall_seam() {
 	check "a wall of 2x2: a displaced model subdivided for the wall, not a screen" \
 		wall_seam 2x2-displaced 2 2 --model "$out/models/sphere-coarse.glb" \
 		--displacement-map "$out/models/height.png" --displacement-scale 0.15
+	cp "$out/models/long.glb" "$out/models/wall-hot.glb"
+	printf '%s\n' '[hotspot.rim]' 'point = 2 0 0.866' 'look = badge' 'color = #ffcc00' \
+		'[hotspot.glaze]' 'point = -2 0.5 0.707' 'look = badge' 'color = #40c0ff' \
+		>"$out/models/wall-hot.ini"
+	check "a wall of 2x1: the hotspots' badges where the whole wall has them" wall_seam 2x1-hot 2 1 \
+		--model "$out/models/wall-hot.glb"
 	check "a wall of two portrait panels: the slices, stacked as the buffers turn, are the whole" \
 		wall_portrait
 	check "a position outside the wall: said with its line, the whole picture drawn" wall_outside
