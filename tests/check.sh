@@ -12,7 +12,7 @@ set -u
 
 groups="layers unit golden egl program_check mirror_check ortho fit preview loaders bad-input not-a-file corpus cli"
 groups="$groups config_doc baker live metrics mqtt install systemd fuzz soak no-camera board hands"
-groups="$groups base_color_check sync in-step tsan systemd-board limits man doc_claims"
+groups="$groups base_color_check sync in-step tsan systemd-board limits man doc_claims wall_seam"
 
 unit_names() { (cd tests/unit && ls test_*.c) | sed 's/^test_//; s/\.c$//'; }
 golden_names() { (cd tests/golden && ls ./*.png) | sed 's|^\./||; s/\.png$//'; }
@@ -82,12 +82,13 @@ needs() {
 	case $1 in
 	layers) echo all ;;
 	unit) if [ -n "$2" ]; then echo "asan-test_$2"; else echo asan-unit; fi ;;
-	golden) echo "all $TOOLS/mkmodels $TOOLS/imgdiff" ;;
+	golden) echo "all $TOOLS/mkmodels $TOOLS/imgdiff $TOOLS/stitch" ;;
 	egl) echo "all $TOOLS/mkmodels $TOOLS/imgdiff" ;;
 	program_check | mirror_check | base_color_check) echo "$TOOLS/$1" ;;
 	ortho) echo "all $TOOLS/mkmodels $TOOLS/imgdiff" ;;
 	fit) echo "all $TOOLS/mkmodels $TOOLS/silhouette" ;;
 	preview) echo "all $TOOLS/mkmodels $TOOLS/imgdiff" ;;
+	wall_seam) echo "all $TOOLS/mkmodels $TOOLS/imgdiff $TOOLS/stitch" ;;
 	loaders) echo "all $TOOLS/mkmodels" ;;
 	cli) echo "all asan-kiosk $TOOLS/mkmodels" ;;
 	config_doc | install | systemd | no-camera) echo all ;;

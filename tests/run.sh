@@ -36,6 +36,7 @@ timed test_ortho
 timed test_fit
 # 5c. --stop and --at: the still of a moment the kiosk would show.
 timed test_preview
+timed test_wall_seam
 # 6. Loader variants that must work from the command line.
 timed test_loaders
 # 7. Malformed input, through the ASan binary: exit status 1, one error

@@ -263,6 +263,77 @@ hot_lang() {
 		--caption-drift off --hotspot 1 --lang "$lang" \
 		--output "$out/render/hot-$lang-$hot_lang_n.png"
 }
+# [wall] (issue 36): a wall's slices join without a seam. The whole wall
+# drawn as one picture, and each screen's slice drawn alone (its own
+# process, as each kiosk of a wall) and put side by side by
+# tests/tools/stitch, agree within the golden images' tolerance; rows count
+# from the top. The background too: a gradient from the wall's top to its
+# bottom, a picture covering the whole wall (the golden backdrop); and what
+# is judged by the pixels a model covers (the matcap's filter, a
+# displacement's subdivision) is judged on the wall. A position outside the
+# wall is said with its line, and the whole picture is drawn, byte for
+# byte the one without a wall.
+wall_seam() { # NAME COLUMNS ROWS [OPTION]...: the options of every still
+	_w=$out/render/wall-$1 _c=$2 _r=$3
+	shift 3
+	_k="$KIOSK -q --backend $offscreen -c matcaps/gold.png"
+	$_k --size $((160 * _c))x$((120 * _r)) "$@" --output "$_w-whole.png" || return 1
+	_shots=""
+	for _y in $(seq 1 "$_r"); do
+		for _x in $(seq 1 "$_c"); do
+			$_k --size 160x120 --wall-columns "$_c" --wall-rows "$_r" \
+				--wall-position "$_x,$_y" "$@" --output "$_w-$_x-$_y.png" || return 1
+			_shots="$_shots $_w-$_x-$_y.png"
+		done
+	done
+	# shellcheck disable=SC2086 # one word per picture (no blanks in $out)
+	"$TOOLS/stitch" "$_w-stitched.png" "$_c" "$_r" 0 0 $_shots &&
+		"$TOOLS/imgdiff" --tol 8 --share 0.005 "$_w-whole.png" "$_w-stitched.png" &&
+		! cmp -s "$_w-1-1.png" "$_w-2-1.png"
+}
+wall_outside() {
+	printf '[wall]\ncolumns = 2\nposition = 3,1\n' >"$out/wall-outside.ini"
+	"$KIOSK" --backend $offscreen --config "$out/wall-outside.ini" -c matcaps/gold.png \
+		--size 160x120 --output "$out/render/wall-outside.png" 2>"$out/wall-outside.log" &&
+		grep -q "wall-outside.ini:3: \[wall\] position = 3,1 is outside the wall of 2 columns and 1 rows; expected COLUMN,ROW from 1,1 (top left) to 2,1" "$out/wall-outside.log" &&
+		"$KIOSK" -q --backend $offscreen -c matcaps/gold.png --size 160x120 \
+			--output "$out/render/wall-none.png" &&
+		cmp "$out/render/wall-outside.png" "$out/render/wall-none.png" &&
+		! "$KIOSK" --config "$out/wall-outside.ini" --check-config >/dev/null 2>&1
+}
+# A wall of two portrait panels side by side ([display] rotation = 90):
+# the viewer's columns are the buffers' rows, the right screen's on top.
+wall_portrait() {
+	_k="$KIOSK -q --backend $offscreen -c matcaps/gold.png --rotate 90"
+	_w=$out/render/wall-portrait
+	$_k --size 160x240 --output "$_w-whole.png" &&
+		$_k --size 160x120 --wall-columns 2 --wall-position 1,1 --output "$_w-1-1.png" &&
+		$_k --size 160x120 --wall-columns 2 --wall-position 2,1 --output "$_w-2-1.png" &&
+		"$TOOLS/stitch" "$_w-stitched.png" 1 2 0 0 "$_w-2-1.png" "$_w-1-1.png" &&
+		"$TOOLS/imgdiff" --tol 8 --share 0.005 "$_w-whole.png" "$_w-stitched.png"
+}
+test_wall_seam() {
+	need_models
+	check "a wall of 2x1: the slices, side by side, are the whole picture" wall_seam 2x1 2 1
+	check "a wall of 2x2: the slices, side by side, are the whole picture" wall_seam 2x2 2 2
+	check "a wall of 2x2: one gradient behind it, not one a screen" wall_seam 2x2-gradient 2 2 \
+		--background '#f2ead8, #5a4a3a'
+	check "a wall of 3x1: one picture behind it, not one a screen" wall_seam 3x1-image 3 1 \
+		--background "$out/models/backdrop.png"
+	check "a wall of 2x2: a displaced model subdivided for the wall, not a screen" \
+		wall_seam 2x2-displaced 2 2 --model "$out/models/sphere-coarse.glb" \
+		--displacement-map "$out/models/height.png" --displacement-scale 0.15
+	cp "$out/models/long.glb" "$out/models/wall-hot.glb"
+	printf '%s\n' '[hotspot.rim]' 'point = 2 0 0.866' 'look = badge' 'color = #ffcc00' \
+		'[hotspot.glaze]' 'point = -2 0.5 0.707' 'look = badge' 'color = #40c0ff' \
+		>"$out/models/wall-hot.ini"
+	check "a wall of 2x1: the hotspots' badges where the whole wall has them" wall_seam 2x1-hot 2 1 \
+		--model "$out/models/wall-hot.glb"
+	check "a wall of two portrait panels: the slices, stacked as the buffers turn, are the whole" \
+		wall_portrait
+	check "a position outside the wall: said with its line, the whole picture drawn" wall_outside
+}
+
 test_preview() {
 	need_models
 	# A hotspot's text[de] (issue 33): --hotspot 1 --lang de shows the

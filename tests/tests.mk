@@ -29,6 +29,7 @@ UNIT_TESTS  += precedence model_name
 UNIT_TESTS  += knob visits
 UNIT_TESTS  += remote
 UNIT_TESTS  += hotspot hotspot_settings hotspot_place hotspot_node
+UNIT_TESTS  += wall
 TOOLS_DIR   := $(BUILD)/tools
 ASAN_BUILD  := $(BUILD)/asan
 # MK_TEST_HOOKS: the test hooks (MK_TEST_PREPARE_DELAY_MS, src/app/reload.c)
@@ -88,6 +89,11 @@ $(TOOLS_DIR)/hues: tests/tools/hues.c $(BUILD)/util/image.o $(BUILD)/util/file.o
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -o $@ $^ $(PKG_LIBS) -lm
 test-tools: $(TOOLS_DIR)/hues
+# A wall's screens side by side (tests/golden wall-2x2, the seam test).
+$(TOOLS_DIR)/stitch: tests/tools/stitch.c $(BUILD)/util/image.o $(BUILD)/util/file.o $(BUILD)/util/log.o
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -o $@ $^ $(PKG_LIBS) -lm
+test-tools: $(TOOLS_DIR)/stitch
 # The manual pages as the settings table writes them now (test_man compares
 # them with config/'s).
 test-tools: $(MAN_BUILT)
@@ -215,7 +221,7 @@ QUICK_ENV    = KIOSK=$(QUICK_BUILD)/matcap-kiosk UNIT_DIR=$(QUICK_BUILD)/tests \
 quick:
 	+@case " $$MAKEFLAGS " in *" -j"* | *jobserver*) j= ;; *) j=-j$$(nproc) ;; esac; \
 		$(QUICK_MAKE) $$j $(QUICK_BUILD)/matcap-kiosk unit-tests \
-		$(QUICK_BUILD)/tools/mkmodels $(QUICK_BUILD)/tools/imgdiff
+		$(QUICK_BUILD)/tools/mkmodels $(QUICK_BUILD)/tools/imgdiff $(QUICK_BUILD)/tools/stitch
 	@$(QUICK_ENV) sh -c 'out=tests/out/quick; . tests/suite.sh; test_unit; test_golden; summary'
 
 # The same with ThreadSanitizer (the content worker and the loop share

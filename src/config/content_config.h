@@ -6,6 +6,7 @@
 
 #include "config/lang_text.h"
 #include "render/shading.h"
+#include "render/wall.h"
 #include "scene/text/caption.h"
 #include "scene/mesh/material.h"
 #include "state/hotspot.h"
@@ -44,7 +45,8 @@ struct content_config {
 	/* [kiosk] prepare_threads: the level of detail's threads; 0: auto
 	 * (one a core, scene/mesh/lod_split.h) */
 	int prepare_threads;
-	int rotation; /* the panel's, degrees */
+	int rotation;		 /* the panel's, degrees */
+	struct wall_layout wall; /* [wall]: this screen's slice of a wall; 1x1: none */
 	struct material_config material;
 	struct frame_config frame;     /* [frame]: orientation, start view, limits, stops */
 	struct caption_config caption; /* [caption] */

@@ -4,6 +4,7 @@
 #include "config/options.h"
 #include "state/schedule.h"
 #include "config/settings.h"
+#include "config/wall_settings.h"
 #include "render/background.h"
 #include "util/log.h"
 
@@ -137,6 +138,8 @@ enum options_status options_parse(struct options *o, int argc, char **argv)
 	while ((c = getopt_long(argc, argv, shorts, longs, NULL)) != -1)
 		if ((ret = apply_arg(o, c, optarg)))
 			return ret;
+	/* Said, and shown without the wall: not a reason to stay dark. */
+	o->wall_refused = wall_settings_check(o);
 	return check_command_line(o, argc, argv);
 }
 

@@ -38,6 +38,7 @@ void option_defaults(struct options *o)
 	o->content.caption.padding = 12;
 	o->content.caption.drift = true;
 	o->content.anim_speed = 1.0;
+	o->content.wall = (struct wall_layout){.columns = 1, .rows = 1, .column = 1, .row = 1};
 	o->content.anim_time = -1.0; /* no --time: the rest pose */
 	o->content.anim_fps = 30;
 	material_config_defaults(&o->content.material);
@@ -195,7 +196,7 @@ static bool same_value(const struct options *a, const struct options *b, const s
 	if (d->kind == K_STRING)
 		return same_string(get_string(x), get_string(y));
 	/* WxH: the height is the int after the width. */
-	return memcmp(x, y, d->kind == K_SIZE ? 2 * sizeof(int) : d->size) == 0;
+	return memcmp(x, y, OPTION_TWO_INTS(d) ? 2 * sizeof(int) : d->size) == 0;
 }
 
 unsigned options_changed(const struct options *a, const struct options *b)
@@ -241,6 +242,9 @@ void option_accepted(const struct option_def *d, char *buf, size_t n)
 	case K_SIZE:
 		snprintf(buf, n, "WIDTHxHEIGHT, each from %g to %g", d->lo, d->hi);
 		return;
+	case K_PAIR:
+		snprintf(buf, n, "%s, each a whole number from %g to %g", d->arg, d->lo, d->hi);
+		return;
 	case K_FLAG:
 		snprintf(buf, n, "true or false");
 		return;
@@ -267,13 +271,14 @@ static bool parse_number(const char *s, double lo, double hi, double step, doubl
 	return step == 0 || (*out == (double)(long)*out && (long)*out % (long)step == 0);
 }
 
-/* WxH into two ints side by side (the static asserts above). */
-static bool parse_size(const char *s, const struct option_def *d, char *field)
+/* WxH (or A,B: sep) into two ints side by side (the static asserts
+ * above). */
+static bool parse_size(const char *s, const struct option_def *d, char *field, char sep)
 {
 	char w[16], h[16];
 	double a, b;
 	int wh[2];
-	const char *x = strchr(s, 'x');
+	const char *x = strchr(s, sep);
 
 	if (!x || x == s || (size_t)(x - s) >= sizeof(w) || strlen(x + 1) >= sizeof(h))
 		return false;
@@ -355,7 +360,9 @@ bool option_set_value(struct options *o, const struct option_def *d, const char 
 		put_string(p, copy);
 		return copy != NULL;
 	case K_SIZE:
-		return parse_size(value, d, p);
+		return parse_size(value, d, p, 'x');
+	case K_PAIR:
+		return parse_size(value, d, p, ',');
 	case K_CHOICE:
 	case K_LEVEL:
 		return set_choice(p, d, value);

@@ -40,6 +40,7 @@ enum options_section {
 	OPTIONS_CAPTION,
 	OPTIONS_KNOB,
 	OPTIONS_MQTT,
+	OPTIONS_WALL,
 	OPTIONS_SECTIONS
 };
 
@@ -91,6 +92,9 @@ struct options {
 	 * options_copy does not copy it (a copy has none). */
 	struct options_origins *origins;
 	bool include_ignored; /* the include had errors: the installed files alone */
+	/* [wall] settings that did not hold together, said and put back
+	 * (config/wall_settings.h): --check-config's verdict counts them. */
+	int wall_refused;
 	/* the command line only */
 	char *config;
 	char *import;
@@ -111,7 +115,19 @@ struct options {
  * its name. A K_DOUBLE with choices takes its first word for 0 (auto).
  * K_CHOICE: an index into choices, kept as an enum (or a bool
  * for a choice of two). */
-enum option_kind { K_FLAG, K_STRING, K_INT, K_DOUBLE, K_DEGREES, K_SIZE, K_CHOICE, K_LEVEL };
+enum option_kind {
+	K_FLAG,
+	K_STRING,
+	K_INT,
+	K_DOUBLE,
+	K_DEGREES,
+	K_SIZE,
+	K_CHOICE,
+	K_LEVEL,
+	K_PAIR /* two ints as A,B ([wall] position), kept side by side as K_SIZE's */
+};
+/* Whether d's value is two ints side by side (WxH, or A,B). */
+#define OPTION_TWO_INTS(d) ((d)->kind == K_SIZE || (d)->kind == K_PAIR)
 
 /* The command line only: no [section] key. */
 #define OPTION_CLI OPTIONS_SECTIONS
@@ -131,7 +147,7 @@ struct option_def {
 
 /* The table's length: the compiler refuses an entry more, and
  * tests/unit/test_options.c one less. */
-#define OPTION_DEFS 146
+#define OPTION_DEFS 151
 extern const struct option_def option_defs[OPTION_DEFS];
 
 void option_defaults(struct options *o);

@@ -101,6 +101,7 @@ static const char *type_word(const struct option_def *d)
 	    [K_DOUBLE] = "number",
 	    [K_DEGREES] = "number, in degrees",
 	    [K_SIZE] = "size",
+	    [K_PAIR] = "two whole numbers",
 	    [K_CHOICE] = "one word of a list",
 	    [K_LEVEL] = "one word of a list",
 	};
@@ -131,7 +132,9 @@ static void default_text(const struct options *o, const struct option_def *d, ch
 			snprintf(buf, n, "%d", *(const int *)p);
 		break;
 	case K_SIZE:
-		snprintf(buf, n, "%dx%d", ((const int *)p)[0], ((const int *)p)[1]);
+	case K_PAIR:
+		snprintf(buf, n, d->kind == K_SIZE ? "%dx%d" : "%d,%d", ((const int *)p)[0],
+			 ((const int *)p)[1]);
 		break;
 	case K_LEVEL:
 		for (i = 0; i < LOG_LEVELS && log_levels[i] != *(const enum log_level *)p; i++)

@@ -90,7 +90,7 @@ int content_config_keep_cli(struct content_config *dst, const struct content_con
 			continue;
 		if (d->kind != K_STRING) { /* WxH: two ints side by side */
 			memcpy((char *)dst + at, (const char *)cli + at,
-			       d->kind == K_SIZE ? 2 * sizeof(int) : d->size);
+			       OPTION_TWO_INTS(d) ? 2 * sizeof(int) : d->size);
 			continue;
 		}
 		memcpy(&s, (const char *)cli + at, sizeof(s));

@@ -29,6 +29,7 @@ const struct options_section_rule options_sections[OPTIONS_SECTIONS] = {
     [OPTIONS_KNOB] = {"knob", OPTIONS_REOPEN, NULL,
 		      "at once; the knobs are opened again if this section changed"},
     [OPTIONS_MQTT] = {"mqtt", OPTIONS_AT_START, NULL, "at the next start (systemctl restart)"},
+    [OPTIONS_WALL] = {"wall", OPTIONS_LIVE, NULL, "at once"},
 };
 
 static const char *const backend_names[] = {"auto", "kms", "osmesa", "egl-headless", NULL};
@@ -66,6 +67,12 @@ static const char *const sync_names[] = {"off", "leader", "follower", NULL}; /* 
 _Static_assert(offsetof(struct display_config, height) ==
 		   offsetof(struct display_config, width) + sizeof(int),
 	       "display width, height");
+_Static_assert(offsetof(struct wall_layout, row) ==
+		   offsetof(struct wall_layout, column) + sizeof(int),
+	       "wall column, row");
+_Static_assert(offsetof(struct wall_layout, screen_h) ==
+		   offsetof(struct wall_layout, screen_w) + sizeof(int),
+	       "wall screen width, height");
 _Static_assert(offsetof(struct camera_feed_config, height) ==
 		   offsetof(struct camera_feed_config, width) + sizeof(int),
 	       "camera width, height");
@@ -434,6 +441,21 @@ const struct option_def option_defs[OPTION_DEFS] = {
     {"hotspot", 0, OPTION_CLI, NULL, K_INT, AT(hotspot), 1, 8, 0, NULL, "N",
      "draw offscreen the view of the model's hotspot N (1: its first [hotspot.NAME]) with its "
      "text, as a stop at it shows it (with --output)"},
+    {"wall-columns", 0, OPTIONS_WALL, "columns", K_INT, AT(content.wall.columns), 1, WALL_MAX, 0,
+     NULL, "N", "a wall of screens showing one picture: its screens across (1: no wall)"},
+    {"wall-rows", 0, OPTIONS_WALL, "rows", K_INT, AT(content.wall.rows), 1, WALL_MAX, 0, NULL, "N",
+     "the wall's screens down (1: no wall)"},
+    {"wall-position", 0, OPTIONS_WALL, "position", K_PAIR, AT(content.wall.column), 1, WALL_MAX, 0,
+     NULL, "COLUMN,ROW",
+     "this screen's place in the wall, from 1,1 at the top left (2,1: the second across); "
+     "outside the wall: the whole picture, said in the journal"},
+    {"wall-bezel", 0, OPTIONS_WALL, "bezel", K_DOUBLE, AT(content.wall.bezel), 0, WALL_BEZEL_MAX, 0,
+     NULL, "MM",
+     "millimetres of dark frame between two screens' pictures, both frames together: "
+     "the picture goes on behind it (needs screen_size)"},
+    {"wall-screen-size", 0, OPTIONS_WALL, "screen_size", K_SIZE, AT(content.wall.screen_w), 1, 5000,
+     1, NULL, "WxH",
+     "millimetres of one screen's picture (its active area), to turn the bezel into pixels"},
 };
 
 const char *backend_name(enum backend_kind kind)

@@ -60,8 +60,9 @@ void option_value_text(const struct options *o, const struct option_def *d, char
 		snprintf(buf, n, "%s", b ? "true" : "false");
 		return;
 	case K_SIZE:
+	case K_PAIR:
 		memcpy(wh, field(o, d), sizeof(wh));
-		snprintf(buf, n, "%dx%d", wh[0], wh[1]);
+		snprintf(buf, n, d->kind == K_SIZE ? "%dx%d" : "%d,%d", wh[0], wh[1]);
 		return;
 	case K_CHOICE:
 	case K_LEVEL:

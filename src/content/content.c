@@ -389,13 +389,27 @@ static int reload_model(struct content *s, const struct content_config *o)
 	return ret;
 }
 
+/* A wall's screen magnifies the model as the whole wall does: its level
+ * of detail and its displacement's subdivision are judged at the wall's
+ * pixels per unit, and kept in the cache under the wall's size (kw x kh:
+ * width x height with no wall). */
+static double wall_density(const struct content_config *o, int width, int height, int *kw, int *kh)
+{
+	wall_pixels(&o->wall, o->rotation, width, height, kw, kh);
+	if (*kw == width && *kh == height)
+		return 1.0;
+	return sphere_fit_pixels_per_unit(*kw, *kh) / sphere_fit_pixels_per_unit(width, height);
+}
+
 static int prepare_mesh(struct content *s, const struct content_config *o, int width, int height)
 {
 	bool displaced = s->material.features & MATERIAL_DISPLACEMENT;
-	int ret = 0;
+	int ret = 0, kw, kh;
+	double density;
 
 	o = content_settings(s, o);
-	if (content_cache_fits(s, width, height)) {
+	density = wall_density(o, width, height, &kw, &kh);
+	if (content_cache_fits(s, kw, kh)) {
 		log_info("%s: the prepared mesh from the cache (%u triangles)%s", s->model_path,
 			 s->mesh.index_count / 3, s->play ? ", with its live playback" : "");
 		content_frame(s, o, width, height);
@@ -412,7 +426,7 @@ static int prepare_mesh(struct content *s, const struct content_config *o, int w
 		ret = reload_model(s, o);
 	}
 	if (!ret)
-		ret = material_prepare_mesh(&s->material, &s->mesh, width, height);
+		ret = material_prepare_mesh(&s->material, &s->mesh, kw, kh);
 	/* The fit magnifies the picture: the level of detail judges its
 	 * pixels as drawn (the zoom of the whole mesh, then of the simplified
 	 * one, which a start from the cache finds too). */
@@ -421,16 +435,16 @@ static int prepare_mesh(struct content *s, const struct content_config *o, int w
 	if (!ret)
 		content_play_check(s);
 	/* The live kiosk's large model: coarse now, whole later (one fit). */
-	if (!ret && (ret = content_coarse_begin(s, o, displaced ? 0.0 : o->lod_pixels / s->zoom,
-						width, height)))
+	if (!ret && (ret = content_coarse_begin(
+			 s, o, displaced ? 0.0 : o->lod_pixels / s->zoom / density, width, height)))
 		return ret < 0 ? ret : 0;
 	/* No level of detail for a model that plays (content.h). */
 	if (!ret && !s->play)
-		ret =
-		    lod_prepare_mesh_threads(&s->mesh, displaced ? 0.0 : o->lod_pixels / s->zoom,
-					     width, height, lod_threads(o->prepare_threads), NULL);
+		ret = lod_prepare_mesh_threads(
+		    &s->mesh, displaced ? 0.0 : o->lod_pixels / s->zoom / density, width, height,
+		    lod_threads(o->prepare_threads), NULL);
 	if (!ret)
-		content_cache_pack(s, width, height);
+		content_cache_pack(s, kw, kh);
 	if (!ret)
 		content_frame(s, o, width, height);
 	return ret;

@@ -56,8 +56,13 @@ static struct framing_room caption_room(const struct content *s, const struct co
 					int width, int height)
 {
 	const struct caption_config *c = &o->caption;
-	int frame_h = o->rotation % 180 ? width : height, ch = caption_height(s);
-	double band;
+	struct wall_slice slice;
+	int ch = caption_height(s);
+	double band, frame_h;
+
+	/* A wall's band is the bottom (or top) row's, a share of the wall. */
+	wall_slice_turned(&o->wall, o->rotation, width, height, &slice);
+	frame_h = slice.height;
 	bool top = c->position == CAPTION_TOP || c->position == CAPTION_TOP_LEFT ||
 		   c->position == CAPTION_TOP_RIGHT;
 
@@ -72,6 +77,7 @@ void content_frame(struct content *s, const struct content_config *o, int width,
 {
 	struct view v = content_view(o);
 	struct framing_room room;
+	struct wall_slice slice;
 	struct framing f;
 
 	framing_begin(&f, &v, width, height);
@@ -89,10 +95,10 @@ void content_frame(struct content *s, const struct content_config *o, int width,
 	s->zoom = framing_place(&f, o->fit > 0 ? o->fit : CONTENT_FIT_DEFAULT, &room, s->outline);
 	s->room[0] = room.cx;
 	s->room[1] = room.cy;
+	wall_slice_turned(&v.wall, v.rotation, width, height,
+			  &slice);   /* the wall's aspect, or the frame's */
 	if (width > 0 && height > 0) /* in the unit render_matrices divides out */
-		s->outline[0] *= sphere_fit_x_unit(v.ortho, v.rotation == 90 || v.rotation == 270
-								? (double)height / width
-								: (double)width / height);
+		s->outline[0] *= sphere_fit_x_unit(v.ortho, slice.aspect);
 	if (o->zoom > 0) /* --zoom: that scale, about the frame's centre as before */
 		s->zoom = o->zoom, s->outline[0] = s->outline[1] = s->room[1] = 0;
 	log_debug("framing: zoom %.6f, the outline's centre (%.3f, %.3f) to (%.3f, %.3f) (over a "

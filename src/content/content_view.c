@@ -10,7 +10,7 @@
 
 struct view content_view(const struct content_config *o)
 {
-	struct view v = {.ortho = o->ortho, .rotation = o->rotation};
+	struct view v = {.ortho = o->ortho, .rotation = o->rotation, .wall = o->wall};
 	struct app_frame f;
 	struct quat rest;
 	struct background_spec bg;

@@ -494,6 +494,12 @@ int check_config_run(const struct options *o, FILE *out)
 		return CHECK_BAD_SETTINGS;
 	}
 	c.bad_texts = check_texts_at(&c);
+	if (o->wall_refused) {
+		log_err("%s: [wall] has %d error%s (above): this screen would show the whole "
+			"picture",
+			name, o->wall_refused, o->wall_refused == 1 ? "" : "s");
+		return CHECK_BAD_SETTINGS;
+	}
 	if (o->content.hotspots.dropped) {
 		log_err("%s: %d hotspot%s left out for the errors above", name,
 			o->content.hotspots.dropped, o->content.hotspots.dropped == 1 ? "" : "s");

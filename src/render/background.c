@@ -15,7 +15,7 @@ struct background {
 	const struct gl *gl;
 	struct background_spec spec;
 	GLuint program, texture;
-	GLint turn, scale, top, bottom, image;
+	GLint turn, scale, slice, top, bottom, image;
 	int image_width, image_height;
 };
 
@@ -157,6 +157,7 @@ static int build(struct background *b)
 		return ret;
 	b->turn = gl->GetUniformLocation(b->program, "u_turn");
 	b->scale = gl->GetUniformLocation(b->program, "u_scale");
+	b->slice = gl->GetUniformLocation(b->program, "u_slice");
 	b->top = gl->GetUniformLocation(b->program, "u_top");
 	b->bottom = gl->GetUniformLocation(b->program, "u_bottom");
 	b->image = gl->GetUniformLocation(b->program, "u_image");
@@ -201,19 +202,26 @@ void background_free(struct background *b)
 }
 
 /* The image's texture coordinates over the screen: it covers the panel
- * (as the viewer sees it, turned a quarter on a portrait panel) and
- * keeps its shape, so the longer axis is cropped about its centre. */
-static void cover_scale(const struct background *b, int width, int height, int rotation,
-			float out[2])
+ * (as the viewer sees it, turned a quarter on a portrait panel; a wall's
+ * whole picture, screen the wall's aspect) and keeps its shape, so the
+ * longer axis is cropped about its centre. */
+static void cover_scale(const struct background *b, double screen, float out[2])
 {
-	double sw = rotation % 180 ? height : width, sh = rotation % 180 ? width : height;
-	double screen = sw / sh, image = (double)b->image_width / b->image_height;
+	double image = (double)b->image_width / b->image_height;
 
 	out[0] = (float)(image > screen ? screen / image : 1.0);
 	out[1] = (float)(image > screen ? 1.0 : image / screen);
 }
 
 void background_draw(const struct background *b, int width, int height, int rotation)
+{
+	struct wall_slice whole;
+
+	wall_slice_turned(&(struct wall_layout){0}, rotation, width, height, &whole);
+	background_draw_slice(b, &whole, rotation);
+}
+
+void background_draw_slice(const struct background *b, const struct wall_slice *s, int rotation)
 {
 	static const float quad[8] = {-1, -1, 1, -1, -1, 1, 1, 1};
 	/* The panel's quarter turn, as poster.c and the renderer turn. */
@@ -228,12 +236,17 @@ void background_draw(const struct background *b, int width, int height, int rota
 	if (!b->program)
 		return; /* a plain colour: the clear is all of it */
 	if (b->texture)
-		cover_scale(b, width, height, rotation, scale);
+		cover_scale(b, s->aspect, scale);
 	gl->Disable(GL_DEPTH_TEST);
 	gl->Disable(GL_CULL_FACE);
 	gl->UseProgram(b->program);
 	gl->Uniform4f(b->turn, c[k], sn[k], -sn[k], c[k]);
 	gl->Uniform2f(b->scale, scale[0], scale[1]);
+	/* This screen's part of the wall: its centre and half sizes. */
+	gl->Uniform4f(b->slice, (float)((s->rect[0] + s->rect[2]) / 2),
+		      (float)((s->rect[1] + s->rect[3]) / 2),
+		      (float)((s->rect[2] - s->rect[0]) / 2),
+		      (float)((s->rect[3] - s->rect[1]) / 2));
 	gl->Uniform3f(b->top, b->spec.top[0], b->spec.top[1], b->spec.top[2]);
 	gl->Uniform3f(b->bottom, b->spec.bottom[0], b->spec.bottom[1], b->spec.bottom[2]);
 	if (b->texture) {

@@ -6,6 +6,7 @@
 #define MK_BACKGROUND_H
 
 #include "render/gl.h"
+#include "render/wall.h"
 #include "util/image.h"
 
 #include <stdbool.h>
@@ -48,5 +49,8 @@ void background_free(struct background *b);
 /* Clear colour and depth, then the gradient or the image (one quad,
  * depth and culling off, left off), turned with the panel's rotation. */
 void background_draw(const struct background *b, int width, int height, int rotation);
+/* The same on a screen of a wall: its slice s (render/wall.h) of the
+ * gradient or the image that covers the whole wall. */
+void background_draw_slice(const struct background *b, const struct wall_slice *s, int rotation);
 
 #endif

@@ -5,13 +5,15 @@
 
 void framing_begin(struct framing *f, const struct view *v, int width, int height)
 {
-	bool quarter = v->rotation == 90 || v->rotation == 270;
+	struct wall_slice slice;
 	struct sphere_fit fit;
 	double t;
 
 	/* The same camera as render_matrices: the panel's quarter turn swaps
-	 * the axes after projection, which the largest of x and y ignores. */
-	sphere_fit_init(&fit, quarter ? (double)height / width : (double)width / height);
+	 * the axes after projection, which the largest of x and y ignores;
+	 * a wall's screen is framed as the whole wall, the model fitted to it. */
+	wall_slice_turned(&v->wall, v->rotation, width, height, &slice);
+	sphere_fit_init(&fit, slice.aspect);
 	*f = (struct framing){.orientation = v->orientation,
 			      .ortho = v->ortho,
 			      .distance = fit.distance,

@@ -331,10 +331,13 @@ bool matcap_filter_mipmaps(enum matcap_filter filter, int side, int width, int h
 	return 2.0 * sphere_fit_pixels_per_unit(width, height) <= (double)side;
 }
 
-void render_matcap_choose_filter(struct renderer *r, const int vp[4])
+void render_matcap_choose_filter(struct renderer *r, const struct view *v, const int vp[4])
 {
-	bool mip = r->matcap_mippable &&
-		   matcap_filter_mipmaps(r->matcap_filter, r->matcap_side, vp[2], vp[3]);
+	int w, h; /* a wall's screen shows the model as large as the wall does */
+	bool mip;
+
+	wall_pixels(&v->wall, v->rotation, vp[2], vp[3], &w, &h);
+	mip = r->matcap_mippable && matcap_filter_mipmaps(r->matcap_filter, r->matcap_side, w, h);
 
 	if (mip == r->matcap_mipmapped || r->matcap_override)
 		return;
@@ -565,11 +568,13 @@ int renderer_set_mode(struct renderer *r, enum shading_mode mode, bool ortho)
 void render_matrices(const struct view *v, int width, int height, float modelview[16],
 		     float projection[16])
 {
-	bool quarter = v->rotation == 90 || v->rotation == 270;
-	float rot[16], move[16], proj[16], panel[16];
+	float rot[16], move[16], proj[16], panel[16], crop[16];
+	struct wall_slice slice;
 	struct sphere_fit fit;
 
-	sphere_fit_init(&fit, quarter ? (double)height / width : (double)width / height);
+	/* The camera frames the whole wall (one screen when there is none). */
+	wall_slice_turned(&v->wall, v->rotation, width, height, &slice);
+	sphere_fit_init(&fit, slice.aspect);
 	mat4_from_quat(rot, v->orientation);
 	mat4_translate(move, 0, 0, -fit.distance);
 	mat4_multiply(modelview, move, rot);
@@ -590,6 +595,11 @@ void render_matrices(const struct view *v, int width, int height, float modelvie
 
 		proj[4 * i] += (float)(v->room[0] - z * ox) * proj[4 * i + 3];
 		proj[4 * i + 1] += (v->room[1] - z * v->outline[1]) * proj[4 * i + 3];
+	}
+	/* A wall's screen shows its slice of that one frustum: off-axis. */
+	if (!slice.whole) {
+		wall_crop(&slice, crop);
+		mat4_multiply(proj, crop, proj);
 	}
 	/* A portrait panel turns the picture, not the scanout, so it works
 	 * with every driver and plane. */

@@ -12,6 +12,7 @@
 #include "scene/mesh/mesh.h"
 #include "scene/mesh/mesh_pack.h"
 #include "render/shading.h"
+#include "render/wall.h"
 
 #include <stdbool.h>
 
@@ -25,6 +26,9 @@ struct view {
 	 * picture is shifted so (render/framing.h). Both 0: not shifted. */
 	float outline[2], room[2];
 	float background[3]; /* the clear colour, without renderer_set_background */
+	/* [wall]: the camera frames the whole wall, this frame shows its
+	 * slice (render/wall.h). Zeroed: no wall. */
+	struct wall_layout wall;
 };
 
 struct renderer;

@@ -179,7 +179,7 @@ static void draw_with(struct renderer *r, int side, const struct view *v, const 
 	struct draw_state st = {.culled = true, .mv = mv, .proj = proj, .nm = nm};
 
 	gl->Viewport(vp[0], vp[1], vp[2], vp[3]);
-	render_matcap_choose_filter(r, vp);
+	render_matcap_choose_filter(r, v, vp);
 	render_matrices(v, vp[2], vp[3], mv, proj);
 	draw_list_sort_blended(&r->list, mv);
 	/* The model-view is a rotation and a translation: its upper 3x3 is
@@ -225,7 +225,10 @@ void renderer_draw(struct renderer *r, const struct view *v, int width, int heig
 	int vp[4] = {0, 0, width, height};
 
 	if (r->background) {
-		background_draw(r->background, width, height, v->rotation);
+		struct wall_slice s;
+
+		wall_slice_turned(&v->wall, v->rotation, width, height, &s);
+		background_draw_slice(r->background, &s, v->rotation);
 	} else {
 		gl->ClearColor(v->background[0], v->background[1], v->background[2], 1.0f);
 		gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);

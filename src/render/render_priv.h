@@ -171,7 +171,7 @@ void render_morph_free(struct renderer *r);
  * and morphs. */
 void render_skin_source(const struct renderer *r, struct shader_source *src);
 /* The matcap's minifying filter for a viewport (render.c). */
-void render_matcap_choose_filter(struct renderer *r, const int vp[4]);
+void render_matcap_choose_filter(struct renderer *r, const struct view *v, const int vp[4]);
 
 /* render_variant.c: the mesh's variants taken for the next
  * renderer_set_packed (renderer_set_mesh: 0 or -ENOMEM); made current

@@ -35,7 +35,7 @@ done <<EOF
 $keys
 EOF
 rules=$($kiosk --help | sed -n 's/^  \[\([a-z]*\)\] *\(.*\)$/\1 \2/p')
-[ "$(echo "$rules" | wc -l)" -eq 14 ] || { echo "no reload rule per section in --help"; exit 1; }
+[ "$(echo "$rules" | wc -l)" -eq 15 ] || { echo "no reload rule per section in --help"; exit 1; }
 while read -r section says; do
 	if ! in_section "$ini" "[$section]" "" "; On reload: $says."; then
 		echo "$ini: [$section] does not say what --help says a reload does: $says"

@@ -28,6 +28,7 @@ scenes="$scenes frame-up frame-start-view frame-own-look"
 scenes="$scenes render-scale-half normals-flat normals-smooth"
 scenes="$scenes morph-t1 morph-t3 morph-pingpong skin-t1 nodes-t1.7"
 scenes="$scenes hotspots-yaw0 hotspots-yaw180 hotspot-stop"
+scenes="$scenes wall-2x2"
 mkdir -p "$out" "$models"
 "$TOOLS/mkmodels" "$models" >/dev/null
 
@@ -282,6 +283,20 @@ render() {
 		esac
 		# shellcheck disable=SC2086 # two words
 		$k -c matcaps/gold.png --model "$m/long-hot.glb" $view --caption-size 14 --output "$o"
+		;;
+	# [wall]: a wall of 2x2 screens of 160x120 mm at 1 px a mm, with 8 mm
+	# of frame between two pictures, each screen's slice drawn by its own
+	# process, stitched with the bezels black (tests/tools/stitch): the
+	# long model crosses every border as one object, shifted by the gaps.
+	wall-2x2)
+		for p in 1,1 2,1 1,2 2,2; do
+			$k -c matcaps/gold.png --model "$m/long.glb" --start-yaw 35 --size 160x120 \
+				--wall-columns 2 --wall-rows 2 --wall-position $p --wall-bezel 8 \
+				--wall-screen-size 160x120 --output "$out/wall-2x2-$p.png"
+		done
+		"$TOOLS/stitch" "$o" 2 2 8 8 "$out/wall-2x2-1,1.png" "$out/wall-2x2-2,1.png" \
+			"$out/wall-2x2-1,2.png" "$out/wall-2x2-2,2.png"
+		rm -f "$out"/wall-2x2-?,?.png
 		;;
 	*)
 		echo "golden.sh: no scene named $1 (scenes: $scenes)" >&2

@@ -1,6 +1,7 @@
 #include "config/options.h"
 #include "config/settings.h"
 #include "app/reload.h"
+#include "util/log.h"
 
 #include <math.h>
 #include <setjmp.h>
@@ -292,10 +293,9 @@ static void table_is_full(void **state)
  * systemd's credentials, never kiosk.ini in clear). */
 static void mqtt_section(void **state)
 {
-	const char *path =
-	    write_ini("[mqtt]\nbroker = 127.0.0.1:1884\ntopic = kiosk/hall\n"
-		      "tls = yes\nca_file = /etc/ssl/ca.pem\nhome_assistant = yes\n"
-		      "sync = follower\ngroup = kiosk/wall\n");
+	const char *path = write_ini("[mqtt]\nbroker = 127.0.0.1:1884\ntopic = kiosk/hall\n"
+				     "tls = yes\nca_file = /etc/ssl/ca.pem\nhome_assistant = yes\n"
+				     "sync = follower\ngroup = kiosk/wall\n");
 	const char *argv[] = {"mk", "--config", path};
 	struct options o;
 
@@ -562,6 +562,74 @@ static void broken_include_is_ignored(void **state)
 	unlink(bad);
 }
 
+/* [wall] read strictly: a 2x2 wall with a bezel as written; each hostile
+ * value refused with its line and what was expected (the file then has
+ * errors, as any bad value); a position outside the wall, or a bezel
+ * without the screen's size, said with its file and line and the kiosk
+ * shown without the wall (the whole picture), the bezel as 0. */
+static void wall_section(void **state)
+{
+	static const char *const bad[] = {
+	    "position = 3;1", "position = 0,1",	       "position = 1,17",  "position = 2",
+	    "position = ,",   "position = 1,1,1",      "position = 1x1",   "position = -1,2",
+	    "columns = 17",   "columns = 99999999999", "rows = 0",	   "columns = 1.5",
+	    "bezel = nan",    "bezel = inf",	       "bezel = -1",	   "bezel = 201",
+	    "bezel = 1e400",  "screen_size = 0x0",     "screen_size = 1x", "screen_size = 600x-340",
+	    "rows = nan",     "screen_size = 99999x1"};
+	const char *argv[] = {"mk", "--config", NULL};
+	char text[200], last[400], *path;
+	struct options o;
+
+	(void)state;
+	argv[2] = write_ini("[wall]\ncolumns = 2\nrows = 2\nposition = 2,1\nbezel = 12.5\n"
+			    "screen_size = 598x336\n");
+	assert_int_equal(parse(&o, 3, argv), OPTIONS_OK);
+	assert_int_equal(o.content.wall.columns, 2);
+	assert_int_equal(o.content.wall.rows, 2);
+	assert_int_equal(o.content.wall.column, 2);
+	assert_int_equal(o.content.wall.row, 1);
+	assert_true(o.content.wall.bezel == 12.5);
+	assert_int_equal(o.content.wall.screen_w, 598);
+	assert_int_equal(o.content.wall.screen_h, 336);
+	assert_int_equal(o.wall_refused, 0);
+	options_release(&o);
+	unlink(argv[2]);
+	for (size_t i = 0; i < sizeof(bad) / sizeof(bad[0]); i++) {
+		snprintf(text, sizeof(text), "[wall]\n; one bad line\n%s\n", bad[i]);
+		argv[2] = path = write_ini(text);
+		assert_int_equal(parse(&o, 3, argv), OPTIONS_CONFIG);
+		log_last_error(last, sizeof(last));
+		snprintf(text, sizeof(text), "%s:3: [wall]", path);
+		assert_non_null(strstr(last, text));
+		assert_non_null(strstr(last, "expected"));
+		options_release(&o);
+		unlink(path);
+	}
+	/* Outside the wall: said, and no wall. */
+	argv[2] = path = write_ini("[wall]\ncolumns = 2\nposition = 3,1\n");
+	assert_int_equal(parse(&o, 3, argv), OPTIONS_OK);
+	log_last_error(last, sizeof(last));
+	snprintf(text, sizeof(text), "%s:3: [wall] position = 3,1 is outside", path);
+	assert_non_null(strstr(last, text));
+	assert_non_null(strstr(last, "expected COLUMN,ROW from 1,1 (top left) to 2,1"));
+	assert_int_equal(o.content.wall.columns, 1);
+	assert_int_equal(o.content.wall.column, 1);
+	assert_int_equal(o.wall_refused, 1);
+	options_release(&o);
+	unlink(path);
+	/* A bezel without the screen's size: said, taken as 0. */
+	argv[2] = path = write_ini("[wall]\ncolumns = 2\nbezel = 10\n");
+	assert_int_equal(parse(&o, 3, argv), OPTIONS_OK);
+	log_last_error(last, sizeof(last));
+	snprintf(text, sizeof(text), "%s:3: [wall] bezel = 10: a bezel needs [wall] screen_size",
+		 path);
+	assert_non_null(strstr(last, text));
+	assert_true(o.content.wall.bezel == 0);
+	assert_int_equal(o.content.wall.columns, 2);
+	options_release(&o);
+	unlink(path);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -576,6 +644,7 @@ int main(void)
 	    cmocka_unit_test(table_is_full),
 	    cmocka_unit_test(sections_into_module_configs),
 	    cmocka_unit_test(mqtt_section),
+	    cmocka_unit_test(wall_section),
 	    cmocka_unit_test(module_defaults),
 	    cmocka_unit_test(copy_is_deep),
 	    cmocka_unit_test(content_copy_is_deep),
