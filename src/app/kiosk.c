@@ -429,6 +429,7 @@ static int service_display(struct kiosk *k, const struct pollfd *fds)
 		log_err("%s: display failed", k->display->name);
 		return ret;
 	}
+	kiosk_clock_flipped(k);
 	if (ret > 0)
 		kiosk_tell_app(k, APP_DISPLAY_BACK);
 	return 0;

@@ -8,6 +8,11 @@
 
 #include <time.h>
 
+/* On a screen a frame reaches the glass at the first vblank after it is
+ * drawn: the state runs half a refresh ahead, so that each moment is
+ * shown on the vblank closest to it (a frame drawn in under half a
+ * refresh), and two screens of unrelated refreshes are at most half of
+ * theirs off each way. Offscreen a frame is shown when presented. */
 int64_t kiosk_clock_offset(const struct kiosk *k)
 {
 	uint64_t mono, real;
@@ -17,7 +22,7 @@ int64_t kiosk_clock_offset(const struct kiosk *k)
 	/* Read in that order the offset errs by one read's time, < 1 us. */
 	mono = clock_ns(CLOCK_MONOTONIC);
 	real = clock_ns(CLOCK_REALTIME);
-	return (int64_t)(real - mono);
+	return (int64_t)(real - mono + k->display->refresh_ns / 2);
 }
 
 void kiosk_follow_clock(struct kiosk *k)
@@ -32,15 +37,40 @@ void kiosk_follow_clock(struct kiosk *k)
 			 (double)step / 1e9);
 }
 
+static void log_frame(struct kiosk *k, double presented_s)
+{
+	log_debug("clock: frame %ld shows %.3f s, yaw %.6f, stop %d, presented at %.6f s",
+		  k->clock_frame.frame, (double)k->clock_frame.pose_ns / 1e9, k->clock_frame.yaw,
+		  k->clock_frame.stop, presented_s);
+	k->clock_frame.pending = false;
+}
+
 /* For the wall's measurements (tests/e2e/in-step.sh): which moment of the
- * shared clock the frame shows, and when it was presented. */
+ * shared clock the frame shows, and when it reached the screen (on KMS
+ * its flip's vblank, kiosk_clock_flipped). */
 void kiosk_clock_presented(struct kiosk *k)
 {
 	const struct app_state *st = app_state(k->app);
 
 	if (!k->applied.app.shared_clock || !st->pose_ns)
 		return;
-	log_debug("clock: frame %ld shows %.3f s, yaw %.6f, stop %d, presented at %.6f s",
-		  k->frames_drawn, (double)st->pose_ns / 1e9, st->yaw, st->stop,
-		  (double)clock_ns(CLOCK_REALTIME) / 1e9);
+	k->clock_frame.pending = true;
+	k->clock_frame.frame = k->frames_drawn;
+	k->clock_frame.pose_ns = st->pose_ns;
+	k->clock_frame.yaw = st->yaw;
+	k->clock_frame.stop = st->stop;
+	if (!k->display->refresh_ns)
+		log_frame(k, (double)clock_ns(CLOCK_REALTIME) / 1e9);
+}
+
+void kiosk_clock_flipped(struct kiosk *k)
+{
+	struct display *d = k->display;
+	double wall_less_mono;
+
+	if (!k->clock_frame.pending || d->waiting || !(d->flipped_s > 0))
+		return;
+	wall_less_mono =
+	    ((double)clock_ns(CLOCK_REALTIME) - (double)clock_ns(CLOCK_MONOTONIC)) / 1e9;
+	log_frame(k, d->flipped_s + wall_less_mono);
 }

@@ -155,6 +155,13 @@ struct kiosk {
 	 * what a page flip or an input may wait for (the bench reads it). */
 	uint64_t woke_ns;
 	int64_t clock_offset; /* [kiosk] clock = shared: CLOCK_REALTIME less CLOCK_MONOTONIC */
+	struct {	      /* a frame on a shared clock, until its flip (kiosk_clock.c) */
+		bool pending;
+		long frame;
+		uint64_t pose_ns;
+		double yaw;
+		int stop;
+	} clock_frame;
 	uint64_t longest_step_ns;
 	/* The same, from a reload's start to the first step after its
 	 * upload; logged then (the figure of issue 22 on the board). */
@@ -202,6 +209,7 @@ uint64_t kiosk_caption_deadline(struct kiosk *k, uint64_t now);
 int64_t kiosk_clock_offset(const struct kiosk *k);
 void kiosk_follow_clock(struct kiosk *k);
 void kiosk_clock_presented(struct kiosk *k);
+void kiosk_clock_flipped(struct kiosk *k);
 /* src/app/kiosk_anim.c: the animation's pose at now, a frame asked for
  * when it changed; returns when the next frame is due (CLOCK_NEVER:
  * none). */

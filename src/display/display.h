@@ -50,6 +50,11 @@ struct display {
 	/* A presented frame has not reached the screen yet (a page flip is
 	 * pending): draw nothing new until dispatch() clears it. */
 	bool waiting;
+	/* KMS: one refresh of the mode, and when the last frame reached the
+	 * screen (its flip's vblank, CLOCK_MONOTONIC s). 0 where there is no
+	 * vblank (offscreen: a frame is shown when it is presented). */
+	uint64_t refresh_ns;
+	double flipped_s;
 
 	/* Make the context current and bind the target to draw into. */
 	int (*begin_frame)(struct display *d);

@@ -235,7 +235,7 @@ static void on_flip(int fd, unsigned int frame, unsigned int sec, unsigned int u
 	k->base.waiting = false;
 	if (k->flips++ == 0)
 		k->first_flip_s = t;
-	k->last_flip_s = t;
+	k->last_flip_s = k->base.flipped_s = t;
 }
 
 /* Let a flip in flight finish, so the buffer it shows is not freed under
@@ -327,6 +327,7 @@ static int connect_display(struct display_kms *k)
 		return ret;
 	k->connected = true;
 	k->modeset = true;
+	k->base.refresh_ns = k->drm.mode.vrefresh ? 1000000000ull / k->drm.mode.vrefresh : 0;
 	log_info("kms: %s %s@%u, %s modesetting", k->drm.connector_name, k->drm.mode.name,
 		 k->drm.mode.vrefresh, k->drm.ops->name);
 	return 0;

@@ -38,6 +38,16 @@ start() { # NAME [OPTION...]: a kiosk on the shared clock, its log NAME.log
 		--clock shared --attract-after 1 --attract-fps 20 --log-level debug "$@" \
 		>"$dir/$name.log" 2>&1 &
 }
+# stop_both: the second half of the run, then both kiosks stopped; their
+# exit statuses in both_rc.
+stop_both() {
+	sleep $((seconds - seconds / 2))
+	kill -TERM $a_pid $b_pid
+	wait $a_pid
+	a_rc=$?
+	wait $b_pid
+	both_rc=$a_rc$?
+}
 # frames NAME: "MOMENT YAW PRESENTED" per frame, from the log.
 frames() {
 	sed -n 's/.*clock: frame [0-9]* shows \([0-9.]*\) s, yaw \([-0-9.]*\), stop [-0-9]*, presented at \([0-9.]*\) s$/\1 \2 \3/p' \
@@ -53,13 +63,8 @@ sleep $((seconds / 2))
 # The moment of the reload, on the shared clock (the kiosks' own).
 reload_at=$(date +%s.%N)
 kill -HUP $b_pid
-sleep $((seconds - seconds / 2))
-kill -TERM $a_pid $b_pid
-wait $a_pid
-a_rc=$?
-wait $b_pid
-b_rc=$?
-step "both kiosks end cleanly" test "$a_rc$b_rc" = 00
+stop_both
+step "both kiosks end cleanly" test "$both_rc" = 00
 step "the second one read its settings again midway" grep -q "reload" "$dir/b.log"
 frames a
 frames b
@@ -115,15 +120,10 @@ b_pid=$!
 sleep $((seconds / 2))
 press_at=$(date +%s.%N)
 mosquitto_pub -h 127.0.0.1 -p "$port" -t kiosk/leader/command -m "matcap next"
-sleep $((seconds - seconds / 2))
-kill -TERM $a_pid $b_pid
-wait $a_pid
-a_rc=$?
-wait $b_pid
-b_rc=$?
+stop_both
 kill $broker_pid
 wait $broker_pid 2>/dev/null
-step "mqtt: the leader and the follower end cleanly" test "$a_rc$b_rc" = 00
+step "mqtt: the leader and the follower end cleanly" test "$both_rc" = 00
 step "mqtt: the leader took the next matcap" grep -q "mqtt: matcap next" "$dir/leader.log"
 step "mqtt: the follower took the leader's step" grep -q "mqtt: the leader's step" "$dir/follower.log"
 frames leader
