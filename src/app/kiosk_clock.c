@@ -8,27 +8,32 @@
 
 #include <time.h>
 
-/* On a screen a frame reaches the glass at the first vblank after it is
- * drawn: the state runs half a refresh ahead, so that each moment is
- * shown on the vblank closest to it (a frame drawn in under half a
- * refresh), and two screens of unrelated refreshes are at most half of
- * theirs off each way. Offscreen a frame is shown when presented. */
+/* A frame reaches the screen some time after the state it shows: the
+ * time to draw it, then the wait for the next vblank. On a screen the
+ * state runs that much ahead, so each moment lands on the vblank closest
+ * to it: half a refresh until flips are timed, then the average time from
+ * a present to its flip (an eighth of each new one: a slow frame moves it
+ * little). Offscreen a frame is shown when it is presented. */
+#define LEAD_MAX_NS 1000000000ll
+
 int64_t kiosk_clock_offset(const struct kiosk *k)
 {
 	uint64_t mono, real;
+	int64_t lead = k->clock_lead ? k->clock_lead : (int64_t)k->display->refresh_ns / 2;
 
 	if (!k->applied.app.shared_clock)
 		return 0;
 	/* Read in that order the offset errs by one read's time, < 1 us. */
 	mono = clock_ns(CLOCK_MONOTONIC);
 	real = clock_ns(CLOCK_REALTIME);
-	return (int64_t)(real - mono + k->display->refresh_ns / 2);
+	return (int64_t)(real - mono) + lead;
 }
 
 void kiosk_follow_clock(struct kiosk *k)
 {
 	int64_t step;
 
+	k->clock_taken_ns = clock_ns(CLOCK_MONOTONIC);
 	k->clock_offset = kiosk_clock_offset(k);
 	step = app_set_clock(k->app, k->clock_offset);
 	if (step)
@@ -59,6 +64,7 @@ void kiosk_clock_presented(struct kiosk *k)
 	k->clock_frame.pose_ns = st->pose_ns;
 	k->clock_frame.yaw = st->yaw;
 	k->clock_frame.stop = st->stop;
+	k->clock_frame.drawn_ns = k->clock_taken_ns;
 	if (!k->display->refresh_ns)
 		log_frame(k, (double)clock_ns(CLOCK_REALTIME) / 1e9);
 }
@@ -67,9 +73,13 @@ void kiosk_clock_flipped(struct kiosk *k)
 {
 	struct display *d = k->display;
 	double wall_less_mono;
+	int64_t took;
 
 	if (!k->clock_frame.pending || d->waiting || !(d->flipped_s > 0))
 		return;
+	took = (int64_t)(d->flipped_s * 1e9) - (int64_t)k->clock_frame.drawn_ns;
+	if (took > 0 && took < LEAD_MAX_NS)
+		k->clock_lead = k->clock_lead ? k->clock_lead + (took - k->clock_lead) / 8 : took;
 	wall_less_mono =
 	    ((double)clock_ns(CLOCK_REALTIME) - (double)clock_ns(CLOCK_MONOTONIC)) / 1e9;
 	log_frame(k, d->flipped_s + wall_less_mono);

@@ -154,10 +154,13 @@ struct kiosk {
 	/* The loop thread's longest step, from a wake-up to the next sleep:
 	 * what a page flip or an input may wait for (the bench reads it). */
 	uint64_t woke_ns;
-	int64_t clock_offset; /* [kiosk] clock = shared: CLOCK_REALTIME less CLOCK_MONOTONIC */
-	struct {	      /* a frame on a shared clock, until its flip (kiosk_clock.c) */
+	int64_t clock_offset;	 /* [kiosk] clock = shared: CLOCK_REALTIME less CLOCK_MONOTONIC */
+	int64_t clock_lead;	 /* ... and the time a frame takes to the screen (kiosk_clock.c) */
+	uint64_t clock_taken_ns; /* CLOCK_MONOTONIC when the state was last advanced */
+	struct {		 /* a frame on a shared clock, until its flip (kiosk_clock.c) */
 		bool pending;
 		long frame;
+		uint64_t drawn_ns; /* CLOCK_MONOTONIC when its state was taken */
 		uint64_t pose_ns;
 		double yaw;
 		int stop;

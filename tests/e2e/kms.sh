@@ -176,17 +176,17 @@ vm_check "legacy: exit 0 and the previous mode and framebuffer are back" \
 
 # ---- [kiosk] clock = shared on a screen: each moment of the clock's
 # grid is logged when its flip reached the screen (the vblank's time); the
-# state runs half a refresh ahead so that it lands on the vblank closest
-# to it. How far from its moment each frame reached the screen is printed
-# (a measure: qemu's emulated CPU draws a 1024x768 frame in some 250 ms,
-# a frame on a Pi or a desktop in a few).
+# state runs ahead by the average time a frame takes to the screen, so
+# that it lands on the vblank closest to it. How far from its moment each
+# frame reached the screen is printed (a measure: qemu's emulated CPU
+# draws a 1024x768 frame in 250 to 700 ms, a Pi or a desktop in a few).
 kiosk_start shared.log --clock shared --attract-after 1 --attract-fps 20 --log-level debug
 sleep 8
 kiosk_stop TERM
 sed -n 's/.*clock: frame [0-9]* shows \([0-9.]*\) s, .* presented at \([0-9.]*\) s$/\1 \2/p' \
 	shared.log >shared.frames
-vm_check "clock = shared: 10 frames and more logged at their flip ($(wc -l <shared.frames))" \
-	test "$(wc -l <shared.frames)" -ge 10
+vm_check "clock = shared: 5 frames and more logged at their flip ($(wc -l <shared.frames))" \
+	test "$(wc -l <shared.frames)" -ge 5
 vm_check "clock = shared: every moment on the grid of 1/20 s" \
 	awk '{ ms = $1 * 1000; if ((ms + 0.5) % 50 >= 1) bad++ } END { exit bad > 0 }' shared.frames
 awk '{ print ($2 - $1) * 1000 }' shared.frames | sort -n | awk '{ v[NR] = $1 }
