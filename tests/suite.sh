@@ -355,6 +355,9 @@ test_preview() {
 		"$out/render/at-7.5.png"
 	check "--at 2 draws" preview at-2.png --at 2
 	check "--at 6 draws" preview at-6.png --at 6
+	check "--at 6 with [kiosk] clock = shared draws" preview at-6-shared.png --at 6 --clock shared
+	check "--at counts from the start on a shared clock too: the same still" \
+		cmp "$out/render/at-6.png" "$out/render/at-6-shared.png"
 	check "the start view draws" preview start.png
 	check "two moments of the tour differ, and from the start view" sh -c "
 		! cmp -s $out/render/at-2.png $out/render/at-6.png &&

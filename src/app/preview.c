@@ -91,6 +91,7 @@ int preview_moment(const struct options *o, const struct content *s, const struc
 	content_app_frame(c, &cfg.frame, &cfg.rest);
 	cfg.mode = c->mode;
 	cfg.attract_model_s = 0; /* one model: the one drawn */
+	cfg.shared_clock = false; /* --at counts from the start, not the wall clock */
 	/* --stop: the stop as a visitor's presses leave it, no tour after;
 	 * --at: the tour, even where attract_after = 0 turns it off. */
 	if (o->preview_stop > 0 || cfg.attract_after_s <= 0)
