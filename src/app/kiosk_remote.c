@@ -179,10 +179,14 @@ static void service_step(struct kiosk *k, uint64_t now)
 	else if (k->remote.due.at_ms > wall)
 		return;
 	k->remote.due_any = false;
-	/* On a shared clock the step is taken at the leader's time, so that
-	 * attract mode comes back on both together. */
-	if (k->applied.app.shared_clock)
+	/* On a shared clock the step is taken at the leader's time, from the
+	 * state as it was then, so that attract mode comes back on both
+	 * together, however late the step came (a retained one after a
+	 * restart). */
+	if (k->applied.app.shared_clock) {
 		now = k->remote.due.at_ms * 1000000ull - (uint64_t)k->clock_offset;
+		app_rewind(k->app, now);
+	}
 	follow(k, &k->remote.due, now);
 }
 

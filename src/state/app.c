@@ -535,6 +535,22 @@ static void reload(struct app *a, const struct app_config *cfg, int matcap_count
 	a->state.camera_on = camera_on && available;
 }
 
+void app_rewind(struct app *a, uint64_t time_ns)
+{
+	uint64_t t = app_clock(a, time_ns);
+	int models = a->model_count;
+	struct app_config cfg = a->cfg;
+	struct app_event none = {.time_ns = time_ns, .action = ACTION_NONE};
+
+	if (!a->cfg.shared_clock || t >= a->now_ns || t == 0)
+		return;
+	/* From the epoch again, advanced to just then: the pure state. */
+	reload(a, &cfg, a->matcap_count, time_ns - 1);
+	a->model_count = models;
+	advance(a, t);
+	input(a, &none);
+}
+
 int64_t app_set_clock(struct app *a, int64_t offset_ns)
 {
 	int64_t step = offset_ns - a->cfg.clock_offset_ns;

@@ -37,6 +37,13 @@ uint64_t app_advance(struct app *a, uint64_t now_ns);
  * the start; returns the step then, else 0. */
 #define APP_CLOCK_STEP_NS 1000000000ll
 int64_t app_set_clock(struct app *a, int64_t offset_ns);
+/* On a shared clock, a state change another kiosk made at time_ns (the
+ * caller's clock), maybe before this state's now: the state as it was
+ * then, with an input then (attract mode stops then, as it did there), to
+ * be advanced to now again. What moves by itself being a function of the
+ * clock and the last change, the two kiosks are then in step. Nothing on
+ * a kiosk's own clock, or for a time not before now. */
+void app_rewind(struct app *a, uint64_t time_ns);
 /* A time of the caller's clock on the state's (last_input_ns's). */
 uint64_t app_clock(const struct app *a, uint64_t now_ns);
 /* True in attract mode (what the visitors' counters call idle). */

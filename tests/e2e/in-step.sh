@@ -12,7 +12,9 @@
 # follower ([mqtt] sync) on a broker on 127.0.0.1, and the leader's next
 # matcap from MQTT midway: both stop attract mode at the press and begin
 # it again together (to the follower's taking it: the poses are compared
-# within 0.02 rad then, and the largest difference printed).
+# within 0.02 rad then, and the largest difference printed); and the
+# follower restarted after the press: it takes the retained step from the
+# state as it was then, and is in step with the leader again.
 #   in-step.sh KIOSK DIR [SECONDS]
 # Prints one "ok NAME" or "not ok NAME" line per step; the last line is
 # "ok every step ran" when the scenario got to its end.
@@ -120,20 +122,38 @@ b_pid=$!
 sleep $((seconds / 2))
 press_at=$(date +%s.%N)
 mosquitto_pub -h 127.0.0.1 -p "$port" -t kiosk/leader/command -m "matcap next"
+# The follower restarted 4 s after the press (3 s past attract_after): it
+# gets the retained step, and takes it as it was then.
+sleep 4
+kill -TERM $b_pid
+wait $b_pid
+b_rc=$?
+restart_at=$(date +%s.%N)
+start restarted --config "$dir/follower.ini" --matcap matcaps
+b_pid=$!
 stop_both
 kill $broker_pid
 wait $broker_pid 2>/dev/null
-step "mqtt: the leader and the follower end cleanly" test "$both_rc" = 00
+step "mqtt: the leader and the follower end cleanly" test "$b_rc$both_rc" = 000
+step "mqtt: the restarted follower took the retained step" \
+	grep -q "mqtt: the leader's step" "$dir/restarted.log"
+frames leader
+frames restarted
+join "$dir/leader.frames" "$dir/restarted.frames" >"$dir/restart.frames"
+step "mqtt: the restarted follower in step with the leader, 50 moments and more" \
+	awk -v t="$restart_at" '$1 > t + 1 { n++ } END { exit n < 50 }' "$dir/restart.frames"
+step "mqtt: ... the same pose within 0.02 rad" \
+	awk -v t="$restart_at" '$1 > t + 1 { d = $2 - $4; if (d < 0) d = -d; if (d > 0.02) { print "  differ:", $0; bad++ } } END { exit bad > 0 }' \
+	"$dir/restart.frames"
 step "mqtt: the leader took the next matcap" grep -q "mqtt: matcap next" "$dir/leader.log"
 step "mqtt: the follower took the leader's step" grep -q "mqtt: the leader's step" "$dir/follower.log"
-frames leader
 frames follower
 join "$dir/leader.frames" "$dir/follower.frames" >"$dir/press.frames"
 step "mqtt: before the press, the same pose at the same moment" \
 	awk -v t="$press_at" '$1 < t { n++; d = $2 - $4; if (d < 0) d = -d; if (d > 2e-6) bad++ } END { exit bad > 0 || n < 50 }' \
 	"$dir/press.frames"
-step "mqtt: attract mode again on both after the press, 50 moments and more" \
-	awk -v t="$press_at" '$1 > t + 1.5 { n++ } END { exit n < 50 }' "$dir/press.frames"
+step "mqtt: attract mode again on both after the press, 40 moments and more" \
+	awk -v t="$press_at" '$1 > t + 1.5 { n++ } END { exit n < 40 }' "$dir/press.frames"
 step "mqtt: after it, the same pose within 0.02 rad" \
 	awk -v t="$press_at" '$1 > t + 1.5 { d = $2 - $4; if (d < 0) d = -d; if (d > 0.02) bad++ } END { exit bad > 0 }' \
 	"$dir/press.frames"

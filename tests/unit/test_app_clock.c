@@ -229,6 +229,60 @@ static void shared_input(void **state)
 	app_free(b.app);
 }
 
+/* The leader's press reaches a follower late: 30 ms (the network), and
+ * 100 s later (a follower restarted, given the retained step). Taken from
+ * the state as it was then (app_rewind), the follower is in step with the
+ * leader from there on, exactly, in both cases. */
+static void press_taken_late(void **state)
+{
+	struct app_config c = config(3);
+	struct kiosk_sim lead, late, restarted;
+	uint64_t press = REAL0 + 300 * SEC;
+
+	(void)state;
+	start(&lead, &c, 5 * SEC, REAL0);
+	start(&late, &c, 9 * SEC, REAL0 + 40 * SEC);
+	advance_to(&lead, press - 1 * SEC);
+	advance_to(&late, press - 1 * SEC);
+	for (int i = 0; i < 2; i++) {
+		struct kiosk_sim *k = i ? &late : &lead;
+		struct app_msg m = {.kind = APP_INPUT,
+				    .input = {.time_ns = press - REAL0 + k->mono0,
+					      .action = ACTION_NEXT_STOP,
+					      .pressed = true}};
+
+		if (k == &late) { /* it looked on meanwhile, then the step came */
+			advance_to(k, press + 30 * MS);
+			app_rewind(k->app, press - REAL0 + k->mono0);
+		}
+		app_apply(k->app, &m);
+	}
+	start(&restarted, &c, 11 * SEC, press + 100 * SEC);
+	advance_to(&restarted, press + 100 * SEC + 20 * MS);
+	app_rewind(restarted.app, press - REAL0 + restarted.mono0);
+	{
+		struct app_msg m = {.kind = APP_INPUT,
+				    .input = {.time_ns = press - REAL0 + restarted.mono0,
+					      .action = ACTION_NEXT_STOP,
+					      .pressed = true}};
+
+		app_apply(restarted.app, &m);
+	}
+	assert_int_equal(app_state(late.app)->last_input_ns, press);
+	assert_int_equal(app_state(restarted.app)->last_input_ns, press);
+	for (uint64_t t = press + 101 * SEC; t < press + 200 * SEC; t += 130 * MS) {
+		advance_to(&lead, t);
+		advance_to(&late, t);
+		advance_to(&restarted, t);
+		assert_same(&lead, &late);
+		assert_same(&lead, &restarted);
+	}
+	assert_true(app_attracting(lead.app));
+	app_free(lead.app);
+	app_free(late.app);
+	app_free(restarted.app);
+}
+
 /* Attract mode's frames fall on the shared clock's grid of 1/attract_fps. */
 static void frames_on_the_grid(void **state)
 {
@@ -276,7 +330,7 @@ int main(void)
 	    cmocka_unit_test(turning_in_step),	 cmocka_unit_test(touring_in_step),
 	    cmocka_unit_test(own_clocks_differ), cmocka_unit_test(clock_steps),
 	    cmocka_unit_test(shared_input),	 cmocka_unit_test(frames_on_the_grid),
-	    cmocka_unit_test(grid_steps),
+	    cmocka_unit_test(press_taken_late),	 cmocka_unit_test(grid_steps),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);
