@@ -88,7 +88,7 @@ cross-build: cross-tools $(CROSS_SYSROOT)/.complete
 		$(CROSS_BUILD)/ubsan/matcap-kiosk $(CROSS_BUILD)/ubsan/tools/mkmodels
 
 # The host's program and tools draw the same scenes for comparison.
-test-cross: cross-build $(KIOSK) $(TOOLS_DIR)/mkmodels $(TOOLS_DIR)/imgdiff
+test-cross: cross-build $(KIOSK) $(TOOLS_DIR)/mkmodels $(TOOLS_DIR)/imgdiff $(TOOLS_DIR)/stitch
 	sh tests/cross/run.sh $(ARCH) $(CROSS_BUILD) $(CROSS_SYSROOT) $(CROSS_QEMU) ./$(KIOSK) \
 		$(TOOLS_DIR)
 

@@ -55,6 +55,9 @@ wrap() { # NAME BINARY
 wrap matcap-kiosk "$build/matcap-kiosk"
 wrap matcap-kiosk-ubsan "$build/ubsan/matcap-kiosk"
 wrap mkmodels "$build/ubsan/tools/mkmodels"
+# stitch (the wall's slices side by side) is image work alone, not what
+# is tested: the host's.
+ln -sf "$(cd "$host_tools" && pwd)/stitch" "$out/bin/stitch"
 
 echo "cross $arch: $(file -b "$build/matcap-kiosk" | cut -d, -f1-2), through $qemu"
 
