@@ -192,6 +192,16 @@ static void clock_steps(void **state)
 	app_free(a.app);
 }
 
+/* A press of action at `real` on the shared clock, on k's own clock. */
+static void press_at(struct kiosk_sim *k, uint64_t real, enum app_action action)
+{
+	struct app_msg m = {
+	    .kind = APP_INPUT,
+	    .input = {.time_ns = real - REAL0 + k->mono0, .action = action, .pressed = true}};
+
+	app_apply(k->app, &m);
+}
+
 /* A visitor's press shown on both (the leader's step, at its time): both
  * stop attract mode then, and begin it again together. */
 static void shared_input(void **state)
@@ -205,15 +215,8 @@ static void shared_input(void **state)
 	start(&b, &c, 9 * SEC, REAL0 + 40 * SEC);
 	advance_to(&a, press - 2 * SEC);
 	advance_to(&b, press - 1 * SEC);
-	for (int i = 0; i < 2; i++) {
-		struct kiosk_sim *k = i ? &b : &a;
-		struct app_msg m = {.kind = APP_INPUT,
-				    .input = {.time_ns = press - REAL0 + k->mono0,
-					      .action = ACTION_NEXT_MATCAP,
-					      .pressed = true}};
-
-		app_apply(k->app, &m);
-	}
+	press_at(&a, press, ACTION_NEXT_MATCAP);
+	press_at(&b, press, ACTION_NEXT_MATCAP);
 	assert_int_equal(app_state(a.app)->last_input_ns, press);
 	advance_to(&a, press + 10 * SEC);
 	advance_to(&b, press + 10 * SEC);
@@ -244,30 +247,14 @@ static void press_taken_late(void **state)
 	start(&late, &c, 9 * SEC, REAL0 + 40 * SEC);
 	advance_to(&lead, press - 1 * SEC);
 	advance_to(&late, press - 1 * SEC);
-	for (int i = 0; i < 2; i++) {
-		struct kiosk_sim *k = i ? &late : &lead;
-		struct app_msg m = {.kind = APP_INPUT,
-				    .input = {.time_ns = press - REAL0 + k->mono0,
-					      .action = ACTION_NEXT_STOP,
-					      .pressed = true}};
-
-		if (k == &late) { /* it looked on meanwhile, then the step came */
-			advance_to(k, press + 30 * MS);
-			app_rewind(k->app, press - REAL0 + k->mono0);
-		}
-		app_apply(k->app, &m);
-	}
+	press_at(&lead, press, ACTION_NEXT_STOP);
+	advance_to(&late, press + 30 * MS); /* it looked on meanwhile, then the step came */
+	app_rewind(late.app, press - REAL0 + late.mono0);
+	press_at(&late, press, ACTION_NEXT_STOP);
 	start(&restarted, &c, 11 * SEC, press + 100 * SEC);
 	advance_to(&restarted, press + 100 * SEC + 20 * MS);
 	app_rewind(restarted.app, press - REAL0 + restarted.mono0);
-	{
-		struct app_msg m = {.kind = APP_INPUT,
-				    .input = {.time_ns = press - REAL0 + restarted.mono0,
-					      .action = ACTION_NEXT_STOP,
-					      .pressed = true}};
-
-		app_apply(restarted.app, &m);
-	}
+	press_at(&restarted, press, ACTION_NEXT_STOP);
 	assert_int_equal(app_state(late.app)->last_input_ns, press);
 	assert_int_equal(app_state(restarted.app)->last_input_ns, press);
 	for (uint64_t t = press + 101 * SEC; t < press + 200 * SEC; t += 130 * MS) {
