@@ -535,18 +535,26 @@ static void reload(struct app *a, const struct app_config *cfg, int matcap_count
 	a->state.camera_on = camera_on && available;
 }
 
+/* A shared clock's state from the epoch again, as at the start, at
+ * time_ns (the caller's clock): the model list it was told of kept. */
+static void restart(struct app *a, uint64_t time_ns)
+{
+	int models = a->model_count;
+	struct app_config cfg = a->cfg; /* reload's init clears a->cfg first */
+
+	reload(a, &cfg, a->matcap_count, time_ns);
+	a->model_count = models;
+}
+
 void app_rewind(struct app *a, uint64_t time_ns)
 {
 	uint64_t t = app_clock(a, time_ns);
-	int models = a->model_count;
-	struct app_config cfg = a->cfg;
 	struct app_event none = {.time_ns = time_ns, .action = ACTION_NONE};
 
 	if (!a->cfg.shared_clock || t >= a->now_ns || t == 0)
 		return;
-	/* From the epoch again, advanced to just then: the pure state. */
-	reload(a, &cfg, a->matcap_count, time_ns - 1);
-	a->model_count = models;
+	/* Advanced from just before then: the pure state then. */
+	restart(a, time_ns - 1);
 	advance(a, t);
 	input(a, &none);
 }
@@ -554,16 +562,12 @@ void app_rewind(struct app *a, uint64_t time_ns)
 int64_t app_set_clock(struct app *a, int64_t offset_ns)
 {
 	int64_t step = offset_ns - a->cfg.clock_offset_ns;
-	int models = a->model_count;
-	struct app_config cfg;
 
 	a->cfg.clock_offset_ns = offset_ns;
-	cfg = a->cfg;
 	if (!a->cfg.shared_clock || (step < APP_CLOCK_STEP_NS && step > -APP_CLOCK_STEP_NS))
 		return 0;
 	/* The others stepped too, or this one was wrong: from the epoch again. */
-	reload(a, &cfg, a->matcap_count, a->now_ns - (uint64_t)(offset_ns - step));
-	a->model_count = models;
+	restart(a, a->now_ns - (uint64_t)(offset_ns - step));
 	return step;
 }
 
