@@ -776,6 +776,8 @@ test_doc_claims() {
 		sh tests/e2e/exit_claims.sh "$MKMAN" $docs
 	check "README.md, docs/*.md, config/kiosk.ini, README.Debian: nothing the loader uses is called ignored" \
 		sh tests/e2e/feature_claims.sh "$MKMAN" $docs
+	check "README.md, docs/*.md: every ini block reads as it is written (no ' ;' after a value)" \
+		sh tests/e2e/ini_claims.sh "$KIOSK" README.md $(ls docs/*.md 2>/dev/null)
 	printf '%s\n' '- **What is used**: every mesh.' 'Animations are ignored, the model is shown still.' '' \
 		'| feature | what |' '|---|---|' '| KHR_materials_variants | ignored |' '' \
 		'**Ignored**: cameras and lights (the matcap is the light); specular and glossiness are ignored.' \
