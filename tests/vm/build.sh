@@ -199,6 +199,11 @@ vivid"
 # and the filesystems a stick has: FAT (with the code page and the I/O
 # charsets: Debian mounts FAT with iocharset ascii by default) and ext2-4.
 GUEST_MODULES="$GUEST_MODULES xhci_pci usb_storage sd_mod vfat nls_cp437 nls_ascii nls_utf8 nls_iso8859_1 ext4"
+# A second GPU with two outputs (run.sh --outputs 2, tests/e2e/kms-outputs.sh):
+# vkms in 6.1 has one CRTC, QEMU's virtio-gpu-pci one per output. Debian
+# builds virtio-gpu as a module; its dependencies (drm_shmem_helper,
+# virtio_dma_buf, ...) come with it. udev loads it when the device is there.
+GUEST_MODULES="$GUEST_MODULES virtio-gpu"
 BASE_BINS="/usr/bin/busybox /usr/bin/kmod /usr/bin/udevadm /usr/bin/kmscube /usr/bin/modetest
 /usr/bin/modeprint /usr/bin/proptest /usr/bin/cam /usr/bin/gpiodetect /usr/bin/gpioinfo
 /usr/bin/gpioget /usr/bin/gpioset /usr/bin/gpiomon /usr/bin/gpiofind /usr/bin/v4l2-ctl

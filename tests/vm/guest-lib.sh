@@ -116,6 +116,41 @@ drm_connector_status() {
 	return 1
 }
 
+# drm_card_of DRIVER: /dev/dri/cardN of the card whose device, or the virtio
+# device under it (virtio-gpu: the card's device is the PCI function, the
+# driver is bound to its virtioN child), DRIVER drives; by driver, never by
+# number. E.g. drm_card_of virtio_gpu (run.sh --outputs 2).
+drm_card_of() {
+	for _c in /sys/class/drm/card[0-9]*; do
+		case $_c in *-*) continue ;; esac
+		for _d in "$_c/device/driver" "$_c"/device/virtio*/driver; do
+			[ "$(basename "$(readlink -f "$_d" 2>/dev/null)")" = "$1" ] &&
+				{ echo "/dev/dri/${_c##*/}"; return 0; }
+		done
+	done
+	return 1
+}
+
+# drm_crtc_of CARD CONNECTOR: the id of the first CRTC that CONNECTOR's
+# encoder can drive (modetest's possible_crtcs bit, in its CRTC order), for
+# vm-grab -D CARD -c ID. Ask before the program under test opens CARD:
+# modetest becomes DRM master for a moment if no one is.
+drm_crtc_of() {
+	modetest -D "$1" -c -e -p 2>/dev/null | awk -v want="$2" '
+		/^Encoders:/ { s = "e"; next } /^Connectors:/ { s = "c"; next }
+		/^CRTCs:/ { s = "r"; next } /^Planes:/ { s = "" }
+		s == "e" && /^[0-9]+\t/ { mask[$1] = $4 }
+		s == "c" && /^[0-9]+\t/ && $4 == want { enc = $NF }
+		s == "r" && /^[0-9]+\t/ { crtc[n++] = $1 }
+		END {
+			m = mask[enc] + 0
+			if (mask[enc] ~ /^0x/) { m = 0; h = substr(mask[enc], 3)
+				for (i = 1; i <= length(h); i++) m = m * 16 + index("0123456789abcdef", tolower(substr(h, i, 1))) - 1 }
+			for (i = 0; i < n; i++) { if (m % 2) { print crtc[i]; exit 0 } m = int(m / 2) }
+			exit 1
+		}'
+}
+
 # vm_grab OUT.ppm [vm-grab options]: read back what the CRTC scans out now
 # (the front buffer, while the program that set it still runs).
 vm_grab() { _o=$1; shift; vm-grab "$@" -o "$_o"; }

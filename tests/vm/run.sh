@@ -15,6 +15,12 @@
 #   --usb IMG:SERIAL  a raw disk image as a read-only USB stick (usb-storage
 #                   on an xHCI controller) whose USB serial is SERIAL;
 #                   repeatable
+#   --outputs N     a second GPU beside vkms (which stays card0 with its
+#                   Virtual-1): QEMU's virtio-gpu-pci with N outputs (2-16),
+#                   one CRTC each, card1, connectors Virtual-2..Virtual-N+1
+#                   (Linux 6.1 numbers connectors of a type across all
+#                   cards); QEMU without a display enables only the first,
+#                   the others are forced connected (video=Virtual-K:e)
 #   VM_CPU=MODEL    qemu's -cpu (default: max without AVX, which QEMU 7.2's
 #                   TCG emulates wrongly and slowly: an AVX2 gather whose
 #                   index is xmm4/ymm4 loads every lane from the base address,
@@ -37,7 +43,7 @@ CACHE=${VM_CACHE:-$HERE/cache}
 say() { printf '[vm-run] %s\n' "$*" >&2; }
 die() { printf '[vm-run] error: %s\n' "$*" >&2; exit 125; }
 
-BUILD_ARGS=() SHARE="" LOG="" QUIET=0 USB_ARGS=()
+BUILD_ARGS=() SHARE="" LOG="" QUIET=0 USB_ARGS=() GPU_ARGS=() APPEND_EXTRA=""
 TIMEOUT=${VM_TIMEOUT:-300} MEM=${VM_MEM:-2048} SMP=${VM_SMP:-2} CPU=${VM_CPU:-max,-avx,-avx2,-fma,-f16c,-vaes,-vpclmulqdq}
 while [ $# -gt 0 ]; do
 	case $1 in
@@ -54,8 +60,17 @@ while [ $# -gt 0 ]; do
 		USB_ARGS+=(-drive "if=none,id=stick$n,format=raw,readonly=on,file=${2%:*}"
 			-device "usb-storage,bus=xhci.0,drive=stick$n,serial=${2##*:}")
 		shift 2 ;;
+	--outputs) [ $# -ge 2 ] || die "--outputs needs a count"
+		case $2 in [2-9]|1[0-6]) ;; *) die "--outputs wants 2 to 16 (virtio-gpu's max_outputs), not '$2'" ;; esac
+		GPU_ARGS=(-device "virtio-gpu-pci,max_outputs=$2")
+		# -display none: QEMU reports only output 0 as enabled; the
+		# kernel's video=NAME:e forces the others connected (sysfs
+		# status off/on still plays a cable on each; detect reads
+		# QEMU's "disabled" again). vkms, loaded first, has Virtual-1.
+		APPEND_EXTRA=$(seq 3 $(($2 + 1)) | sed 's/^/ video=Virtual-/; s/$/:e/' | tr -d '\n')
+		shift 2 ;;
 	--) shift; break ;;
-	-h|--help) sed -n '2,25p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+	-h|--help) sed -n '2,31p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
 	*) die "unknown option '$1' (see --help)" ;;
 	esac
 done
@@ -107,11 +122,11 @@ timeout -k 5 "$HOST_LIMIT" qemu-system-x86_64 \
 	-accel tcg,thread=multi -cpu "$CPU" -smp "$SMP" -m "$MEM" \
 	-nodefaults -no-user-config -display none -no-reboot \
 	-kernel "$KERNEL" -initrd "$INITRD" \
-	-append "console=ttyS0 loglevel=3 panic=-1 mitigations=off" \
+	-append "console=ttyS0 loglevel=3 panic=-1 mitigations=off$APPEND_EXTRA" \
 	-serial "file:$LOG" \
 	-virtfs "local,path=$JOB,mount_tag=vmjob,security_model=none,id=vmjob" \
 	-virtfs "local,path=$REPO,mount_tag=repo,security_model=none,readonly=on,multidevs=remap,id=repo" \
-	${SHARE_ARGS[@]+"${SHARE_ARGS[@]}"} ${USB_ARGS[@]+"${USB_ARGS[@]}"} \
+	${SHARE_ARGS[@]+"${SHARE_ARGS[@]}"} ${USB_ARGS[@]+"${USB_ARGS[@]}"} ${GPU_ARGS[@]+"${GPU_ARGS[@]}"} \
 	2>"$JOB/qemu.err" &
 QPID=$!
 TPID=""
