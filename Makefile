@@ -84,7 +84,7 @@ SRC_CONTENT := content/content content/load_guard content/content_cache content/
 SRC_CONTENT += content/content_coarse content/refine_job
 SRC_CONFIG  := config/options config/options_file config/model_settings config/settings config/settings_table config/settings_origin config/settings_text config/lang_text config/hotspot_settings
 SRC_STATE   := state/app state/app_pose state/steps state/view state/power state/schedule state/visits state/remote state/lang state/hotspot
-SRC_DISPLAY := display/backlight display/cec display/cec_link display/display display/display_egl display/display_kms display/kms_scale \
+SRC_DISPLAY := display/backlight display/cec display/cec_link display/display display/display_egl display/display_kms display/kms_egl display/kms_output display/kms_scale \
 	       display/display_osmesa \
 	       display/drm display/drm_atomic display/drm_legacy display/egl_util display/hotplug \
 	       display/kms_fb display/kms_overlay
@@ -98,8 +98,8 @@ SRC_SCENE   := scene/mesh/lod scene/mesh/lod_seams scene/mesh/lod_split scene/me
 	       scene/mesh/texture scene/text/caption scene/text/caption_text scene/text/model_name scene/text/caption_font scene/text/caption_wrap
 SRC_SCENE   += scene/gltf/gltf_json_depth scene/gltf/gltf_features
 SRC_SCENE   += scene/mesh/lod_coarse
-SRC_RENDER  += render/wall
-SRC_CONFIG  += config/wall_settings
+SRC_RENDER  += render/wall render/output_view
+SRC_CONFIG  += config/wall_settings config/output_settings
 SRC_SCENE   += scene/anim/anim scene/anim/anim_sampler scene/anim/anim_palette scene/anim/anim_play scene/anim/anim_play_gpu scene/anim/anim_play_split scene/anim/anim_play_morph
 SRC_UTIL    := util/file util/folder_watch util/image util/ini util/log util/math3d
 LIB_C  := $(SRC_APP) $(SRC_OPS) $(SRC_CONTENT) $(SRC_CONFIG) $(SRC_STATE) $(SRC_DISPLAY) $(SRC_INPUT) $(SRC_CAMERA) $(SRC_RENDER) $(SRC_SCENE) $(SRC_UTIL)

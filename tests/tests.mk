@@ -29,6 +29,7 @@ UNIT_TESTS  += precedence model_name
 UNIT_TESTS  += knob visits
 UNIT_TESTS  += remote
 UNIT_TESTS  += hotspot hotspot_settings hotspot_place hotspot_node
+UNIT_TESTS  += output_view
 UNIT_TESTS  += wall
 TOOLS_DIR   := $(BUILD)/tools
 ASAN_BUILD  := $(BUILD)/asan

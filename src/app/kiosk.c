@@ -154,11 +154,69 @@ static void log_latency(struct kiosk *k, uint64_t last_input_ns)
 		  (double)(app_clock(k->app, monotonic_ns()) - k->input_drawn_ns) / 1e6);
 }
 
+/* One output's picture of the frame (the only one where there is one):
+ * the view as [output.NAME] turns it, the caption where it has one.
+ * -EAGAIN: that output shows nothing now. */
+static int draw_output(struct kiosk *k, const struct output_view *o)
+{
+	const struct app_state *st = app_state(k->app);
+	struct display *d = k->display;
+	struct view v = k->view;
+	int w, h;
+
+	output_view_apply(o, &v);
+	if (d->begin_frame(d))
+		return -EAGAIN;
+	if (k->camera)
+		renderer_use_matcap_texture(k->renderer,
+					    camera_feed_draw(k->camera, st->camera_on));
+	render_scale_begin(k->scale, d->plane_scaled, d->width, d->height, &w, &h);
+	renderer_draw(k->renderer, &v, w, h);
+	render_scale_end(k->scale);
+	/* The frame is full size again: full-resolution overlays (the
+	 * caption, the logo) draw here, at d->width x d->height, before the
+	 * present. */
+	if (!o || o->caption)
+		kiosk_caption_draw(k, &v);
+	return d->present(d);
+}
+
+/* Every output's picture ([display] outputs; one elsewhere). -EAGAIN when
+ * none showed it. */
+static int draw_outputs(struct kiosk *k)
+{
+	struct display *d = k->display;
+	int n = d->select_output ? d->outputs : 1, shown = 0;
+
+	for (int i = 0; i < n; i++) {
+		int ret;
+
+		if (d->select_output && d->select_output(d, i))
+			continue;
+		ret = draw_output(k, output_view_find(&k->applied.outputs, d->output_name));
+		if (ret && ret != -EAGAIN && n == 1)
+			return ret;
+		/* One of several that fails leaves the others running: said
+		 * when it starts failing and when it shows again. */
+		if (n > 1 && ret != -EAGAIN && !!ret != !!(k->outputs_failed & (1u << i))) {
+			k->outputs_failed ^= 1u << i;
+			if (ret)
+				log_err(
+				    "kms: %s: cannot show the frame: %s; the other outputs go on",
+				    d->output_name, strerror(-ret));
+			else
+				log_info("kms: %s shows frames again", d->output_name);
+		}
+		shown += !ret;
+	}
+	return shown ? 0 : -EAGAIN;
+}
+
 static int draw(struct kiosk *k, uint64_t now)
 {
 	const struct app_state *st = app_state(k->app);
 	struct display *d = k->display;
-	int ret, w, h;
+	int ret;
 
 	sync_mode(k, st->mode);
 	k->view.orientation = st->orientation;
@@ -168,19 +226,7 @@ static int draw(struct kiosk *k, uint64_t now)
 	/* Not connected, or waiting for the display: stay dirty, the display
 	 * asks for a redraw through dispatch() when it is back. */
 	k->display_absent = true;
-	if (d->begin_frame(d))
-		return 0;
-	if (k->camera)
-		renderer_use_matcap_texture(k->renderer,
-					    camera_feed_draw(k->camera, st->camera_on));
-	render_scale_begin(k->scale, d->plane_scaled, d->width, d->height, &w, &h);
-	renderer_draw(k->renderer, &k->view, w, h);
-	render_scale_end(k->scale);
-	/* The frame is full size again: full-resolution overlays (the
-	 * caption, the logo) draw here, at d->width x d->height, before the
-	 * present. */
-	kiosk_caption_draw(k);
-	ret = d->present(d);
+	ret = draw_outputs(k);
 	if (ret == -EAGAIN)
 		return 0;
 	k->display_absent = false;

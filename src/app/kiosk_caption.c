@@ -93,13 +93,12 @@ uint64_t kiosk_caption_deadline(struct kiosk *k, uint64_t now)
 	return now + 10000000000ull;
 }
 
-void kiosk_caption_draw(struct kiosk *k)
+void kiosk_caption_draw(struct kiosk *k, const struct view *v)
 {
 	struct display *d = k->display;
 
 	caption_picture(k);
-	renderer_caption_at(k->renderer, &k->view, caption_clock(), d->width, d->height,
-			    k->caption_at);
+	renderer_caption_at(k->renderer, v, caption_clock(), d->width, d->height, k->caption_at);
 	if (!caption_on_plane(k))
-		renderer_draw_caption(k->renderer, &k->view, caption_clock(), d->width, d->height);
+		renderer_draw_caption(k->renderer, v, caption_clock(), d->width, d->height);
 }

@@ -124,6 +124,7 @@ struct kiosk {
 	struct folder_watch *watch; /* the matcap folder, NULL when not watched */
 	uint64_t rescan_at;	    /* act on matcap changes then; CLOCK_NEVER: none */
 	uint64_t waiting_since;	    /* when the pending page flip was queued */
+	unsigned outputs_failed;    /* bit i: output i's last frame failed (several outputs) */
 	bool display_absent;	    /* the last draw found no display to show it on */
 	struct service service;
 	struct camera_feed *camera;   /* the live camera; NULL: none */
@@ -203,7 +204,7 @@ static inline void kiosk_tell_app(struct kiosk *k, enum app_msg_kind kind)
 
 /* src/app/kiosk_caption.c: the caption over the frame just drawn (before the
  * present), and when it next drifts or must be tested on a plane. */
-void kiosk_caption_draw(struct kiosk *k);
+void kiosk_caption_draw(struct kiosk *k, const struct view *v);
 uint64_t kiosk_caption_deadline(struct kiosk *k, uint64_t now);
 /* src/app/kiosk_clock.c: the offset of the app state's clock from the
  * loop's (CLOCK_MONOTONIC): 0 on its own clock, CLOCK_REALTIME's on a

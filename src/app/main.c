@@ -87,6 +87,36 @@ static void print_stats(double *times, int n, double first_frame_ms)
 	       times[n / 2], times[(n * 9) / 10], first_frame_ms, ru.ru_maxrss);
 }
 
+/* One frame on every output ([display] outputs; one elsewhere), each as
+ * its [output.NAME] shows it, or all as --as-output's. */
+static int draw_still(const struct options *o, struct display *d, struct renderer *r,
+		      struct render_scale *scale, const struct view *frame)
+{
+	int n = d->select_output ? d->outputs : 1, ret = 0, shown = 0;
+
+	for (int i = 0; i < n && !ret; i++) {
+		const struct output_view *ov;
+		struct view v = *frame;
+		int w, h;
+
+		if (d->select_output && d->select_output(d, i))
+			continue;
+		ov = output_view_find(&o->outputs, o->as_output ? o->as_output : d->output_name);
+		output_view_apply(ov, &v);
+		if ((ret = d->begin_frame(d)))
+			break;
+		render_scale_begin(scale, d->plane_scaled, d->width, d->height, &w, &h);
+		renderer_draw(r, &v, w, h);
+		render_scale_end(scale);
+		/* Full-resolution overlays draw here, as in the live loop. */
+		if (!ov || ov->caption)
+			renderer_draw_caption(r, &v, 0, d->width, d->height);
+		ret = d->present(d);
+		shown++;
+	}
+	return ret ? ret : shown ? 0 : -EAGAIN;
+}
+
 static int render_frames(const struct options *o, const struct content *s, struct display *d,
 			 struct renderer *r, double start_ms)
 {
@@ -96,7 +126,7 @@ static int render_frames(const struct options *o, const struct content *s, struc
 	struct render_scale *scale =
 	    render_scale_new(&d->gl, o->display.render_scale, d->samples, o->shader_dir);
 	double first = 0;
-	int ret = 0, w, h, stop;
+	int ret = 0, stop;
 
 	if (!times || !scale) {
 		free(times);
@@ -115,15 +145,7 @@ static int render_frames(const struct options *o, const struct content *s, struc
 	for (int i = 0; i < o->frames && !ret; i++) {
 		double t = now_ms();
 
-		ret = d->begin_frame(d);
-		if (!ret) {
-			render_scale_begin(scale, d->plane_scaled, d->width, d->height, &w, &h);
-			renderer_draw(r, &v, w, h);
-			render_scale_end(scale);
-			/* Full-resolution overlays draw here, as in the live loop. */
-			renderer_draw_caption(r, &v, 0, d->width, d->height);
-			ret = d->present(d);
-		}
+		ret = draw_still(o, d, r, scale, &v);
 		times[i] = now_ms() - t;
 		if (i == 0)
 			first = now_ms() - start_ms;

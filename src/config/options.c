@@ -81,6 +81,32 @@ static enum options_status read_config_first(struct options *o, int argc, char *
 	return OPTIONS_OK;
 }
 
+/* --as-output NAME: a still drawn as an output of [display] outputs (or
+ * of an [output.NAME] section) shows it; a name of neither is a typo that
+ * would draw the plain view in silence. */
+static enum options_status check_as_output(const struct options *o)
+{
+	char names[KMS_OUTPUTS_MAX][32], err[160];
+	const char *list = o->display.outputs;
+	int n = list ? display_outputs_parse(list, names, KMS_OUTPUTS_MAX, err, sizeof(err)) : 0;
+
+	if (!o->as_output)
+		return OPTIONS_OK;
+	if (!o->output) {
+		log_err("--as-output %s: draws a still, so it needs --output FILE", o->as_output);
+		return OPTIONS_USAGE;
+	}
+	for (int i = 0; i < n; i++)
+		if (!strcmp(names[i], o->as_output))
+			return OPTIONS_OK;
+	if (output_view_find(&o->outputs, o->as_output) || (list && !strcmp(list, "all")))
+		return OPTIONS_OK;
+	log_err("--as-output %s: no such output; [display] outputs names %s, and there is no "
+		"[output.%s] section",
+		o->as_output, list ? list : "none", o->as_output);
+	return OPTIONS_USAGE;
+}
+
 static enum options_status check_command_line(const struct options *o, int argc, char **argv)
 {
 	struct schedule sch;
@@ -118,7 +144,7 @@ static enum options_status check_command_line(const struct options *o, int argc,
 			err, BACKGROUND_EXPECTED);
 		return OPTIONS_USAGE;
 	}
-	return OPTIONS_OK;
+	return check_as_output(o);
 }
 
 enum options_status options_parse(struct options *o, int argc, char **argv)

@@ -7,6 +7,7 @@
 #include "state/schedule.h"
 #include "config/settings.h"
 #include "config/hotspot_settings.h"
+#include "config/output_settings.h"
 #include "render/background.h"
 #include "util/file.h"
 #include "util/ini.h"
@@ -274,6 +275,11 @@ static int on_key(void *user, int line, const char *section, const char *key, co
 		hotspot_settings_key(&st->hot, st->path, line, section, key, value);
 		return 0;
 	}
+	if (output_settings_section(section)) {
+		st->errors -=
+		    output_settings_key(&st->opts->outputs, st->path, line, section, key, value);
+		return 0;
+	}
 	if (translated) {
 		st->errors -=
 		    !lang_text_read(&st->opts->content.texts, st->path, line, section, key, value);
@@ -398,6 +404,23 @@ static void check_background(struct file_state *st)
 		text, err, BACKGROUND_EXPECTED);
 }
 
+/* [display] outputs: names a connector may have, at most as many as the
+ * kiosk drives (whether they exist is the display's to say, at start). */
+static void check_outputs(struct file_state *st)
+{
+	const char *text = st->opts->display.outputs;
+	int at = st->seen_line[find_key("display", "outputs") - option_defs];
+	char err[160];
+
+	if (!at || !strcmp(text, "all") ||
+	    display_outputs_parse(text, NULL, KMS_OUTPUTS_MAX, err, sizeof(err)) > 0)
+		return;
+	st->errors++;
+	log_err("%s:%d: [display] outputs = '%s': %s; expected connectors' names such as "
+		"'HDMI-A-1, HDMI-A-2', or all",
+		st->path, at, text, err);
+}
+
 /* Counts an error for each [caption] colour this file set that does not
  * parse (the font and the logo are the content's to load, as a model). */
 static void check_caption(struct file_state *st)
@@ -482,6 +505,7 @@ enum options_status options_read_text(struct options *o, const char *path, const
 	check_lines(&st);
 	check_schedule(&st);
 	check_background(&st);
+	check_outputs(&st);
 	check_frame(&st);
 	check_caption(&st);
 	o->content.hotspots.dropped += hotspot_settings_finish(&st.hot, path, &o->content.hotspots);

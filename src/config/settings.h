@@ -16,6 +16,7 @@
 #include "input/keyboard.h"
 #include "input/knob.h"
 #include "input/touch.h"
+#include "render/output_view.h"
 #include "state/app.h"
 #include "util/log.h"
 
@@ -84,6 +85,8 @@ struct options {
 	struct knob_config knob;
 	/* [mqtt] */
 	struct mqtt_config mqtt;
+	/* [output.NAME]: what each of several outputs shows */
+	struct output_views outputs;
 	char *poster;  /* [display] poster */
 	char *include; /* [kiosk] include */
 	char *metrics; /* [status] metrics */
@@ -99,6 +102,7 @@ struct options {
 	char *config;
 	char *import;
 	char *output;
+	char *as_output; /* --as-output NAME: the still as that output shows it */
 	char *shader_dir;
 	int frames;
 	int hotspot; /* --hotspot N: the still faces hotspot N; 0: none */
@@ -147,7 +151,7 @@ struct option_def {
 
 /* The table's length: the compiler refuses an entry more, and
  * tests/unit/test_options.c one less. */
-#define OPTION_DEFS 151
+#define OPTION_DEFS 153
 extern const struct option_def option_defs[OPTION_DEFS];
 
 void option_defaults(struct options *o);

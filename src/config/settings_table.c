@@ -34,7 +34,7 @@ const struct options_section_rule options_sections[OPTIONS_SECTIONS] = {
 
 static const char *const backend_names[] = {"auto", "kms", "osmesa", "egl-headless", NULL};
 static const char *const mode_names[] = {"normal", "view", "sem-vertex", "sem-fragment", NULL};
-static const char *const busy_names[] = {"wait", "exit", NULL}; /* exit_when_busy */
+static const char *const busy_names[] = {"wait", "exit", NULL};	  /* exit_when_busy */
 static const char *const clock_names[] = {"own", "shared", NULL}; /* app.shared_clock */
 static const char *const kms_api_names[] = {"auto", "atomic", "legacy", NULL};
 static const char *const active_names[] = {"low", "high", NULL};
@@ -97,6 +97,10 @@ const struct option_def option_defs[OPTION_DEFS] = {
      "KMS: the DRM device (default: the first with a display)"},
     {"connector", 0, OPTIONS_DISPLAY, "connector", K_STRING, AT(display.connector), 0, 0, 0, NULL,
      "NAME", "KMS: the output, e.g. HDMI-A-1 or DSI-1 (default: the first connected)"},
+    {"outputs", 0, OPTIONS_DISPLAY, "outputs", K_STRING, AT(display.outputs), 0, 0, 0, NULL,
+     "NAMES",
+     "KMS: several outputs of one board, e.g. 'HDMI-A-1, HDMI-A-2', or all; each shows the "
+     "scene as its [output.NAME] says (default: [display] connector alone)"},
     {"display-mode", 0, OPTIONS_DISPLAY, "mode", K_STRING, AT(display.mode), 0, 0, 0, NULL,
      "WxH[@HZ]", "KMS: the mode (default: the preferred, else the largest)"},
     {"on-busy", 0, OPTIONS_DISPLAY, "on_busy", K_CHOICE, AT(display.exit_when_busy), 0, 0, 0,
@@ -441,6 +445,9 @@ const struct option_def option_defs[OPTION_DEFS] = {
     {"hotspot", 0, OPTION_CLI, NULL, K_INT, AT(hotspot), 1, 8, 0, NULL, "N",
      "draw offscreen the view of the model's hotspot N (1: its first [hotspot.NAME]) with its "
      "text, as a stop at it shows it (with --output)"},
+    {"as-output", 0, OPTION_CLI, NULL, K_STRING, AT(as_output), 0, 0, 0, NULL, "NAME",
+     "with --output: draw the still as output NAME shows it ([output.NAME]: its view, "
+     "rotation, caption and background)"},
     {"wall-columns", 0, OPTIONS_WALL, "columns", K_INT, AT(content.wall.columns), 1, WALL_MAX, 0,
      NULL, "N", "a wall of screens showing one picture: its screens across (1: no wall)"},
     {"wall-rows", 0, OPTIONS_WALL, "rows", K_INT, AT(content.wall.rows), 1, WALL_MAX, 0, NULL, "N",

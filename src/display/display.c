@@ -1,6 +1,7 @@
 #include "display/display.h"
 
 #include <errno.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -57,4 +58,43 @@ int display_no_dispatch(struct display *d)
 {
 	(void)d;
 	return 0;
+}
+
+int display_outputs_parse(const char *list, char (*names)[32], int max, char *err, size_t n)
+{
+	char seen[KMS_OUTPUTS_MAX][32];
+	int count = 0;
+
+	for (const char *p = list; *p;) {
+		size_t len = strcspn(p, ", \t");
+
+		if (len == 0) {
+			p++;
+			continue;
+		}
+		if (len >= 32) {
+			snprintf(err, n, "'%.*s' is too long for a connector's name", (int)len, p);
+			return -1;
+		}
+		if (count == max || count == KMS_OUTPUTS_MAX) {
+			snprintf(err, n, "more than %d outputs",
+				 max < KMS_OUTPUTS_MAX ? max : KMS_OUTPUTS_MAX);
+			return -1;
+		}
+		memcpy(seen[count], p, len);
+		seen[count][len] = '\0';
+		for (int i = 0; i < count; i++)
+			if (strcmp(seen[i], seen[count]) == 0) {
+				snprintf(err, n, "%s is named twice", seen[count]);
+				return -1;
+			}
+		if (names)
+			memcpy(names[count], seen[count], 32);
+		count++;
+		p += len;
+	}
+	if (!count)
+		snprintf(err, n,
+			 "no connector named; expected names such as HDMI-A-1, HDMI-A-2, or all");
+	return count ? count : -1;
 }

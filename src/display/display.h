@@ -9,12 +9,14 @@
 #include "util/image.h"
 
 #include <stdbool.h>
+#include <stddef.h>
 
 struct display_config {
 	int width; /* 0: the backend's natural size (the mode, for KMS) */
 	int height;
 	const char *device;    /* KMS: /dev/dri/cardN, NULL to discover */
 	const char *connector; /* KMS: HDMI-A-1, NULL for the first connected */
+	const char *outputs;   /* KMS: "HDMI-A-1, HDMI-A-2" or "all"; NULL: connector alone */
 	const char *mode;      /* KMS: WxH or WxH@Hz, NULL for the preferred */
 	int antialias;	       /* enum display_antialias */
 	bool exit_when_busy;   /* KMS: exit when another program holds the display */
@@ -37,6 +39,9 @@ enum display_antialias {
  * tests/bench/report/speed-error.md). 0: off. */
 int display_antialias_samples(int antialias, bool software);
 
+/* [display] outputs: at most this many connectors driven at once. */
+#define KMS_OUTPUTS_MAX 4
+
 struct display {
 	const char *name;
 	int width; /* of the image the renderer draws, before any rotation */
@@ -56,6 +61,15 @@ struct display {
 	uint64_t refresh_ns;
 	double flipped_s;
 
+	/* Several outputs ([display] outputs, KMS): the frame is drawn once
+	 * for each, after select_output(d, i) for i below outputs made it
+	 * current (width, height, plane_scaled and output_name are then
+	 * its); -EAGAIN: that one shows nothing now (not connected), the
+	 * others go on. outputs 1 and select_output NULL where there is
+	 * one; output_name NULL where it has no name. */
+	int outputs;
+	const char *output_name;
+	int (*select_output)(struct display *d, int i);
 	/* Make the context current and bind the target to draw into. */
 	int (*begin_frame)(struct display *d);
 	/* Hand the frame over: a page flip for KMS, a finish for offscreen. */
@@ -92,6 +106,12 @@ struct display *display_kms_new(const struct display_config *cfg);
  * [display] on_busy = exit), -ENODEV (no such display), or another
  * negative errno. */
 struct display *display_kms_open(const struct display_config *cfg, int *err);
+
+/* [display] outputs' names, split at commas and blanks, into names (at
+ * most max, each under 32 bytes; names NULL: only checked). Returns how
+ * many, or -1 with why in err (n bytes) when there is none, one is too
+ * long, repeated, or there are too many. "all" is the caller's. */
+int display_outputs_parse(const char *list, char (*names)[32], int max, char *err, size_t n);
 
 /* Shared by the backends: glReadPixels into an image, flipped to rows top first. */
 int display_read_rgba(struct display *d, struct image *out);

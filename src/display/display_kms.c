@@ -1,21 +1,21 @@
 /* Fullscreen on DRM/KMS: GBM buffers flipped onto the display on vblank,
- * with no window system. The loop sees one descriptor, an epoll set of
- * the DRM fd (flip events), udev (hotplug) and a retry timer (a display
- * held by another program, or no udev to tell us of a cable). */
+ * with no window system. One device, one EGL context, and one output per
+ * connector driven ([display] outputs; one by default), each with its own
+ * surface, CRTC and page flips (kms_output.c). The loop sees one
+ * descriptor, an epoll set of the DRM fd (flip events), udev (hotplug)
+ * and a retry timer (a display held by another program, or no udev to
+ * tell us of a cable). */
 #include "display/display.h"
 #include "display/drm.h"
-#include "display/egl_util.h"
 #include "display/hotplug.h"
-#include "display/kms_fb.h"
+#include "display/kms_egl.h"
+#include "display/kms_output.h"
 #include "display/kms_overlay.h"
-#include "display/kms_scale.h"
 #include "util/log.h"
 
-#include <drm_fourcc.h>
 #include <errno.h>
 #include <gbm.h>
-#include <poll.h>
-#include <stddef.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/epoll.h>
@@ -28,308 +28,67 @@
 
 struct display_kms {
 	struct display base;
-	struct drm drm;
-	/* GBM and EGL live on this fd; drm.fd is the same one, unless the
-	 * display was busy at start and mode setting moved to a fresh open
-	 * of the node once it was free (framebuffer ids are device-wide). */
+	struct kms_output out[KMS_OUTPUTS_MAX];
+	int count;   /* outputs in out[] */
+	int current; /* the one select_output made current */
+	/* GBM and EGL live on this fd; the outputs' drm.fd is the same one,
+	 * unless the display was busy at start and mode setting moved to a
+	 * fresh open of the node once it was free (framebuffer ids are
+	 * device-wide). */
 	int gpu_fd;
-	char *connector, *mode;
+	char *mode;
 	bool exit_when_busy;
-	int antialias; /* enum display_antialias */
 	enum drm_api api;
 	struct gbm_device *gbm;
-	struct gbm_surface *surface;
-	uint32_t format;
-	EGLDisplay dpy;
-	EGLConfig config;
-	EGLContext ctx;
-	EGLSurface egl_surface;
-	struct gbm_bo *shown, *pending;
-	bool connected, modeset, master;
-	bool touched; /* we set a mode: the CRTC's old state goes back on exit */
+	struct kms_egl egl;
+	bool master;
 	struct hotplug *hotplug;
 	int epoll_fd, timer_fd;
-	long flips;
-	double first_flip_s, last_flip_s;
 };
 
-static struct display_kms *from_drm(struct drm *drm)
+/* What the loop reads of the outputs: a flip pending anywhere holds the
+ * next frame back (all outputs are drawn together), and the newest flip
+ * is when the frame reached a screen. */
+static void sum_up(struct display_kms *k)
 {
-	return (struct display_kms *)((char *)drm - offsetof(struct display_kms, drm));
+	k->base.waiting = false;
+	for (int i = 0; i < k->count; i++) {
+		k->base.waiting |= k->out[i].pending != NULL;
+		if (k->out[i].last_flip_s > k->base.flipped_s)
+			k->base.flipped_s = k->out[i].last_flip_s;
+	}
 }
 
-/* An EGL config whose native visual is the GBM format (otherwise the
- * colours come out in the wrong channels, or the surface is refused), and
- * with a depth buffer: without one the depth test passes everywhere and
- * the far side of the model shows through the near side. samples: at
- * least that many samples per pixel ([display] antialias), 0: none. */
-static bool find_config(struct display_kms *k, EGLint depth, EGLint samples)
+/* The CRTCs the other outputs drive, for drm_select to leave alone. */
+static uint32_t crtcs_taken(const struct display_kms *k, const struct kms_output *o)
 {
-	/* Pairs: attribute, value. */
-	const EGLint attribs[] = {EGL_SURFACE_TYPE,
-				  EGL_WINDOW_BIT,
-				  EGL_RED_SIZE,
-				  8,
-				  EGL_GREEN_SIZE,
-				  8,
-				  EGL_BLUE_SIZE,
-				  8,
-				  EGL_DEPTH_SIZE,
-				  depth,
-				  EGL_SAMPLE_BUFFERS,
-				  samples ? 1 : 0,
-				  EGL_SAMPLES,
-				  samples,
-				  EGL_RENDERABLE_TYPE,
-				  EGL_OPENGL_ES2_BIT,
-				  EGL_NONE};
-	static const uint32_t formats[] = {DRM_FORMAT_XRGB8888, DRM_FORMAT_ARGB8888};
-	EGLConfig configs[64];
-	EGLint n = 0;
+	uint32_t taken = 0;
 
-	if (!eglChooseConfig(k->dpy, attribs, configs, 64, &n))
-		return false;
-	for (int f = 0; f < 2; f++) {
-		if (!gbm_device_is_format_supported(k->gbm, formats[f],
-						    GBM_BO_USE_SCANOUT | GBM_BO_USE_RENDERING))
-			continue;
-		/* Sorted by samples, fewest first: the first that scans out. */
-		for (EGLint i = 0; i < n; i++) {
-			EGLint id = 0;
-
-			eglGetConfigAttrib(k->dpy, configs[i], EGL_NATIVE_VISUAL_ID, &id);
-			if ((uint32_t)id == formats[f]) {
-				k->config = configs[i];
-				k->format = formats[f];
-				return true;
-			}
-		}
-	}
-	return false;
+	for (int i = 0; i < k->count; i++)
+		if (&k->out[i] != o && k->out[i].connected)
+			taken |= 1u << k->out[i].drm.crtc_index;
+	return taken;
 }
 
-/* The most samples any window config with a depth buffer offers, for
- * the log when the one asked for is not there. */
-static EGLint most_samples(struct display_kms *k)
+/* The output's connector, set up. -ENOENT: nothing is connected yet (not
+ * an error: the kiosk waits for a cable). */
+static int connect_output(struct display_kms *k, struct kms_output *o)
 {
-	const EGLint attribs[] = {EGL_SURFACE_TYPE,    EGL_WINDOW_BIT,	   EGL_DEPTH_SIZE, 16,
-				  EGL_RENDERABLE_TYPE, EGL_OPENGL_ES2_BIT, EGL_NONE};
-	EGLConfig configs[256];
-	EGLint n = 0, most = 0;
-
-	if (!eglChooseConfig(k->dpy, attribs, configs, 256, &n))
-		return 0;
-	for (EGLint i = 0; i < n; i++) {
-		EGLint s = 0;
-
-		eglGetConfigAttrib(k->dpy, configs[i], EGL_SAMPLES, &s);
-		if (s > most)
-			most = s;
-	}
-	return most;
-}
-
-static int choose_config(struct display_kms *k, EGLint samples)
-{
-	EGLint depth = 0, got = 0;
-
-	if (samples && !find_config(k, 24, samples) && !find_config(k, 16, samples)) {
-		log_warn("kms: [display] antialias = %d: no EGL config with %d samples scans out "
-			 "(the driver offers %d at most): drawing without",
-			 samples, samples, most_samples(k));
-		samples = 0;
-	}
-	/* 24 bits as the offscreen backends have; 16 where that is all. */
-	if (!samples && !find_config(k, 24, 0) && !find_config(k, 16, 0)) {
-		log_err("kms: no EGL config with a depth buffer scans out as XRGB8888 or "
-			"ARGB8888");
-		return -ENODEV;
-	}
-	eglGetConfigAttrib(k->dpy, k->config, EGL_DEPTH_SIZE, &depth);
-	eglGetConfigAttrib(k->dpy, k->config, EGL_SAMPLES, &got);
-	k->base.samples = got;
-	log_debug("kms: EGL config %.4s with a %d-bit depth buffer, %d samples",
-		  (const char *)&k->format, depth, got);
-	return 0;
-}
-
-static int make_context(struct display_kms *k)
-{
-	static const EGLint ctx_attribs[] = {EGL_CONTEXT_CLIENT_VERSION, 2, EGL_NONE};
-
-	k->ctx = eglCreateContext(k->dpy, k->config, EGL_NO_CONTEXT, ctx_attribs);
-	/* Current without a surface until a display is connected, so the
-	 * renderer can load the scene while the kiosk waits for a screen. */
-	if (k->ctx == EGL_NO_CONTEXT ||
-	    !eglMakeCurrent(k->dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, k->ctx)) {
-		log_err("kms: cannot create an OpenGL ES 2.0 context: %s",
-			egl_error_string(eglGetError()));
-		return -ENODEV;
-	}
-	if (gl_load(&k->base.gl, egl_proc, NULL))
-		return -ENOSYS;
-	egl_read_caps(k->dpy, &k->base.gl.caps);
-	return 0;
-}
-
-/* antialias = auto: whether the GPU is a software rasteriser is known
- * only from a context; on a real one the context is made again on a
- * multisampled config, where there is one (said, as for a number). */
-static int antialias_auto(struct display_kms *k)
-{
-	EGLConfig plain = k->config;
-	uint32_t format = k->format;
-	int samples = display_antialias_samples(DISPLAY_AA_AUTO, k->base.gl.caps.software);
-
-	if (!samples || (!find_config(k, 24, samples) && !find_config(k, 16, samples))) {
-		k->config = plain;
-		k->format = format;
-		log_info("kms: antialias = auto: off (%s)",
-			 samples ? "no multisampled config scans out" : "a software rasteriser");
-		return 0;
-	}
-	eglMakeCurrent(k->dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-	eglDestroyContext(k->dpy, k->ctx);
-	return choose_config(k, samples) ? -ENODEV : make_context(k);
-}
-
-static int egl_init(struct display_kms *k)
-{
-	PFNEGLGETPLATFORMDISPLAYEXTPROC get_display =
-	    (PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
-	EGLint major, minor;
 	int ret;
 
-	k->dpy = get_display ? get_display(EGL_PLATFORM_GBM_KHR, k->gbm, NULL) : EGL_NO_DISPLAY;
-	if (k->dpy == EGL_NO_DISPLAY || !eglInitialize(k->dpy, &major, &minor) ||
-	    !eglBindAPI(EGL_OPENGL_ES_API)) {
-		log_err("kms: EGL on GBM is not available: %s", egl_error_string(eglGetError()));
-		return -ENODEV;
+	if (o->gone)
+		return -ENOENT;
+	ret = kms_output_connect(o, &k->egl, k->api, k->mode, crtcs_taken(k, o), &k->base);
+	if (ret == -EINVAL && k->count > 1) {
+		log_err("kms: [display] outputs: %s is left out; the other outputs go on", o->want);
+		o->gone = true;
 	}
-	/* auto: a plain config first; antialias_auto decides once the
-	 * context says what the GPU is. */
-	if (choose_config(k, k->antialias == DISPLAY_AA_AUTO
-				 ? 0
-				 : display_antialias_samples(k->antialias, false)))
-		return -ENODEV;
-	ret = make_context(k);
-	if (!ret && k->antialias == DISPLAY_AA_AUTO)
-		ret = antialias_auto(k);
-	if (!ret && k->base.samples)
-		log_info("kms: antialias %d samples", k->base.samples);
-	return ret;
-}
-
-static void on_flip(int fd, unsigned int frame, unsigned int sec, unsigned int usec, void *data)
-{
-	struct display_kms *k = from_drm(data);
-	double t = sec + usec * 1e-6;
-
-	(void)fd;
-	(void)frame;
-	/* The pending buffer is on screen: the one before it is free. */
-	if (k->shown)
-		gbm_surface_release_buffer(k->surface, k->shown);
-	k->shown = k->pending;
-	k->pending = NULL;
-	k->base.waiting = false;
-	if (k->flips++ == 0)
-		k->first_flip_s = t;
-	k->last_flip_s = k->base.flipped_s = t;
-}
-
-/* Let a flip in flight finish, so the buffer it shows is not freed under
- * the scanout (a vblank is 16 ms; a hung driver gets timeout_ms). */
-static void drain_flip(struct display_kms *k, int timeout_ms)
-{
-	drmEventContext ev = {.version = 2, .page_flip_handler = on_flip};
-	struct pollfd p = {.fd = k->drm.fd, .events = POLLIN};
-
-	if (k->base.waiting && poll(&p, 1, timeout_ms) > 0)
-		drmHandleEvent(k->drm.fd, &ev);
-}
-
-static void release_buffers(struct display_kms *k)
-{
-	if (k->pending)
-		gbm_surface_release_buffer(k->surface, k->pending);
-	if (k->shown)
-		gbm_surface_release_buffer(k->surface, k->shown);
-	k->pending = k->shown = NULL;
-	k->base.waiting = false;
-}
-
-/* turn_off: the display went away, so stop scanning out of buffers that
- * are about to be freed; at exit the old mode is put back instead. */
-static void disconnect(struct display_kms *k, bool turn_off)
-{
-	if (!k->connected)
-		return;
-	drain_flip(k, 100);
-	if (turn_off && k->master && k->touched)
-		k->drm.ops->disable(&k->drm);
-	eglMakeCurrent(k->dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, k->ctx);
-	release_buffers(k);
-	eglDestroySurface(k->dpy, k->egl_surface);
-	gbm_surface_destroy(k->surface);
-	k->egl_surface = EGL_NO_SURFACE;
-	k->surface = NULL;
-	k->connected = false;
-}
-
-static int make_surface(struct display_kms *k)
-{
-	int w = (int)k->drm.src_w, h = (int)k->drm.src_h; /* kms_scale_plane's */
-
-	k->surface = gbm_surface_create(k->gbm, (uint32_t)w, (uint32_t)h, k->format,
-					GBM_BO_USE_SCANOUT | GBM_BO_USE_RENDERING);
-	if (!k->surface)
-		return -ENOMEM;
-	k->egl_surface =
-	    eglCreateWindowSurface(k->dpy, k->config, (EGLNativeWindowType)k->surface, NULL);
-	if (k->egl_surface == EGL_NO_SURFACE ||
-	    !eglMakeCurrent(k->dpy, k->egl_surface, k->egl_surface, k->ctx)) {
-		log_err("kms: cannot make a %dx%d EGL surface: %s", w, h,
-			egl_error_string(eglGetError()));
-		if (k->egl_surface != EGL_NO_SURFACE)
-			eglDestroySurface(k->dpy, k->egl_surface);
-		gbm_surface_destroy(k->surface);
-		k->egl_surface = EGL_NO_SURFACE;
-		k->surface = NULL;
-		return -ENODEV;
-	}
-	k->base.width = w;
-	k->base.height = h;
-	return 0;
-}
-
-static void ops_reset(struct display_kms *k)
-{
-	if (k->drm.ops)
-		k->drm.ops->destroy(&k->drm);
-	k->drm.ops = NULL;
-}
-
-/* Find the display and set up a surface of its mode. -ENOENT: nothing is
- * connected yet (not an error: the kiosk waits for a cable). */
-static int connect_display(struct display_kms *k)
-{
-	int ret = drm_select(&k->drm, k->connector, k->mode);
-
 	if (ret)
 		return ret;
-	ops_reset(k);
-	ret = drm_ops_init(&k->drm, k->api);
-	k->base.plane_scaled = !ret && kms_scale_plane(&k->drm, k->gbm, k->format, &k->base);
-	if (!ret)
-		ret = make_surface(k);
-	if (ret)
-		return ret;
-	k->connected = true;
-	k->modeset = true;
-	k->base.refresh_ns = k->drm.mode.vrefresh ? 1000000000ull / k->drm.mode.vrefresh : 0;
-	log_info("kms: %s %s@%u, %s modesetting", k->drm.connector_name, k->drm.mode.name,
-		 k->drm.mode.vrefresh, k->drm.ops->name);
+	k->base.width = (int)o->drm.src_w;
+	k->base.height = (int)o->drm.src_h;
+	k->base.plane_scaled = o->plane_scaled;
+	k->base.refresh_ns = o->drm.mode.vrefresh ? 1000000000ull / o->drm.mode.vrefresh : 0;
 	return 0;
 }
 
@@ -339,20 +98,46 @@ static int connect_display(struct display_kms *k)
 static void schedule_retry(struct display_kms *k)
 {
 	struct itimerspec t = {.it_value = {.tv_sec = RETRY_SECONDS}}, now;
+	bool waiting_for_cable = false;
 
+	for (int i = 0; i < k->count; i++)
+		waiting_for_cable |= !k->out[i].connected && !k->out[i].gone;
 	if (timerfd_gettime(k->timer_fd, &now) == 0 &&
 	    (now.it_value.tv_sec || now.it_value.tv_nsec))
 		return; /* armed already: the retry keeps its time */
-	if (!k->master || (!k->connected && !k->hotplug))
+	if (!k->master || (waiting_for_cable && !k->hotplug))
 		timerfd_settime(k->timer_fd, 0, &t, NULL);
+}
+
+/* Output i is drawn next: its size and whether its plane scales. */
+static int kms_select_output(struct display *d, int i)
+{
+	struct display_kms *k = (struct display_kms *)d;
+	struct kms_output *o;
+
+	if (i < 0 || i >= k->count)
+		return -EINVAL;
+	o = &k->out[i];
+	k->current = i;
+	d->output_name = o->connected ? o->drm.connector_name : o->want;
+	if (!o->connected)
+		return -EAGAIN;
+	d->width = (int)o->drm.src_w;
+	d->height = (int)o->drm.src_h;
+	d->plane_scaled = o->plane_scaled;
+	return 0;
 }
 
 static int kms_begin_frame(struct display *d)
 {
 	struct display_kms *k = (struct display_kms *)d;
+	struct kms_output *o = &k->out[k->current];
 
-	if (!k->connected || !k->master)
+	if (!o->connected || !k->master)
 		return -EAGAIN;
+	/* One context, a surface per output: draw into this one's. */
+	if (k->count > 1 && !eglMakeCurrent(k->egl.dpy, o->egl_surface, o->egl_surface, k->egl.ctx))
+		return -EIO;
 	d->gl.Viewport(0, 0, d->width, d->height);
 	return 0;
 }
@@ -361,53 +146,34 @@ static void say_busy(struct display_kms *k, bool exiting)
 {
 	char who[96];
 
-	drm_master_holder(&k->drm, who, sizeof(who));
+	drm_master_holder(&k->out[0].drm, who, sizeof(who));
 	if (exiting)
 		log_err("kms: %s is held by %s (it is DRM master): exiting, as [display] on_busy "
 			"= exit says",
-			k->drm.path, who);
+			k->out[0].drm.path, who);
 	else
 		log_warn("kms: %s is held by %s (it is DRM master): waiting for it, as "
 			 "[display] on_busy = wait says (trying every %d s)",
-			 k->drm.path, who, RETRY_SECONDS);
+			 k->out[0].drm.path, who, RETRY_SECONDS);
 }
 
 static int kms_present(struct display *d)
 {
 	struct display_kms *k = (struct display_kms *)d;
-	struct gbm_bo *bo;
-	uint32_t fb;
-	int ret;
+	int ret = kms_output_present(&k->out[k->current], &k->egl, k->gpu_fd);
 
-	/* The live loop never presents while a flip is pending; a caller
-	 * that draws frames back to back (--frames) waits for it here. */
-	drain_flip(k, 1000);
-	if (!eglSwapBuffers(k->dpy, k->egl_surface))
-		return -EIO;
-	bo = gbm_surface_lock_front_buffer(k->surface);
-	fb = bo ? kms_fb_for_bo(k->gpu_fd, bo) : 0;
-	if (fb && k->modeset)
-		drm_save(&k->drm);
-	ret = fb ? k->drm.ops->flip(&k->drm, fb, k->modeset) : -EIO;
-	if (ret) {
-		if (bo)
-			gbm_surface_release_buffer(k->surface, bo);
-		if (ret != -EACCES)
-			return ret;
-		/* Another program took the display (a VT switch, a desktop). */
-		k->master = false;
-		k->modeset = true;
-		say_busy(k, k->exit_when_busy);
-		if (k->exit_when_busy)
-			return ret;
-		schedule_retry(k);
-		return -EAGAIN;
-	}
-	k->touched |= k->modeset;
-	k->pending = bo;
-	k->modeset = false;
-	d->waiting = true;
-	return 0;
+	sum_up(k);
+	if (ret != -EACCES)
+		return ret;
+	/* Another program took the display (a VT switch, a desktop). */
+	k->master = false;
+	for (int i = 0; i < k->count; i++)
+		k->out[i].modeset = true;
+	say_busy(k, k->exit_when_busy);
+	if (k->exit_when_busy)
+		return ret;
+	schedule_retry(k);
+	return -EAGAIN;
 }
 
 static int watch(struct display_kms *k, int fd)
@@ -417,57 +183,84 @@ static int watch(struct display_kms *k, int fd)
 	return epoll_ctl(k->epoll_fd, EPOLL_CTL_ADD, fd, &ev) ? -errno : 0;
 }
 
+static void ops_reset(struct kms_output *o)
+{
+	if (o->drm.ops)
+		o->drm.ops->destroy(&o->drm);
+	o->drm.ops = NULL;
+}
+
 /* Mode setting moves to fd, which is master: flip events come there,
  * and the client caps (atomic) are per open file. */
 static void move_to_fd(struct display_kms *k, int fd)
 {
-	epoll_ctl(k->epoll_fd, EPOLL_CTL_DEL, k->drm.fd, NULL);
-	if (k->drm.fd != k->gpu_fd)
-		close(k->drm.fd);
-	k->drm.fd = fd;
+	epoll_ctl(k->epoll_fd, EPOLL_CTL_DEL, k->out[0].drm.fd, NULL);
+	if (k->out[0].drm.fd != k->gpu_fd)
+		close(k->out[0].drm.fd);
 	watch(k, fd);
-	ops_reset(k);
-	if (k->connected && drm_ops_init(&k->drm, k->api))
-		disconnect(k, false);
+	for (int i = 0; i < k->count; i++) {
+		struct kms_output *o = &k->out[i];
+
+		o->drm.fd = fd;
+		ops_reset(o);
+		if (o->connected && drm_ops_init(&o->drm, k->api))
+			kms_output_disconnect(o, &k->egl, false, k->master);
+	}
 }
 
 static int take_master(struct display_kms *k)
 {
-	int fd = drm_acquire_master(&k->drm);
+	int fd = drm_acquire_master(&k->out[0].drm);
 
 	if (fd < 0)
 		return 0;
-	if (fd != k->drm.fd)
+	if (fd != k->out[0].drm.fd)
 		move_to_fd(k, fd);
 	k->master = true;
-	k->modeset = true;
-	log_info("kms: %s is free now: taking the display", k->drm.path);
+	for (int i = 0; i < k->count; i++)
+		k->out[i].modeset = true;
+	log_info("kms: %s is free now: taking the display", k->out[0].drm.path);
 	return 1;
 }
 
 /* A cable in or out, or a synthetic udev event: act only on a change. */
-static int reprobe(struct display_kms *k)
+static int reprobe(struct display_kms *k, struct kms_output *o)
 {
 	int ret;
 
-	if (k->connected && drm_still_connected(&k->drm))
+	if (o->gone || (o->connected && drm_still_connected(&o->drm)))
 		return 0;
-	if (k->connected) {
-		disconnect(k, true);
-		log_warn("kms: %s was disconnected; waiting for a display", k->drm.connector_name);
+	if (o->connected) {
+		kms_output_disconnect(o, &k->egl, true, k->master);
+		if (k->count > 1)
+			log_warn("kms: %s was disconnected; the other outputs go on, and it is "
+				 "waited for",
+				 o->drm.connector_name);
+		else
+			log_warn("kms: %s was disconnected; waiting for a display",
+				 o->drm.connector_name);
 	}
-	ret = connect_display(k);
+	ret = connect_output(k, o);
 	if (ret == 0)
 		return 1;
-	if (ret != -ENOENT)
+	if (ret != -ENOENT && !o->gone)
 		log_warn("kms: a display is connected but cannot be used; waiting for another");
 	return 0;
+}
+
+static int reprobe_all(struct display_kms *k, bool only_absent)
+{
+	int redraw = 0;
+
+	for (int i = 0; i < k->count; i++)
+		if (!only_absent || !k->out[i].connected)
+			redraw |= reprobe(k, &k->out[i]);
+	return redraw;
 }
 
 static int kms_dispatch(struct display *d)
 {
 	struct display_kms *k = (struct display_kms *)d;
-	drmEventContext ev = {.version = 2, .page_flip_handler = on_flip};
 	struct epoll_event events[4];
 	int n = epoll_wait(k->epoll_fd, events, 4, 0), redraw = 0;
 	uint64_t expirations;
@@ -475,19 +268,20 @@ static int kms_dispatch(struct display *d)
 	for (int i = 0; i < n; i++) {
 		int fd = events[i].data.fd;
 
-		if (fd == k->drm.fd) {
-			drmHandleEvent(fd, &ev);
+		if (fd == k->out[0].drm.fd) {
+			kms_output_events(fd);
 		} else if (fd == k->timer_fd) {
 			if (read(fd, &expirations, sizeof(expirations)) <= 0)
 				continue;
 			if (!k->master)
 				redraw |= take_master(k);
-			if (!k->connected && !k->hotplug)
-				redraw |= reprobe(k);
+			if (!k->hotplug)
+				redraw |= reprobe_all(k, true);
 		} else if (k->hotplug && hotplug_read(k->hotplug)) {
-			redraw |= reprobe(k);
+			redraw |= reprobe_all(k, false);
 		}
 	}
+	sum_up(k);
 	schedule_retry(k);
 	return redraw;
 }
@@ -501,64 +295,30 @@ static int kms_get_fd(struct display *d)
 static int kms_read_frame(struct display *d, struct image *out)
 {
 	struct display_kms *k = (struct display_kms *)d;
-	struct gbm_bo *bo = k->shown ? k->shown : k->pending;
-	uint32_t stride = 0;
-	void *map_data = NULL;
-	uint8_t *px;
-	int ret;
 
-	if (!bo)
-		return -ENODATA;
-	px = gbm_bo_map(bo, 0, 0, (uint32_t)d->width, (uint32_t)d->height, GBM_BO_TRANSFER_READ,
-			&stride, &map_data);
-	if (!px)
-		return -EIO;
-	ret = image_alloc(out, d->width, d->height);
-	for (int y = 0; !ret && y < d->height; y++)
-		for (int x = 0; x < d->width; x++) {
-			/* XRGB8888 is little-endian B, G, R, X in memory. */
-			const uint8_t *s = px + (size_t)y * stride + (size_t)x * 4;
-			uint8_t *o = out->rgba + ((size_t)y * (size_t)d->width + (size_t)x) * 4;
-
-			o[0] = s[2];
-			o[1] = s[1];
-			o[2] = s[0];
-			o[3] = 255;
-		}
-	gbm_bo_unmap(bo, map_data);
-	return ret;
-}
-
-/* For the journal and the tests: how many frames reached the screen. */
-static void log_flips(const struct display_kms *k)
-{
-	double span = k->last_flip_s - k->first_flip_s;
-
-	if (k->flips > 1 && span > 0)
-		log_info("kms: %ld page flips in %.1f s (%.1f per second)", k->flips, span,
-			 (double)(k->flips - 1) / span);
-	else
-		log_info("kms: %ld page flips", k->flips);
+	return kms_output_read(&k->out[k->current], out);
 }
 
 static void kms_destroy(struct display *d)
 {
 	struct display_kms *k = (struct display_kms *)d;
 
-	if (k->connected) {
-		drain_flip(k, 100);
-		log_flips(k);
+	for (int i = 0; i < k->count; i++) {
+		struct kms_output *o = &k->out[i];
+
+		if (o->connected) {
+			kms_output_drain(o, 100);
+			kms_output_log_flips(o, k->count > 1);
+		}
+		if (k->master && o->touched)
+			drm_restore(&o->drm);
+		kms_output_disconnect(o, &k->egl, false, k->master);
+		ops_reset(o);
+		if (o->drm.saved_crtc)
+			drmModeFreeCrtc(o->drm.saved_crtc);
+		free(o->want);
 	}
-	if (k->master && k->touched)
-		drm_restore(&k->drm);
-	disconnect(k, false);
-	ops_reset(k);
-	if (k->ctx != EGL_NO_CONTEXT) {
-		eglMakeCurrent(k->dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-		eglDestroyContext(k->dpy, k->ctx);
-	}
-	if (k->dpy != EGL_NO_DISPLAY)
-		eglTerminate(k->dpy);
+	kms_egl_release(&k->egl);
 	if (k->gbm)
 		gbm_device_destroy(k->gbm);
 	hotplug_free(k->hotplug);
@@ -566,13 +326,10 @@ static void kms_destroy(struct display *d)
 		close(k->epoll_fd);
 	if (k->timer_fd >= 0)
 		close(k->timer_fd);
-	if (k->drm.fd >= 0 && k->drm.fd != k->gpu_fd)
-		close(k->drm.fd);
+	if (k->out[0].drm.fd >= 0 && k->out[0].drm.fd != k->gpu_fd)
+		close(k->out[0].drm.fd);
 	if (k->gpu_fd >= 0)
 		close(k->gpu_fd);
-	if (k->drm.saved_crtc)
-		drmModeFreeCrtc(k->drm.saved_crtc);
-	free(k->connector);
 	free(k->mode);
 	free(k);
 }
@@ -590,9 +347,9 @@ static int open_fds(struct display_kms *k)
 	k->timer_fd = timerfd_create(CLOCK_MONOTONIC, TFD_CLOEXEC | TFD_NONBLOCK);
 	if (k->timer_fd < 0)
 		return -errno;
-	if (fstat(k->drm.fd, &st) == 0)
+	if (fstat(k->gpu_fd, &st) == 0)
 		k->hotplug = hotplug_new(st.st_rdev);
-	if ((ret = watch(k, k->drm.fd)) || (ret = watch(k, k->timer_fd)) ||
+	if ((ret = watch(k, k->gpu_fd)) || (ret = watch(k, k->timer_fd)) ||
 	    (k->hotplug && (ret = watch(k, hotplug_fd(k->hotplug)))))
 		return ret;
 	return 0;
@@ -601,22 +358,26 @@ static int open_fds(struct display_kms *k)
 static int kms_set_power(struct display *d, bool on)
 {
 	struct display_kms *k = (struct display_kms *)d;
-	int ret;
+	int ret = 0;
 
-	if (on) {
-		/* The next present is a modeset, which wakes the CRTC. */
-		k->modeset = true;
-		return 0;
+	for (int i = 0; i < k->count; i++) {
+		struct kms_output *o = &k->out[i];
+		int r;
+
+		/* On: the next present is a modeset, which wakes the CRTC. */
+		o->modeset |= on;
+		if (on || !o->connected || !o->touched)
+			continue;
+		kms_output_drain(o, 1000);
+		r = o->drm.ops->sleep(&o->drm);
+		if (r)
+			log_err("kms: %s cannot sleep (%s modesetting): %s", o->drm.connector_name,
+				o->drm.ops->name, strerror(-r));
+		else
+			log_info("kms: %s asleep", o->drm.connector_name);
+		ret = ret ? ret : r; /* one that cannot sleep leaves the others asleep */
 	}
-	if (!k->connected || !k->touched)
-		return 0;
-	drain_flip(k, 1000);
-	ret = k->drm.ops->sleep(&k->drm);
-	if (ret)
-		log_err("kms: %s cannot sleep (%s modesetting): %s", k->drm.connector_name,
-			k->drm.ops->name, strerror(-ret));
-	else
-		log_info("kms: %s asleep", k->drm.connector_name);
+	sum_up(k);
 	return ret;
 }
 
@@ -632,29 +393,83 @@ static void init_base(struct display_kms *k, const struct display_config *cfg)
 	k->base.get_fd = kms_get_fd;
 	k->base.dispatch = kms_dispatch;
 	k->base.set_power = kms_set_power;
-	k->base.overlay = kms_overlay_display;
-	k->base.overlay_ctx = &k->drm;
+	k->base.select_output = kms_select_output;
 	k->base.destroy = kms_destroy;
-	k->drm.fd = k->gpu_fd = k->epoll_fd = k->timer_fd = -1;
-	k->dpy = EGL_NO_DISPLAY;
-	k->ctx = EGL_NO_CONTEXT;
-	k->connector = cfg->connector ? strdup(cfg->connector) : NULL;
+	k->gpu_fd = k->epoll_fd = k->timer_fd = -1;
+	k->egl.dpy = EGL_NO_DISPLAY;
+	k->egl.ctx = EGL_NO_CONTEXT;
 	k->mode = cfg->mode ? strdup(cfg->mode) : NULL;
 	k->exit_when_busy = cfg->exit_when_busy;
-	k->antialias = cfg->antialias;
-	k->drm.scale_want = cfg->render_scale;
 	k->api = (enum drm_api)cfg->kms_api;
+	for (int i = 0; i < KMS_OUTPUTS_MAX; i++) {
+		k->out[i].drm.fd = -1;
+		k->out[i].drm.scale_want = cfg->render_scale;
+		k->out[i].egl_surface = EGL_NO_SURFACE;
+	}
 }
 
 /* The first program to open the node is master; one that opens it while
  * another holds it is not, and may not set modes until that one is gone. */
 static int check_master(struct display_kms *k)
 {
-	k->master = drmIsMaster(k->drm.fd) || drmSetMaster(k->drm.fd) == 0;
+	k->master = drmIsMaster(k->gpu_fd) || drmSetMaster(k->gpu_fd) == 0;
 	if (k->master)
 		return 0;
 	say_busy(k, k->exit_when_busy);
 	return k->exit_when_busy ? -EBUSY : 0;
+}
+
+/* [display] outputs: its names (or every connector, for all), else the
+ * one [display] connector (NULL: the first connected). */
+static void name_outputs(struct display_kms *k, const struct display_config *cfg)
+{
+	char names[KMS_OUTPUTS_MAX][32], why[128];
+	int n = 0;
+
+	if (cfg->outputs && strcmp(cfg->outputs, "all") == 0)
+		n = drm_connector_list(k->gpu_fd, names, KMS_OUTPUTS_MAX);
+	else if (cfg->outputs)
+		n = display_outputs_parse(cfg->outputs, names, KMS_OUTPUTS_MAX, why, sizeof(why));
+	if (n < 0)
+		log_err("kms: [display] outputs = %s: %s; driving one output", cfg->outputs, why);
+	k->count = n > 0 ? n : 1;
+	for (int i = 0; i < k->count; i++) {
+		struct kms_output *o = &k->out[i];
+
+		o->want = n > 0 ? strdup(names[i]) : cfg->connector ? strdup(cfg->connector) : NULL;
+		if (i > 0) {
+			o->drm.fd = k->out[0].drm.fd;
+			memcpy(o->drm.path, k->out[0].drm.path, sizeof(o->drm.path));
+		}
+	}
+	if (k->count > 1)
+		log_info("kms: %d outputs: %s", k->count, cfg->outputs);
+	else { /* the caption's own plane: only with one output */
+		k->base.overlay = kms_overlay_display;
+		k->base.overlay_ctx = &k->out[0].drm;
+	}
+	k->base.outputs = k->count;
+}
+
+/* Every output tried: -ENOENT when none is connected (waited for), the
+ * first other error when none can be used. */
+static int connect_outputs(struct display_kms *k)
+{
+	int ret = -ENOENT, first = 0;
+
+	for (int i = 0; i < k->count; i++) {
+		int r = connect_output(k, &k->out[i]);
+
+		if (r == 0)
+			ret = 0;
+		else if (r != -ENOENT && !first)
+			first = r;
+	}
+	if (ret == -ENOENT && first)
+		ret = first;
+	if (!ret)
+		k->current = 0;
+	return ret;
 }
 
 struct display *display_kms_open(const struct display_config *cfg, int *err)
@@ -667,22 +482,29 @@ struct display *display_kms_open(const struct display_config *cfg, int *err)
 	init_base(k, cfg);
 	/* A display output with nothing connected yet is a kiosk waiting for
 	 * its screen, for auto too: only a machine with none draws a PNG. */
-	if ((ret = drm_open(&k->drm, cfg->device, cfg->quiet)))
+	if ((ret = drm_open(&k->out[0].drm, cfg->device, cfg->quiet)))
 		goto fail;
-	k->gpu_fd = k->drm.fd;
+	k->gpu_fd = k->out[0].drm.fd;
+	k->count = 1;
 	k->gbm = gbm_create_device(k->gpu_fd);
 	if (!k->gbm) {
-		log_err("kms: GBM cannot use %s (is Mesa's DRI driver installed?)", k->drm.path);
+		log_err("kms: GBM cannot use %s (is Mesa's DRI driver installed?)",
+			k->out[0].drm.path);
 		ret = -ENODEV;
 		goto fail;
 	}
-	if ((ret = egl_init(k)) || (ret = open_fds(k)) || (ret = check_master(k)))
+	if ((ret = kms_egl_init(&k->egl, k->gbm, cfg->antialias, &k->base.gl)))
 		goto fail;
-	ret = connect_display(k);
+	k->base.samples = k->egl.samples;
+	if ((ret = open_fds(k)) || (ret = check_master(k)))
+		goto fail;
+	name_outputs(k, cfg);
+	ret = connect_outputs(k);
 	if (ret == -ENOENT)
-		log_warn("kms: no display is connected to %s; waiting for one", k->drm.path);
+		log_warn("kms: no display is connected to %s; waiting for one", k->out[0].drm.path);
 	else if (ret)
 		goto fail;
+	sum_up(k);
 	schedule_retry(k);
 	return &k->base;
 fail:

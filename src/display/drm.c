@@ -261,11 +261,14 @@ static int pick_crtc(struct drm *drm, const drmModeRes *res, const drmModeConnec
 	uint32_t crtc = cur ? cur->crtc_id : 0;
 
 	drmModeFreeEncoder(cur);
+	for (int i = 0; crtc && i < res->count_crtcs; i++)
+		if (res->crtcs[i] == crtc && (drm->crtcs_taken & (1u << i)))
+			crtc = 0; /* another output of ours drives it now */
 	for (int e = 0; !crtc && e < c->count_encoders; e++) {
 		drmModeEncoder *enc = drmModeGetEncoder(drm->fd, c->encoders[e]);
 
 		for (int i = 0; enc && i < res->count_crtcs && !crtc; i++)
-			if (enc->possible_crtcs & (1u << i))
+			if ((enc->possible_crtcs & (1u << i)) && !(drm->crtcs_taken & (1u << i)))
 				crtc = res->crtcs[i];
 		drmModeFreeEncoder(enc);
 	}
@@ -307,6 +310,22 @@ out:
 	drmModeFreeConnector(c);
 	drmModeFreeResources(res);
 	return ret;
+}
+
+int drm_connector_list(int fd, char (*names)[32], int max)
+{
+	drmModeRes *res = drmModeGetResources(fd);
+	int n = 0;
+
+	for (int i = 0; res && i < res->count_connectors && n < max; i++) {
+		drmModeConnector *c = drmModeGetConnectorCurrent(fd, res->connectors[i]);
+
+		if (c && c->connector_type != DRM_MODE_CONNECTOR_WRITEBACK)
+			drm_connector_name(c, names[n++], 32);
+		drmModeFreeConnector(c);
+	}
+	drmModeFreeResources(res);
+	return n;
 }
 
 bool drm_still_connected(const struct drm *drm)

@@ -39,6 +39,9 @@ struct drm {
 	uint32_t connector_id;
 	uint32_t crtc_id;
 	int crtc_index;
+	/* Indices of the CRTCs other outputs of this device drive ([display]
+	 * outputs): drm_select picks none of them. */
+	uint32_t crtcs_taken;
 	drmModeModeInfo mode;
 	char connector_name[32];
 	/* The primary plane's source: the buffer's size, smaller than the
@@ -66,6 +69,9 @@ int drm_open(struct drm *drm, const char *path, bool quiet);
  * Returns 0, -ENOENT when no display is connected (the caller waits for
  * one), or -EINVAL after listing what exists when a name does not. */
 int drm_select(struct drm *drm, const char *connector, const char *mode);
+/* [display] outputs = all: the names of fd's connectors (writeback ones
+ * left out: they show nothing), at most max. Returns how many. */
+int drm_connector_list(int fd, char (*names)[32], int max);
 /* True while the selected connector is connected and offers our mode:
  * a hotplug event that changed nothing needs no new modeset. Asked with
  * drmModeGetConnectorCurrent, the state the kernel already knows: no

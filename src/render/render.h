@@ -25,7 +25,8 @@ struct view {
 	 * put at room (the centre of the frame less the caption's box): the
 	 * picture is shifted so (render/framing.h). Both 0: not shifted. */
 	float outline[2], room[2];
-	float background[3]; /* the clear colour, without renderer_set_background */
+	float background[3];   /* the clear colour, without renderer_set_background */
+	bool plain_background; /* that colour alone, even with renderer_set_background's */
 	/* [wall]: the camera frames the whole wall, this frame shows its
 	 * slice (render/wall.h). Zeroed: no wall. */
 	struct wall_layout wall;

@@ -224,7 +224,7 @@ void renderer_draw(struct renderer *r, const struct view *v, int width, int heig
 	const struct gl *gl = r->gl;
 	int vp[4] = {0, 0, width, height};
 
-	if (r->background) {
+	if (r->background && !v->plain_background) {
 		struct wall_slice s;
 
 		wall_slice_turned(&v->wall, v->rotation, width, height, &s);
