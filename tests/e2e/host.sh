@@ -21,7 +21,7 @@ offscreen=${OFFSCREEN_BACKEND:-osmesa}
 out=$1
 shift
 # The display first, then the buttons and the camera on it.
-[ $# -gt 0 ] || set -- tests/e2e/kms.sh tests/e2e/kms-hotplug.sh tests/e2e/kms-busy.sh \
+[ $# -gt 0 ] || set -- tests/e2e/kms.sh tests/e2e/kms-hotplug.sh tests/e2e/kms-busy.sh tests/e2e/kms-outputs.sh \
 	tests/vm/gpio-test.sh tests/e2e/reload-devices.sh tests/e2e/camera.sh tests/e2e/cec.sh tests/e2e/power.sh \
 	tests/e2e/touch.sh tests/e2e/knob-board.sh tests/e2e/models.sh tests/e2e/hands-board.sh
 kiosk=${KIOSK:-./matcap-kiosk}
@@ -57,12 +57,21 @@ ref knot-800x600-rot90-pitch65 800x600 --rotate 90 --stops '-30 65 1' --stop 1
 $kiosk -q --backend egl-headless --size 1024x768 --matcap matcaps/gold.png --lod-pixels 0 \
 	--antialias 4 --output "$out/ref/knot-1024x768-aa4.png" ||
 	echo "not ok reference knot-1024x768-aa4 rendered"
+# Two outputs of one card (kms-outputs.sh, on the board's virtio-gpu:
+# run.sh --outputs 2 names its connectors Virtual-2 and Virtual-3, vkms
+# having Virtual-1): one settings file for the guest and the references,
+# each output drawn as --as-output says it shows the scene.
+printf '[display]\noutputs = Virtual-2, Virtual-3\nmode = 640x480\n\n[output.Virtual-3]\nview = mirror\n' \
+	>"$out/ref/outputs.ini"
+for o in Virtual-2 Virtual-3; do
+	ref "outputs-$o" 640x480 --config "$out/ref/outputs.ini" --as-output "$o"
+done
 
 # boot: the board with $bins, running $script, its files in $share.
 boot() {
 	# shellcheck disable=SC2086
 	tests/vm/run.sh --quiet --timeout "${VM_TIMEOUT:-240}" $bins --share "$share" \
-		${VM_RUN_FLAGS:-} -- "$script" >"$share/run.log" 2>&1
+		${VM_RUN_FLAGS:-} $board -- "$script" >"$share/run.log" 2>&1
 }
 
 complete=1
@@ -82,6 +91,9 @@ for script in "$@"; do
 	done
 	# hands-board.sh plugs in USB sticks: ext2 images made here.
 	[ "$name" = hands-board ] && bins="$bins $(sh tests/e2e/sticks.sh "$out/sticks")"
+	# kms-outputs.sh drives two outputs of one card: a virtio-gpu beside vkms.
+	board=""
+	[ "$name" = kms-outputs ] && board="--outputs 2"
 	boot
 	rc=$?
 	# A board that stopped answering boots once more: 124 is the host's
