@@ -328,13 +328,24 @@ int drm_connector_list(int fd, char (*names)[32], int max)
 	return n;
 }
 
+/* The same mode, but for its picture aspect ratio: the kernel adds that
+ * flag only for a client with DRM_CLIENT_CAP_ATOMIC, which the first output
+ * sets after it picked its mode (EDID modes can have one: virtio-gpu gives
+ * its 640x480 4:3), so it is no sign of another display. */
+static bool same_mode(drmModeModeInfo a, drmModeModeInfo b)
+{
+	a.flags &= ~(uint32_t)DRM_MODE_FLAG_PIC_AR_MASK;
+	b.flags &= ~(uint32_t)DRM_MODE_FLAG_PIC_AR_MASK;
+	return memcmp(&a, &b, sizeof(a)) == 0;
+}
+
 bool drm_still_connected(const struct drm *drm)
 {
 	drmModeConnector *c = drmModeGetConnectorCurrent(drm->fd, drm->connector_id);
 	bool ok = c && c->connection == DRM_MODE_CONNECTED;
 
 	for (int i = 0; ok && i < c->count_modes; i++)
-		if (memcmp(&c->modes[i], &drm->mode, sizeof(drm->mode)) == 0) {
+		if (same_mode(c->modes[i], drm->mode)) {
 			drmModeFreeConnector(c);
 			return true;
 		}
