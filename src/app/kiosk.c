@@ -209,6 +209,10 @@ static int draw_outputs(struct kiosk *k)
 		}
 		shown += !ret;
 	}
+	/* The first output is the one read back (--status's frame) and
+	 * measured between frames. */
+	if (n > 1)
+		d->select_output(d, 0);
 	return shown ? 0 : -EAGAIN;
 }
 

@@ -44,8 +44,9 @@ void kms_output_drain(struct kms_output *o, int timeout_ms)
 {
 	struct pollfd p = {.fd = o->drm.fd, .events = POLLIN};
 
-	/* Another output's event may come first: read until o's has. */
-	while (o->pending && poll(&p, 1, timeout_ms) > 0)
+	/* Another output's event may come first: read until o's has (a
+	 * bounded number of times: a descriptor in error polls readable). */
+	for (int i = 0; o->pending && i < 2 * KMS_OUTPUTS_MAX && poll(&p, 1, timeout_ms) > 0; i++)
 		kms_output_events(o->drm.fd);
 }
 

@@ -28,7 +28,7 @@ scenes="$scenes frame-up frame-start-view frame-own-look"
 scenes="$scenes render-scale-half normals-flat normals-smooth"
 scenes="$scenes morph-t1 morph-t3 morph-pingpong skin-t1 nodes-t1.7"
 scenes="$scenes hotspots-yaw0 hotspots-yaw180 hotspot-stop"
-scenes="$scenes wall-2x2"
+scenes="$scenes wall-2x2 outputs-mirror outputs-slice"
 mkdir -p "$out" "$models"
 "$TOOLS/mkmodels" "$models" >/dev/null
 
@@ -297,6 +297,32 @@ render() {
 		"$TOOLS/stitch" "$o" 2 2 8 8 "$out/wall-2x2-1,1.png" "$out/wall-2x2-2,1.png" \
 			"$out/wall-2x2-1,2.png" "$out/wall-2x2-2,2.png"
 		rm -f "$out"/wall-2x2-?,?.png
+		;;
+	# Issue 36: two outputs of one board, each still drawn as that output
+	# shows it (--as-output), side by side. outputs-mirror: the front
+	# (the same view, the caption) and the back of a vitrine (mirror:
+	# turned 180 degrees about the vertical, after the start view's
+	# tilt; no caption, its own background). outputs-slice: two outputs
+	# as the two halves of a [wall] of 2x1, which join into one picture.
+	outputs-mirror | outputs-slice)
+		ini=$out/$1.ini
+		case $1 in
+		outputs-mirror)
+			printf '%s\n' '[display]' 'outputs = HDMI-A-1, HDMI-A-2' '[caption]' \
+				'text = The front' 'size = 10' '[output.HDMI-A-2]' 'view = mirror' 'caption = no' \
+				'background = #203040' >"$ini" ;;
+		outputs-slice)
+			printf '%s\n' '[display]' 'outputs = HDMI-A-1, HDMI-A-2' '[wall]' \
+				'columns = 2' 'rows = 1' '[output.HDMI-A-1]' 'view = slice' \
+				'position = 1,1' '[output.HDMI-A-2]' 'view = slice' 'position = 2,1' \
+				>"$ini" ;;
+		esac
+		for n in 1 2; do
+			$k --config "$ini" -c matcaps/gold.png --model "$m/long.glb" --start-yaw 35 \
+				--size 160x120 --as-output HDMI-A-$n --output "$out/$1-$n.png"
+		done
+		"$TOOLS/stitch" "$o" 2 1 0 0 "$out/$1-1.png" "$out/$1-2.png"
+		rm -f "$out/$1-1.png" "$out/$1-2.png" "$ini"
 		;;
 	*)
 		echo "golden.sh: no scene named $1 (scenes: $scenes)" >&2
