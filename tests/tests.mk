@@ -281,6 +281,7 @@ bench: $(KIOSK) test-tools
 	KIOSK=./$(KIOSK) sh tests/bench/bench_input.sh
 	KIOSK=./$(KIOSK) sh tests/bench/bench_in_step.sh
 	KIOSK=./$(KIOSK) sh tests/bench/bench_kms.sh
+	KIOSK=./$(KIOSK) sh tests/bench/bench_outputs.sh
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_models.sh
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_anim.sh
 	KIOSK=./$(KIOSK) TOOLS=$(TOOLS_DIR) sh tests/bench/bench_quality.sh tests/out/report --frames 7

@@ -93,7 +93,9 @@ for script in "$@"; do
 	[ "$name" = hands-board ] && bins="$bins $(sh tests/e2e/sticks.sh "$out/sticks")"
 	# kms-outputs.sh drives two outputs of one card: a virtio-gpu beside vkms.
 	board=""
-	[ "$name" = kms-outputs ] && board="--outputs 2"
+	# Two outputs: two of everything, and modetest takes seconds on
+	# virtio-gpu's long mode lists: more time than one output's scripts.
+	[ "$name" = kms-outputs ] && board="--outputs 2 --timeout $((${VM_TIMEOUT:-240} * 3 / 2))"
 	boot
 	rc=$?
 	# A board that stopped answering boots once more: 124 is the host's

@@ -12,7 +12,9 @@
 # Virtual-2 goes on, the same process.  Then outputs = all takes both and
 # Virtual-2 keeps flipping while Virtual-3 is out (attract mode), and an
 # output that does not exist is named with the real ones while the other
-# runs.  Ends with "vm: N passed, N failed".
+# runs.  Last, the screen's power: blank_after puts both CRTCs to sleep
+# (ACTIVE 0), a key wakes both with new frames.  Ends with "vm: N passed,
+# N failed".
 #
 # virtio-gpu sends no uevent when the sysfs status is forced either (as
 # vkms, tests/e2e/kms-hotplug.sh), so a cable is the status plus a change
@@ -142,6 +144,44 @@ vm_check "a wrong output: $A set and shows its view" \
 vm_check "a wrong output: the kiosk runs on" kiosk_alive
 kiosk_stop TERM
 vm_check "a wrong output: SIGTERM: exit status 0 (got $KRC)" test "$KRC" = 0
+
+# ---- the screen's power on every output: blank_after puts both CRTCs
+# to sleep (atomic ACTIVE 0, no flips), a key wakes both with new frames.
+# actives: "CRTC ACTIVE" of each CRTC, one modetest call (-a: atomic
+# properties, read without master; seconds on virtio-gpu's long mode
+# lists). A CRTC's own line starts at the margin; its properties and
+# their blobs' hex lines are indented.
+actives() {
+	modetest -D "$CARD" -a -p 2>/dev/null | awk '
+		/^CRTCs:$/ { in_sec = 1; next } /^Planes:$/ { exit }
+		in_sec && /^[0-9]+\t/ { cur = $1 }
+		in_sec && $2 == "ACTIVE:" { want = cur; next }
+		want != "" && $1 == "value:" { printf "%s%s %s", sep, want, $2; sep = " "; want = "" }'
+}
+both() { # 0|1: what both CRTCs' ACTIVE should read
+	_act=$(actives)
+	echo "ACTIVE: $_act"
+	[ "$_act" = "$CA $1 $CB $1" ] || [ "$_act" = "$CB $1 $CA $1" ]
+}
+vkbd_start
+kiosk_start power.log --config "$INI" --device "$CARD" --keyboard auto --blank-after 0.4 \
+	--attract-after 0.1 --attract-speed 30
+wait_log 90 power.log "ready: the first frame is on the screen"
+wait_log 90 power.log "screen off: blanked"
+wait_until 10 sh -c "grep -q 'kms: $A asleep' power.log && grep -q 'kms: $B asleep' power.log"
+show power.log
+vm_check "blank_after: both outputs said asleep" \
+	sh -c "grep -q 'kms: $A asleep' power.log && grep -q 'kms: $B asleep' power.log"
+vm_check "blank_after: both CRTCs inactive (atomic ACTIVE 0)" both 0
+fa=$(fb_of "$CA") fb=$(fb_of "$CB")
+vkbd_press SPACE
+wait_log 20 power.log "screen on:"
+vm_check "a key wakes both: a new frame on $A" wait_until 20 shows_new "$CA" "${fa:-none}"
+vm_check "a key wakes both: a new frame on $B" wait_until 20 shows_new "$CB" "${fb:-none}"
+vm_check "a key wakes both: both CRTCs active again" both 1
+vkbd_stop
+kiosk_stop TERM
+vm_check "power: SIGTERM: exit status 0 (got $KRC)" test "$KRC" = 0
 
 dmesg >kernel.log
 vm_check "no kernel warning, BUG or oops" sh -c '! grep -Eq "WARNING:|BUG:|Oops|Call Trace" kernel.log'
