@@ -12,7 +12,8 @@
 # Virtual-2 goes on, the same process.  Then outputs = all takes both and
 # Virtual-2 keeps flipping while Virtual-3 is out (attract mode), and an
 # output that does not exist is named with the real ones while the other
-# runs.  Last, the screen's power: blank_after puts both CRTCs to sleep
+# runs.  The card held by another program: the kiosk waits, then takes
+# both outputs.  Last, the screen's power: blank_after puts both CRTCs to sleep
 # (ACTIVE 0), a key wakes both with new frames.  Ends with "vm: N passed,
 # N failed".
 #
@@ -144,6 +145,20 @@ vm_check "a wrong output: $A set and shows its view" \
 vm_check "a wrong output: the kiosk runs on" kiosk_alive
 kiosk_stop TERM
 vm_check "a wrong output: SIGTERM: exit status 0 (got $KRC)" test "$KRC" = 0
+
+# ---- the card held by another program (a desktop keeping DRM master):
+# the kiosk waits with both outputs, and takes both once it lets go.
+hold_start -D "$CARD" -m 640x480 -k
+kiosk_start busy.log --config "$INI" --device "$CARD"
+wait_log 60 busy.log "is held by"
+vm_check "busy: says who holds $CARD and waits" has busy.log "kms: $CARD is held by"
+vm_check "busy: keeps running" kiosk_alive
+hold_stop
+wait_log 60 busy.log "is free now: taking the display"
+vm_check "busy: once free, a frame of the kiosk on $A" wait_until 30 shows_new "$CA" "${HOLD_FB:-none}"
+vm_check "busy: once free, a frame of the kiosk on $B" wait_until 30 shows_new "$CB" "${HOLD_FB:-none}"
+kiosk_stop TERM
+vm_check "busy: SIGTERM: exit status 0 (got $KRC)" test "$KRC" = 0
 
 # ---- the screen's power on every output: blank_after puts both CRTCs
 # to sleep (atomic ACTIVE 0, no flips), a key wakes both with new frames.
