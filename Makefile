@@ -152,9 +152,10 @@ $(BUILD):
 # Every tree's dependency files (the plain build, the sanitizers', make
 # quick's, the cross builds': each a folder with app/ in it), to the depth
 # of scene/gltf/*.d, so that an object rebuilds when a header it includes
-# changes. The cross sysroots beside them hold folders named *.d: left out.
+# changes. The cross sysroots and the Ansible test's root beside them hold
+# folders named *.d (etc/binfmt.d): left out.
 DEP_TREES := $(patsubst %/app,%,$(wildcard $(BUILD)/app $(BUILD)/*/app))
--include $(filter-out $(BUILD)/sysroot-%,$(foreach t,$(DEP_TREES),$(wildcard $(t)/*.d $(t)/*/*.d $(t)/*/*/*.d)))
+-include $(filter-out $(BUILD)/sysroot-% $(BUILD)/ansible-root/%,$(foreach t,$(DEP_TREES),$(wildcard $(t)/*.d $(t)/*/*.d $(t)/*/*/*.d)))
 
 # The matcap baker: regenerates matcaps/*.png byte for byte.
 $(BUILD)/bake: matcaps/bake.c $(BUILD)/render/bake.o $(BUILD)/util/image.o $(BUILD)/util/file.o $(BUILD)/util/log.o
