@@ -70,6 +70,15 @@ static uint32_t crtcs_taken(const struct display_kms *k, const struct kms_output
 	return taken;
 }
 
+/* What the renderer reads of the output drawn: the surface's size (the
+ * plane's scaled source, kms_scale.h) and whether the plane scales. */
+static void take_size(struct display *d, const struct kms_output *o)
+{
+	d->width = (int)o->drm.src_w;
+	d->height = (int)o->drm.src_h;
+	d->plane_scaled = o->plane_scaled;
+}
+
 /* The output's connector, set up. -ENOENT: nothing is connected yet (not
  * an error: the kiosk waits for a cable). */
 static int connect_output(struct display_kms *k, struct kms_output *o)
@@ -85,9 +94,7 @@ static int connect_output(struct display_kms *k, struct kms_output *o)
 	}
 	if (ret)
 		return ret;
-	k->base.width = (int)o->drm.src_w;
-	k->base.height = (int)o->drm.src_h;
-	k->base.plane_scaled = o->plane_scaled;
+	take_size(&k->base, o);
 	k->base.refresh_ns = o->drm.mode.vrefresh ? 1000000000ull / o->drm.mode.vrefresh : 0;
 	return 0;
 }
@@ -122,9 +129,7 @@ static int kms_select_output(struct display *d, int i)
 	d->output_name = o->connected ? o->drm.connector_name : o->want;
 	if (!o->connected)
 		return -EAGAIN;
-	d->width = (int)o->drm.src_w;
-	d->height = (int)o->drm.src_h;
-	d->plane_scaled = o->plane_scaled;
+	take_size(d, o);
 	return 0;
 }
 
@@ -183,13 +188,6 @@ static int watch(struct display_kms *k, int fd)
 	return epoll_ctl(k->epoll_fd, EPOLL_CTL_ADD, fd, &ev) ? -errno : 0;
 }
 
-static void ops_reset(struct kms_output *o)
-{
-	if (o->drm.ops)
-		o->drm.ops->destroy(&o->drm);
-	o->drm.ops = NULL;
-}
-
 /* Mode setting moves to fd, which is master: flip events come there,
  * and the client caps (atomic) are per open file. */
 static void move_to_fd(struct display_kms *k, int fd)
@@ -202,7 +200,7 @@ static void move_to_fd(struct display_kms *k, int fd)
 		struct kms_output *o = &k->out[i];
 
 		o->drm.fd = fd;
-		ops_reset(o);
+		kms_output_ops_reset(o);
 		if (o->connected && drm_ops_init(&o->drm, k->api))
 			kms_output_disconnect(o, &k->egl, false, k->master);
 	}
@@ -313,7 +311,7 @@ static void kms_destroy(struct display *d)
 		if (k->master && o->touched)
 			drm_restore(&o->drm);
 		kms_output_disconnect(o, &k->egl, false, k->master);
-		ops_reset(o);
+		kms_output_ops_reset(o);
 		if (o->drm.saved_crtc)
 			drmModeFreeCrtc(o->drm.saved_crtc);
 		free(o->want);

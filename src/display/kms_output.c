@@ -100,6 +100,13 @@ static int make_surface(struct kms_output *o, const struct kms_egl *e)
 	return 0;
 }
 
+void kms_output_ops_reset(struct kms_output *o)
+{
+	if (o->drm.ops)
+		o->drm.ops->destroy(&o->drm);
+	o->drm.ops = NULL;
+}
+
 int kms_output_connect(struct kms_output *o, const struct kms_egl *e, enum drm_api api,
 		       const char *mode, uint32_t taken, const struct display *d)
 {
@@ -108,9 +115,7 @@ int kms_output_connect(struct kms_output *o, const struct kms_egl *e, enum drm_a
 	o->drm.crtcs_taken = taken;
 	if ((ret = drm_select(&o->drm, o->want, mode)))
 		return ret;
-	if (o->drm.ops)
-		o->drm.ops->destroy(&o->drm);
-	o->drm.ops = NULL;
+	kms_output_ops_reset(o);
 	ret = drm_ops_init(&o->drm, api);
 	o->plane_scaled = !ret && kms_scale_plane(&o->drm, e->gbm, e->format, d);
 	if (!ret)

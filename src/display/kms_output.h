@@ -34,6 +34,9 @@ struct kms_output {
  * another negative errno. d: for kms_scale_plane's GPU question. */
 int kms_output_connect(struct kms_output *o, const struct kms_egl *e, enum drm_api api,
 		       const char *mode, uint32_t taken, const struct display *d);
+/* Drop the modesetting ops (atomic's property ids): before they are set
+ * up again, when mode setting moves to another fd, and at exit. */
+void kms_output_ops_reset(struct kms_output *o);
 /* Stop using it: the flip in flight finished, buffers and surface freed.
  * turn_off: the display went away, so the CRTC stops scanning out (only
  * where we set its mode and are master). The context stays current with
