@@ -70,7 +70,7 @@ done
 # boot: the board with $bins, running $script, its files in $share.
 boot() {
 	# shellcheck disable=SC2086
-	tests/vm/run.sh --quiet --timeout "${VM_TIMEOUT:-240}" $bins --share "$share" \
+	tests/vm/run.sh --quiet --timeout "$limit" $bins --share "$share" \
 		${VM_RUN_FLAGS:-} $board -- "$script" >"$share/run.log" 2>&1
 }
 
@@ -92,10 +92,10 @@ for script in "$@"; do
 	# hands-board.sh plugs in USB sticks: ext2 images made here.
 	[ "$name" = hands-board ] && bins="$bins $(sh tests/e2e/sticks.sh "$out/sticks")"
 	# kms-outputs.sh drives two outputs of one card: a virtio-gpu beside vkms.
-	board=""
+	board="" limit=${VM_TIMEOUT:-240}
 	# Two outputs: two of everything, and modetest takes seconds on
 	# virtio-gpu's long mode lists: more time than one output's scripts.
-	[ "$name" = kms-outputs ] && board="--outputs 2 --timeout $((${VM_TIMEOUT:-240} * 3 / 2))"
+	[ "$name" = kms-outputs ] && board="--outputs 2" limit=$((limit * 3 / 2))
 	boot
 	rc=$?
 	# A board that stopped answering boots once more: 124 is the host's
